@@ -1,0 +1,32 @@
+# make book : execute every notebook at the paper's parameters, render the book into _build/html
+# make test : pytest over tests/ and nbval over notebooks/
+# Both create .venv from requirements.txt when it is missing; they need only python3 and make.
+
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed
+
+.PHONY: book test run clean
+
+$(STAMP): requirements.txt pyproject.toml
+	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check -r requirements.txt
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check --no-deps --no-build-isolation -e .
+	@touch $(STAMP)
+
+book: $(STAMP)
+	$(BIN)/python -m obslib.run --in-place
+	$(BIN)/python -m obslib.claims --profile paper --write book/report.md
+	$(BIN)/jupyter-book build . --builder html --warningiserror --nitpick --keep-going
+
+test: $(STAMP)
+	$(BIN)/python -m pytest
+
+# Rerun notebooks with other parameters into _build/runs/, e.g.
+#   make run ARGS="--profile quick"      or      make run ARGS="-p n_scenes 500 01"
+run: $(STAMP)
+	$(BIN)/python -m obslib.run $(ARGS)
+
+clean:
+	rm -rf _build

@@ -1,0 +1,180 @@
+"""Theorem 1's lower bound, its two-sensor closed form (Theorem 4) and its worst case.
+
+Theorem 1 bounds the unknown ``C^{-1}(O(o, u_o))`` using only the known part ``O(o)``
+(the rows ``o - p_i``) and the speed bound ``u_max``::
+
+    C^{-1}(O(o, u_o)) >= sigma_min(O(o)) / sqrt(sigma_max(O(o))^2 + u_max^2)
+                       = sqrt(lambda_min / (lambda_max + u_max^2))           (Eq. (6), (25))
+
+with ``lambda`` the eigenvalues of ``O(o)^T O(o)``. For two sensors these eigenvalues have a
+closed form (Theorem 4); :func:`pair_bounds` evaluates it for all pairs and all targets at
+once, and :func:`pair_bound_polar` is the paper's polar form in ``alpha`` and ``theta_ji``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ._validate import as_cov, as_point, as_points, as_u_max, check_distinct, check_not_on_targets
+from .observability import relative_rows
+
+__all__ = [
+    "lower_bound",
+    "pair_bounds",
+    "pair_bound_polar",
+    "worst_case_control",
+    "relative_vectors",
+]
+
+
+def lower_bound(sensors, target, u_max) -> float:
+    """Theorem 1's lower bound on ``C^{-1}(O(o, u_o))`` for any number of sensors.
+
+    Computed by SVD of ``O(o)`` (Eq. (6)): ``sigma_min / sqrt(sigma_max^2 + u_max^2)``.
+
+    Parameters
+    ----------
+    sensors : array_like, shape (N, 2)
+        Sensor positions ``p_i`` (distinct, none on the target).
+    target : array_like, shape (2,)
+        Target position ``o``.
+    u_max : float
+        Bound on the target's control, ``||u_o|| <= u_max`` (non-negative).
+
+    Returns
+    -------
+    float
+        The bound, in ``[0, 1]``. With fewer than two sensors ``O(o)`` has rank < 2 and the
+        bound is 0 (Theorem 2).
+    """
+    rows = relative_rows(sensors, target)
+    u = float(as_u_max(u_max))
+    if rows.shape[0] < 2:
+        return 0.0
+    sv = np.linalg.svd(rows, compute_uv=False)
+    return float(sv[-1] / np.sqrt(sv[0] ** 2 + u**2))
+
+
+def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
+    """Validated vectors ``o_l - p_i``, shape ``(N, L, 2)``, optionally rescaled to Mahalanobis length.
+
+    With ``cov`` (the target estimate's covariance ``Sigma_l``), each vector keeps its Euclidean
+    direction and gets the Mahalanobis length ``d_il = sqrt(v^T Sigma_l^{-1} v)``. Feeding these
+    vectors to the Theorem 4 eigenvalues gives exactly the tracking experiments' evaluation:
+    ``alpha = d_j / d_i`` and ``u_max^2 / d_i^2`` from Mahalanobis distances, ``theta_ji`` the
+    Euclidean angle (``../shared/EXPERIMENTS.md``, "Pair bound as evaluated in the experiments").
+    """
+    s = as_points(sensors, "sensors")
+    t = as_points(targets, "targets")
+    check_distinct(s)
+    v = t[None, :, :] - s[:, None, :]
+    check_not_on_targets(v)
+    if cov is not None:
+        c = as_cov(cov, t.shape[0])
+        prec = np.linalg.inv(c)
+        d_maha2 = np.einsum("nlk,lkm,nlm->nl", v, prec, v)
+        d_eucl2 = np.einsum("nlk,nlk->nl", v, v)
+        v = v * np.sqrt(d_maha2 / d_eucl2)[..., None]
+    return v
+
+
+def _pair_kernel(vi: np.ndarray, vj: np.ndarray, u2) -> np.ndarray:
+    """Pair bound from the two rows ``vi``, ``vj`` (..., 2), broadcasting; ``u2 = u_max^2``.
+
+    The nonzero eigenvalues of ``O^T O`` equal those of the Gram matrix
+    ``[[r_i, c], [c, r_j]]`` (``r = ||v||^2``, ``c = v_i . v_j``), so
+    ``lambda_max = (r_i + r_j)/2 + hypot((r_i - r_j)/2, c)`` without cancellation and
+    ``lambda_min = det / lambda_max`` with ``det = (v_i x v_j)^2`` (Lagrange's identity).
+    Hence ``bound = |v_i x v_j| / sqrt(lambda_max (lambda_max + u_max^2))``.
+    """
+    ri = vi[..., 0] ** 2 + vi[..., 1] ** 2
+    rj = vj[..., 0] ** 2 + vj[..., 1] ** 2
+    cross = vi[..., 0] * vj[..., 1] - vi[..., 1] * vj[..., 0]
+    dot = vi[..., 0] * vj[..., 0] + vi[..., 1] * vj[..., 1]
+    lmax = 0.5 * (ri + rj) + np.hypot(0.5 * (ri - rj), dot)
+    return np.abs(cross) / np.sqrt(lmax * (lmax + u2))
+
+
+def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
+    """Theorem 4's bound for every sensor pair and every target, ``W[i, j, l]``.
+
+    Parameters
+    ----------
+    sensors : array_like, shape (N, 2)
+        Sensor positions (pairwise distinct).
+    targets : array_like, shape (L, 2)
+        Target positions (true positions, or estimates ``o_hat`` when ``cov`` is given).
+    u_max : float or array_like, shape (L,)
+        Control bound, shared or one per target (``u_{o_l, max}``).
+    cov : array_like, shape (2, 2) or (L, 2, 2), optional
+        Covariance of each target estimate. When given, distances are Mahalanobis as in the
+        tracking experiments (see :func:`relative_vectors`); otherwise Euclidean.
+
+    Returns
+    -------
+    ndarray, shape (N, N, L)
+        ``W[i, j, l] = sqrt(lambda_min / (lambda_max + u_max^2))`` for rows
+        ``o_l - p_i, o_l - p_j`` (Eq. (7)); symmetric in ``i, j`` and zero on ``i == j``.
+    """
+    v = relative_vectors(sensors, targets, cov)
+    u2 = as_u_max(u_max, v.shape[1]) ** 2
+    return _pair_kernel(v[:, None, :, :], v[None, :, :, :], u2)
+
+
+def pair_bound_polar(alpha, theta, u_over_d):
+    """Theorem 4's closed form in polar coordinates (Eq. (7)).
+
+    ``sqrt((1 + a^2 - s) / (1 + a^2 + s + 2 u^2/d^2))`` with
+    ``s = sqrt(1 + a^4 + 2 a^2 cos(2 theta))``, ``a = alpha = d_jo / d_io``,
+    ``theta = theta_ji`` and ``u/d = u_max / d_io``. Evaluated in the algebraically equal,
+    cancellation-free form ``s = hypot(1 - a^2, 2 a cos theta)`` and
+    ``1 + a^2 - s = 4 a^2 sin^2 theta / (1 + a^2 + s)``.
+
+    Parameters
+    ----------
+    alpha : array_like
+        Distance ratio, finite and non-negative.
+    theta : array_like
+        Angle ``theta_j - theta_i`` in radians, finite.
+    u_over_d : array_like
+        ``u_max / d_io``, finite and non-negative.
+
+    Returns
+    -------
+    float or ndarray
+        The bound, broadcast over the inputs.
+    """
+    a, th, q = (np.asarray(x, dtype=float) for x in (alpha, theta, u_over_d))
+    for name, x, nonneg in (("alpha", a, True), ("theta", th, False), ("u_over_d", q, True)):
+        if not np.isfinite(x).all():
+            raise ValueError(f"{name} must be finite")
+        if nonneg and (x < 0).any():
+            raise ValueError(f"{name} must be non-negative")
+    a2 = a * a
+    s = np.hypot(1.0 - a2, 2.0 * a * np.cos(th))
+    plus = 1.0 + a2 + s
+    minus = 4.0 * a2 * np.sin(th) ** 2 / plus
+    out = np.sqrt(minus / (plus + 2.0 * q * q))
+    return float(out) if out.ndim == 0 else out
+
+
+def worst_case_control(sensors, target, u_max) -> np.ndarray:
+    """A control with ``||u|| = u_max`` at which Theorem 1's bound is attained.
+
+    Along the principal eigenvector ``v_max`` of ``O(o)^T O(o)``, adding the row ``u`` raises
+    ``lambda_max`` by exactly ``u_max^2`` and leaves ``lambda_min`` unchanged, so both Weyl
+    inequalities of the proof of Theorem 1 hold with equality and
+    ``C^{-1}(O(o, u_max v_max)) = lower_bound(...)``. The sign is fixed so that the first
+    nonzero component is positive.
+
+    Returns
+    -------
+    ndarray, shape (2,)
+    """
+    rows = relative_rows(sensors, target)
+    u = float(as_u_max(u_max))
+    w, vecs = np.linalg.eigh(rows.T @ rows)
+    v = vecs[:, -1]
+    if v[0] < 0 or (v[0] == 0 and v[1] < 0):
+        v = -v
+    return u * v

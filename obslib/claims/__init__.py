@@ -1,0 +1,32 @@
+"""The claims ledger: one record per claim of the paper, each with a function that re-checks it.
+
+>>> import obslib.claims as claims
+>>> records = claims.evaluate(profile="quick")          # doctest: +SKIP
+>>> {r.id: r.status for r in records}["thm1"]            # doctest: +SKIP
+'reproduced'
+
+Each record has ``id``, ``where``, ``statement``, ``paper``, ``ours``, ``status`` (one of
+``reproduced``, ``partly``, ``refuted``, ``untestable``), ``notebook`` and ``evidence``.
+The book's reproduction report is rendered from :func:`evaluate` at the ``paper`` profile
+(``python -m obslib.claims --profile paper --write book/report.md``).
+
+Claims live in one submodule per section of the paper, imported below in paper order.
+"""
+
+from ._ledger import REQUIRED_IDS, STATUSES, Claim, Finding, Record, claim, evaluate, registry
+from .report import render_report
+
+# Registration order is paper order.
+from . import section3  # noqa: E402,F401  Sec. II-III: Theorems 1-3, Remarks 1-2
+
+__all__ = [
+    "STATUSES",
+    "REQUIRED_IDS",
+    "Claim",
+    "Finding",
+    "Record",
+    "claim",
+    "evaluate",
+    "registry",
+    "render_report",
+]

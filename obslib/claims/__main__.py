@@ -1,0 +1,37 @@
+"""Command line: ``python -m obslib.claims [--profile P] [--id ID ...] [--write FILE | --json]``."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from dataclasses import asdict
+from pathlib import Path
+
+from . import evaluate, render_report
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m obslib.claims", description=__doc__)
+    ap.add_argument("--profile", default="paper", help="parameter profile (default: paper)")
+    ap.add_argument("--id", action="append", dest="ids", help="only this claim (repeatable)")
+    ap.add_argument("--write", type=Path, help="write the report page (MyST Markdown) here")
+    ap.add_argument("--json", action="store_true", help="print the records as JSON")
+    args = ap.parse_args(argv)
+    records = evaluate(args.profile, args.ids)
+    if args.write:
+        text = render_report(records, args.profile)
+        if not args.write.exists() or args.write.read_text() != text:
+            args.write.write_text(text)
+        print(f"{args.write}: {len(records)} claims")
+    elif args.json:
+        json.dump([asdict(r) for r in records], sys.stdout, indent=1, default=float)
+        print()
+    else:
+        for r in records:
+            print(f"{r.id:24s} {r.status:11s} {r.ours}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,109 @@
+"""The observability matrix of Section III and its exact inverse condition number.
+
+For ``N`` stationary range sensors at ``p_i`` and a target at ``o`` moving with control
+``u_o`` (the system of Eq. (1), measurements ``z_i = 1/2 ||p_i - o||^2``), the local
+nonlinear observability matrix reduces to the stacked matrix of Eq. (4)::
+
+    O(o, u_o) = [o - p_1; o - p_2; ...; o - p_N; u_o]        shape (N + 1, 2)
+
+Its inverse condition number ``C^{-1} = sigma_min / sigma_max`` (Eq. (5)) is the
+observability measure the paper uses; it needs ``u_o``, which the sensors do not know.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ._validate import as_point, as_points, check_distinct, check_not_on_targets
+
+__all__ = ["observability_matrix", "inverse_condition_number", "relative_rows"]
+
+
+def relative_rows(sensors, target) -> np.ndarray:
+    """Validated rows ``o - p_i`` of the known part ``O(o)`` (appendix, Eq. (13)).
+
+    Parameters
+    ----------
+    sensors : array_like, shape (N, 2)
+        Sensor positions ``p_i``; pairwise distinct.
+    target : array_like, shape (2,)
+        Target position ``o``; no sensor may sit on it.
+
+    Returns
+    -------
+    ndarray, shape (N, 2)
+    """
+    s = as_points(sensors, "sensors")
+    o = as_point(target, "target")
+    check_distinct(s)
+    rows = o[None, :] - s
+    check_not_on_targets(rows[:, None, :])
+    return rows
+
+
+def observability_matrix(sensors, target, u=None) -> np.ndarray:
+    """Stacked observability matrix ``O(o, u_o)`` of Eq. (4).
+
+    Parameters
+    ----------
+    sensors : array_like, shape (N, 2)
+        Sensor positions ``p_i`` (distinct, none on the target).
+    target : array_like, shape (2,)
+        Target position ``o``.
+    u : array_like, shape (2,), optional
+        Target control input ``u_o``; when given it is the last row.
+
+    Returns
+    -------
+    ndarray, shape (N, 2) or (N + 1, 2)
+        Rows ``o - p_i`` followed by ``u_o``.
+    """
+    rows = relative_rows(sensors, target)
+    if u is None:
+        return rows
+    return np.vstack([rows, as_point(u, "u")])
+
+
+def _inverse_condition(stack: np.ndarray) -> np.ndarray:
+    """``sigma_min / sigma_max`` of each ``(m, 2)`` matrix in ``stack`` (..., m, 2).
+
+    A matrix with fewer than two rows has rank < 2, so its ratio is 0.
+    """
+    if stack.shape[-2] < 2:
+        return np.zeros(stack.shape[:-2])
+    sv = np.linalg.svd(stack, compute_uv=False)
+    top = sv[..., 0]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = np.where(top > 0, sv[..., -1] / np.where(top > 0, top, 1.0), 0.0)
+    return ratio
+
+
+def inverse_condition_number(sensors, target, u=None):
+    """Exact inverse condition number ``C^{-1}(O(o, u_o))`` of Eq. (5), by SVD.
+
+    Parameters
+    ----------
+    sensors : array_like, shape (N, 2)
+        Sensor positions (distinct, none on the target). ``N = 1`` is allowed.
+    target : array_like, shape (2,)
+        Target position ``o``.
+    u : array_like, shape (2,) or (K, 2), optional
+        Control input(s) ``u_o``. A ``(K, 2)`` array evaluates ``K`` controls at once.
+        ``None`` means the stationary target (no ``u`` row, the same as ``u = 0``).
+
+    Returns
+    -------
+    float or ndarray, shape (K,)
+        ``sigma_min / sigma_max`` in ``[0, 1]``; 0 when the matrix has rank < 2.
+    """
+    rows = relative_rows(sensors, target)
+    if u is None:
+        return float(_inverse_condition(rows))
+    uu = np.asarray(u, dtype=float) if not isinstance(u, np.ndarray) else u.astype(float)
+    if uu.ndim == 1:
+        return float(_inverse_condition(np.vstack([rows, as_point(uu, "u")])))
+    uu = as_points(uu, "u")
+    stack = np.concatenate(
+        [np.broadcast_to(rows, (uu.shape[0],) + rows.shape), uu[:, None, :]], axis=1
+    )
+    return _inverse_condition(stack)

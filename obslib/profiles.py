@@ -1,0 +1,54 @@
+"""Named parameter sets for the notebooks and the claims ledger.
+
+``paper`` holds each notebook's defaults: the paper's parameters (``../shared/EXPERIMENTS.md``)
+and, for audits the paper does not have, our chosen sizes. It must equal the notebook's tagged
+``parameters`` cell (a test checks this). ``quick`` shrinks the sizes for fast previews and for
+the ledger in tests. A profile lists only the parameters it changes; the rest are the defaults.
+"""
+
+from __future__ import annotations
+
+import copy
+
+__all__ = ["PROFILES", "params", "profile_names"]
+
+PROFILES: dict[str, dict[str, dict]] = {
+    "paper": {
+        "01_model_and_bound": {
+            "seed": 0,
+            "n_scenes": 2000,
+            "n_controls": 64,
+            "n_trials_thm3": 20000,
+            "u_max": 1.0,
+            "n_radii": 40,
+            "n_angles": 180,
+        },
+    },
+    "quick": {
+        "01_model_and_bound": {
+            "n_scenes": 200,
+            "n_trials_thm3": 2000,
+            "n_radii": 10,
+            "n_angles": 60,
+        },
+    },
+}
+
+
+def profile_names() -> list[str]:
+    """Names of the known profiles."""
+    return list(PROFILES)
+
+
+def params(notebook: str, profile: str = "paper") -> dict:
+    """Parameters of ``notebook`` (its stem, e.g. ``"01_model_and_bound"``) under ``profile``.
+
+    The ``paper`` values updated by the profile's overrides.
+    """
+    if profile not in PROFILES:
+        raise ValueError(f"unknown profile {profile!r}; known: {profile_names()}")
+    if notebook not in PROFILES["paper"]:
+        raise ValueError(f"no parameters for notebook {notebook!r}; known: {list(PROFILES['paper'])}")
+    out = copy.deepcopy(PROFILES["paper"][notebook])
+    out.update(PROFILES[profile].get(notebook, {}))
+    return out
