@@ -77,8 +77,8 @@ def _clean(path: Path) -> None:
     for cell in nb.cells:
         cell.metadata.pop("papermill", None)
         cell.metadata.pop("execution", None)
-        tags = [t for t in cell.metadata.get("tags", []) if t != "papermill-error-cell-tag"]
-        if "tags" in cell.metadata:
+        tags = [t for t in cell.metadata.pop("tags", []) if t != "papermill-error-cell-tag"]
+        if tags:
             cell.metadata["tags"] = tags
     nbformat.write(nb, path)
 

@@ -1,0 +1,44 @@
+import numpy as np
+import pytest
+
+import obslib as ob
+
+
+def test_matrix_rows_are_target_minus_sensor_then_u():
+    s = np.array([[0.0, 0.0], [3.0, 1.0]])
+    o = np.array([1.0, 2.0])
+    assert np.array_equal(ob.observability_matrix(s, o), [[1.0, 2.0], [-2.0, 1.0]])
+    O = ob.observability_matrix(s, o, u=[0.5, -0.5])
+    assert O.shape == (3, 2) and np.array_equal(O[-1], [0.5, -0.5])
+
+
+def test_inverse_condition_number_matches_eigenvalues_of_gram():
+    rng = np.random.default_rng(3)
+    for _ in range(200):
+        s = rng.uniform(-5, 5, size=(rng.integers(1, 6), 2))
+        o = rng.uniform(-5, 5, size=2)
+        u = rng.uniform(-2, 2, size=2)
+        O = np.vstack([o - s, u])
+        lam = np.linalg.eigvalsh(O.T @ O)
+        expected = np.sqrt(max(lam[0], 0.0) / lam[1])
+        # eigvalsh knows lambda_min only to eps * lambda_max, so compare squares
+        assert ob.inverse_condition_number(s, o, u) ** 2 == pytest.approx(expected**2, abs=1e-12)
+
+
+def test_batch_of_controls_equals_one_at_a_time():
+    s = np.array([[0.0, 0.0], [3.0, 1.0], [1.0, 4.0]])
+    o = np.array([1.0, 2.0])
+    controls = np.random.default_rng(0).normal(size=(50, 2))
+    batch = ob.inverse_condition_number(s, o, controls)
+    single = [ob.inverse_condition_number(s, o, u) for u in controls]
+    assert batch.shape == (50,)
+    np.testing.assert_allclose(batch, single, rtol=0, atol=1e-15)
+
+
+def test_single_sensor_without_control_has_rank_one():
+    assert ob.inverse_condition_number([[1.0, 1.0]], [0.0, 0.0]) == 0.0
+
+
+def test_control_perpendicular_and_equal_length_is_perfectly_conditioned():
+    # one sensor at distance 2 along x, control of norm 2 along y: O = [[-2, 0], [0, 2]]
+    assert ob.inverse_condition_number([[2.0, 0.0]], [0.0, 0.0], [0.0, 2.0]) == pytest.approx(1.0)

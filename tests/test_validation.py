@@ -1,0 +1,99 @@
+"""Bad input raises ValueError naming what is wrong (DESIGN.md); legal edge cases do not."""
+
+import numpy as np
+import pytest
+
+import obslib as ob
+
+S = np.array([[0.0, 0.0], [4.0, 0.0], [0.0, 3.0]])
+O = np.array([1.0, 1.0])
+T = O[None]
+
+
+def callers():
+    """Each public function as f(sensors, target_or_targets, u_max)."""
+    return {
+        "observability_matrix": lambda s, o, u: ob.observability_matrix(s, o[0] if np.ndim(o) == 2 else o),
+        "inverse_condition_number": lambda s, o, u: ob.inverse_condition_number(s, o[0] if np.ndim(o) == 2 else o, [0.1, 0.2]),
+        "lower_bound": lambda s, o, u: ob.lower_bound(s, o[0] if np.ndim(o) == 2 else o, u),
+        "worst_case_control": lambda s, o, u: ob.worst_case_control(s, o[0] if np.ndim(o) == 2 else o, u),
+        "pair_bounds": lambda s, o, u: ob.pair_bounds(s, o if np.ndim(o) == 2 else o[None], u),
+    }
+
+
+FUNCS = callers()
+
+
+@pytest.mark.parametrize("name", FUNCS)
+@pytest.mark.parametrize(
+    "sensors, target, u_max, message",
+    [
+        (np.array([[0.0, 0.0], [np.nan, 1.0]]), T, 1.0, "sensor 1 has a non-finite coordinate"),
+        (np.array([[0.0, 0.0], [2.0, np.inf]]), T, 1.0, "sensor 1 has a non-finite coordinate"),
+        (np.zeros(4), T, 1.0, "sensors must have shape (n, 2)"),
+        (np.zeros((3, 3)), T, 1.0, "sensors must have shape (n, 2)"),
+        (S, np.array([[1.0, 1.0, 1.0]]), 1.0, "shape"),
+        (S, np.array([[np.nan, 1.0]]), 1.0, "non-finite"),
+        (np.array([[0.0, 0.0], [1.0, 1.0], [5.0, 5.0]]), T, 1.0, "sensor 1 coincides with target 0"),
+        (np.array([[0.0, 0.0], [2.0, 2.0], [0.0, 0.0]]), T, 1.0, "sensors 0 and 2 coincide"),
+    ],
+)
+def test_bad_geometry(name, sensors, target, u_max, message):
+    with pytest.raises(ValueError, match=message.replace("(", r"\(").replace(")", r"\)")):
+        FUNCS[name](sensors, target, u_max)
+
+
+@pytest.mark.parametrize("name", ["lower_bound", "worst_case_control", "pair_bounds"])
+@pytest.mark.parametrize("u_max, message", [(-1.0, "non-negative"), (np.nan, "finite"), (np.inf, "finite"), ("fast", "u_max")])
+def test_bad_u_max(name, u_max, message):
+    with pytest.raises(ValueError, match=message):
+        FUNCS[name](S, T, u_max)
+
+
+def test_u_max_vector_must_match_targets():
+    with pytest.raises(ValueError, match="one value per target"):
+        ob.pair_bounds(S, [[1.0, 1.0], [2.0, 2.0]], [1.0, 1.0, 1.0])
+    with pytest.raises(ValueError, match="non-negative for target 1"):
+        ob.pair_bounds(S, [[1.0, 1.0], [2.0, 2.0]], [1.0, -1.0])
+
+
+@pytest.mark.parametrize(
+    "cov, message",
+    [
+        (np.eye(3), "shape"),
+        (np.array([[1.0, 0.0], [0.0, -1.0]]), "target 0 is not positive definite"),
+        (np.array([[1.0, 2.0], [2.0, 1.0]]), "not positive definite"),
+        (np.array([[1.0, 0.5], [0.0, 1.0]]), "not symmetric"),
+        (np.array([[1.0, np.nan], [np.nan, 1.0]]), "non-finite"),
+        (np.stack([np.eye(2), np.zeros((2, 2))]), "target 1 is not positive definite"),
+    ],
+)
+def test_bad_covariance(cov, message):
+    targets = [[1.0, 1.0], [2.0, 2.0]]
+    with pytest.raises(ValueError, match=message):
+        ob.pair_bounds(S, targets, 1.0, cov=cov)
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [((-1.0, 0.5, 0.1), "alpha"), ((1.0, np.nan, 0.1), "theta"), ((1.0, 0.5, -2.0), "u_over_d"), ((np.inf, 0.5, 0.1), "alpha")],
+)
+def test_bad_polar_arguments(args, message):
+    with pytest.raises(ValueError, match=message):
+        ob.pair_bound_polar(*args)
+
+
+def test_bad_control():
+    with pytest.raises(ValueError, match="u has a non-finite"):
+        ob.inverse_condition_number(S, O, [np.nan, 0.0])
+    with pytest.raises(ValueError, match="u must have shape"):
+        ob.inverse_condition_number(S, O, [1.0, 2.0, 3.0])
+
+
+def test_no_nan_from_legal_degenerate_input():
+    """Collinear sensors and u_max = 0 give 0 and finite values, not NaN."""
+    line = np.array([[0.0, 0.0], [1.0, 0.0], [3.0, 0.0]])
+    assert ob.lower_bound(line, [2.0, 0.0], 0.0) == 0.0
+    W = ob.pair_bounds(line, [[2.0, 0.0], [2.0, 1.0]], 0.0)
+    assert np.isfinite(W).all() and np.all(W[:, :, 0] == 0)
+    assert ob.inverse_condition_number(line, [2.0, 0.0], [0.0, 0.0]) == 0.0
