@@ -12,6 +12,8 @@ bounds
     Theorem 1's lower bound, the pair closed form of Theorem 4, the worst-case control.
 scenes
     Seeded random scenes, including near-degenerate ones.
+assignment
+    Unique pair assignment: greedy Algorithm 1, relaxed matching, exact MILP optimum.
 bound_checks
     Numerical audits of Theorems 1-3 and Remark 1.
 claims
@@ -22,6 +24,12 @@ run
     The papermill runner behind ``make book`` and reruns.
 """
 
+from .assignment import (
+    PairAssignment,
+    greedy_pair_assignment,
+    optimal_pair_assignment,
+    relaxed_pair_assignment,
+)
 from .bounds import lower_bound, pair_bound_polar, pair_bounds, relative_vectors, worst_case_control
 from .observability import inverse_condition_number, observability_matrix, relative_rows
 
@@ -36,4 +44,8 @@ __all__ = [
     "pair_bound_polar",
     "relative_vectors",
     "worst_case_control",
+    "PairAssignment",
+    "greedy_pair_assignment",
+    "relaxed_pair_assignment",
+    "optimal_pair_assignment",
 ]

@@ -1,0 +1,323 @@
+"""Assigning unique pairs of sensors to targets (Section IV-A, Problems 1 and 3).
+
+Weights are ``W[i, j, l]`` = the pair bound of sensors ``i, j`` for target ``l``
+(:func:`obslib.pair_bounds`), symmetric in ``i, j`` and zero on the diagonal.
+
+``greedy_pair_assignment``
+    Algorithm 1: repeatedly take the heaviest triple whose sensors and target are all unused.
+``greedy_pair_assignment_literal``
+    The same algorithm as printed, re-evaluating every remaining triple each round; kept for
+    tests and benchmarks.
+``relaxed_pair_assignment``
+    Problem 3 (each unordered pair serves at most one target, sensors may be reused), solved
+    exactly as a bipartite matching between pairs and targets; an upper bound on Problem 1.
+``optimal_pair_assignment``
+    Problem 1 solved exactly as a 0-1 program (``scipy.optimize.milp``, HiGHS).
+
+Ties
+----
+Among triples of equal weight every algorithm here takes the lexicographically smallest
+``(i, j, l)`` with ``i < j`` (greedy); the matching and MILP solvers return one optimum.
+"""
+
+from __future__ import annotations
+
+import heapq
+from dataclasses import dataclass
+
+import numpy as np
+
+from ._validate import as_u_max
+from .bounds import _pair_kernel, relative_vectors
+
+__all__ = [
+    "PairAssignment",
+    "greedy_pair_assignment",
+    "greedy_pair_assignment_literal",
+    "relaxed_pair_assignment",
+    "optimal_pair_assignment",
+    "assignment_value",
+]
+
+
+@dataclass(frozen=True)
+class PairAssignment:
+    """Result of a pair assignment: ``triples`` ``(i, j, l)`` with ``i < j`` and their total ``value``.
+
+    For the greedy algorithms the triples are in pick order; otherwise sorted by target.
+    """
+
+    triples: list
+    value: float
+
+
+def _as_weights(W) -> np.ndarray:
+    try:
+        arr = np.asarray(W, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"W must be a numeric array of shape (N, N, L): {exc}") from None
+    if arr.ndim != 3 or arr.shape[0] != arr.shape[1]:
+        raise ValueError(f"W must have shape (N, N, L), got {arr.shape}")
+    if not np.isfinite(arr).all():
+        i, j, l = (int(v) for v in np.argwhere(~np.isfinite(arr))[0])
+        raise ValueError(f"W[{i}, {j}, {l}] is not finite")
+    if not np.array_equal(arr, arr.transpose(1, 0, 2)):
+        raise ValueError("W must be symmetric in its first two indices (pair weights)")
+    return arr
+
+
+def _check_sizes(n: int, n_targets: int) -> None:
+    if n_targets < 1:
+        raise ValueError("there must be at least one target")
+    if n < 2 * n_targets:
+        raise ValueError(
+            f"unique pairs need N >= 2L sensors; got N = {n} sensors for L = {n_targets} targets"
+        )
+
+
+def assignment_value(W, triples) -> float:
+    """Total weight ``sum W[i, j, l]`` of an assignment (no feasibility check)."""
+    W = np.asarray(W, dtype=float)
+    return float(sum(W[i, j, l] for i, j, l in triples))
+
+
+# --------------------------------------------------------------------------------------------
+# Greedy (Algorithm 1) without re-evaluation
+# --------------------------------------------------------------------------------------------
+
+
+class _TargetQueue:
+    """Candidate pairs of one target in greedy order ``(-w, i, j)``, refilled on demand.
+
+    Holds the ``k`` best pairs over the sensors that were free when it was (re)filled. Since
+    weights never change and sensors only leave, the first candidate whose sensors are both
+    free is the target's best free pair, as long as the list is not exhausted; when it is, the
+    column is recomputed over the free sensors.
+    """
+
+    def __init__(self, column_fn, l: int, k: int):
+        self.column_fn, self.l, self.k = column_fn, l, k
+        self.cand: list = []
+        self.pos = 0
+        self.complete = False  # the list holds every pair over the sensors free at fill time
+
+    def fill(self, free: np.ndarray) -> None:
+        idx = np.flatnonzero(free)
+        m = idx.size
+        if m < 2:
+            self.cand, self.pos, self.complete = [], 0, True
+            return
+        w = self.column_fn(self.l, idx)  # (m, m) weights over the free sensors
+        iu, ju = np.triu_indices(m, 1)
+        flat = w[iu, ju]
+        total = flat.size
+        if total > self.k:
+            # keep everything tied with the k-th largest so that tie-breaking stays exact
+            kth = np.partition(flat, total - self.k)[total - self.k]
+            keep = np.flatnonzero(flat >= kth)
+            self.complete = False
+        else:
+            keep = np.arange(total)
+            self.complete = True
+        order = np.lexsort((idx[ju[keep]], idx[iu[keep]], -flat[keep]))
+        sel = keep[order]
+        self.cand = list(zip(flat[sel].tolist(), idx[iu[sel]].tolist(), idx[ju[sel]].tolist()))
+        self.pos = 0
+
+    def head(self, free: np.ndarray):
+        """The best candidate with both sensors free, or None if the target has no free pair."""
+        while True:
+            while self.pos < len(self.cand):
+                w, i, j = self.cand[self.pos]
+                if free[i] and free[j]:
+                    return w, i, j
+                self.pos += 1
+            if self.complete:
+                return None
+            self.fill(free)
+
+
+def _greedy(column_fn, n: int, n_targets: int, k: int | None = None) -> PairAssignment:
+    """Algorithm 1 with a lazily refilled candidate list per target and a global heap."""
+    if k is None:
+        k = max(16, 4 * n_targets)
+    free = np.ones(n, dtype=bool)
+    queues = [_TargetQueue(column_fn, l, k) for l in range(n_targets)]
+    heap = []
+    for q in queues:
+        q.fill(free)
+        h = q.head(free)
+        if h is not None:
+            heap.append((-h[0], h[1], h[2], q.l))
+    heapq.heapify(heap)
+    triples, value = [], 0.0
+    while heap:
+        negw, i, j, l = heapq.heappop(heap)
+        if free[i] and free[j]:
+            triples.append((i, j, l))
+            value += -negw
+            free[i] = free[j] = False
+            continue
+        h = queues[l].head(free)  # stale: this target's head lost a sensor; re-queue its next
+        if h is not None:
+            heapq.heappush(heap, (-h[0], h[1], h[2], l))
+    return PairAssignment(triples=triples, value=float(value))
+
+
+def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, cov=None, k=None):
+    """Algorithm 1 (greedy unique pair assignment), without re-evaluating triples.
+
+    Each round takes the heaviest triple ``(i, j, l)`` whose sensors and target are unused
+    (ties: smallest ``(i, j, l)``), then removes them. Because the weights do not change between
+    rounds, each target keeps a sorted list of its best pairs, computed once and refilled only
+    when all of them have lost a sensor; a heap of the targets' current heads gives each round's
+    maximum. The picks equal those of :func:`greedy_pair_assignment_literal`.
+
+    Parameters
+    ----------
+    W : array_like, shape (N, N, L), optional
+        Pair weights, symmetric in ``i, j``.
+    sensors, targets, u_max, cov : optional
+        Instead of ``W``: the geometry, weighted by :func:`obslib.pair_bounds` (Theorem 4),
+        computed per target on demand so the ``(N, N, L)`` array is never materialised.
+    k : int, optional
+        Candidates kept per target between refills (default ``max(16, 4 L)``); affects speed only.
+
+    Returns
+    -------
+    PairAssignment
+        ``triples`` in pick order, ``value`` their total (Algorithm 1's ``omega(GREEDY)``).
+        The 1/3 guarantee is Theorem 6.
+    """
+    if W is not None:
+        if sensors is not None or targets is not None:
+            raise ValueError("give either W or sensors/targets, not both")
+        arr = _as_weights(W)
+        n, n_targets = arr.shape[0], arr.shape[2]
+        _check_sizes(n, n_targets)
+        return _greedy(lambda l, idx: arr[np.ix_(idx, idx, [l])][:, :, 0], n, n_targets, k)
+    if sensors is None or targets is None or u_max is None:
+        raise ValueError("give W, or sensors=, targets= and u_max=")
+    v = relative_vectors(sensors, targets, cov)  # (N, L, 2), validated
+    n, n_targets = v.shape[0], v.shape[1]
+    _check_sizes(n, n_targets)
+    u2 = as_u_max(u_max, n_targets) ** 2
+    u2 = np.broadcast_to(u2, (n_targets,))
+
+    def column(l, idx):
+        vl = v[idx, l, :]
+        return _pair_kernel(vl[:, None, :], vl[None, :, :], u2[l])
+
+    return _greedy(column, n, n_targets, k)
+
+
+def greedy_pair_assignment_literal(W) -> PairAssignment:
+    """Algorithm 1 as printed: every round, evaluate all remaining triples and take the maximum.
+
+    Vectorised per round (one ``argmax`` over the remaining ``(N', N', L')`` block); ties go to
+    the smallest ``(i, j, l)`` with ``i < j``. Quadratic in the number of rounds; for tests and
+    benchmarks.
+    """
+    arr = _as_weights(W)
+    n, n_targets = arr.shape[0], arr.shape[2]
+    _check_sizes(n, n_targets)
+    s_free = np.arange(n)
+    t_free = np.arange(n_targets)
+    triples, value = [], 0.0
+    while t_free.size and s_free.size >= 2:
+        block = arr[np.ix_(s_free, s_free, t_free)]
+        m = s_free.size
+        upper = np.triu(np.ones((m, m), dtype=bool), 1)
+        block = np.where(upper[:, :, None], block, -np.inf)
+        a, b, c = np.unravel_index(int(np.argmax(block)), block.shape)  # C order = (i, j, l) order
+        i, j, l = int(s_free[a]), int(s_free[b]), int(t_free[c])
+        triples.append((i, j, l))
+        value += arr[i, j, l]
+        s_free = s_free[(s_free != i) & (s_free != j)]
+        t_free = t_free[t_free != l]
+    return PairAssignment(triples=triples, value=float(value))
+
+
+# --------------------------------------------------------------------------------------------
+# Relaxed matching (Problem 3) and the exact optimum (Problem 1)
+# --------------------------------------------------------------------------------------------
+
+
+def relaxed_pair_assignment(W, ordered: bool = False) -> PairAssignment:
+    """Problem 3: maximum-weight matching of sensor pairs to targets.
+
+    Each unordered pair serves at most one target and each target gets at most one pair, but a
+    sensor may belong to several chosen pairs. Solved exactly with
+    ``scipy.optimize.linear_sum_assignment`` on the ``(L, P)`` matrix of pair weights. Its value
+    is an upper bound on Problem 1's optimum (Sec. V-C).
+
+    Parameters
+    ----------
+    W : array_like, shape (N, N, L)
+    ordered : bool
+        Match *ordered* pairs ``(i, j)``, ``i != j``, instead: the original code's relaxation, in
+        which one unordered pair can serve two targets (as ``(i, j)`` and ``(j, i)``).
+    """
+    from scipy.optimize import linear_sum_assignment
+
+    arr = _as_weights(W)
+    n, n_targets = arr.shape[0], arr.shape[2]
+    if n_targets < 1:
+        raise ValueError("there must be at least one target")
+    if n < 2:
+        raise ValueError(f"pairs need at least two sensors, got {n}")
+    if ordered:
+        ii, jj = np.nonzero(~np.eye(n, dtype=bool))
+    else:
+        ii, jj = np.triu_indices(n, 1)
+    cost = arr[ii, jj, :].T  # (L, P)
+    rows, cols = linear_sum_assignment(cost, maximize=True)
+    triples = sorted(
+        (min(int(ii[c]), int(jj[c])), max(int(ii[c]), int(jj[c])), int(r)) for r, c in zip(rows, cols)
+    )
+    triples.sort(key=lambda t: t[2])
+    return PairAssignment(triples=triples, value=float(cost[rows, cols].sum()))
+
+
+def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignment:
+    """Problem 1 solved exactly: a 0-1 program over pair-target variables (HiGHS via ``milp``).
+
+    Variables ``x[p, l]`` for unordered pairs ``p = (i, j)`` and targets ``l``; each target takes
+    at most one pair and each sensor serves at most one target. Practical for small instances
+    (e.g. ``N <= 20``, ``L <= 8``).
+
+    Raises
+    ------
+    ValueError
+        For bad ``W`` or ``N < 2L``; RuntimeError if the solver stops without a proven optimum.
+    """
+    from scipy.optimize import Bounds, LinearConstraint, milp
+    from scipy.sparse import coo_matrix, vstack
+
+    arr = _as_weights(W)
+    n, n_targets = arr.shape[0], arr.shape[2]
+    _check_sizes(n, n_targets)
+    ii, jj = np.triu_indices(n, 1)
+    n_pairs = ii.size
+    c = -arr[ii, jj, :].reshape(-1)  # variable index p * L + l
+    var = np.arange(n_pairs * n_targets)
+    p_of, l_of = var // n_targets, var % n_targets
+    target_rows = coo_matrix((np.ones(var.size), (l_of, var)), shape=(n_targets, var.size))
+    sensor_rows = coo_matrix(
+        (np.ones(2 * var.size), (np.concatenate([ii[p_of], jj[p_of]]), np.concatenate([var, var]))),
+        shape=(n, var.size),
+    )
+    A = vstack([target_rows, sensor_rows]).tocsr()
+    options = {"time_limit": time_limit} if time_limit else {}
+    res = milp(
+        c,
+        constraints=LinearConstraint(A, -np.inf, 1.0),
+        integrality=np.ones(var.size),
+        bounds=Bounds(0, 1),
+        options=options,
+    )
+    if res.status != 0:
+        raise RuntimeError(f"MILP did not reach a proven optimum: {res.message}")
+    chosen = np.flatnonzero(res.x > 0.5)
+    triples = sorted(((int(ii[p_of[v]]), int(jj[p_of[v]]), int(l_of[v])) for v in chosen), key=lambda t: t[2])
+    return PairAssignment(triples=triples, value=assignment_value(arr, triples))

@@ -1,0 +1,136 @@
+"""Pair assignment: greedy vs the literal Algorithm 1, exact solvers vs brute force, Theorem 6."""
+
+import itertools
+
+import numpy as np
+import pytest
+
+import obslib as ob
+from obslib.assignment import (
+    greedy_pair_assignment,
+    greedy_pair_assignment_literal,
+    optimal_pair_assignment,
+    relaxed_pair_assignment,
+)
+
+
+def random_instance(rng, L, extra, grid=False):
+    N = 2 * L + extra
+    while True:
+        S = rng.uniform(0, 100, size=(N, 2))
+        T = rng.uniform(0, 100, size=(L, 2))
+        if grid:  # coarse grid: many exactly equal weights, to exercise tie-breaking
+            S, T = np.round(S / 25) * 25, np.round(T / 25) * 25 + 12.5
+        try:
+            return S, T, ob.pair_bounds(S, T, 1.0)
+        except ValueError:  # coincident points on the grid
+            continue
+
+
+def brute_force(W, unique_sensors=True):
+    """Best total over all ways to give each target one pair or none, enumerated exhaustively."""
+    n, _, L = W.shape
+    pairs = list(itertools.combinations(range(n), 2))
+    best = 0.0
+
+    def rec(l, used_sensors, used_pairs, total):
+        nonlocal best
+        if l == L:
+            best = max(best, total)
+            return
+        rec(l + 1, used_sensors, used_pairs, total)
+        for p in pairs:
+            if p in used_pairs or (unique_sensors and (p[0] in used_sensors or p[1] in used_sensors)):
+                continue
+            rec(l + 1, used_sensors | set(p), used_pairs | {p}, total + W[p[0], p[1], l])
+
+    rec(0, frozenset(), frozenset(), 0.0)
+    return best
+
+
+@pytest.mark.parametrize("grid", [False, True])
+def test_greedy_equals_literal_on_thousands_of_instances(grid):
+    rng = np.random.default_rng(1 if grid else 0)
+    for _ in range(1500):
+        L = int(rng.integers(1, 6))
+        S, T, W = random_instance(rng, L, int(rng.integers(0, 5)), grid)
+        k = int(rng.integers(1, 6))  # tiny candidate lists force many refills
+        lit = greedy_pair_assignment_literal(W)
+        assert greedy_pair_assignment(W, k=k).triples == lit.triples
+        assert greedy_pair_assignment(sensors=S, targets=T, u_max=1.0, k=k).triples == lit.triples
+
+
+def test_greedy_from_geometry_with_mahalanobis_equals_weights():
+    rng = np.random.default_rng(5)
+    S, T = rng.uniform(0, 100, (12, 2)), rng.uniform(0, 100, (4, 2))
+    cov = np.array([[[2.0, 0.3], [0.3, 1.0]]] * 4)
+    W = ob.pair_bounds(S, T, 1.0, cov=cov)
+    assert greedy_pair_assignment(sensors=S, targets=T, u_max=1.0, cov=cov).triples == (
+        greedy_pair_assignment_literal(W).triples
+    )
+
+
+def test_greedy_picks_are_feasible_and_valued():
+    rng = np.random.default_rng(2)
+    S, T, W = random_instance(rng, 6, 3)
+    g = greedy_pair_assignment(W)
+    used = [s for i, j, _ in g.triples for s in (i, j)]
+    assert len(used) == len(set(used)) and all(i < j for i, j, _ in g.triples)
+    assert sorted(l for *_, l in g.triples) == list(range(6))
+    assert g.value == pytest.approx(sum(W[i, j, l] for i, j, l in g.triples))
+    # pick order: weights never increase from one round to the next
+    w = [W[i, j, l] for i, j, l in g.triples]
+    assert all(a >= b for a, b in zip(w, w[1:]))
+
+
+def test_exact_solvers_equal_brute_force_and_greedy_is_within_a_third():
+    rng = np.random.default_rng(3)
+    for _ in range(60):
+        L = int(rng.integers(1, 4))
+        _, _, W = random_instance(rng, L, int(rng.integers(0, 3)))
+        opt = optimal_pair_assignment(W)
+        assert opt.value == pytest.approx(brute_force(W), abs=1e-12)
+        assert relaxed_pair_assignment(W).value == pytest.approx(brute_force(W, unique_sensors=False), abs=1e-12)
+        g = greedy_pair_assignment(W)
+        assert g.value >= opt.value / 3 - 1e-12  # Theorem 6
+        assert relaxed_pair_assignment(W).value >= opt.value - 1e-12
+
+
+def test_ordered_relaxation_may_reuse_a_pair():
+    # one excellent pair for two targets: the ordered relaxation uses it twice
+    S = np.array([[0.0, 1.0], [1.0, 0.0], [50.0, 50.0], [60.0, 0.0]])
+    T = np.array([[0.0, 0.0], [0.0, 0.0]])
+    W = ob.pair_bounds(S, T[:1], 1.0)
+    W = np.concatenate([W, W], axis=2)
+    plain, ordered = relaxed_pair_assignment(W), relaxed_pair_assignment(W, ordered=True)
+    assert ordered.value == pytest.approx(2 * W[0, 1, 0])
+    assert ordered.value > plain.value
+    assert len({(i, j) for i, j, _ in plain.triples}) == len(plain.triples)
+
+
+@pytest.mark.parametrize(
+    "W, message",
+    [
+        (np.zeros((3, 3, 2)), "N >= 2L"),
+        (np.zeros((4, 3, 1)), "shape"),
+        (np.zeros((4, 4)), "shape"),
+        (np.zeros((4, 4, 0)), "at least one target"),
+        (np.full((4, 4, 1), np.nan), "not finite"),
+        (np.arange(16.0).reshape(4, 4, 1), "symmetric"),
+    ],
+)
+def test_bad_weights(W, message):
+    for solver in (greedy_pair_assignment, greedy_pair_assignment_literal, optimal_pair_assignment):
+        with pytest.raises(ValueError, match=message):
+            solver(W)
+
+
+def test_bad_geometry_for_greedy():
+    with pytest.raises(ValueError, match="N >= 2L"):
+        greedy_pair_assignment(sensors=[[0, 0], [1, 1], [2, 0]], targets=[[5, 5], [6, 6]], u_max=1.0)
+    with pytest.raises(ValueError, match="sensor 1 has a non-finite"):
+        greedy_pair_assignment(sensors=[[0, 0], [np.nan, 1]], targets=[[5, 5]], u_max=1.0)
+    with pytest.raises(ValueError, match="either W or"):
+        greedy_pair_assignment(np.zeros((2, 2, 1)), sensors=[[0, 0], [1, 1]], targets=[[5, 5]])
+    with pytest.raises(ValueError, match="u_max"):
+        greedy_pair_assignment(sensors=[[0, 0], [1, 1]], targets=[[5, 5]])
