@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._validate import as_u_max
-from .bounds import _pair_kernel, relative_vectors
+from .bounds import _normalise, _pair_kernel, relative_vectors
 
 __all__ = [
     "PairAssignment",
@@ -89,39 +89,23 @@ def assignment_value(W, triples) -> float:
 class _TargetQueue:
     """Candidate pairs of one target in greedy order ``(-w, i, j)``, refilled on demand.
 
-    Holds the ``k`` best pairs over the sensors that were free when it was (re)filled. Since
-    weights never change and sensors only leave, the first candidate whose sensors are both
-    free is the target's best free pair, as long as the list is not exhausted; when it is, the
-    column is recomputed over the free sensors.
+    Holds at least the ``k`` best pairs over the sensors that were free when it was (re)filled,
+    and every pair tied with the last of them. Since weights never change and sensors only
+    leave, the first candidate whose sensors are both free is the target's best free pair as long
+    as the list is not exhausted; when it is, the list is refilled over the free sensors.
     """
 
-    def __init__(self, column_fn, l: int, k: int):
-        self.column_fn, self.l, self.k = column_fn, l, k
+    def __init__(self, source, l: int, k: int):
+        self.source, self.l, self.k = source, l, k
         self.cand: list = []
         self.pos = 0
         self.complete = False  # the list holds every pair over the sensors free at fill time
 
     def fill(self, free: np.ndarray) -> None:
-        idx = np.flatnonzero(free)
-        m = idx.size
-        if m < 2:
-            self.cand, self.pos, self.complete = [], 0, True
-            return
-        w = self.column_fn(self.l, idx)  # (m, m) weights over the free sensors
-        iu, ju = np.triu_indices(m, 1)
-        flat = w[iu, ju]
-        total = flat.size
-        if total > self.k:
-            # keep everything tied with the k-th largest so that tie-breaking stays exact
-            kth = np.partition(flat, total - self.k)[total - self.k]
-            keep = np.flatnonzero(flat >= kth)
-            self.complete = False
-        else:
-            keep = np.arange(total)
-            self.complete = True
-        order = np.lexsort((idx[ju[keep]], idx[iu[keep]], -flat[keep]))
-        sel = keep[order]
-        self.cand = list(zip(flat[sel].tolist(), idx[iu[sel]].tolist(), idx[ju[sel]].tolist()))
+        a, b, w, self.complete = self.source.top_pairs(self.l, np.flatnonzero(free), self.k)
+        i, j = np.minimum(a, b), np.maximum(a, b)
+        order = np.lexsort((j, i, -w))
+        self.cand = list(zip(w[order].tolist(), i[order].tolist(), j[order].tolist()))
         self.pos = 0
 
     def head(self, free: np.ndarray):
@@ -137,12 +121,95 @@ class _TargetQueue:
             self.fill(free)
 
 
-def _greedy(column_fn, n: int, n_targets: int, k: int | None = None) -> PairAssignment:
+def _keep_top(a, b, w, k):
+    """The pairs among ``(a, b, w)`` whose weight is at least the ``k``-th largest."""
+    if w.size <= k:
+        return a, b, w
+    kth = np.partition(w, w.size - k)[w.size - k]
+    keep = w >= kth
+    return a[keep], b[keep], w[keep]
+
+
+class _WeightSource:
+    """Pair weights read from a materialised ``W``."""
+
+    def __init__(self, W):
+        self.W = W
+
+    def top_pairs(self, l, idx, k):
+        iu, ju = np.triu_indices(idx.size, 1)
+        a, b = idx[iu], idx[ju]
+        w = self.W[a, b, l]
+        complete = w.size <= k
+        return (*_keep_top(a, b, w, k), complete)
+
+
+class _GeometrySource:
+    """Pair weights computed on demand from geometry, pruned by a distance-only upper bound.
+
+    For rows with squared lengths ``r_i <= r_j``, ``lambda_min <= r_i`` and ``lambda_max >= r_j``
+    (the diagonal of the Gram matrix lies between its eigenvalues), so
+    ``bound^2 <= r_i / (r_j + u^2)``. Given ``tau``, the ``k``-th largest weight of a sample of
+    pairs (a lower bound on the ``k``-th largest weight overall), only pairs with
+    ``r_j <= r_i / tau^2 - u^2`` can reach the top ``k``; with the sensors sorted by distance
+    they form a band, found with ``searchsorted``. The pruning is exact: every pair of weight
+    ``>= tau`` is evaluated.
+    """
+
+    def __init__(self, v, u2):
+        # normalised rows as contiguous (L, N) coordinate arrays, and u_max^2 per target (L,)
+        self.x = np.ascontiguousarray(v[..., 0].T)
+        self.y = np.ascontiguousarray(v[..., 1].T)
+        self.r = self.x * self.x + self.y * self.y
+        self.u2 = u2
+
+    def _weights(self, l, a, b):
+        x, y = self.x[l], self.y[l]
+        return _pair_kernel(x[a], y[a], x[b], y[b], self.u2[l])
+
+    def top_pairs(self, l, idx, k):
+        m = idx.size
+        if m < 2:
+            e = np.zeros(0, dtype=int)
+            return e, e, np.zeros(0), True
+        order = idx[np.argsort(self.r[l, idx], kind="stable")]
+        rs = self.r[l, order]
+        n_pairs = m * (m - 1) // 2
+        if n_pairs <= 4 * k:
+            hi = np.full(m, m)
+        else:
+            # sample: each sensor with its next few neighbours in distance order
+            width = min(m - 1, -(-4 * k // m) + 1)
+            pa, pb = _band(np.minimum(np.arange(m) + width + 1, m))
+            tau = np.partition(self._weights(l, order[pa], order[pb]), pa.size - k)[pa.size - k]
+            if tau <= 0:
+                hi = np.full(m, m)
+            else:
+                limit = rs / (tau * tau * (1 - 1e-9)) - self.u2[l]
+                hi = np.searchsorted(rs, limit, side="right")
+        pa, pb = _band(hi)
+        a, b = order[pa], order[pb]
+        w = self._weights(l, a, b)
+        complete = pa.size == n_pairs and w.size <= k
+        return (*_keep_top(a, b, w, k), complete)
+
+
+def _band(hi):
+    """Positions ``(p, q)``, ``p < q < hi[p]``, of the pairs in a band over a sorted order."""
+    m = hi.size
+    counts = np.maximum(hi - np.arange(m) - 1, 0)
+    p = np.repeat(np.arange(m), counts)
+    starts = np.cumsum(counts) - counts
+    q = p + 1 + (np.arange(p.size) - np.repeat(starts, counts))
+    return p, q
+
+
+def _greedy(source, n: int, n_targets: int, k: int | None = None) -> PairAssignment:
     """Algorithm 1 with a lazily refilled candidate list per target and a global heap."""
     if k is None:
-        k = max(16, 4 * n_targets)
+        k = 64
     free = np.ones(n, dtype=bool)
-    queues = [_TargetQueue(column_fn, l, k) for l in range(n_targets)]
+    queues = [_TargetQueue(source, l, k) for l in range(n_targets)]
     heap = []
     for q in queues:
         q.fill(free)
@@ -171,17 +238,19 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     (ties: smallest ``(i, j, l)``), then removes them. Because the weights do not change between
     rounds, each target keeps a sorted list of its best pairs, computed once and refilled only
     when all of them have lost a sensor; a heap of the targets' current heads gives each round's
-    maximum. The picks equal those of :func:`greedy_pair_assignment_literal`.
+    maximum. From geometry, a target's list is found without evaluating most pairs (see
+    ``_GeometrySource``). The picks equal those of :func:`greedy_pair_assignment_literal`.
 
     Parameters
     ----------
     W : array_like, shape (N, N, L), optional
         Pair weights, symmetric in ``i, j``.
     sensors, targets, u_max, cov : optional
-        Instead of ``W``: the geometry, weighted by :func:`obslib.pair_bounds` (Theorem 4),
-        computed per target on demand so the ``(N, N, L)`` array is never materialised.
+        Instead of ``W``: the geometry, weighted as :func:`obslib.pair_bounds` does (Theorem 4,
+        Mahalanobis with ``cov``), computed on demand so the ``(N, N, L)`` array is never
+        materialised.
     k : int, optional
-        Candidates kept per target between refills (default ``max(16, 4 L)``); affects speed only.
+        Candidates kept per target between refills (default 64); affects speed only.
 
     Returns
     -------
@@ -189,26 +258,22 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
         ``triples`` in pick order, ``value`` their total (Algorithm 1's ``omega(GREEDY)``).
         The 1/3 guarantee is Theorem 6.
     """
+    if k is not None and k < 1:
+        raise ValueError(f"k must be at least 1, got {k}")
     if W is not None:
         if sensors is not None or targets is not None:
             raise ValueError("give either W or sensors/targets, not both")
         arr = _as_weights(W)
         n, n_targets = arr.shape[0], arr.shape[2]
         _check_sizes(n, n_targets)
-        return _greedy(lambda l, idx: arr[np.ix_(idx, idx, [l])][:, :, 0], n, n_targets, k)
+        return _greedy(_WeightSource(arr), n, n_targets, k)
     if sensors is None or targets is None or u_max is None:
         raise ValueError("give W, or sensors=, targets= and u_max=")
     v = relative_vectors(sensors, targets, cov)  # (N, L, 2), validated
     n, n_targets = v.shape[0], v.shape[1]
     _check_sizes(n, n_targets)
-    u2 = as_u_max(u_max, n_targets) ** 2
-    u2 = np.broadcast_to(u2, (n_targets,))
-
-    def column(l, idx):
-        vl = v[idx, l, :]
-        return _pair_kernel(vl[:, None, :], vl[None, :, :], u2[l])
-
-    return _greedy(column, n, n_targets, k)
+    v, u2 = _normalise(v, as_u_max(u_max, n_targets) ** 2)
+    return _greedy(_GeometrySource(v, u2), n, n_targets, k)
 
 
 def greedy_pair_assignment_literal(W) -> PairAssignment:

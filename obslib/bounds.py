@@ -78,21 +78,52 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
     return v
 
 
-def _pair_kernel(vi: np.ndarray, vj: np.ndarray, u2) -> np.ndarray:
-    """Pair bound from the two rows ``vi``, ``vj`` (..., 2), broadcasting; ``u2 = u_max^2``.
+def _pair_kernel(xi, yi, xj, yj, u2):
+    """Pair bound from the rows ``(xi, yi)`` and ``(xj, yj)``, broadcasting; ``u2 = u_max^2``.
 
     The nonzero eigenvalues of ``O^T O`` equal those of the Gram matrix
     ``[[r_i, c], [c, r_j]]`` (``r = ||v||^2``, ``c = v_i . v_j``), so
-    ``lambda_max = (r_i + r_j)/2 + hypot((r_i - r_j)/2, c)`` without cancellation and
-    ``lambda_min = det / lambda_max`` with ``det = (v_i x v_j)^2`` (Lagrange's identity).
-    Hence ``bound = |v_i x v_j| / sqrt(lambda_max (lambda_max + u_max^2))``.
+    ``lambda_max = (r_i + r_j)/2 + sqrt(((r_i - r_j)/2)^2 + c^2)`` without cancellation and
+    ``lambda_min = det / lambda_max`` with ``det = (v_i x v_j)^2`` (Lagrange's identity), hence
+    ``bound = |v_i x v_j| / sqrt(lambda_max (lambda_max + u_max^2))``.
+
+    Every caller (``pair_bounds``, the greedy assignment) goes through this function with rows
+    normalised by :func:`_normalise`, so equal geometry gives bitwise equal weights. The
+    arithmetic is done in place to keep memory traffic low (it is the hot loop of the
+    assignment algorithms).
     """
-    ri = vi[..., 0] ** 2 + vi[..., 1] ** 2
-    rj = vj[..., 0] ** 2 + vj[..., 1] ** 2
-    cross = vi[..., 0] * vj[..., 1] - vi[..., 1] * vj[..., 0]
-    dot = vi[..., 0] * vj[..., 0] + vi[..., 1] * vj[..., 1]
-    lmax = 0.5 * (ri + rj) + np.hypot(0.5 * (ri - rj), dot)
-    return np.abs(cross) / np.sqrt(lmax * (lmax + u2))
+    ri = xi * xi + yi * yi
+    rj = xj * xj + yj * yj
+    cross = np.multiply(xi, yj)
+    cross -= yi * xj
+    dot = np.multiply(xi, xj)
+    dot += yi * yj
+    half = np.subtract(ri, rj)
+    half *= 0.5
+    half *= half
+    dot *= dot
+    dot += half
+    np.sqrt(dot, out=dot)
+    lmax = np.add(ri, rj, out=half)
+    lmax *= 0.5
+    lmax += dot  # lambda_max
+    cross *= cross  # det = lambda_min * lambda_max
+    den = np.add(lmax, u2, out=dot)
+    den *= lmax
+    with np.errstate(invalid="ignore"):
+        cross /= den  # 0/0 only for a zero row, which validation excludes
+    np.sqrt(cross, out=cross)
+    return cross
+
+
+def _normalise(v: np.ndarray, u2: np.ndarray):
+    """Scale each target's rows ``v[:, l]`` by ``1 / max_i ||v_il||`` and ``u2`` by its square.
+
+    The bound is invariant under scaling rows and ``u_max`` together; scaling keeps the squares in
+    :func:`_pair_kernel` far from overflow and underflow whatever the units.
+    """
+    scale = np.sqrt(np.einsum("nlk,nlk->nl", v, v).max(axis=0)) if v.shape[0] else np.ones(v.shape[1])
+    return v / scale[None, :, None], np.broadcast_to(u2, (v.shape[1],)) / scale**2
 
 
 def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
@@ -117,8 +148,9 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
         ``o_l - p_i, o_l - p_j`` (Eq. (7)); symmetric in ``i, j`` and zero on ``i == j``.
     """
     v = relative_vectors(sensors, targets, cov)
-    u2 = as_u_max(u_max, v.shape[1]) ** 2
-    return _pair_kernel(v[:, None, :, :], v[None, :, :, :], u2)
+    v, u2 = _normalise(v, as_u_max(u_max, v.shape[1]) ** 2)
+    x, y = v[..., 0], v[..., 1]  # (N, L)
+    return _pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2)
 
 
 def pair_bound_polar(alpha, theta, u_over_d):
