@@ -16,6 +16,10 @@ assignment
     Unique pair assignment: greedy Algorithm 1, relaxed matching, exact MILP optimum.
 bound_checks
     Numerical audits of Theorems 1-3 and Remark 1.
+measures
+    Theorem 8's measures of the symmetric observability matrix (trace, log det, rank, trace inverse).
+submodularity
+    Exhaustive monotonicity/submodularity audits of set functions; smallest witnesses.
 claims
     The claims ledger: one record per claim of the paper, re-checked.
 profiles
@@ -31,7 +35,9 @@ from .assignment import (
     relaxed_pair_assignment,
 )
 from .bounds import lower_bound, pair_bound_polar, pair_bounds, relative_vectors, worst_case_control
+from .measures import MEASURES, measure, measure_table, symmetric_observability_matrix
 from .observability import inverse_condition_number, observability_matrix, relative_rows
+from .submodularity import audit_set_function, lower_bound_table
 
 __version__ = "0.1.0"
 
@@ -48,4 +54,10 @@ __all__ = [
     "greedy_pair_assignment",
     "relaxed_pair_assignment",
     "optimal_pair_assignment",
+    "MEASURES",
+    "measure",
+    "measure_table",
+    "symmetric_observability_matrix",
+    "audit_set_function",
+    "lower_bound_table",
 ]

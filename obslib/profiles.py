@@ -23,6 +23,14 @@ PROFILES: dict[str, dict[str, dict]] = {
             "n_radii": 40,
             "n_angles": 180,
         },
+        "04_submodularity": {
+            "seed": 0,
+            "u_max": 1.0,
+            "n_instances": 2000,
+            "n_sensors": 6,
+            "eps": 1.0,
+            "min_size": 2,
+        },
     },
     "quick": {
         "01_model_and_bound": {
@@ -31,6 +39,7 @@ PROFILES: dict[str, dict[str, dict]] = {
             "n_radii": 10,
             "n_angles": 60,
         },
+        "04_submodularity": {"n_instances": 200, "n_sensors": 5},
     },
 }
 

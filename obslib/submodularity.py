@@ -1,0 +1,844 @@
+"""Monotonicity and submodularity of set functions, exhaustively, with the smallest witness.
+
+Section IV-B of the paper needs, for the greedy 1/2-approximation of Problem 2, a sensor-set
+function ``f`` that is
+
+* **monotone increasing**: ``f(A) <= f(A + x)`` for every set ``A`` and sensor ``x``;
+* **submodular** (diminishing returns): ``f(A + x) - f(A) >= f(B + x) - f(B)`` for all
+  ``A`` subset of ``B`` and ``x`` not in ``B``.
+
+Theorem 7 says Theorem 1's lower bound ``omega(S)`` is neither, by two counter-examples
+(Cases 1 and 2, Fig. 3); Theorem 8 says four measures of ``O^T O`` are both
+(:mod:`obslib.measures`). This module decides such claims by brute force over a small ground
+set (``N <= 10``): every subset is evaluated **once** into a table of ``2**N`` values, and all
+additions ``(A, x)`` and all nested triples ``(A, B, x)`` are compared at once with NumPy
+(fewer than ``N 3**(N-1)`` triples: 191 710 for ``N = 10``).
+
+Conventions
+-----------
+Subsets.
+    Elements are the indices ``0 .. N-1`` of the ground set. The set function is called with
+    a sorted tuple of indices (``()`` for the empty set). Internally subset ``k`` of the table
+    is the set of bits of ``k`` (:func:`obslib.measures.subset_masks`).
+Smallest sets compared, ``min_size``.
+    Only sets with at least ``min_size`` elements enter a comparison (``A`` and hence ``B``,
+    ``A + x``, ``B + x``). With ``min_size = 0`` the whole lattice is used, the empty set
+    included. Theorem 1 is stated for ``N >= 2`` and the bound is 0 for fewer sensors
+    (Theorem 2), so ``omega`` *trivially* breaks submodularity at the bottom of the lattice
+    (``omega(x) - omega({}) = 0 < omega({y, x}) - omega({y})``); ``min_size = 2`` asks the
+    meaningful question, among sets on which Theorem 1 is defined. Values of smaller sets are
+    not evaluated.
+Tolerance.
+    A difference counts only beyond ``tol = rtol * max |f| + atol`` (over the compared sets;
+    defaults ``1e-9`` and ``1e-12``), so rounding never makes a witness: a modular function
+    such as the trace shows neither violation.
+Order of witnesses (documented, deterministic).
+    Subsets are compared as sorted index tuples, lexicographically (Python tuple order, so
+    ``(0,) < (0, 1) < (1,)``). A monotonicity witness ``(A, x)`` has ``f(A + x) < f(A) - tol``;
+    the smallest is the one with the smallest ``|A + x|``, then the smallest ``A + x``, then the
+    smallest ``A``. A submodularity witness ``(A, B, x)``, ``A`` a proper subset of ``B``,
+    ``x`` not in ``B``, has ``f(B + x) - f(B) > f(A + x) - f(A) + tol``; the smallest has the
+    smallest ``|B|``, then the smallest ``B``, then ``A``, then ``x``. All nested pairs
+    ``A`` proper subset of ``B`` are compared, not only single steps ``B = A + y``, so the
+    counts are complete. (A violation along a chain has a violating single step inside it, so
+    the smallest ``|B|`` is the same either way.)
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+from functools import lru_cache
+from numbers import Real
+from typing import Callable
+
+import numpy as np
+
+from ._validate import as_point, as_points, as_u_max, check_distinct
+from .bounds import lower_bound
+from .measures import MEASURES, _tr_det, measure_from_vectors, subset_masks
+from .observability import relative_rows
+
+__all__ = [
+    "MAX_GROUND_SET",
+    "MonotonicityWitness",
+    "SubmodularityWitness",
+    "SetFunctionAudit",
+    "set_function_table",
+    "audit_set_function",
+    "audit_tables",
+    "lower_bound_table",
+    "lower_bound_tables",
+    "lower_bound_set_function",
+    "FIG3_TARGET",
+    "FIG3_U_MAX",
+    "FIG3_CASES",
+    "PRINTED",
+    "PRINTED_WITNESS",
+    "CaseAudit",
+    "case_audit",
+    "random_instances",
+    "INSTANCE_KINDS",
+    "CONFIGS",
+    "MeasureAudit",
+    "measure_audit",
+    "theorem8_audit",
+    "theorem8_verdicts",
+    "LowerBoundAudit",
+    "lower_bound_audit",
+]
+
+#: Largest ground set the exhaustive check accepts.
+MAX_GROUND_SET = 10
+RTOL = 1e-9
+ATOL = 1e-12
+
+
+# ---------------------------------------------------------------------------------------------
+# enumeration
+# ---------------------------------------------------------------------------------------------
+
+
+def _members(mask: int, n: int) -> tuple:
+    return tuple(i for i in range(n) if (mask >> i) & 1)
+
+
+@lru_cache(maxsize=None)
+def _lex_rank(n: int) -> np.ndarray:
+    """Rank of each bitmask among all subsets ordered as sorted tuples, lexicographically."""
+    order = sorted(range(2**n), key=lambda m: _members(m, n))
+    rank = np.empty(2**n, dtype=np.int64)
+    rank[order] = np.arange(2**n)
+    return rank
+
+
+@lru_cache(maxsize=None)
+def _popcount(n: int) -> np.ndarray:
+    return subset_masks(n).sum(axis=1)
+
+
+@lru_cache(maxsize=None)
+def _additions(n: int, min_size: int):
+    """All ``(A, x)``, ``x`` not in ``A``, ``|A| >= min_size``, in witness order."""
+    pc, lex = _popcount(n), _lex_rank(n)
+    a = np.repeat(np.arange(2**n), n)
+    x = np.tile(np.arange(n), 2**n)
+    keep = (((a >> x) & 1) == 0) & (pc[a] >= min_size)
+    a, x = a[keep], x[keep]
+    ax = a | (1 << x)
+    order = np.lexsort((lex[a], lex[ax], pc[ax]))
+    return a[order], x[order]
+
+
+@lru_cache(maxsize=None)
+def _triples(n: int, min_size: int):
+    """All ``(A, B, x)``, ``A`` proper subset of ``B``, ``x`` not in ``B``, in witness order."""
+    pc, lex = _popcount(n), _lex_rank(n)
+    codes = np.arange(3**n)
+    digits = (codes[:, None] // 3 ** np.arange(n)[None, :]) % 3  # 0: out of B, 1: B \ A, 2: A
+    bits = 1 << np.arange(n)
+    a = (digits == 2) @ bits
+    b = (digits >= 1) @ bits
+    out = digits == 0  # candidates for x
+    rows, x = np.nonzero(out)
+    a, b = a[rows], b[rows]
+    keep = (pc[a] >= min_size) & (a != b)
+    a, b, x = a[keep], b[keep], x[keep]
+    order = np.lexsort((x, lex[a], lex[b], pc[b]))
+    return a[order], b[order], x[order]
+
+
+def _ground_size(ground) -> int:
+    if isinstance(ground, (int, np.integer)) and not isinstance(ground, bool):
+        n = int(ground)
+        if n < 0:
+            raise ValueError(f"ground set size must be non-negative, got {n}")
+    else:
+        pts = as_points(ground, "sensors")
+        check_distinct(pts)
+        n = pts.shape[0]
+    if n > MAX_GROUND_SET:
+        raise ValueError(f"ground set of {n} elements is too large for the exhaustive check "
+                         f"(max {MAX_GROUND_SET})")
+    return n
+
+
+def _check_min_size(min_size, n: int) -> int:
+    if not isinstance(min_size, (int, np.integer)) or isinstance(min_size, bool) or min_size < 0:
+        raise ValueError(f"min_size must be a non-negative integer, got {min_size!r}")
+    if min_size > n:
+        raise ValueError(f"min_size {min_size} exceeds the ground set size {n}")
+    return int(min_size)
+
+
+# ---------------------------------------------------------------------------------------------
+# witnesses and the audit
+# ---------------------------------------------------------------------------------------------
+
+
+def _num(v: float, digits: int) -> str:
+    """A value for a difference ``a - b``: negative values in parentheses."""
+    return f"({v:.{digits}f})" if v < 0 else f"{v:.{digits}f}"
+
+
+def _fmt_set(s: tuple, labels) -> str:
+    if labels is None:
+        return "{" + ", ".join(str(i) for i in s) + "}"
+    return "{" + ", ".join(labels[i] for i in s) + "}"
+
+
+@dataclass(frozen=True)
+class MonotonicityWitness:
+    """``f(A + x) < f(A)``: adding ``x`` to ``A`` lowers the value (0-based indices)."""
+
+    A: tuple
+    x: int
+    f_A: float
+    f_Ax: float
+
+    @property
+    def B(self) -> tuple:
+        """``A + x``."""
+        return tuple(sorted(self.A + (self.x,)))
+
+    @property
+    def gain(self) -> float:
+        return self.f_Ax - self.f_A
+
+    def describe(self, labels=None, digits: int = 4) -> str:
+        lab = (lambda i: labels[i]) if labels is not None else str
+        return (f"f({_fmt_set(self.B, labels)}) = {self.f_Ax:.{digits}f} < "
+                f"f({_fmt_set(self.A, labels)}) = {self.f_A:.{digits}f}: adding {lab(self.x)} "
+                f"changes f by {self.gain:+.{digits}f}")
+
+    def as_dict(self) -> dict:
+        d = asdict(self)
+        d.update(A=list(self.A), B=list(self.B), gain=self.gain)
+        return d
+
+
+@dataclass(frozen=True)
+class SubmodularityWitness:
+    """``f(B + x) - f(B) > f(A + x) - f(A)`` with ``A`` a proper subset of ``B``, ``x`` not in ``B``."""
+
+    A: tuple
+    B: tuple
+    x: int
+    f_A: float
+    f_Ax: float
+    f_B: float
+    f_Bx: float
+
+    @property
+    def gain_A(self) -> float:
+        """Marginal gain of ``x`` at the smaller set, ``f(A + x) - f(A)``."""
+        return self.f_Ax - self.f_A
+
+    @property
+    def gain_B(self) -> float:
+        """Marginal gain of ``x`` at the larger set, ``f(B + x) - f(B)``."""
+        return self.f_Bx - self.f_B
+
+    def describe(self, labels=None, digits: int = 4) -> str:
+        lab = (lambda i: labels[i]) if labels is not None else str
+        A, B = _fmt_set(self.A, labels), _fmt_set(self.B, labels)
+        d = digits
+        return (f"gain of {lab(self.x)} at A = {A}: {_num(self.f_Ax, d)} - {_num(self.f_A, d)} "
+                f"= {self.gain_A:+.{d}f} < gain at B = {B}: {_num(self.f_Bx, d)} - "
+                f"{_num(self.f_B, d)} = {self.gain_B:+.{d}f}")
+
+    def as_dict(self) -> dict:
+        d = asdict(self)
+        d.update(A=list(self.A), B=list(self.B), gain_A=self.gain_A, gain_B=self.gain_B)
+        return d
+
+
+@dataclass(frozen=True)
+class SetFunctionAudit:
+    """Exhaustive check of one set function over a ground set of ``n`` elements.
+
+    Counts are over all additions ``(A, x)`` and all nested triples ``(A, B, x)`` among sets
+    of at least ``min_size`` elements; witnesses are the smallest in the documented order.
+    """
+
+    n: int
+    min_size: int
+    tol: float
+    n_additions: int  #: pairs ``(A, x)`` compared
+    n_decreases: int  #: ``f(A + x) < f(A) - tol``
+    n_increases: int  #: ``f(A + x) > f(A) + tol``
+    n_triples: int  #: triples ``(A, B, x)`` compared
+    n_submodular_violations: int  #: gain at ``B`` exceeds gain at ``A`` by more than ``tol``
+    n_supermodular_violations: int  #: gain at ``A`` exceeds gain at ``B`` by more than ``tol``
+    max_decrease: float  #: largest ``f(A) - f(A + x)`` (negative: strictly increasing)
+    max_excess: float  #: largest ``gain_B - gain_A`` (positive: not submodular)
+    monotone_witness: MonotonicityWitness | None  #: smallest decrease
+    increase_witness: MonotonicityWitness | None  #: smallest increase (breaks "decreasing")
+    submodular_witness: SubmodularityWitness | None  #: smallest violation of submodularity
+
+    @property
+    def monotone_increasing(self) -> bool:
+        return self.n_decreases == 0
+
+    @property
+    def monotone_decreasing(self) -> bool:
+        return self.n_increases == 0
+
+    @property
+    def submodular(self) -> bool:
+        return self.n_submodular_violations == 0
+
+    @property
+    def supermodular(self) -> bool:
+        return self.n_supermodular_violations == 0
+
+    @property
+    def modular(self) -> bool:
+        return self.submodular and self.supermodular
+
+    def as_dict(self) -> dict:
+        out = {k: getattr(self, k) for k in (
+            "n", "min_size", "tol", "n_additions", "n_decreases", "n_increases", "n_triples",
+            "n_submodular_violations", "n_supermodular_violations", "max_decrease", "max_excess",
+            "monotone_increasing", "monotone_decreasing", "submodular", "modular")}
+        for k in ("monotone_witness", "increase_witness", "submodular_witness"):
+            w = getattr(self, k)
+            out[k] = None if w is None else w.as_dict()
+        return out
+
+
+def set_function_table(ground, f: Callable[[tuple], float], min_size: int = 0) -> np.ndarray:
+    """Evaluate ``f`` once on every subset with at least ``min_size`` elements.
+
+    Parameters
+    ----------
+    ground : int or array_like, shape (N, 2)
+        The ground set: its size, or the sensors themselves (validated: finite, distinct).
+    f : callable
+        ``f(idx) -> float`` for a sorted tuple of indices ``idx``.
+    min_size : int
+        Smaller sets are not evaluated (their entries are NaN).
+
+    Returns
+    -------
+    ndarray, shape (2**N,)
+        ``table[k]`` is ``f`` of the set of bits of ``k``.
+
+    Raises
+    ------
+    ValueError
+        If ``f`` returns something that is not a finite real number (the message names the set).
+    """
+    n = _ground_size(ground)
+    m = _check_min_size(min_size, n)
+    if not callable(f):
+        raise ValueError(f"f must be callable, got {type(f).__name__}")
+    pc = _popcount(n)
+    out = np.full(2**n, np.nan)
+    for k in range(2**n):
+        if pc[k] < m:
+            continue
+        idx = _members(k, n)
+        v = f(idx)
+        if isinstance(v, np.ndarray) and v.shape == ():
+            v = v.item()
+        if not isinstance(v, Real) or isinstance(v, bool) or not np.isfinite(v):
+            raise ValueError(f"f{idx} = {v!r} is not a finite real number")
+        out[k] = float(v)
+    return out
+
+
+def audit_tables(values, n: int, min_size: int = 0, rtol: float = RTOL,
+                 atol: float = ATOL) -> list[SetFunctionAudit]:
+    """Vectorised audit of many set functions given as tables, one row each.
+
+    Parameters
+    ----------
+    values : array_like, shape (I, 2**n) or (2**n,)
+        Tables as made by :func:`set_function_table`, :func:`lower_bound_tables` or
+        :func:`obslib.measures.measure_from_vectors`; entries of sets below ``min_size`` are
+        ignored.
+    n : int
+        Ground set size.
+    min_size, rtol, atol
+        See the module docstring.
+
+    Returns
+    -------
+    list of SetFunctionAudit
+    """
+    n = _ground_size(int(n))
+    m = _check_min_size(min_size, n)
+    v = np.asarray(values, dtype=float)
+    if v.ndim == 1:
+        v = v[None, :]
+    if v.ndim != 2 or v.shape[1] != 2**n:
+        raise ValueError(f"values must have shape (I, {2**n}), got {np.shape(values)}")
+    if not (rtol >= 0 and atol >= 0):
+        raise ValueError("rtol and atol must be non-negative")
+    used = _popcount(n) >= m
+    finite = np.isfinite(v[:, used])
+    if not finite.all():
+        i, j = (int(t) for t in np.argwhere(~finite)[0])
+        k = int(np.flatnonzero(used)[j])
+        raise ValueError(f"table {i}: value of set {_members(k, n)} is {v[i, k]}, not finite "
+                         "(raise min_size or regularise the function)")
+    tol = rtol * np.abs(v[:, used]).max(axis=1, initial=0.0) + atol
+
+    pa, px = _additions(n, m)
+    ta, tb, tx = _triples(n, m)
+    pax = pa | (1 << px)
+    tax, tbx = ta | (1 << tx), tb | (1 << tx)
+    n_i = v.shape[0]
+    res = {k: np.zeros(n_i, dtype=np.int64) for k in ("dec", "inc", "sub", "sup")}
+    first = {k: np.full(n_i, -1, dtype=np.int64) for k in ("dec", "inc", "sub")}
+    max_dec = np.full(n_i, -np.inf)
+    max_ex = np.full(n_i, -np.inf)
+    chunk = max(1, 4_000_000 // max(1, len(ta) + len(pa)))
+    for s in range(0, n_i, chunk):
+        vv, tt = v[s:s + chunk], tol[s:s + chunk, None]
+        sl = slice(s, s + vv.shape[0])
+        if len(pa):
+            g = vv[:, pax] - vv[:, pa]
+            for key, viol in (("dec", g < -tt), ("inc", g > tt)):
+                res[key][sl] = viol.sum(axis=1)
+                first[key][sl] = np.where(viol.any(axis=1), viol.argmax(axis=1), -1)
+            max_dec[sl] = (-g).max(axis=1)
+        if len(ta):
+            ex = (vv[:, tbx] - vv[:, tb]) - (vv[:, tax] - vv[:, ta])
+            sub = ex > tt
+            res["sub"][sl] = sub.sum(axis=1)
+            res["sup"][sl] = (ex < -tt).sum(axis=1)
+            first["sub"][sl] = np.where(sub.any(axis=1), sub.argmax(axis=1), -1)
+            max_ex[sl] = ex.max(axis=1)
+
+    out = []
+    for i in range(n_i):
+        row = v[i]
+
+        def mono(j):
+            if j < 0:
+                return None
+            a, x = int(pa[j]), int(px[j])
+            return MonotonicityWitness(_members(a, n), x, float(row[a]), float(row[a | (1 << x)]))
+
+        j = int(first["sub"][i])
+        sw = None
+        if j >= 0:
+            a, b, x = int(ta[j]), int(tb[j]), int(tx[j])
+            sw = SubmodularityWitness(_members(a, n), _members(b, n), x, float(row[a]),
+                                      float(row[a | (1 << x)]), float(row[b]),
+                                      float(row[b | (1 << x)]))
+        out.append(SetFunctionAudit(
+            n=n, min_size=m, tol=float(tol[i]), n_additions=len(pa),
+            n_decreases=int(res["dec"][i]), n_increases=int(res["inc"][i]), n_triples=len(ta),
+            n_submodular_violations=int(res["sub"][i]),
+            n_supermodular_violations=int(res["sup"][i]),
+            max_decrease=float(max_dec[i]), max_excess=float(max_ex[i]),
+            monotone_witness=mono(int(first["dec"][i])), increase_witness=mono(int(first["inc"][i])),
+            submodular_witness=sw,
+        ))
+    return out
+
+
+def audit_set_function(ground, f: Callable[[tuple], float] | None = None, *, values=None,
+                       min_size: int = 0, rtol: float = RTOL, atol: float = ATOL) -> SetFunctionAudit:
+    """Check a set function for monotonicity and submodularity over all nested subsets.
+
+    Parameters
+    ----------
+    ground : int or array_like, shape (N, 2)
+        The ground set (its size, or the sensors), ``N <= 10``.
+    f : callable, optional
+        ``f(idx) -> float`` on sorted index tuples; evaluated once per subset.
+    values : array_like, shape (2**N,), optional
+        Precomputed table instead of ``f`` (exactly one of the two).
+    min_size : int
+        Only sets with at least this many elements are compared (see the module docstring).
+    rtol, atol : float
+        Tolerance ``rtol * max |f| + atol`` below which differences are rounding.
+
+    Returns
+    -------
+    SetFunctionAudit
+        Counts of violations and the smallest witnesses.
+
+    Examples
+    --------
+    >>> a = audit_set_function(3, lambda s: float(len(s) >= 2))   # a threshold: not submodular
+    >>> a.monotone_increasing, a.submodular
+    (True, False)
+    >>> w = a.submodular_witness
+    >>> w.A, w.B, w.x, w.gain_A, w.gain_B
+    ((), (0,), 1, 0.0, 1.0)
+    """
+    n = _ground_size(ground)
+    if (f is None) == (values is None):
+        raise ValueError("give exactly one of f and values")
+    if values is None:
+        values = set_function_table(n, f, min_size)
+    return audit_tables(values, n, min_size, rtol, atol)[0]
+
+
+# ---------------------------------------------------------------------------------------------
+# Theorem 1's bound as a set function
+# ---------------------------------------------------------------------------------------------
+
+
+def _bound_from_tr_det(tr, det, lmax, u2):
+    lmin = np.where(lmax > 0, det / np.where(lmax > 0, lmax, 1.0), 0.0)
+    den = lmax + u2
+    return np.where(den > 0, np.sqrt(np.maximum(lmin, 0.0) / np.where(den > 0, den, 1.0)), 0.0)
+
+
+def lower_bound_tables(vectors, u_max) -> np.ndarray:
+    """Theorem 1's bound for all subsets of many instances at once.
+
+    ``sqrt(lambda_min / (lambda_max + u_max^2))`` with the eigenvalues of ``O(o)^T O(o)`` from
+    ``tr`` and the Cauchy-Binet ``det`` (Eq. (6), (25)); 0 for fewer than two sensors.
+
+    Parameters
+    ----------
+    vectors : array_like, shape (I, N, 2)
+        Rows ``o - p_i`` of each instance.
+    u_max : float or array_like, shape (I,)
+
+    Returns
+    -------
+    ndarray, shape (I, 2**N)
+    """
+    v = np.asarray(vectors, dtype=float)
+    if v.ndim != 3 or v.shape[-1] != 2:
+        raise ValueError(f"vectors must have shape (I, N, 2), got {v.shape}")
+    u = as_u_max(u_max, v.shape[0])
+    tr, det, lmax = _tr_det(v, subset_masks(v.shape[1]))
+    u2 = (u**2)[:, None] if u.ndim == 1 else u**2
+    return _bound_from_tr_det(tr, det, lmax, u2)
+
+
+def lower_bound_table(sensors, target, u_max) -> np.ndarray:
+    """Theorem 1's bound ``omega(S)`` for every subset ``S`` of ``sensors``, shape ``(2**N,)``.
+
+    Vectorised; agrees with :func:`obslib.lower_bound` (SVD) to rounding.
+    """
+    rows = relative_rows(sensors, target)
+    return lower_bound_tables(rows[None], float(as_u_max(u_max)))[0]
+
+
+def lower_bound_set_function(sensors, target, u_max) -> Callable[[tuple], float]:
+    """``omega`` as a set function of index tuples, each value by :func:`obslib.lower_bound` (SVD)."""
+    s = as_points(sensors, "sensors")
+    relative_rows(s, target)
+    o = as_point(target, "target")
+    u = float(as_u_max(u_max))
+
+    def omega(idx: tuple) -> float:
+        return lower_bound(s[list(idx)].reshape(-1, 2), o, u)
+
+    return omega
+
+
+# ---------------------------------------------------------------------------------------------
+# The paper's counter-examples (Theorem 7, Fig. 3)
+# ---------------------------------------------------------------------------------------------
+
+_R3 = float(np.sqrt(3.0))
+#: Target ``t_1`` of both cases of Fig. 3.
+FIG3_TARGET = np.array([_R3, 1.0])
+#: ``u_{o_1, max}`` of both cases.
+FIG3_U_MAX = 1.0
+#: Sensors of Fig. 3 (a) and (b); row ``i`` is ``s_{i+1}``.
+FIG3_CASES = {
+    "case1": np.array([[0.0, 0.0], [2 * _R3, -9.0], [_R3, 3.0]]),
+    "case2": np.array([[0.0, 0.0], [2 * _R3, 0.0], [_R3, 0.1], [_R3, 3.0]]),
+}
+#: Values printed in the proof of Theorem 7 (0-based sensor indices).
+PRINTED = {
+    "case1": {(0, 2): 0.5345, (0, 1, 2): 0.1823},
+    "case2": {(0, 1, 2): 0.3310, (0, 1): 0.5345, (0, 1, 2, 3): 0.8765, (0, 1, 3): 0.9258},
+}
+#: The comparison each case prints: Case 1 ``omega({s1,s3}) > omega({s1,s2,s3})`` (a
+#: monotonicity witness ``A = {s1, s3}``, ``x = s2``); Case 2 ``omega({s1,s2,s3}) -
+#: omega({s1,s2}) < omega({s1,s2,s4,s3}) - omega({s1,s2,s4})`` (a submodularity witness
+#: ``A = {s1, s2}``, ``B = {s1, s2, s4}``, ``x = s3``).
+PRINTED_WITNESS = {
+    "case1": {"A": (0, 2), "x": 1},
+    "case2": {"A": (0, 1), "B": (0, 1, 3), "x": 2},
+}
+
+
+@dataclass(frozen=True)
+class CaseAudit:
+    """One case of Theorem 7 recomputed: printed values against ours and the printed comparison."""
+
+    case: str
+    values: dict  #: ``omega`` of every subset (sorted index tuple -> float), by SVD
+    printed: dict  #: the printed values
+    matches: dict  #: printed value equals ours to the 4 printed decimals
+    printed_sides: tuple  #: the two sides of the printed comparison, from the printed values
+    our_sides: tuple  #: the same two sides from our values
+    shows_with_printed: bool  #: the printed comparison proves the property's failure as printed
+    shows_with_ours: bool  #: ... and with our values
+    audits: dict  #: ``min_size -> SetFunctionAudit`` of the case's whole geometry
+
+    @property
+    def all_match(self) -> bool:
+        return all(self.matches.values())
+
+    @property
+    def verdict(self) -> str:
+        """Ledger status: ``refuted`` if our values do not show the printed comparison,
+        ``reproduced`` if they do and every printed value matches, ``partly`` otherwise."""
+        if not self.shows_with_ours:
+            return "refuted"
+        return "reproduced" if self.all_match else "partly"
+
+
+def _printed_sides(case: str, val: dict) -> tuple:
+    w = PRINTED_WITNESS[case]
+    if case == "case1":
+        A = w["A"]
+        return val[A], val[tuple(sorted(A + (w["x"],)))]
+    A, B, x = w["A"], w["B"], w["x"]
+    ax, bx = tuple(sorted(A + (x,))), tuple(sorted(B + (x,)))
+    return val[ax] - val[A], val[bx] - val[B]
+
+
+def case_audit(case: str, min_sizes=(0, 2), u_max: float = FIG3_U_MAX, rtol: float = RTOL,
+               atol: float = ATOL) -> CaseAudit:
+    """Recompute Case 1 or Case 2 of Theorem 7 with :func:`obslib.lower_bound` (SVD).
+
+    Case 1 claims ``omega`` is not monotone by ``omega(A) > omega(A + x)`` (left side >
+    right side); Case 2 claims it is not submodular by ``gain_A < gain_B`` (left < right).
+    Each claim is re-decided from our values; the whole geometry is also searched for the
+    smallest witnesses at each ``min_size`` in ``min_sizes``.
+    """
+    if case not in FIG3_CASES:
+        raise ValueError(f"unknown case {case!r}; known: {list(FIG3_CASES)}")
+    sensors = FIG3_CASES[case]
+    n = sensors.shape[0]
+    omega = lower_bound_set_function(sensors, FIG3_TARGET, u_max)
+    table = set_function_table(sensors, omega)
+    values = {_members(k, n): float(table[k]) for k in range(2**n)}
+    printed = PRINTED[case]
+    matches = {k: abs(values[k] - p) <= 0.5e-4 + 1e-12 for k, p in printed.items()}
+    p_full = dict(values)
+    p_full.update(printed)
+    ps, os_ = _printed_sides(case, p_full), _printed_sides(case, values)
+    tol = rtol * max(abs(t) for t in values.values()) + atol
+    if case == "case1":
+        shows_p, shows_o = ps[0] > ps[1], os_[0] > os_[1] + tol
+    else:
+        shows_p, shows_o = ps[0] < ps[1], os_[0] < os_[1] - tol
+    audits = {m: audit_set_function(n, values=table, min_size=m, rtol=rtol, atol=atol)
+              for m in min_sizes}
+    return CaseAudit(case, values, dict(printed), matches, tuple(map(float, ps)),
+                     tuple(map(float, os_)), bool(shows_p), bool(shows_o), audits)
+
+
+# ---------------------------------------------------------------------------------------------
+# random instances and the audits of Theorems 7 and 8
+# ---------------------------------------------------------------------------------------------
+
+#: ``generic``: target and sensors uniform in the square ``[0, side]^2``; ``lines``: sensors on
+#: one or two random lines through the target, so that many subsets are rank-deficient.
+INSTANCE_KINDS = ("generic", "lines")
+
+
+def random_instances(n_instances: int, n_sensors: int, seed: int, kind: str = "generic",
+                     side: float = 10.0):
+    """Seeded random instances: sensors ``(I, N, 2)`` and targets ``(I, 2)``.
+
+    Parameters
+    ----------
+    n_instances, n_sensors : int
+    seed : int
+        Seed of :func:`numpy.random.default_rng`.
+    kind : str
+        One of :data:`INSTANCE_KINDS`.
+    side : float
+        Side of the square the points are drawn from (default 10, the scale of Fig. 3).
+    """
+    if kind not in INSTANCE_KINDS:
+        raise ValueError(f"kind must be one of {INSTANCE_KINDS}, got {kind!r}")
+    if n_instances < 1 or not (1 <= n_sensors <= MAX_GROUND_SET):
+        raise ValueError(f"need n_instances >= 1 and 1 <= n_sensors <= {MAX_GROUND_SET}")
+    rng = np.random.default_rng(seed)
+    targets = rng.uniform(0, side, size=(n_instances, 2))
+    if kind == "generic":
+        sensors = rng.uniform(0, side, size=(n_instances, n_sensors, 2))
+    else:
+        n_lines = rng.integers(1, 3, size=n_instances)
+        phi = rng.uniform(0, np.pi, size=(n_instances, 2))
+        which = rng.integers(0, 2, size=(n_instances, n_sensors)) % n_lines[:, None]
+        ang = np.take_along_axis(phi, which, axis=1)
+        dist = rng.uniform(0.05, 1.0, size=(n_instances, n_sensors)) * side
+        sign = rng.choice([-1.0, 1.0], size=(n_instances, n_sensors))
+        d = (sign * dist)[..., None] * np.stack([np.cos(ang), np.sin(ang)], axis=-1)
+        sensors = targets[:, None, :] + d
+    return sensors, targets
+
+
+#: Configurations of the Theorem 8 audit: (name, eps is used, u row, min_size, instance kinds).
+CONFIGS = (
+    ("eps I, no u row", True, False, 0, INSTANCE_KINDS),
+    ("eps I, u row", True, True, 0, INSTANCE_KINDS),
+    ("eps = 0, no u row, |S| >= 2", False, False, 2, ("generic",)),
+)
+
+
+@dataclass(frozen=True)
+class MeasureAudit:
+    """Counts of instances violating each property, for one measure and configuration."""
+
+    measure: str
+    config: str
+    eps: float
+    min_size: int
+    n_instances: int
+    n_sensors: int
+    n_not_increasing: int  #: instances with some ``f(A + x) < f(A)``
+    n_not_decreasing: int  #: instances with some ``f(A + x) > f(A)``
+    n_not_submodular: int
+    n_not_supermodular: int
+    witness: dict | None  #: smallest submodularity witness over instances (with its geometry)
+    monotone_witness: dict | None  #: smallest decrease over instances (with its geometry)
+
+    @property
+    def increasing(self) -> bool:
+        return self.n_not_increasing == 0
+
+    @property
+    def submodular(self) -> bool:
+        return self.n_not_submodular == 0
+
+    def as_dict(self) -> dict:
+        d = asdict(self)
+        d.update(increasing=self.increasing, submodular=self.submodular)
+        return d
+
+
+def _smallest(audits, attr, sensors, targets, us):
+    best = None
+    for i, a in enumerate(audits):
+        w = getattr(a, attr)
+        if w is None:
+            continue
+        key = (len(w.B), i)
+        if best is None or key < best[0]:
+            best = (key, i, w)
+    if best is None:
+        return None
+    _, i, w = best
+    d = w.as_dict()
+    d.update(instance=i, sensors=sensors[i].tolist(), target=targets[i].tolist(),
+             u=None if us is None else us[i].tolist())
+    return d
+
+
+def measure_audit(name: str, n_instances: int, n_sensors: int, seed: int, eps: float,
+                  u_max: float, config: str) -> MeasureAudit:
+    """Audit one Theorem 8 measure on seeded random instances under one of :data:`CONFIGS`.
+
+    Every instance is checked exhaustively over all nested subsets (:func:`audit_tables`);
+    ``n_instances`` are drawn of each instance kind of the configuration. With a ``u`` row,
+    each instance gets a control of norm ``u_max`` in a random direction.
+    """
+    if name not in MEASURES:
+        raise ValueError(f"unknown measure {name!r}; known: {MEASURES}")
+    cfg = {c[0]: c for c in CONFIGS}
+    if config not in cfg:
+        raise ValueError(f"unknown config {config!r}; known: {list(cfg)}")
+    _, use_eps, use_u, min_size, kinds = cfg[config]
+    e = float(eps) if use_eps else 0.0
+    masks = subset_masks(n_sensors)
+    all_s, all_t, all_u, audits = [], [], [], []
+    for k, kind in enumerate(kinds):
+        s, t = random_instances(n_instances, n_sensors, seed + 7919 * k, kind)
+        us = None
+        if use_u:
+            phi = np.random.default_rng(seed + 104729 + k).uniform(0, 2 * np.pi, n_instances)
+            us = u_max * np.column_stack([np.cos(phi), np.sin(phi)])
+            all_u.append(us)
+        vals = measure_from_vectors(t[:, None, :] - s, masks, name, e, us)
+        audits += audit_tables(vals, n_sensors, min_size)
+        all_s.append(s)
+        all_t.append(t)
+    s, t = np.concatenate(all_s), np.concatenate(all_t)
+    us = np.concatenate(all_u) if use_u else None
+    return MeasureAudit(
+        measure=name, config=config, eps=e, min_size=min_size, n_instances=len(audits),
+        n_sensors=n_sensors,
+        n_not_increasing=sum(not a.monotone_increasing for a in audits),
+        n_not_decreasing=sum(not a.monotone_decreasing for a in audits),
+        n_not_submodular=sum(not a.submodular for a in audits),
+        n_not_supermodular=sum(not a.supermodular for a in audits),
+        witness=_smallest(audits, "submodular_witness", s, t, us),
+        monotone_witness=_smallest(audits, "monotone_witness", s, t, us),
+    )
+
+
+@lru_cache(maxsize=8)
+def theorem8_audit(n_instances: int, n_sensors: int, seed: int, eps: float,
+                   u_max: float) -> tuple[MeasureAudit, ...]:
+    """Every measure of :data:`obslib.measures.MEASURES` under every one of :data:`CONFIGS`."""
+    return tuple(measure_audit(name, n_instances, n_sensors, seed, eps, u_max, c[0])
+                 for name in MEASURES for c in CONFIGS)
+
+
+def theorem8_verdicts(rows) -> dict:
+    """Ledger status of Theorem 8 for each printed measure, from :func:`theorem8_audit` rows.
+
+    The claim is "monotone increasing and submodular". ``trace``, ``logdet``, ``rank``:
+    ``reproduced`` when no instance of any configuration violates either property, ``partly``
+    when one of the two holds, ``refuted`` when neither does. ``trace_inverse``: ``reproduced``
+    if the trace of the inverse itself has both properties, ``partly`` if only its negative
+    (the form that can increase) has both, ``refuted`` otherwise.
+    """
+
+    def both(name):
+        sel = [r for r in rows if r.measure == name]
+        if not sel:
+            raise ValueError(f"no audit rows for measure {name!r}")
+        return all(r.increasing for r in sel), all(r.submodular for r in sel)
+
+    out = {}
+    for name in ("trace", "logdet", "rank"):
+        inc, sub = both(name)
+        out[name] = "reproduced" if inc and sub else ("partly" if inc or sub else "refuted")
+    inc, sub = both("trace_inverse")
+    ninc, nsub = both("neg_trace_inverse")
+    out["trace_inverse"] = ("reproduced" if inc and sub else
+                            ("partly" if ninc and nsub else "refuted"))
+    return out
+
+
+@dataclass(frozen=True)
+class LowerBoundAudit:
+    """How often Theorem 1's bound is non-monotone / non-submodular on random instances."""
+
+    n_instances: int
+    n_sensors: int
+    u_max: float
+    min_size: int
+    n_not_increasing: int
+    n_not_submodular: int
+    witness: dict | None
+    monotone_witness: dict | None
+
+    def as_dict(self) -> dict:
+        return asdict(self)
+
+
+@lru_cache(maxsize=8)
+def lower_bound_audit(n_instances: int, n_sensors: int, seed: int, u_max: float,
+                      min_size: int = 2) -> LowerBoundAudit:
+    """Exhaustive monotonicity/submodularity check of ``omega`` on ``generic`` random instances."""
+    s, t = random_instances(n_instances, n_sensors, seed, "generic")
+    audits = audit_tables(lower_bound_tables(t[:, None, :] - s, u_max), n_sensors, min_size)
+    return LowerBoundAudit(
+        n_instances, n_sensors, float(u_max), min_size,
+        n_not_increasing=sum(not a.monotone_increasing for a in audits),
+        n_not_submodular=sum(not a.submodular for a in audits),
+        witness=_smallest(audits, "submodular_witness", s, t, None),
+        monotone_witness=_smallest(audits, "monotone_witness", s, t, None),
+    )
