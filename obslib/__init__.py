@@ -20,6 +20,8 @@ measures
     Theorem 8's measures of the symmetric observability matrix (trace, log det, rank, trace inverse).
 submodularity
     Exhaustive monotonicity/submodularity audits of set functions; smallest witnesses.
+teams
+    Problem 2: greedy teams for a Theorem 8 measure, and the exact optimum for tiny instances.
 claims
     The claims ledger: one record per claim of the paper, re-checked.
 profiles
@@ -38,6 +40,7 @@ from .bounds import lower_bound, pair_bound_polar, pair_bounds, relative_vectors
 from .measures import MEASURES, measure, measure_table, symmetric_observability_matrix
 from .observability import inverse_condition_number, observability_matrix, relative_rows
 from .submodularity import audit_set_function, lower_bound_table
+from .teams import greedy_team_assignment, optimal_team_assignment
 
 __version__ = "0.1.0"
 
@@ -60,4 +63,6 @@ __all__ = [
     "symmetric_observability_matrix",
     "audit_set_function",
     "lower_bound_table",
+    "greedy_team_assignment",
+    "optimal_team_assignment",
 ]

@@ -1,0 +1,186 @@
+"""Assigning teams of sensors to targets (Section IV-B, Problem 2).
+
+Each sensor serves at most one target; target ``l`` values its team ``S_l`` with a Theorem 8
+measure ``w_l(S_l)`` of ``O^T O + eps I`` (:mod:`obslib.measures`). For monotone submodular
+``w_l`` the greedy below is a 1/2-approximation of the submodular welfare problem
+(Fisher, Nemhauser and Wolsey; the paper's reference for it is Nemhauser et al. 1978).
+
+``greedy_team_assignment``
+    Each round gives the free sensor with the largest marginal gain to its target.
+``optimal_team_assignment``
+    Exhaustive search over all assignments, for tiny instances (tests and the 1/2 check).
+"""
+
+from __future__ import annotations
+
+from itertools import product
+
+import numpy as np
+
+from ._validate import as_points
+from .bounds import relative_vectors
+from .measures import RANK_RTOL, _check_eps, _check_name, _from_tr_det, measure_from_vectors, subset_masks
+
+__all__ = ["greedy_team_assignment", "optimal_team_assignment", "team_value", "MAXIMISABLE"]
+
+#: Measures that can only increase as sensors join a team (the greedy maximises one of these).
+MAXIMISABLE = ("trace", "logdet", "rank", "neg_trace_inverse")
+
+#: Largest instance :func:`optimal_team_assignment` enumerates, as the number of assignments.
+MAX_ASSIGNMENTS = 2_000_000
+
+
+def _check_measure(name: str, eps: float) -> None:
+    _check_name(name)
+    if name not in MAXIMISABLE:
+        raise ValueError(
+            f"measure {name!r} decreases as sensors are added; maximise one of {MAXIMISABLE} "
+            "(e.g. 'neg_trace_inverse' instead of 'trace_inverse')"
+        )
+    if name in ("logdet", "neg_trace_inverse") and eps <= 0:
+        raise ValueError(
+            f"measure {name!r} is infinite for teams of fewer than two sensors unless eps > 0; "
+            "pass a prior eps > 0"
+        )
+
+
+def _rows(sensors, targets, u):
+    v = relative_vectors(sensors, targets)  # (N, L, 2), validated
+    if u is not None:
+        uu = as_points(np.broadcast_to(np.asarray(u, dtype=float), (v.shape[1], 2)), "u")
+    else:
+        uu = np.zeros((v.shape[1], 2))
+    return v, uu
+
+
+def greedy_team_assignment(sensors, targets, measure: str = "logdet", eps: float = 1.0, u=None,
+                           rank_rtol: float = RANK_RTOL) -> list:
+    """Greedy for Problem 2: repeatedly give the best free sensor to the target it helps most.
+
+    Each round evaluates, for every free sensor ``i`` and target ``l``, the marginal gain
+    ``w_l(S_l + i) - w_l(S_l)`` and takes the largest (ties: smallest ``i``, then smallest
+    ``l``); it stops when every sensor is assigned. ``w_l`` is a Theorem 8 measure of
+    ``G_l = O_l^T O_l + eps I`` (rows ``o_l - p_i`` of the team, and ``u`` if given). Only the
+    chosen target's gains change between rounds; they are updated from the trace and the
+    Cauchy-Binet determinant ``det(A + v v^T) = det A + sum_k (v x r_k)^2`` over the team's rows
+    ``r_k``, which is exact for parallel rows (so ``rank`` is decided reliably).
+
+    Parameters
+    ----------
+    sensors : array_like, shape (N, 2)
+    targets : array_like, shape (L, 2)
+    measure : str
+        ``"logdet"`` (default, the paper's Fig. 9), ``"trace"``, ``"rank"`` or
+        ``"neg_trace_inverse"``.
+    eps : float
+        Prior information ``eps I``; must be positive for ``logdet`` and ``neg_trace_inverse``,
+        whose value is infinite for a team of fewer than two sensors otherwise.
+    u : array_like, shape (2,) or (L, 2), optional
+        A fixed known control row per target.
+
+    Returns
+    -------
+    list of list of int
+        The team of each target, sensors in the order they were assigned.
+    """
+    e = _check_eps(eps)
+    _check_measure(measure, e)
+    v, uu = _rows(sensors, targets, u)
+    n, n_targets = v.shape[0], v.shape[1]
+    if n_targets < 1:
+        raise ValueError("there must be at least one target")
+    # Per target: the team's rows R_l (and u), tr_l = sum ||r||^2 and, by Cauchy-Binet,
+    # det_l = sum over pairs of rows of their squared cross product: a sum of non-negative terms,
+    # exact for parallel rows, so the numerical rank is decided as in obslib.measures.
+    rows = [[uu[l]] if u is not None else [] for l in range(n_targets)]
+    tr = np.einsum("lk,lk->l", uu, uu)
+    det = np.zeros(n_targets)
+    vx, vy = v[..., 0], v[..., 1]  # (N, L)
+
+    def value(tr_, det_):
+        half = 0.5 * tr_
+        lmax = half + np.sqrt(np.maximum(half * half - det_, 0.0))
+        return _from_tr_det(measure, tr_, det_, lmax, e, rank_rtol)
+
+    def gains(l):
+        """Marginal gains of every sensor for target ``l``, shape (N,)."""
+        x, y = vx[:, l], vy[:, l]
+        det_new = np.full(n, det[l])
+        if rows[l]:
+            R = np.array(rows[l])
+            cross = x[:, None] * R[None, :, 1] - y[:, None] * R[None, :, 0]
+            det_new = det_new + np.einsum("nm,nm->n", cross, cross)
+        return value(tr[l] + x * x + y * y, det_new) - value(tr[l], det[l])
+
+    g = np.stack([gains(l) for l in range(n_targets)], axis=1)  # (N, L)
+    free = np.ones(n, dtype=bool)
+    teams: list[list[int]] = [[] for _ in range(n_targets)]
+    for _ in range(n):
+        masked = np.where(free[:, None], g, -np.inf)
+        i, l = np.unravel_index(int(np.argmax(masked)), masked.shape)  # C order: smallest i, then l
+        teams[l].append(int(i))
+        free[i] = False
+        vi = v[i, l]
+        for r in rows[l]:
+            det[l] += (vi[0] * r[1] - vi[1] * r[0]) ** 2
+        tr[l] += vi @ vi
+        rows[l].append(vi)
+        g[:, l] = gains(l)
+    return teams
+
+
+def team_value(sensors, targets, teams, measure: str = "logdet", eps: float = 1.0, u=None,
+               rank_rtol: float = RANK_RTOL) -> float:
+    """Total ``sum_l w_l(S_l)`` of an assignment of teams (each sensor in at most one team)."""
+    e = _check_eps(eps)
+    _check_name(measure)
+    v, uu = _rows(sensors, targets, u)
+    if len(teams) != v.shape[1]:
+        raise ValueError(f"need one team per target ({v.shape[1]}), got {len(teams)}")
+    members = [i for t in teams for i in t]
+    if len(members) != len(set(members)) or any(not 0 <= i < v.shape[0] for i in members):
+        raise ValueError("teams must use distinct sensor indices in range")
+    total = 0.0
+    for l, team in enumerate(teams):
+        mask = np.zeros((1, v.shape[0]), dtype=bool)
+        mask[0, list(team)] = True
+        uu_l = uu[l] if u is not None else None
+        total += float(measure_from_vectors(v[:, l, :], mask, measure, e, uu_l, rank_rtol)[0])
+    return total
+
+
+def optimal_team_assignment(sensors, targets, measure: str = "logdet", eps: float = 1.0, u=None,
+                            rank_rtol: float = RANK_RTOL):
+    """Problem 2 solved by exhaustive search: every way to give each sensor to one target.
+
+    Feasible for tiny instances only (``L^N`` assignments, at most ``MAX_ASSIGNMENTS``). Sensors
+    are all assigned, which loses nothing for the monotone measures of :data:`MAXIMISABLE`.
+
+    Returns
+    -------
+    (list of list of int, float)
+        An optimal assignment (the first in lexicographic order of the label vector) and its value.
+    """
+    e = _check_eps(eps)
+    _check_name(measure)
+    v, uu = _rows(sensors, targets, u)
+    n, n_targets = v.shape[0], v.shape[1]
+    if n_targets < 1:
+        raise ValueError("there must be at least one target")
+    if n_targets**n > MAX_ASSIGNMENTS:
+        raise ValueError(f"{n_targets}^{n} assignments is too many to enumerate (max {MAX_ASSIGNMENTS})")
+    masks = subset_masks(n)
+    tables = np.stack(
+        [measure_from_vectors(v[:, l, :], masks, measure, e, uu[l] if u is not None else None, rank_rtol)
+         for l in range(n_targets)]
+    )  # (L, 2^N), subset k = bitmask k
+    labels = np.array(list(product(range(n_targets), repeat=n)), dtype=np.int64).reshape(-1, n)
+    bits = 1 << np.arange(n, dtype=np.int64)
+    total = np.zeros(labels.shape[0])
+    for l in range(n_targets):
+        total += tables[l, ((labels == l) * bits).sum(axis=1)]
+    best = int(np.argmax(total))
+    teams = [[int(i) for i in np.flatnonzero(labels[best] == l)] for l in range(n_targets)]
+    return teams, float(total[best])
+
+

@@ -1,0 +1,94 @@
+"""Greedy teams (Problem 2): the greedy rule evaluated directly, the exact optimum, the 1/2 bound."""
+
+import numpy as np
+import pytest
+
+import obslib as ob
+from obslib.measures import measure as w
+from obslib.teams import greedy_team_assignment, optimal_team_assignment, team_value
+
+
+def direct_greedy(S, T, name, eps):
+    """The greedy rule by direct evaluation of the measure: every round, every (sensor, target)."""
+    teams = [[] for _ in T]
+    free = list(range(len(S)))
+    while free:
+        best = None
+        for i in free:
+            for l in range(len(T)):
+                gain = w(S[teams[l] + [i]], T[l], name, eps) - w(S[teams[l]], T[l], name, eps)
+                if best is None or gain > best[0] + 1e-12:
+                    best = (gain, i, l)
+        _, i, l = best
+        teams[l].append(i)
+        free.remove(i)
+    return teams
+
+
+@pytest.mark.parametrize("name", ["logdet", "trace", "neg_trace_inverse", "rank"])
+def test_greedy_equals_direct_evaluation_of_the_rule(name):
+    rng = np.random.default_rng(0)
+    for _ in range(40):
+        S = rng.uniform(0, 100, size=(int(rng.integers(3, 9)), 2))
+        T = rng.uniform(0, 100, size=(int(rng.integers(1, 4)), 2))
+        assert greedy_team_assignment(S, T, name, eps=1.0) == direct_greedy(S, T, name, 1.0)
+
+
+def test_greedy_is_within_half_of_the_optimum_for_logdet():
+    rng = np.random.default_rng(1)
+    worst = 1.0
+    for _ in range(60):
+        S = rng.uniform(0, 100, size=(int(rng.integers(3, 8)), 2))
+        T = rng.uniform(0, 100, size=(int(rng.integers(1, 4)), 2))
+        teams = greedy_team_assignment(S, T, "logdet", eps=1.0)
+        _, opt = optimal_team_assignment(S, T, "logdet", eps=1.0)
+        g = team_value(S, T, teams, "logdet", eps=1.0)
+        # with eps = 1 the empty team has logdet 0, so values are non-negative and the ratio is meaningful
+        assert g <= opt + 1e-9
+        assert g >= 0.5 * opt - 1e-9
+        worst = min(worst, g / opt)
+    assert worst <= 1.0
+
+
+def test_optimum_equals_brute_force_over_team_values():
+    rng = np.random.default_rng(2)
+    S = rng.uniform(0, 100, size=(5, 2))
+    T = rng.uniform(0, 100, size=(2, 2))
+    teams, value = optimal_team_assignment(S, T, "logdet", eps=1.0)
+    assert value == pytest.approx(team_value(S, T, teams, "logdet", eps=1.0))
+    best = max(
+        team_value(S, T, [[i for i in range(5) if (k >> i) & 1], [i for i in range(5) if not (k >> i) & 1]], "logdet", eps=1.0)
+        for k in range(32)
+    )
+    assert value == pytest.approx(best)
+
+
+def test_every_sensor_is_assigned_once():
+    rng = np.random.default_rng(3)
+    S, T = rng.uniform(0, 100, (20, 2)), rng.uniform(0, 100, (5, 2))
+    teams = greedy_team_assignment(S, T)
+    assert sorted(i for t in teams for i in t) == list(range(20))
+
+
+@pytest.mark.parametrize(
+    "kwargs, message",
+    [
+        ({"measure": "trace_inverse"}, "decreases"),
+        ({"measure": "logdet", "eps": 0.0}, "eps > 0"),
+        ({"measure": "volume"}, "unknown measure"),
+        ({"eps": -1.0}, "eps"),
+    ],
+)
+def test_bad_arguments(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        greedy_team_assignment([[0, 0], [1, 1]], [[5, 5]], **kwargs)
+
+
+def test_bad_geometry():
+    with pytest.raises(ValueError, match="sensor 1 has a non-finite"):
+        greedy_team_assignment([[0, 0], [np.nan, 1]], [[5, 5]])
+    with pytest.raises(ValueError, match="at least one target"):
+        greedy_team_assignment([[0, 0], [1, 1]], np.zeros((0, 2)))
+    with pytest.raises(ValueError, match="too many"):
+        optimal_team_assignment(np.random.default_rng(0).uniform(0, 9, (30, 2)), [[50, 50], [60, 60]])
+    assert ob.greedy_team_assignment is greedy_team_assignment
