@@ -23,6 +23,18 @@ PROFILES: dict[str, dict[str, dict]] = {
             "n_radii": 40,
             "n_angles": 180,
         },
+        "03_greedy_unique_pairs": {
+            "seed": 0,
+            "n_instances": 2000,
+            "targets_min": 2,
+            "targets_max": 4,
+            "extra_max": 2,
+            "u_max": 1.0,
+            "search_sensors": 6,
+            "search_targets": 3,
+            "n_starts": 20,
+            "n_steps": 300,
+        },
         "04_submodularity": {
             "seed": 0,
             "u_max": 1.0,
@@ -39,6 +51,7 @@ PROFILES: dict[str, dict[str, dict]] = {
             "n_radii": 10,
             "n_angles": 60,
         },
+        "03_greedy_unique_pairs": {"n_instances": 300, "n_starts": 4, "n_steps": 100},
         "04_submodularity": {"n_instances": 200, "n_sensors": 5},
     },
 }
