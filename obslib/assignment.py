@@ -37,6 +37,7 @@ __all__ = [
     "relaxed_pair_assignment",
     "optimal_pair_assignment",
     "assignment_value",
+    "upper_pair_weights",
 ]
 
 
@@ -308,7 +309,29 @@ def greedy_pair_assignment_literal(W) -> PairAssignment:
 # --------------------------------------------------------------------------------------------
 
 
-def relaxed_pair_assignment(W, ordered: bool = False) -> PairAssignment:
+def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
+    """Weights of the unordered pairs ``i < j`` for every target, as ``(ii, jj, C)``.
+
+    ``C[l, p]`` is ``pair_bounds(...)[ii[p], jj[p], l]`` (one shared kernel, so bitwise equal)
+    with pairs in ``numpy.triu_indices(N, 1)`` order; shape ``(L, P)``. Targets are processed in
+    chunks of about ``chunk`` weights so the temporaries stay in cache.
+    """
+    v = relative_vectors(sensors, targets, cov)
+    v, u2 = _normalise(v, as_u_max(u_max, v.shape[1]) ** 2)
+    ii, jj = np.triu_indices(v.shape[0], 1)
+    xt, yt = np.ascontiguousarray(v[..., 0].T), np.ascontiguousarray(v[..., 1].T)  # (L, N)
+    n_targets = xt.shape[0]
+    out = np.empty((n_targets, ii.size))
+    step = max(1, chunk // max(ii.size, 1))
+    for a in range(0, n_targets, step):
+        b = min(a + step, n_targets)
+        x, y = xt[a:b], yt[a:b]
+        out[a:b] = _pair_kernel(x[:, ii], y[:, ii], x[:, jj], y[:, jj], u2[a:b, None])
+    return ii, jj, out
+
+
+def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targets=None, u_max=None,
+                            cov=None) -> PairAssignment:
     """Problem 3: maximum-weight matching of sensor pairs to targets.
 
     Each unordered pair serves at most one target and each target gets at most one pair, but a
@@ -318,24 +341,31 @@ def relaxed_pair_assignment(W, ordered: bool = False) -> PairAssignment:
 
     Parameters
     ----------
-    W : array_like, shape (N, N, L)
+    W : array_like, shape (N, N, L), optional
     ordered : bool
         Match *ordered* pairs ``(i, j)``, ``i != j``, instead: the original code's relaxation, in
         which one unordered pair can serve two targets (as ``(i, j)`` and ``(j, i)``).
+    sensors, targets, u_max, cov : optional
+        Instead of ``W``: the geometry (only the ``i < j`` weights are computed).
     """
     from scipy.optimize import linear_sum_assignment
 
-    arr = _as_weights(W)
-    n, n_targets = arr.shape[0], arr.shape[2]
+    if W is not None:
+        arr = _as_weights(W)
+        n, n_targets = arr.shape[0], arr.shape[2]
+        ii, jj = np.triu_indices(n, 1)
+        cost = arr[ii, jj, :].T  # (L, P)
+    elif sensors is not None and targets is not None and u_max is not None:
+        ii, jj, cost = upper_pair_weights(sensors, targets, u_max, cov)
+        n, n_targets = int(np.asarray(sensors).shape[0]), cost.shape[0]
+    else:
+        raise ValueError("give W, or sensors=, targets= and u_max=")
     if n_targets < 1:
         raise ValueError("there must be at least one target")
     if n < 2:
         raise ValueError(f"pairs need at least two sensors, got {n}")
-    if ordered:
-        ii, jj = np.nonzero(~np.eye(n, dtype=bool))
-    else:
-        ii, jj = np.triu_indices(n, 1)
-    cost = arr[ii, jj, :].T  # (L, P)
+    if ordered:  # (i, j) and (j, i) carry the same weight
+        ii, jj, cost = np.concatenate([ii, jj]), np.concatenate([jj, ii]), np.concatenate([cost, cost], axis=1)
     rows, cols = linear_sum_assignment(cost, maximize=True)
     triples = sorted(
         (min(int(ii[c]), int(jj[c])), max(int(ii[c]), int(jj[c])), int(r)) for r, c in zip(rows, cols)

@@ -27,6 +27,9 @@ __all__ = [
     "worst_instance_search",
     "charging",
     "tight_weights",
+    "FIG8_KEYS",
+    "fig8_trial",
+    "fig8_sweep",
 ]
 
 #: Largest number of assignments :func:`pair_assignments` enumerates.
@@ -205,3 +208,47 @@ def tight_weights(eps: float = 1e-3) -> np.ndarray:
     for (i, j, l), w in {(0, 1, 0): 1 + eps, (0, 2, 1): 1.0, (1, 3, 2): 1.0, (4, 5, 0): 1.0}.items():
         W[i, j, l] = W[j, i, l] = w
     return W
+
+
+FIG8_KEYS = ("greedy", "relaxed", "relaxed_ordered", "optimum")
+
+
+def fig8_trial(n_targets: int, trial: int, seed: int, u_max: float = 1.0, side: float = 100.0,
+               with_optimum: bool = False) -> dict:
+    """One trial of Fig. 8: ``N = 2L`` sensors and ``L`` targets uniform in ``[0, side]^2``.
+
+    The draw depends only on ``(seed, L, trial)`` (``numpy.random.default_rng([seed, L, trial])``),
+    so a sweep gives the same numbers in any order, serially or in parallel. Returns the greedy,
+    relaxed (Problem 3), ordered-pair relaxed (the original code's) values, and the exact optimum
+    when ``with_optimum`` (NaN otherwise).
+    """
+    from .assignment import optimal_pair_assignment, relaxed_pair_assignment
+
+    rng = np.random.default_rng([seed, n_targets, trial])
+    S = rng.uniform(0, side, size=(2 * n_targets, 2))
+    T = rng.uniform(0, side, size=(n_targets, 2))
+    geo = dict(sensors=S, targets=T, u_max=u_max)
+    out = {
+        "greedy": greedy_pair_assignment(**geo).value,
+        "relaxed": relaxed_pair_assignment(**geo).value,
+        "relaxed_ordered": relaxed_pair_assignment(ordered=True, **geo).value,
+        "optimum": np.nan,
+    }
+    if with_optimum:
+        W = pair_bounds(S, T, u_max)
+        out["optimum"] = float(optimal_values(W[None])[0]) if n_targets <= 4 else optimal_pair_assignment(W).value
+    return out
+
+
+def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float = 100.0,
+               optimum_max_L: int = 0) -> dict:
+    """Fig. 8's sweep: arrays of shape ``(len(L_values), trials)`` for each of :data:`FIG8_KEYS`."""
+    L_values = [int(L) for L in L_values]
+    out = {k: np.full((len(L_values), trials), np.nan) for k in FIG8_KEYS}
+    for a, L in enumerate(L_values):
+        for t in range(trials):
+            r = fig8_trial(L, t, seed, u_max, side, with_optimum=L <= optimum_max_L)
+            for k in FIG8_KEYS:
+                out[k][a, t] = r[k]
+    out["L"] = np.array(L_values)
+    return out

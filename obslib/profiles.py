@@ -43,6 +43,16 @@ PROFILES: dict[str, dict[str, dict]] = {
             "eps": 1.0,
             "min_size": 2,
         },
+        "07_greedy_vs_relaxed": {
+            "seed": 0,
+            "L_max": 20,
+            "trials": 30,
+            "u_max": 1.0,
+            "side": 100.0,
+            "optimum_max_L": 6,
+            "L_extended": [50, 100, 150, 200],
+            "trials_extended": 3,
+        },
     },
     "quick": {
         "01_model_and_bound": {
@@ -53,6 +63,7 @@ PROFILES: dict[str, dict[str, dict]] = {
         },
         "03_greedy_unique_pairs": {"n_instances": 300, "n_starts": 4, "n_steps": 100},
         "04_submodularity": {"n_instances": 200, "n_sensors": 5},
+        "07_greedy_vs_relaxed": {"trials": 5, "optimum_max_L": 4, "L_extended": [50], "trials_extended": 1},
     },
 }
 
