@@ -53,6 +53,19 @@ PROFILES: dict[str, dict[str, dict]] = {
             "L_extended": [50, 100, 150, 200],
             "trials_extended": 3,
         },
+        "08_general_assignment": {
+            "seed": 0,
+            "n_targets": 5,
+            "N_min": 20,
+            "N_max": 50,
+            "trials": 30,
+            "eps": 1.0,
+            "side": 100.0,
+            "eps_values": [1e-06, 1.0, 10000.0],
+            "compare_N": [20, 35, 50],
+            "compare_trials": 30,
+            "n_tiny": 500,
+        },
     },
     "quick": {
         "01_model_and_bound": {
@@ -64,6 +77,7 @@ PROFILES: dict[str, dict[str, dict]] = {
         "03_greedy_unique_pairs": {"n_instances": 300, "n_starts": 4, "n_steps": 100},
         "04_submodularity": {"n_instances": 200, "n_sensors": 5},
         "07_greedy_vs_relaxed": {"trials": 5, "optimum_max_L": 4, "L_extended": [50], "trials_extended": 1},
+        "08_general_assignment": {"trials": 5, "compare_trials": 3, "n_tiny": 50},
     },
 }
 

@@ -1,0 +1,63 @@
+"""Studies of the greedy team assignment (Section V-D, Fig. 9).
+
+Fig. 9 of the paper plots, for ``L = 5`` targets and ``N = 20..50`` sensors in ``[0, 100]^2``,
+the mean and spread of the number of sensors the greedy (log det measure) gives to a target.
+Targets are exchangeable, so for any rule that does not favour target indices the *mean* count
+of every target is ``N / L`` by symmetry; evenness is a property of each trial, measured here by
+the spread of the counts within a trial and compared with a uniformly random assignment.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .teams import greedy_team_assignment, optimal_team_assignment, team_value
+
+__all__ = ["fig9_trial", "fig9_sweep", "random_spread", "greedy_vs_optimal_teams"]
+
+
+def fig9_trial(n_sensors: int, trial: int, seed: int, n_targets: int = 5, measure: str = "logdet",
+               eps: float = 1.0, side: float = 100.0) -> np.ndarray:
+    """Sensors per target (shape ``(L,)``) of one greedy team assignment.
+
+    The draw depends only on ``(seed, N, trial)`` (``default_rng([seed, N, trial])``): sensors
+    first, then targets, uniform in ``[0, side]^2``.
+    """
+    rng = np.random.default_rng([seed, n_sensors, trial])
+    S = rng.uniform(0, side, size=(n_sensors, 2))
+    T = rng.uniform(0, side, size=(n_targets, 2))
+    teams = greedy_team_assignment(S, T, measure=measure, eps=eps)
+    return np.array([len(t) for t in teams])
+
+
+def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: str = "logdet",
+               eps: float = 1.0, side: float = 100.0) -> np.ndarray:
+    """Counts of shape ``(len(N_values), trials, L)`` for the Fig. 9 sweep."""
+    return np.stack([
+        np.stack([fig9_trial(int(n), t, seed, n_targets, measure, eps, side) for t in range(trials)])
+        for n in N_values
+    ])
+
+
+def random_spread(n_sensors: int, n_targets: int) -> float:
+    """Expected within-trial standard deviation scale of a uniformly random assignment.
+
+    Each count is Binomial(N, 1/L): standard deviation ``sqrt(N (1/L)(1 - 1/L))``.
+    """
+    p = 1.0 / n_targets
+    return float(np.sqrt(n_sensors * p * (1 - p)))
+
+
+def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets=(1, 3),
+                            measure: str = "logdet", eps: float = 1.0, side: float = 100.0) -> np.ndarray:
+    """Greedy / exact optimum of Problem 2 on tiny random instances (array of ratios)."""
+    rng = np.random.default_rng(seed)
+    out = []
+    for _ in range(n_instances):
+        n = int(rng.integers(sensors[0], sensors[1] + 1))
+        L = int(rng.integers(targets[0], targets[1] + 1))
+        S, T = rng.uniform(0, side, (n, 2)), rng.uniform(0, side, (L, 2))
+        g = team_value(S, T, greedy_team_assignment(S, T, measure, eps), measure, eps)
+        _, opt = optimal_team_assignment(S, T, measure, eps)
+        out.append(g / opt if opt > 0 else 1.0)
+    return np.array(out)

@@ -1,0 +1,26 @@
+"""Fig. 9 study: order-independent trials, counts consistent with the greedy, the ledger rules."""
+
+import numpy as np
+
+from obslib import claims
+from obslib import team_study as ts
+
+
+def test_trials_are_order_independent_and_complete():
+    a = ts.fig9_sweep([22, 20], trials=2, seed=4)
+    b = ts.fig9_sweep([20, 22], trials=2, seed=4)
+    np.testing.assert_array_equal(a[::-1], b)
+    assert (b.sum(axis=2) == np.array([20, 22])[:, None]).all()  # every sensor assigned
+
+
+def test_random_spread_is_the_binomial_std():
+    rng = np.random.default_rng(0)
+    counts = np.stack([np.bincount(rng.integers(0, 5, 40), minlength=5) for _ in range(20000)])
+    assert abs(counts[:, 0].std() - ts.random_spread(40, 5)) < 0.03
+
+
+def test_statuses_follow_the_evidence():
+    recs = {r.id: r for r in claims.evaluate("quick", ids=["fig9-even", "greedy-half"])}
+    rel = np.array(recs["fig9-even"].evidence["relative_to_random"])
+    assert recs["fig9-even"].status == ("reproduced" if (rel < 1).all() else "partly")
+    assert recs["greedy-half"].status == ("reproduced" if recs["greedy-half"].evidence["min_ratio"] >= 0.5 else "refuted")
