@@ -277,28 +277,44 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     return _greedy(_GeometrySource(v, u2), n, n_targets, k)
 
 
-def greedy_pair_assignment_literal(W) -> PairAssignment:
+def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=None, cov=None) -> PairAssignment:
     """Algorithm 1 as printed: every round, evaluate all remaining triples and take the maximum.
 
     Vectorised per round (one ``argmax`` over the remaining ``(N', N', L')`` block); ties go to
-    the smallest ``(i, j, l)`` with ``i < j``. Quadratic in the number of rounds; for tests and
-    benchmarks.
+    the smallest ``(i, j, l)`` with ``i < j``. From geometry it recomputes the weights of the
+    remaining sensors and targets every round, as the algorithm's "compute all possible omega"
+    says (with the kernel of :func:`obslib.pair_bounds`, so the weights are the same). Quadratic
+    in the number of rounds; for tests and benchmarks.
     """
-    arr = _as_weights(W)
-    n, n_targets = arr.shape[0], arr.shape[2]
+    if W is not None:
+        arr = _as_weights(W)
+        n, n_targets = arr.shape[0], arr.shape[2]
+
+        def block(s_free, t_free):
+            return arr[np.ix_(s_free, s_free, t_free)]
+    elif sensors is not None and targets is not None and u_max is not None:
+        v = relative_vectors(sensors, targets, cov)
+        n, n_targets = v.shape[0], v.shape[1]
+        v, u2 = _normalise(v, as_u_max(u_max, n_targets) ** 2)
+
+        def block(s_free, t_free):
+            x, y = v[np.ix_(s_free, t_free, [0])][..., 0], v[np.ix_(s_free, t_free, [1])][..., 0]
+            return _pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2[t_free])
+    else:
+        raise ValueError("give W, or sensors=, targets= and u_max=")
     _check_sizes(n, n_targets)
     s_free = np.arange(n)
     t_free = np.arange(n_targets)
     triples, value = [], 0.0
     while t_free.size and s_free.size >= 2:
-        block = arr[np.ix_(s_free, s_free, t_free)]
+        w = block(s_free, t_free)
         m = s_free.size
         upper = np.triu(np.ones((m, m), dtype=bool), 1)
-        block = np.where(upper[:, :, None], block, -np.inf)
-        a, b, c = np.unravel_index(int(np.argmax(block)), block.shape)  # C order = (i, j, l) order
+        w = np.where(upper[:, :, None], w, -np.inf)
+        a, b, c = np.unravel_index(int(np.argmax(w)), w.shape)  # C order = (i, j, l) order
         i, j, l = int(s_free[a]), int(s_free[b]), int(t_free[c])
         triples.append((i, j, l))
-        value += arr[i, j, l]
+        value += float(w[a, b, c])
         s_free = s_free[(s_free != i) & (s_free != j)]
         t_free = t_free[t_free != l]
     return PairAssignment(triples=triples, value=float(value))

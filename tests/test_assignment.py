@@ -58,6 +58,8 @@ def test_greedy_equals_literal_on_thousands_of_instances(grid):
         lit = greedy_pair_assignment_literal(W)
         assert greedy_pair_assignment(W, k=k).triples == lit.triples
         assert greedy_pair_assignment(sensors=S, targets=T, u_max=1.0, k=k).triples == lit.triples
+        if k == 1:  # the literal algorithm recomputing weights each round agrees too
+            assert greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0).triples == lit.triples
 
 
 def test_greedy_from_geometry_with_mahalanobis_equals_weights():

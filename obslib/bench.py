@@ -1,0 +1,102 @@
+"""Benchmarks that print ratios: ``python -m obslib.bench assignment``.
+
+Absolute times depend on the machine; the ratios are what the project tracks. Each benchmark
+prints a few readable lines and, last, one JSON object.
+
+``assignment``
+    ``greedy_over_one_pass``: the greedy (Algorithm 1 from geometry) at ``N = 2000``,
+    ``L = 1000``, over one vectorised evaluation of every pair bound for every target with the
+    same kernel (target <= 2). ``literal_over_greedy``: Algorithm 1 as printed (recomputing all
+    weights each round, vectorised per round) over the greedy at ``N = 400``, ``L = 200``
+    (target >= 100). ``peak_rss_gb``: the process's peak resident memory (target < 4).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import resource
+import sys
+import time
+
+import numpy as np
+
+__all__ = ["one_pass", "bench_assignment", "main"]
+
+
+def _timed(fn, repeat: int = 1):
+    best, out = np.inf, None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = fn()
+        best = min(best, time.perf_counter() - t0)
+    return best, out
+
+
+def one_pass(sensors, targets, u_max, chunk: int = 1 << 20) -> float:
+    """Evaluate every pair bound ``i < j`` for every target once, in chunks; return the maximum.
+
+    The reference cost for the greedy: one vectorised sweep of all ``N (N - 1) / 2 * L``
+    weights with the kernel of :func:`obslib.pair_bounds`, without keeping them.
+    """
+    from .bounds import _normalise, _pair_kernel, relative_vectors
+    from ._validate import as_u_max
+
+    v = relative_vectors(sensors, targets)
+    v, u2 = _normalise(v, as_u_max(u_max, v.shape[1]) ** 2)
+    ii, jj = np.triu_indices(v.shape[0], 1)
+    xt, yt = np.ascontiguousarray(v[..., 0].T), np.ascontiguousarray(v[..., 1].T)
+    best = 0.0
+    step_pairs = max(1, min(ii.size, chunk))
+    for l in range(xt.shape[0]):
+        x, y = xt[l], yt[l]
+        for a in range(0, ii.size, step_pairs):
+            i, j = ii[a:a + step_pairs], jj[a:a + step_pairs]
+            best = max(best, float(_pair_kernel(x[i], y[i], x[j], y[j], u2[l]).max()))
+    return best
+
+
+def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l_small: int = 200,
+                     seed: int = 0) -> dict:
+    """Run the assignment benchmark; returns the JSON-ready dict (see the module docstring)."""
+    from .assignment import greedy_pair_assignment, greedy_pair_assignment_literal
+
+    rng = np.random.default_rng(seed)
+    S, T = rng.uniform(0, 100, (n_big, 2)), rng.uniform(0, 100, (l_big, 2))
+    greedy_s, g = _timed(lambda: greedy_pair_assignment(sensors=S, targets=T, u_max=1.0), repeat=2)
+    print(f"greedy      N={n_big} L={l_big}: {greedy_s:8.2f} s  (value {g.value:.2f})", flush=True)
+    one_pass_s, _ = _timed(lambda: one_pass(S, T, 1.0))
+    print(f"one pass    N={n_big} L={l_big}: {one_pass_s:8.2f} s", flush=True)
+
+    S2, T2 = rng.uniform(0, 100, (n_small, 2)), rng.uniform(0, 100, (l_small, 2))
+    small_s, g2 = _timed(lambda: greedy_pair_assignment(sensors=S2, targets=T2, u_max=1.0), repeat=3)
+    literal_s, lit = _timed(lambda: greedy_pair_assignment_literal(sensors=S2, targets=T2, u_max=1.0))
+    if lit.triples != g2.triples:
+        raise AssertionError("the greedy and the literal algorithm disagree")
+    print(f"greedy      N={n_small} L={l_small}: {small_s:8.3f} s", flush=True)
+    print(f"literal     N={n_small} L={l_small}: {literal_s:8.2f} s", flush=True)
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024**2  # KiB -> GiB on Linux
+    return {
+        "n_sensors": n_big,
+        "n_targets": l_big,
+        "greedy_s": round(greedy_s, 3),
+        "one_pass_s": round(one_pass_s, 3),
+        "greedy_over_one_pass": round(greedy_s / one_pass_s, 4),
+        "literal_over_greedy": round(literal_s / small_s, 1),
+        "peak_rss_gb": round(peak, 3),
+    }
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m obslib.bench", description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("which", choices=["assignment"], help="benchmark to run")
+    args = ap.parse_args(argv)
+    result = bench_assignment()
+    json.dump(result, sys.stdout)
+    print()
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
