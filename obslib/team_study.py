@@ -31,12 +31,22 @@ def fig9_trial(n_sensors: int, trial: int, seed: int, n_targets: int = 5, measur
 
 
 def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: str = "logdet",
-               eps: float = 1.0, side: float = 100.0) -> np.ndarray:
-    """Counts of shape ``(len(N_values), trials, L)`` for the Fig. 9 sweep."""
-    return np.stack([
-        np.stack([fig9_trial(int(n), t, seed, n_targets, measure, eps, side) for t in range(trials)])
-        for n in N_values
-    ])
+               eps: float = 1.0, side: float = 100.0, backend: str = "serial", n_jobs=None,
+               scheduler=None) -> np.ndarray:
+    """Counts of shape ``(len(N_values), trials, L)`` for the Fig. 9 sweep.
+
+    ``backend``, ``n_jobs`` and ``scheduler`` go to :func:`obslib.sweep.run_sweep`; the counts do
+    not depend on them.
+    """
+    from .sweep import run_sweep
+
+    N_values = [int(n) for n in N_values]
+    tasks = [
+        dict(n_sensors=n, trial=t, seed=seed, n_targets=n_targets, measure=measure, eps=eps, side=side)
+        for n in N_values for t in range(trials)
+    ]
+    counts = run_sweep(fig9_trial, tasks, backend, n_jobs, scheduler)
+    return np.array(counts).reshape(len(N_values), trials, n_targets)
 
 
 def random_spread(n_sensors: int, n_targets: int) -> float:

@@ -1,0 +1,40 @@
+"""Parallel sweeps equal the serial ones: joblib processes and a Dask LocalCluster on loopback."""
+
+import numpy as np
+import pytest
+
+from obslib import assignment_study as st
+from obslib import team_study as ts
+from obslib.sweep import run_sweep
+
+
+def test_joblib_equals_serial():
+    a = st.fig8_sweep([1, 3, 5], trials=3, seed=2)
+    b = st.fig8_sweep([1, 3, 5], trials=3, seed=2, backend="joblib", n_jobs=2)
+    for k in ("greedy", "relaxed", "relaxed_ordered"):
+        np.testing.assert_array_equal(a[k], b[k])
+    np.testing.assert_array_equal(
+        ts.fig9_sweep([20, 23], 3, 1), ts.fig9_sweep([20, 23], 3, 1, backend="joblib", n_jobs=2)
+    )
+
+
+def test_dask_local_cluster_equals_serial():
+    distributed = pytest.importorskip("distributed")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, host="127.0.0.1",
+                                  dashboard_address=None, processes=True) as cluster:
+        address = cluster.scheduler_address
+        assert address.startswith("tcp://127.0.0.1:")
+        a = st.fig8_sweep([2, 4], trials=3, seed=7)
+        b = st.fig8_sweep([2, 4], trials=3, seed=7, backend="dask", scheduler=address)
+        for k in ("greedy", "relaxed", "relaxed_ordered"):
+            np.testing.assert_array_equal(a[k], b[k])
+        np.testing.assert_array_equal(
+            ts.fig9_sweep([20], 4, 3), ts.fig9_sweep([20], 4, 3, backend="dask", scheduler=address)
+        )
+
+
+def test_bad_backend():
+    with pytest.raises(ValueError, match="backend"):
+        run_sweep(abs, [{"x": 1}], backend="mpi")
+    with pytest.raises(ValueError, match="scheduler"):
+        run_sweep(abs, [{"x": 1}], backend="dask")
