@@ -22,6 +22,8 @@ submodularity
     Exhaustive monotonicity/submodularity audits of set functions; smallest witnesses.
 teams
     Problem 2: greedy teams for a Theorem 8 measure, and the exact optimum for tiny instances.
+tracking
+    Section V tracking simulations: EKF (filterpy), strategies, adversarial target, Monte Carlo.
 claims
     The claims ledger: one record per claim of the paper, re-checked.
 profiles
@@ -41,6 +43,7 @@ from .measures import MEASURES, measure, measure_table, symmetric_observability_
 from .observability import inverse_condition_number, observability_matrix, relative_rows
 from .submodularity import audit_set_function, lower_bound_table
 from .teams import greedy_team_assignment, optimal_team_assignment
+from . import tracking  # noqa: E402  (ob.tracking.simulate, PAPER_CIRCLE, PAPER_ADVERSARIAL)
 
 __version__ = "0.1.0"
 
@@ -65,4 +68,5 @@ __all__ = [
     "lower_bound_table",
     "greedy_team_assignment",
     "optimal_team_assignment",
+    "tracking",
 ]

@@ -21,7 +21,7 @@ import time
 
 import numpy as np
 
-__all__ = ["one_pass", "bench_assignment", "main"]
+__all__ = ["one_pass", "bench_assignment", "scaling", "ALGORITHMS", "main"]
 
 
 def _timed(fn, repeat: int = 1):
@@ -54,6 +54,48 @@ def one_pass(sensors, targets, u_max, chunk: int = 1 << 20) -> float:
             i, j = ii[a:a + step_pairs], jj[a:a + step_pairs]
             best = max(best, float(_pair_kernel(x[i], y[i], x[j], y[j], u2[l]).max()))
     return best
+
+
+def _algorithms():
+    from . import assignment as a
+    from .bounds import pair_bounds
+
+    return {
+        "greedy (geometry)": lambda S, T: a.greedy_pair_assignment(sensors=S, targets=T, u_max=1.0),
+        "greedy (from W)": lambda S, T: a.greedy_pair_assignment(pair_bounds(S, T, 1.0)),
+        "literal Algorithm 1": lambda S, T: a.greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0),
+        "relaxed matching": lambda S, T: a.relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0),
+        "exact optimum (MILP)": lambda S, T: a.optimal_pair_assignment(pair_bounds(S, T, 1.0)),
+    }
+
+
+#: Names of the algorithms :func:`scaling` times.
+ALGORITHMS = ("greedy (geometry)", "greedy (from W)", "literal Algorithm 1", "relaxed matching",
+              "exact optimum (MILP)")
+
+
+def scaling(sizes: dict, seed: int = 0, repeat: int = 1) -> dict:
+    """Wall time of each algorithm against ``N`` (with ``L = N / 2``), uniform instances.
+
+    ``sizes`` maps an algorithm name of :data:`ALGORITHMS` to the list of ``N`` to time it at.
+    Returns ``{name: (N array, seconds array)}``; the same instance is used for every algorithm
+    at a given ``N``.
+    """
+    algos = _algorithms()
+    unknown = set(sizes) - set(algos)
+    if unknown:
+        raise ValueError(f"unknown algorithm(s) {sorted(unknown)}; known: {list(algos)}")
+    out = {}
+    warm = np.random.default_rng(seed).uniform(0, 100, (8, 2))
+    for name, ns in sizes.items():
+        algos[name](warm, warm[:4] + 0.5)  # first call pays imports and caches; not timed
+        times = []
+        for n in ns:
+            rng = np.random.default_rng([seed, n])
+            S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (n // 2, 2))
+            times.append(_timed(lambda: algos[name](S, T), repeat)[0])
+        out[name] = (np.array(ns), np.array(times))
+    return out
 
 
 def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l_small: int = 200,

@@ -43,6 +43,29 @@ PROFILES: dict[str, dict[str, dict]] = {
             "eps": 1.0,
             "min_size": 2,
         },
+        "05_two_sensors_tracking": {
+            "seed": 0,
+            "n_seeds": 200,
+            "steps": 315,
+            "u_max": 3.0,
+            "noise_std": 0.5,
+            "q": 0.5,
+            "r": 0.5,
+            "p0": 0.5,
+            "metric": "mahalanobis",
+            "anim_every": 3,
+            "anim_dpi": 50,
+        },
+        "06_adversarial_target": {
+            "seed": 0,
+            "n_seeds": 50,
+            "steps": 315,
+            "u_max": 0.1,
+            "noise_std": 0.5,
+            "n_seeds_strong": 10,
+            "n_radii": 10,
+            "n_angles": 180,
+        },
         "07_greedy_vs_relaxed": {
             "seed": 0,
             "L_max": 20,
@@ -66,6 +89,14 @@ PROFILES: dict[str, dict[str, dict]] = {
             "compare_trials": 30,
             "n_tiny": 500,
         },
+        "09_scaling": {
+            "seed": 0,
+            "greedy_sizes": [20, 50, 100, 200, 400, 800, 1600],
+            "greedy_w_sizes": [20, 50, 100, 200, 400],
+            "literal_sizes": [20, 50, 100, 200],
+            "relaxed_sizes": [20, 50, 100, 200, 400],
+            "milp_sizes": [8, 12, 16, 20],
+        },
     },
     "quick": {
         "01_model_and_bound": {
@@ -76,8 +107,17 @@ PROFILES: dict[str, dict[str, dict]] = {
         },
         "03_greedy_unique_pairs": {"n_instances": 300, "n_starts": 4, "n_steps": 100},
         "04_submodularity": {"n_instances": 200, "n_sensors": 5},
+        "05_two_sensors_tracking": {"n_seeds": 20, "anim_every": 15},
+        "06_adversarial_target": {"n_seeds": 10, "n_seeds_strong": 2, "n_radii": 3, "n_angles": 36},
         "07_greedy_vs_relaxed": {"trials": 5, "optimum_max_L": 4, "L_extended": [50], "trials_extended": 1},
         "08_general_assignment": {"trials": 5, "compare_trials": 3, "n_tiny": 50},
+        "09_scaling": {
+            "greedy_sizes": [20, 100, 400],
+            "greedy_w_sizes": [20, 100],
+            "literal_sizes": [20, 50],
+            "relaxed_sizes": [20, 100],
+            "milp_sizes": [8, 12],
+        },
     },
 }
 

@@ -62,3 +62,39 @@ def test_toc_lists_every_notebook_and_every_entry_exists():
     for nb in NOTEBOOKS:
         assert f"notebooks/{nb.stem}" in files, f"{nb.name} is not in _toc.yml"
     assert NOTEBOOK_DIR.exists()
+
+
+def report_statuses():
+    """Statuses in the committed report page, by claim id."""
+    import re
+
+    out = {}
+    for line in (ROOT / "book" / "report.md").read_text().splitlines():
+        m = re.match(r"\| `([^`]+)` \|.*\| \**(reproduced|partly|refuted|untestable)\** \| \{doc\}", line)
+        if m:
+            out[m.group(1)] = m.group(2)
+    return out
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_summary_verdicts_typed_in_prose_match_the_ledger(path):
+    """A summary row '... (`id`) | verdict | ...' in a notebook must agree with the report."""
+    import re
+
+    statuses = report_statuses()
+    for cell in json.loads(path.read_text())["cells"]:
+        if cell["cell_type"] != "markdown":
+            continue
+        for line in "".join(cell["source"]).splitlines():
+            m = re.match(r"\|.*\(`([a-z0-9-]+)`\) \| (reproduced|partly|refuted|untestable) \|", line)
+            if m:
+                assert m.group(1) in statuses, f"{path.name}: {m.group(1)} is not in the report"
+                assert statuses[m.group(1)] == m.group(2), f"{path.name}: {m.group(1)} typed as {m.group(2)}"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_papermill_sees_every_parameter(path):
+    """papermill cannot parse a parameter line whose comment holds '=' or quotes; -p would then fail."""
+    import papermill as pm
+
+    assert set(pm.inspect_notebook(str(path))) == set(params(path.stem, "paper"))

@@ -20,6 +20,7 @@ from .report import render_report
 from . import section3  # noqa: E402,F401  Sec. II-III: Theorems 1-3, Remarks 1-2
 from . import assignment  # noqa: E402,F401  Sec. IV-A: Algorithm 1, Theorem 6
 from . import submodularity  # noqa: E402,F401  Sec. IV-B: Theorems 7-8
+from . import tracking  # noqa: E402,F401  Sec. V-A/B: Figs. 4-7
 from . import fig8  # noqa: E402,F401  Sec. V-C: Fig. 8
 from . import fig9  # noqa: E402,F401  Sec. V-D: Fig. 9, greedy teams
 

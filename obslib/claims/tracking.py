@@ -1,0 +1,477 @@
+"""Claims of Section V-A (two sensors tracking a target, Figs. 4-6; notebook 05) and
+Section V-B (the adversarial target, Fig. 7; notebook 06).
+
+Every check re-runs the experiments of :mod:`obslib.tracking` with the parameters of its notebook
+under the profile of :mod:`obslib.profiles` (Monte Carlo sizes shrink in ``quick``).
+
+The verdict rules are fixed in the code before the evidence: see each check's docstring.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+
+from .. import tracking as tr
+from ..profiles import params
+from ._ledger import Finding, claim
+
+NB5 = "05_two_sensors_tracking"
+NB6 = "06_adversarial_target"
+
+#: A published figure number counts as matched when ours is within this relative distance.
+FIGURE_TOLERANCE = 0.15
+
+#: Transitions around k = 50 where the paper says the best pair "changes frequently".
+K50_WINDOW = (30, 70)
+
+def circle_setup(p: dict) -> tr.TrackingSetup:
+    return tr.setup_from_params(tr.PAPER_CIRCLE, p)
+
+
+def adversarial_setup(p: dict) -> tr.TrackingSetup:
+    return tr.setup_from_params(tr.PAPER_ADVERSARIAL, p)
+
+
+@lru_cache(maxsize=8)
+def _mc(setup: tr.TrackingSetup, n_seeds: int, first_seed: int, strategies=tr.STRATEGIES):
+    return tr.monte_carlo(setup, n_seeds, strategies, first_seed)
+
+
+@lru_cache(maxsize=8)
+def _single(setup: tr.TrackingSetup, strategy: str, seed: int):
+    return tr.simulate(setup, strategy, seed=seed)
+
+
+@lru_cache(maxsize=4)
+def _partners(setup: tr.TrackingSetup, n_seeds: int, first_seed: int):
+    return tr.partner_study(setup, n_seeds, first_seed)
+
+
+def _r(x, n=3):
+    return float(round(float(x), n))
+
+
+# ---------------------------------------------------------------------------------------------
+# Section V-A
+# ---------------------------------------------------------------------------------------------
+
+
+@claim(
+    id="fig6-figure-data",
+    where="Sec. V-A, Figs. 5-6 (published run)",
+    statement="The published run: pair changes 148 (strategy 1) and 102 (partner of s2, strategy "
+    "2) of 314; mean bound 0.73/0.49/0.27, mean error 0.16/0.19/0.22, mean trace(Sigma) "
+    "0.073/0.140/0.217 for strategies 1/2/3.",
+    paper="Figure data of the published run (EXPERIMENTS.md).",
+    notebook=NB5,
+)
+def _fig6_data(profile: str) -> Finding:
+    """Our single run at the notebook's seed against the 12 published numbers.
+
+    reproduced: all within 15 % (relative; the switch count 0 of strategy 3 exactly); partly:
+    at least half; refuted otherwise. Our noise realisation is not theirs, so only the size can
+    match; the Monte Carlo means are in the evidence.
+    """
+    p = params(NB5, profile)
+    setup = circle_setup(p)
+    rows, n_ok, n_all = {}, 0, 0
+    mc = _mc(setup, p["n_seeds"], p["seed"])
+    for name, pub in tr.PUBLISHED_CIRCLE.items():
+        ours = _single(setup, name, p["seed"]).summary()
+        row = {}
+        for key, val in pub.items():
+            o = ours[key]
+            ok = o == val if val == 0 else abs(o - val) <= FIGURE_TOLERANCE * abs(val)
+            n_ok += ok
+            n_all += 1
+            row[key] = {"published": val, "ours": _r(o, 4), "within": bool(ok)}
+        r = mc[name]
+        row["mc_mean"] = {
+            "switches": _r(r.switches.mean(), 1),
+            "mean_bound": _r(r.bound.mean()),
+            "mean_error": _r(r.error.mean()),
+            "median_run_error": _r(np.median(r.error.mean(axis=1))),
+            "mean_trace": _r(r.trace_cov.mean(), 4),
+        }
+        rows[name] = row
+    status = "reproduced" if n_ok == n_all else ("partly" if 2 * n_ok >= n_all else "refuted")
+    s1, s2, s3 = (rows[k] for k in tr.STRATEGIES)
+    ours = (
+        f"Seed {p['seed']}: {n_ok} of {n_all} numbers within {FIGURE_TOLERANCE:.0%}: switches "
+        f"{s1['switches']['ours']:.0f}/{s2['switches']['ours']:.0f}, mean bound "
+        f"{s1['mean_bound']['ours']:.2f}/{s2['mean_bound']['ours']:.2f}/"
+        f"{s3['mean_bound']['ours']:.2f}, "
+        f"error {s1['mean_error']['ours']:.3f}/{s2['mean_error']['ours']:.3f}/"
+        f"{s3['mean_error']['ours']:.3f}, trace {s1['mean_trace']['ours']:.4f}/"
+        f"{s2['mean_trace']['ours']:.4f}/{s3['mean_trace']['ours']:.4f}. Over {p['n_seeds']} "
+        f"seeds strategy 3's mean error is {s3['mc_mean']['mean_error']:.2f} (median run "
+        f"{s3['mc_mean']['median_run_error']:.2f}): it loses the target in some runs."
+    )
+    return Finding(status, ours, {"seed": p["seed"], "rows": rows, "tolerance": FIGURE_TOLERANCE})
+
+
+@claim(
+    id="fig6-best-pair",
+    where="Sec. V-A, Fig. 6",
+    statement="The first strategy (flexible best pair) has lower estimation error and "
+    "trace(Sigma) than strategies (2) and (3) almost all times.",
+    paper="\"has lower epsilon and trace of covariance almost all times\" (one run).",
+    notebook=NB5,
+)
+def _fig6_best_pair(profile: str) -> Finding:
+    """Monte Carlo over ``n_seeds`` common-noise realisations (steps 2.., step 1 is identical).
+
+    reproduced: strategy 1's run means of error and trace are lower than each other strategy's
+    in >= 95 % of runs AND its Monte Carlo mean is lower at >= 90 % of steps ("almost all
+    times") for error and trace against both; partly: only the first; refuted: not even that.
+    """
+    p = params(NB5, profile)
+    mc = _mc(circle_setup(p), p["n_seeds"], p["seed"])
+    cmp = tr.compare_strategies(mc)
+    w = cmp["wins"]
+    runs_ok = all(w[o][k] >= 0.95 for o in w for k in ("run_error", "run_trace"))
+    times_ok = all(w[o][k] >= 0.90 for o in w for k in ("error_stepmean", "trace_stepmean"))
+    status = "reproduced" if runs_ok and times_ok else ("partly" if runs_ok else "refuted")
+    st = cmp["strategies"]
+    m2, m3 = w["best-partner"], w["fixed-pair"]
+    least = min(m2["run_error"], m2["run_trace"], m3["run_error"], m3["run_trace"])
+    ours = (
+        f"Over {p['n_seeds']} noise seeds strategy 1 has the lower run-mean error and trace in "
+        + ("every run" if least == 1 else f"at least {least:.0%} of runs")
+        + f" against both (mean error {st['best-pair']['mean_error']:.3f} vs "
+        f"{st['best-partner']['mean_error']:.3f} / {st['fixed-pair']['mean_error']:.3f}, trace "
+        f"{st['best-pair']['mean_trace']:.4f} vs {st['best-partner']['mean_trace']:.4f} / "
+        f"{st['fixed-pair']['mean_trace']:.4f}); "
+        + ("and almost all times" if times_ok else "but not almost all times")
+        + f": its mean is lower at {m2['error_stepmean']:.0%} (error) and "
+        f"{m2['trace_stepmean']:.0%} (trace) of steps against strategy 2, "
+        f"{m3['error_stepmean']:.0%} / {m3['trace_stepmean']:.0%} against strategy 3; step by "
+        f"step in single runs {m2['error_pointwise']:.0%} / {m2['trace_pointwise']:.0%} and "
+        f"{m3['error_pointwise']:.0%} / {m3['trace_pointwise']:.0%}."
+    )
+    ev = {
+        "n_seeds": p["n_seeds"],
+        "wins": {o: {k: _r(v) for k, v in d.items()} for o, d in w.items()},
+        "means": {
+            n: {k: _r(v, 4) for k, v in d.items() if not k.startswith("step_")}
+            for n, d in st.items()
+        },
+    }
+    return Finding(status, ours, ev)
+
+
+@claim(
+    id="fig6-higher-bound",
+    where="Sec. V-A, Fig. 6",
+    statement="The first strategy maintains a higher lower bound C^-1 than strategies (2) and (3).",
+    paper="\"the first strategy maintains a higher C^-1 lower bound\".",
+    notebook=NB5,
+)
+def _fig6_higher_bound(profile: str) -> Finding:
+    """reproduced: strategy 1's Monte Carlo mean bound is higher at >= 90 % of steps against both
+    others; partly: higher on average over the run; refuted otherwise."""
+    p = params(NB5, profile)
+    mc = _mc(circle_setup(p), p["n_seeds"], p["seed"])
+    b1 = mc["best-pair"].bound[:, 1:]
+    frac = {o: float((b1.mean(0) > mc[o].bound[:, 1:].mean(0)).mean()) for o in tr.STRATEGIES[1:]}
+    point = {o: float((b1 > mc[o].bound[:, 1:]).mean()) for o in tr.STRATEGIES[1:]}
+    avg = {o: bool(b1.mean() > mc[o].bound[:, 1:].mean()) for o in tr.STRATEGIES[1:]}
+    if min(frac.values()) >= 0.9:
+        status = "reproduced"
+    else:
+        status = "partly" if all(avg.values()) else "refuted"
+    ours = (
+        f"Strategy 1's mean bound is higher at {frac['best-partner']:.0%} of steps than strategy "
+        f"2's and at {frac['fixed-pair']:.0%} than strategy 3's ({p['n_seeds']} seeds); run by run "
+        f"at {point['best-partner']:.0%} / {point['fixed-pair']:.0%} of steps. (At a common "
+        "estimate it is higher by construction; the runs' estimates differ.)"
+    )
+    return Finding(status, ours, {"stepmean": frac, "pointwise": point, "n_seeds": p["n_seeds"]})
+
+
+@claim(
+    id="fig6-bound-correlation",
+    where="Sec. V-A, Fig. 6",
+    statement="In all three strategies a higher bound correlates with lower error and "
+    "trace(Sigma), suggesting that improving the bound improves tracking.",
+    paper="\"in all three cases, higher C^-1 correlates with lower epsilon and trace(Sigma)\".",
+    notebook=NB5,
+)
+def _fig6_correlation(profile: str) -> Finding:
+    """Spearman correlation over time within each run, median over seeds. A strategy counts when
+    the median correlation is <= -0.1 for both error and trace. reproduced: all three; partly:
+    one or two; refuted: none. The correlation of the per-step means pooled over the three
+    strategies, and the same with the Euclidean (geometry-only) bound, are in the evidence."""
+    p = params(NB5, profile)
+    mc = _mc(circle_setup(p), p["n_seeds"], p["seed"])
+    med, med_e, holds = {}, {}, {}
+    for name, r in mc.items():
+        c = tr.bound_correlation(r, "own")
+        ce = tr.bound_correlation(r, "euclidean")
+        med[name] = {k: _r(np.median(v)) for k, v in c.items()}
+        med_e[name] = {k: _r(np.median(v)) for k, v in ce.items()}
+        holds[name] = med[name]["error"] <= -0.1 and med[name]["trace"] <= -0.1
+    pool = {
+        k: _r(
+            tr.spearman(
+                np.concatenate([r.bound[:, 1:].mean(0) for r in mc.values()]),
+                np.concatenate([getattr(r, a)[:, 1:].mean(0) for r in mc.values()]),
+            )
+        )
+        for k, a in (("error", "error"), ("trace", "trace_cov"))
+    }
+    n = sum(holds.values())
+    status = "reproduced" if n == 3 else ("partly" if n else "refuted")
+    ours = (
+        "Median within-run Spearman correlation of the bound with (error, trace): "
+        + "; ".join(
+            f"strategy {i + 1} ({med[s]['error']:+.2f}, {med[s]['trace']:+.2f})"
+            for i, s in enumerate(tr.STRATEGIES)
+        )
+        + f". Across the strategies (per-step means pooled) ({pool['error']:+.2f}, "
+        f"{pool['trace']:+.2f}). The claim holds between strategies and within {n} of 3."
+    )
+    ev = {"median_own": med, "median_euclidean": med_e, "pooled": pool, "holds": holds}
+    return Finding(status, ours, ev)
+
+
+@claim(
+    id="fig5-switching-k50",
+    where="Sec. V-A, Fig. 5(a)",
+    statement="Around k = 50 the best pair changes frequently.",
+    paper="\"Around k=50, the best pair changes frequently\".",
+    notebook=NB5,
+)
+def _fig5_k50(profile: str) -> Finding:
+    """Switch rate of strategy 1 over the transitions in k = 30..70 against the rest of the run.
+    reproduced: the window's rate is >= 0.5 and above the rest's, in the Monte Carlo and in
+    the single run; partly: in one of them; refuted: neither."""
+    p = params(NB5, profile)
+    setup = circle_setup(p)
+    mc = _mc(setup, p["n_seeds"], p["seed"])
+    lo, hi = K50_WINDOW
+    rate = tr.switch_rate(mc["best-pair"])
+    one = _single(setup, "best-pair", p["seed"]).switched.astype(float)
+    win = np.zeros(rate.size, bool)
+    win[lo - 1 : hi - 1] = True  # transition k -> k+1 sits at index k-1
+
+    def judge(r):
+        return float(r[win].mean()), float(r[~win].mean())
+
+    (mw, mr), (sw_, sr) = judge(rate), judge(one)
+    ok_mc, ok_one = mw >= 0.5 and mw > mr, sw_ >= 0.5 and sw_ > sr
+    # other windows of the same width (not overlapping this one) switching as often
+    width = hi - lo
+    roll = np.convolve(rate, np.ones(width) / width, mode="valid")  # roll[m]: k = m+1 .. m+width
+    starts = [m + 1 for m in np.flatnonzero(roll >= mw) if m + 1 > hi or m + 1 + width < lo]
+    spans = []
+    for k in starts:
+        if spans and k == spans[-1][1] + 1:
+            spans[-1][1] = k
+        else:
+            spans.append([k, k])
+    hot = ", ".join(f"{a}" if a == b else f"{a}-{b}" for a, b in spans)
+    status = "reproduced" if ok_mc and ok_one else ("partly" if ok_mc or ok_one else "refuted")
+    ours = (
+        f"Strategy 1 changes pair at {mw:.0%} of the transitions in k = {lo}..{hi} against "
+        f"{mr:.0%} elsewhere ({p['n_seeds']} seeds; seed {p['seed']}: {sw_:.0%} vs {sr:.0%}). "
+        + (
+            f"Not special to k = 50: windows of the same width starting at k = {hot} switch "
+            "at least as often."
+            if spans
+            else "No other window of that width switches as often."
+        )
+    )
+    ev = {"window": K50_WINDOW, "mc": (_r(mw), _r(mr)), "single": (_r(sw_), _r(sr)),
+          "other_hot_window_starts": spans}
+    return Finding(status, ours, ev)
+
+
+@claim(
+    id="sec5a-s1-best-partner",
+    where="Sec. V-A, strategy (3)",
+    statement="s1 gives the best performance amongst all other sensors, on average, as the fixed "
+    "partner of s2 on the circular trajectory.",
+    paper="\"We chose s1 since it gives the best performance amongst all other sensors, on an "
+    "average\".",
+    notebook=NB5,
+)
+def _s1_partner(profile: str) -> Finding:
+    """Strategy (3) with every partner of s2 over ``n_seeds`` seeds. reproduced: s1 has the
+    lowest mean trace AND the lowest mean error; partly: lowest in at least one of mean trace,
+    mean error, median run error, fraction of lost runs; refuted: none."""
+    p = params(NB5, profile)
+    setup = circle_setup(p)
+    ps = _partners(setup, p["n_seeds"], p["seed"])
+    lower_is_better = ("mean_trace", "mean_error", "median_error", "lost")
+    best = {key: min(ps, key=lambda j: ps[j][key]) for key in lower_is_better}
+    best["mean_bound"] = max(ps, key=lambda j: ps[j]["mean_bound"])
+    s1 = 0
+    wins = [k for k in ("mean_trace", "mean_error", "median_error", "lost") if best[k] == s1]
+    if best["mean_trace"] == s1 and best["mean_error"] == s1:
+        status = "reproduced"
+    else:
+        status = "partly" if wins else "refuted"
+    ours = (
+        f"Over {p['n_seeds']} seeds, partners of s2: "
+        + "; ".join(
+            f"s{j + 1} trace {d['mean_trace']:.3f}, error {d['mean_error']:.2f} (median "
+            f"{d['median_error']:.2f}), lost {d['lost']:.0%}, bound {d['mean_bound']:.3f}"
+            for j, d in ps.items()
+        )
+        + f". s1 is best on {', '.join(wins) if wins else 'nothing'}; the highest bound is "
+        f"s{best['mean_bound'] + 1}'s."
+    )
+    ev = {"partners": {f"s{j + 1}": {k: _r(v) for k, v in d.items()} for j, d in ps.items()},
+          "best": {k: f"s{v + 1}" for k, v in best.items()}}
+    return Finding(status, ours, ev)
+
+
+# ---------------------------------------------------------------------------------------------
+# Section V-B
+# ---------------------------------------------------------------------------------------------
+
+@lru_cache(maxsize=16)
+def _adv_batch(setup: tr.TrackingSetup, strategy: str, n_seeds: int, first_seed: int):
+    return tr.simulate_batch(setup, strategy, seeds=range(first_seed, first_seed + n_seeds))
+
+
+def _adv_stats(batch: tr.BatchResult) -> dict:
+    d = tr.entrapment_summary(batch)
+    return {
+        "entrapped": d["entrapped"],
+        "max_from_start": _r(d["max_from_start"]),
+        "reach": _r(d["reach"], 2),
+        "bound_mean": _r(d["bound_mean"]),
+        "bound_mean_range": tuple(_r(x) for x in d["bound_mean_range"]),
+        "icn_min": _r(d["icn_min"], 4),
+        "icn_mean": _r(d["icn_mean"]),
+        "switches": _r(d["switches"], 1),
+        "mean_error": _r(d["mean_error"]),
+    }
+
+
+def strong_adversaries(p: dict) -> dict:
+    """The adversary variants of notebook 06: name -> setup."""
+    return tr.adversary_variants(adversarial_setup(p), p["n_radii"], p["n_angles"])
+
+
+@claim(
+    id="fig7-entrapment",
+    where="Sec. V-B, Fig. 7",
+    statement="An adversarial target that minimises C^-1 is entrapped by sensors using the "
+    "best-pair strategy: the inverse condition number remains at a high value.",
+    paper="\"An adversarial target is entrapped by sensors using best pairing strategy. The "
+    "inverse of the condition number remains at a high value.\"",
+    notebook=NB6,
+)
+def _fig7_entrapment(profile: str) -> Finding:
+    """Over ``n_seeds`` runs of the paper's adversary against strategy (1): a run is entrapped
+    when the target stays within 20 % of its reach from the start, the bound averages >= 0.5 and
+    the exact C^-1 the sensors face stays >= 0.1 (:data:`obslib.tracking.ENTRAPMENT_CRITERIA`).
+    reproduced: every run; partly: some; refuted: none. The same adversary against strategy (3)
+    is the control; the stronger adversaries (the whole disc of controls; knowing the sensors'
+    next pair) are reported in the evidence."""
+    p = params(NB6, profile)
+    setup = adversarial_setup(p)
+    main = _adv_stats(_adv_batch(setup, "best-pair", p["n_seeds"], p["seed"]))
+    control = _adv_stats(_adv_batch(setup, "fixed-pair", p["n_seeds"], p["seed"]))
+    strong = {
+        name: _adv_stats(_adv_batch(s, "best-pair", p["n_seeds_strong"], p["seed"]))
+        for name, s in strong_adversaries(p).items()
+        if name != "paper"
+    }
+    frac = main["entrapped"]
+    status = "reproduced" if frac == 1 else ("partly" if frac > 0 else "refuted")
+    lo, hi = main["bound_mean_range"]
+    ours = (
+        f"Entrapped in {frac:.0%} of {p['n_seeds']} runs: the target stays within "
+        f"{main['max_from_start']:.2f} of its start (reach {main['reach']:.1f}), the bound "
+        "averages "
+        f"{lo:.2f}-{hi:.2f} per run (published run 0.79) and the exact C^-1 never drops below "
+        f"{main['icn_min']:.3f}; against the fixed pair (s2, s1) the same target drives it to "
+        f"{control['icn_min']:.4f}. Stronger targets: "
+        + "; ".join(
+            f"{n}: entrapped {d['entrapped']:.0%}, C^-1 min {d['icn_min']:.3f}, bound "
+            f"{d['bound_mean']:.2f}"
+            for n, d in strong.items()
+        )
+        + f" ({p['n_seeds_strong']} runs each)."
+    )
+    ev = {"paper_adversary": main, "fixed_pair_control": control, "stronger": strong,
+          "criteria": dict(tr.ENTRAPMENT_CRITERIA)}
+    return Finding(status, ours, ev)
+
+
+@claim(
+    id="fig7-switch-mechanism",
+    where="Sec. V-B, Fig. 7 caption",
+    statement="Even if the target moves closer to a sensor to reduce C^-1, the sensor pair "
+    "switches, thereby increasing C^-1.",
+    paper="\"the sensor pair switches whenever the target gets closer to a sensor\" (Sec. V-B).",
+    notebook=NB6,
+)
+def _fig7_switch(profile: str) -> Finding:
+    """Pooled over ``n_seeds`` runs (:func:`obslib.tracking.switch_mechanism`). reproduced: the
+    pair switches after >= 90 % of the moves that bring the target closer to a sensor of the
+    pair AND >= 90 % of switches give the sensors a higher C^-1 than the target aimed at;
+    partly: only the first; refuted: not the first."""
+    p = params(NB6, profile)
+    b = _adv_batch(adversarial_setup(p), "best-pair", p["n_seeds"], p["seed"])
+    ms = [tr.switch_mechanism(b.run(i)) for i in range(b.n_runs)]
+    closer = sum(m["closer"] for m in ms)
+    sw_closer = sum(m["switch_if_closer"] * m["closer"] for m in ms) / max(closer, 1)
+    n_sw = sum(m["switches"] for m in ms)
+    raised = sum(m["raised"] * m["switches"] for m in ms) / max(n_sw, 1)
+    gain = sum(m["mean_gain"] * m["switches"] for m in ms) / max(n_sw, 1)
+    trans = sum(m["transitions"] for m in ms)
+    if sw_closer >= 0.9 and raised >= 0.9:
+        status = "reproduced"
+    else:
+        status = "partly" if sw_closer >= 0.9 else "refuted"
+    ours = (
+        f"The target moves closer to a sensor of the current pair at {closer / trans:.0%} of the "
+        f"transitions; the pair then switches {sw_closer:.0%} of the time (switches overall "
+        f"{n_sw / trans:.0%}). A switch leaves the sensors a higher C^-1 than the target aimed "
+        f"at in only {raised:.0%} of switches (mean gain {gain:+.3f})."
+    )
+    ev = {"n_seeds": p["n_seeds"], "closer_fraction": _r(closer / trans),
+          "switch_if_closer": _r(sw_closer), "raised": _r(raised), "mean_gain": _r(gain, 4)}
+    return Finding(status, ours, ev)
+
+
+@claim(
+    id="fig7-figure-data",
+    where="Sec. V-B, Fig. 7 (published run)",
+    statement="The published adversarial run: the sensors' bound averages about 0.79 and the "
+    "pair switches at 306 of 314 transitions.",
+    paper="Figure data of the published run (EXPERIMENTS.md).",
+    notebook=NB6,
+)
+def _fig7_data(profile: str) -> Finding:
+    """Our run at the notebook's seed: reproduced if both numbers are within 15 %; partly if
+    one; refuted if none. The spread over seeds is in the evidence."""
+    p = params(NB6, profile)
+    setup = adversarial_setup(p)
+    r = _single(setup, "best-pair", p["seed"])
+    b = _adv_batch(setup, "best-pair", p["n_seeds"], p["seed"])
+    pub = tr.PUBLISHED_ADVERSARIAL
+    mb, sw = float(r.bound.mean()), r.switches
+    ok_b = abs(mb - pub["mean_bound"]) <= FIGURE_TOLERANCE * pub["mean_bound"]
+    ok_s = abs(sw - pub["switches"]) <= FIGURE_TOLERANCE * pub["switches"]
+    status = "reproduced" if ok_b and ok_s else ("partly" if ok_b or ok_s else "refuted")
+    per_run = b.bound.mean(axis=1)
+    near = np.abs(per_run - pub["mean_bound"]) <= FIGURE_TOLERANCE * pub["mean_bound"]
+    near = float(near.mean())
+    ours = (
+        f"Seed {p['seed']}: mean bound {mb:.3f}, {sw} switches of {r.steps - 1}. Over "
+        f"{p['n_seeds']} seeds the mean bound ranges {per_run.min():.2f}-{per_run.max():.2f} "
+        f"(median {np.median(per_run):.2f}; within 15 % of 0.79 in {near:.0%} of runs), switches "
+        f"{b.switches.min()}-{b.switches.max()}."
+    )
+    ev = {"seed": p["seed"], "mean_bound": _r(mb), "switches": int(sw),
+          "per_run_bound": (_r(per_run.min()), _r(np.median(per_run)), _r(per_run.max())),
+          "near_published": _r(near)}
+    return Finding(status, ours, ev)
