@@ -14,6 +14,10 @@ scenes
     Seeded random scenes, including near-degenerate ones.
 assignment
     Unique pair assignment: greedy Algorithm 1, relaxed matching, exact MILP optimum.
+symbolic
+    SymPy derivations of Theorems 4-5 (imported on demand: ``import obslib.symbolic``).
+pair_form
+    Numerical side of the pair closed form: Fig. 2 grids, the maximising alpha (beyond the paper).
 bound_checks
     Numerical audits of Theorems 1-3 and Remark 1.
 measures

@@ -4,7 +4,7 @@ Theorem 1 bounds the unknown ``C^{-1}(O(o, u_o))`` using only the known part ``O
 (the rows ``o - p_i``) and the speed bound ``u_max``::
 
     C^{-1}(O(o, u_o)) >= sigma_min(O(o)) / sqrt(sigma_max(O(o))^2 + u_max^2)
-                       = sqrt(lambda_min / (lambda_max + u_max^2))           (Eq. (6), (25))
+                       = sqrt(lambda_min / (lambda_max + u_max^2))           (Eq. (21), (22))
 
 with ``lambda`` the eigenvalues of ``O(o)^T O(o)``. For two sensors these eigenvalues have a
 closed form (Theorem 4); :func:`pair_bounds` evaluates it for all pairs and all targets at
@@ -30,7 +30,7 @@ __all__ = [
 def lower_bound(sensors, target, u_max) -> float:
     """Theorem 1's lower bound on ``C^{-1}(O(o, u_o))`` for any number of sensors.
 
-    Computed by SVD of ``O(o)`` (Eq. (6)): ``sigma_min / sqrt(sigma_max^2 + u_max^2)``.
+    Computed by SVD of ``O(o)`` (Eq. (21)): ``sigma_min / sqrt(sigma_max^2 + u_max^2)``.
 
     Parameters
     ----------
@@ -145,7 +145,7 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
     -------
     ndarray, shape (N, N, L)
         ``W[i, j, l] = sqrt(lambda_min / (lambda_max + u_max^2))`` for rows
-        ``o_l - p_i, o_l - p_j`` (Eq. (7)); symmetric in ``i, j`` and zero on ``i == j``.
+        ``o_l - p_i, o_l - p_j`` (Eq. (9)); symmetric in ``i, j`` and zero on ``i == j``.
     """
     v = relative_vectors(sensors, targets, cov)
     v, u2 = _normalise(v, as_u_max(u_max, v.shape[1]) ** 2)
@@ -154,7 +154,7 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
 
 
 def pair_bound_polar(alpha, theta, u_over_d):
-    """Theorem 4's closed form in polar coordinates (Eq. (7)).
+    """Theorem 4's closed form in polar coordinates (Eq. (9)).
 
     ``sqrt((1 + a^2 - s) / (1 + a^2 + s + 2 u^2/d^2))`` with
     ``s = sqrt(1 + a^4 + 2 a^2 cos(2 theta))``, ``a = alpha = d_jo / d_io``,

@@ -1,12 +1,12 @@
 """The observability matrix of Section III and its exact inverse condition number.
 
 For ``N`` stationary range sensors at ``p_i`` and a target at ``o`` moving with control
-``u_o`` (the system of Eq. (1), measurements ``z_i = 1/2 ||p_i - o||^2``), the local
-nonlinear observability matrix reduces to the stacked matrix of Eq. (4)::
+``u_o`` (the system of Eq. (3), measurements ``z_i = 1/2 ||p_i - o||^2``), the local
+nonlinear observability matrix reduces to the stacked matrix of Eq. (5)::
 
     O(o, u_o) = [o - p_1; o - p_2; ...; o - p_N; u_o]        shape (N + 1, 2)
 
-Its inverse condition number ``C^{-1} = sigma_min / sigma_max`` (Eq. (5)) is the
+Its inverse condition number ``C^{-1} = sigma_min / sigma_max`` (Eq. (6)) is the
 observability measure the paper uses; it needs ``u_o``, which the sensors do not know.
 """
 
@@ -20,7 +20,7 @@ __all__ = ["observability_matrix", "inverse_condition_number", "relative_rows"]
 
 
 def relative_rows(sensors, target) -> np.ndarray:
-    """Validated rows ``o - p_i`` of the known part ``O(o)`` (appendix, Eq. (13)).
+    """Validated rows ``o - p_i`` of the known part ``O(o)`` (appendix, Eq. (12)).
 
     Parameters
     ----------
@@ -42,7 +42,7 @@ def relative_rows(sensors, target) -> np.ndarray:
 
 
 def observability_matrix(sensors, target, u=None) -> np.ndarray:
-    """Stacked observability matrix ``O(o, u_o)`` of Eq. (4).
+    """Stacked observability matrix ``O(o, u_o)`` of Eq. (5).
 
     Parameters
     ----------
@@ -79,7 +79,7 @@ def _inverse_condition(stack: np.ndarray) -> np.ndarray:
 
 
 def inverse_condition_number(sensors, target, u=None):
-    """Exact inverse condition number ``C^{-1}(O(o, u_o))`` of Eq. (5), by SVD.
+    """Exact inverse condition number ``C^{-1}(O(o, u_o))`` of Eq. (6), by SVD.
 
     Parameters
     ----------

@@ -11,7 +11,7 @@ from obslib.scenes import SCENE_KINDS, random_scenes
 
 
 def svd_bound(rows, u_max):
-    """Theorem 1 straight from numpy's SVD of the rows o - p_i (Eq. (6))."""
+    """Theorem 1 straight from numpy's SVD of the rows o - p_i (Eq. (21))."""
     sv = np.linalg.svd(np.asarray(rows, dtype=float), compute_uv=False)
     return sv[-1] / np.sqrt(sv[0] ** 2 + u_max**2)
 

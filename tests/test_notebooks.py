@@ -57,7 +57,10 @@ def test_profiles_only_override_known_parameters():
 def test_toc_lists_every_notebook_and_every_entry_exists():
     toc = yaml.safe_load((ROOT / "_toc.yml").read_text())
     files = [toc["root"]] + [ch["file"] for part in toc["parts"] for ch in part["chapters"]]
+    generated = {"book/execution"}  # written by make book (obslib.run), not committed
     for f in files:
+        if f in generated:
+            continue
         assert any((ROOT / f"{f}{ext}").exists() for ext in (".md", ".ipynb")), f"toc entry {f} missing"
     for nb in NOTEBOOKS:
         assert f"notebooks/{nb.stem}" in files, f"{nb.name} is not in _toc.yml"

@@ -1,0 +1,535 @@
+"""SymPy derivations for the two-sensor closed form (Theorem 4) and its extremes (Theorem 5).
+
+The paper states the pair bound in polar form (Theorem 4, Eq. (9))::
+
+    C^-1(O_ij(o, u_o)) = sqrt((1 + a^2 - S) / (1 + a^2 + S + 2 u^2 / d_io^2)),
+    S = sqrt(1 + a^4 + 2 a^2 cos(2 theta_ji)),   a = alpha = d_jo / d_io,
+
+and proves it (appendix, proof of Theorem 4) from ``O_ij(o)^T O_ij(o)`` written in Cartesian
+coordinates (Eq. (32)) and in the polar coordinates of Eq. (8). Theorem 5 locates its extremes
+from derivatives printed in its proof. This module rebuilds every one of those objects with
+SymPy, so that the notebook ``02_pair_closed_form`` and the tests can compare the paper's printed
+expressions with the derived ones:
+
+* :func:`cartesian_gram`, :func:`polar_gram` and :func:`eigenvalues` derive the matrix and its
+  eigenvalues; :func:`printed_cartesian_gram`, :func:`printed_polar_gram` and
+  :func:`printed_eigenvalues` are the appendix's printed versions.
+* :func:`theorem4_bound` is Eq. (9) in ``alpha``, ``theta`` and ``q = u_max / d_io``.
+* :func:`dbound_dtheta`, :func:`dbound_dalpha` (SymPy's derivatives), their factored forms
+  :func:`dbound_dtheta_closed`, :func:`dbound_dalpha_closed`, the stationarity condition
+  :func:`stationarity_alpha` and the paper's printed derivatives (``printed_*``).
+* :func:`alpha_star_squared` derives the maximising ``alpha`` for a fixed ``theta`` in closed
+  form (not in the paper); :func:`alpha_star_closed` is its simplified form.
+* :func:`weyl_2x2_slacks` writes the Weyl inequalities of the proof of Theorem 1 for 2x2
+  symmetric matrices, each next to an equivalent triangle inequality.
+* :func:`lambdify_expr` turns an expression into a NumPy (or mpmath) function and
+  :func:`max_difference_at_rational_points` compares two expressions exactly at random
+  rational points, evaluated at high precision.
+
+All expressions are built on the module's symbols (:data:`OX`, ..., :data:`Q`) and cached.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from functools import lru_cache
+
+import numpy as np
+import sympy as sp
+
+__all__ = [
+    "OX", "OY", "PIX", "PIY", "PJX", "PJY", "U", "D_IO", "D_JO", "THETA_I", "THETA_J",
+    "ALPHA", "THETA", "Q", "S_SYM", "C_SYM", "D_SYM", "CARTESIAN_ARGS", "POLAR_ARGS", "RATIO_ARGS",
+    "relative_rows", "cartesian_gram", "printed_cartesian_gram", "polar_substitution",
+    "polar_gram", "printed_polar_gram", "eigenvalues", "cartesian_eigenvalues", "polar_eigenvalues",
+    "printed_eigenvalues",
+    "bound_from_eigenvalues", "ratio_substitution", "cartesian_ratio_values",
+    "discriminant_cartesian", "theorem4_bound", "theorem4_radicand", "dbound_dtheta",
+    "dbound_dtheta_closed", "dbound_dtheta_at_zero", "dbound_dalpha", "dbound_dalpha_closed",
+    "stationarity_alpha",
+    "printed_stationarity_alpha", "printed_dbound_dalpha", "printed_dbound_dalpha_halfpi",
+    "printed_max_halfpi", "bound_halfpi_piecewise", "alpha_star_squared", "alpha_star_closed",
+    "weyl_2x2_slacks", "lambdify_expr", "max_difference_at_rational_points", "latex_eq",
+]  # fmt: skip
+
+# --- symbols ---------------------------------------------------------------------------------
+#: Cartesian coordinates of the target ``o`` and of the sensors ``p_i``, ``p_j`` (Eq. (31)).
+OX, OY, PIX, PIY, PJX, PJY = sp.symbols("o_x o_y p_ix p_iy p_jx p_jy", real=True)
+#: The target's speed (``u_o``, or its bound ``u_max``).
+U = sp.Symbol("u", nonnegative=True)
+#: Polar coordinates of Eq. (8): ``p_i - o = d_io (cos theta_i, sin theta_i)``, likewise for j.
+D_IO, D_JO = sp.symbols("d_io d_jo", positive=True)
+THETA_I, THETA_J = sp.symbols("theta_i theta_j", real=True)
+#: Theorem 4's variables: ``alpha = d_jo / d_io``, ``theta = theta_ji = theta_j - theta_i``,
+#: ``q = u / d_io``.
+ALPHA = sp.Symbol("alpha", positive=True)
+THETA = sp.Symbol("theta", real=True)
+Q = sp.Symbol("q", nonnegative=True)
+
+CARTESIAN_ARGS = (OX, OY, PIX, PIY, PJX, PJY, U)
+POLAR_ARGS = (D_IO, D_JO, THETA_I, THETA_J, U)
+RATIO_ARGS = (ALPHA, THETA, Q)
+
+#: Abbreviations for display: ``S`` of Eq. (9), ``C`` the bound, ``D`` its denominator.
+S_SYM, C_SYM, D_SYM = sp.symbols("S C D", positive=True)
+
+_COS2 = sp.cos(2 * THETA)
+#: ``S = sqrt(1 + alpha^4 + 2 alpha^2 cos 2 theta)`` of Eq. (9).
+_S = sp.sqrt(1 + ALPHA**4 + 2 * ALPHA**2 * _COS2)
+_N = 1 + ALPHA**2 - _S  # numerator of the squared bound (2 lambda_min / d_io^2)
+_D = 1 + ALPHA**2 + _S + 2 * Q**2  # denominator (2 (lambda_max + u^2) / d_io^2)
+
+
+# --- Theorem 4: the matrix and its eigenvalues ------------------------------------------------
+def relative_rows() -> sp.Matrix:
+    """``O_ij(o)``: the rows ``o - p_i`` and ``o - p_j`` (appendix, Eq. (31))."""
+    return sp.Matrix([[OX - PIX, OY - PIY], [OX - PJX, OY - PJY]])
+
+
+@lru_cache(maxsize=None)
+def cartesian_gram() -> sp.Matrix:
+    """``O_ij(o)^T O_ij(o)`` in Cartesian coordinates, derived (the true Eq. (32))."""
+    o = relative_rows()
+    return (o.T * o).applyfunc(sp.factor_terms)
+
+
+def printed_cartesian_gram() -> sp.Matrix:
+    """The matrix the appendix prints for ``O_ij^T O_ij`` in the proof of Theorem 4 (Eq. (32)).
+
+    Transcribed entry by entry from the paper::
+
+        [[(o_x - p_ix)^2,               (o_x - p_jx)(o_y - p_iy)],
+         [(o_y - p_iy)(o_x - p_jx),     (o_y - p_jy)^2          ]]
+    """
+    return sp.Matrix(
+        [
+            [(OX - PIX) ** 2, (OX - PJX) * (OY - PIY)],
+            [(OY - PIY) * (OX - PJX), (OY - PJY) ** 2],
+        ]
+    )
+
+
+def polar_substitution() -> dict:
+    """Eq. (8): ``p_ix - o_x = d_io cos theta_i``, ``p_iy - o_y = d_io sin theta_i``, same for j."""
+    return {
+        PIX: OX + D_IO * sp.cos(THETA_I),
+        PIY: OY + D_IO * sp.sin(THETA_I),
+        PJX: OX + D_JO * sp.cos(THETA_J),
+        PJY: OY + D_JO * sp.sin(THETA_J),
+    }
+
+
+@lru_cache(maxsize=None)
+def polar_gram() -> sp.Matrix:
+    """``O_ij^T O_ij`` after the polar substitution of Eq. (8), derived."""
+    return cartesian_gram().subs(polar_substitution()).applyfunc(sp.expand)
+
+
+def printed_polar_gram() -> sp.Matrix:
+    """The polar matrix printed in the proof of Theorem 4 (unnumbered, after Eq. (32))."""
+    ci, si, cj, sj = sp.cos(THETA_I), sp.sin(THETA_I), sp.cos(THETA_J), sp.sin(THETA_J)
+    off = D_IO**2 * si * ci + D_JO**2 * sj * cj
+    return sp.Matrix(
+        [
+            [D_IO**2 * ci**2 + D_JO**2 * cj**2, off],
+            [D_JO**2 * sj * cj + D_IO**2 * si * ci, D_IO**2 * si**2 + D_JO**2 * sj**2],
+        ]
+    )
+
+
+def eigenvalues(m: sp.Matrix) -> tuple[sp.Expr, sp.Expr]:
+    """``(lambda_min, lambda_max)`` of a symbolic symmetric 2x2 matrix, from ``Matrix.eigenvals``.
+
+    The two eigenvalues SymPy returns are ``tr/2 -+ sqrt(...)/2``; they are ordered by the sign
+    of their difference (the one carrying ``- sqrt`` is the smaller).
+
+    Raises
+    ------
+    ValueError
+        If ``m`` is not a symmetric 2x2 SymPy matrix.
+    """
+    if not isinstance(m, sp.MatrixBase) or m.shape != (2, 2):
+        shape = getattr(m, "shape", "")
+        raise ValueError(f"expected a 2x2 SymPy matrix, got {type(m).__name__} {shape}")
+    if sp.expand(m[0, 1] - m[1, 0]) != 0:
+        raise ValueError("matrix is not symmetric: m[0, 1] != m[1, 0]")
+    e1, e2 = m.eigenvals(multiple=True)
+    gap = sp.expand(e2 - e1)
+    if gap.could_extract_minus_sign():
+        e1, e2 = e2, e1
+    return e1, e2
+
+
+@lru_cache(maxsize=None)
+def cartesian_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
+    """:func:`eigenvalues` of :func:`cartesian_gram`, cached (SymPy factors the characteristic
+    polynomial, which takes seconds)."""
+    return eigenvalues(cartesian_gram())
+
+
+@lru_cache(maxsize=None)
+def polar_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
+    """:func:`eigenvalues` of :func:`polar_gram`, cached."""
+    return eigenvalues(polar_gram())
+
+
+def printed_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
+    """The eigenvalues printed in the proof of Theorem 4 (Eq. (33)), in ``d_io, d_jo, theta_ji``."""
+    root = sp.sqrt(D_IO**4 + D_JO**4 + 2 * D_IO**2 * D_JO**2 * sp.cos(2 * (THETA_J - THETA_I)))
+    return (D_IO**2 + D_JO**2 - root) / 2, (D_IO**2 + D_JO**2 + root) / 2
+
+
+def bound_from_eigenvalues(lmin, lmax, u=U) -> sp.Expr:
+    """Theorem 1's bound ``sqrt(lambda_min / (lambda_max + u^2))`` (Eq. (21))."""
+    return sp.sqrt(lmin / (lmax + u**2))
+
+
+def ratio_substitution() -> dict:
+    """From polar to Theorem 4's variables: ``d_jo = alpha d_io``, ``theta_j = theta_i + theta``,
+    ``u = q d_io``."""
+    return {D_JO: ALPHA * D_IO, THETA_J: THETA_I + THETA, U: Q * D_IO}
+
+
+def cartesian_ratio_values(point: dict) -> dict:
+    """Theorem 4's ``alpha``, ``theta`` and ``q`` at a Cartesian point, as exact SymPy values.
+
+    ``alpha = |o - p_j| / |o - p_i|``, ``theta = atan2(p_j - o) - atan2(p_i - o)`` and
+    ``q = u / |o - p_i|`` (Eq. (8)). ``point`` maps the symbols of :data:`CARTESIAN_ARGS` to
+    numbers (rationals for exact evaluation).
+    """
+    missing = [s for s in CARTESIAN_ARGS if s not in point]
+    if missing:
+        raise ValueError(f"point lacks values for {missing}")
+    vix, viy = point[PIX] - point[OX], point[PIY] - point[OY]
+    vjx, vjy = point[PJX] - point[OX], point[PJY] - point[OY]
+    di = sp.sqrt(sp.sympify(vix) ** 2 + sp.sympify(viy) ** 2)
+    dj = sp.sqrt(sp.sympify(vjx) ** 2 + sp.sympify(vjy) ** 2)
+    if di == 0 or dj == 0:
+        raise ValueError("a sensor sits on the target (zero distance)")
+    return {
+        ALPHA: dj / di,
+        THETA: sp.atan2(vjy, vjx) - sp.atan2(viy, vix),
+        Q: point[U] / di,
+    }
+
+
+def discriminant_cartesian() -> tuple[sp.Expr, sp.Expr]:
+    """``(lambda_max - lambda_min)^2`` from the Cartesian eigenvalues, and Eq. (33)'s radicand
+    ``d_io^4 + d_jo^4 + 2 d_io^2 d_jo^2 cos(2 theta_ji)`` written in Cartesian coordinates.
+
+    With ``v_i = o - p_i`` the angle enters through ``cos(2 theta_ji) = 2 cos^2 theta_ji - 1``
+    and ``cos theta_ji = v_i . v_j / (|v_i| |v_j|)``, so the second expression is the polynomial
+    ``|v_i|^4 + |v_j|^4 + 2 (2 (v_i . v_j)^2 - |v_i|^2 |v_j|^2)``. Both are polynomials; their
+    difference expands to zero.
+    """
+    lmin, lmax = cartesian_eigenvalues()
+    disc = sp.expand((lmax - lmin) ** 2)
+    vi = (OX - PIX, OY - PIY)
+    vj = (OX - PJX, OY - PJY)
+    ri = vi[0] ** 2 + vi[1] ** 2
+    rj = vj[0] ** 2 + vj[1] ** 2
+    dot = vi[0] * vj[0] + vi[1] * vj[1]
+    paper = ri**2 + rj**2 + 2 * (2 * dot**2 - ri * rj)
+    return disc, sp.expand(paper)
+
+
+def theorem4_radicand() -> sp.Expr:
+    """``S^2 = 1 + alpha^4 + 2 alpha^2 cos(2 theta)`` of Eq. (9)."""
+    return 1 + ALPHA**4 + 2 * ALPHA**2 * _COS2
+
+
+def theorem4_bound(squared: bool = False) -> sp.Expr:
+    """Theorem 4 (Eq. (9)) in ``alpha``, ``theta = theta_ji`` and ``q = u / d_io``.
+
+    ``sqrt((1 + alpha^2 - S) / (1 + alpha^2 + S + 2 q^2))`` with
+    ``S = sqrt(1 + alpha^4 + 2 alpha^2 cos 2 theta)``; with ``squared=True`` the ratio itself.
+    """
+    ratio = _N / _D
+    return ratio if squared else sp.sqrt(ratio)
+
+
+# --- Theorem 5: derivatives --------------------------------------------------------------------
+@lru_cache(maxsize=None)
+def dbound_dtheta() -> sp.Expr:
+    """``d C^-1 / d theta`` of Theorem 4's expression, by SymPy (valid where ``S > 0`` and
+    ``C^-1 > 0``)."""
+    return sp.diff(theorem4_bound(), THETA)
+
+
+def _parts(abbreviate: bool):
+    if abbreviate:
+        return S_SYM, C_SYM, D_SYM
+    return _S, theorem4_bound(), _D
+
+
+def dbound_dtheta_closed(abbreviate: bool = False) -> sp.Expr:
+    """Factored form of :func:`dbound_dtheta`:
+    ``2 alpha^2 sin(2 theta) (1 + alpha^2 + q^2) / (S C D^2)`` with ``D`` the denominator of Eq. (9)
+    and ``C`` the bound itself (with ``abbreviate=True``, ``S``, ``C``, ``D`` stay symbols, for
+    display).
+
+    Its sign is that of ``sin 2 theta``, which suggests the paper's ``alpha^2 sin 2 theta = 0``.
+    But ``C`` vanishes at ``theta = 0, pi`` (``C`` is proportional to ``|sin theta|`` there), so the
+    quotient ``sin 2 theta / C`` does not: the one-sided slopes are ``+-alpha / sqrt((1 + alpha^2)
+    (1 + alpha^2 + q^2))``, and at ``alpha = 1, theta = +-pi/2`` the factor ``S`` vanishes.
+    """
+    S, C, D = _parts(abbreviate)
+    return 2 * ALPHA**2 * sp.sin(2 * THETA) * (1 + ALPHA**2 + Q**2) / (S * C * D**2)
+
+
+def dbound_dtheta_at_zero() -> sp.Expr:
+    """The right-hand slope ``lim_{theta -> 0+} d C^-1 / d theta = alpha / sqrt((1 + alpha^2)
+    (1 + alpha^2 + q^2))`` (derived by hand from :func:`dbound_dtheta_closed`; the tests check it
+    against the derivative evaluated at ``theta = 10^-12``). The left-hand slope is its negative,
+    so ``theta = 0`` is a corner of ``C^-1``, not a stationary point."""
+    return ALPHA / sp.sqrt((1 + ALPHA**2) * (1 + ALPHA**2 + Q**2))
+
+
+@lru_cache(maxsize=None)
+def dbound_dalpha() -> sp.Expr:
+    """``d C^-1 / d alpha`` of Theorem 4's expression, by SymPy."""
+    return sp.diff(theorem4_bound(), ALPHA)
+
+
+def stationarity_alpha(abbreviate: bool = False) -> sp.Expr:
+    """The numerator ``g`` of ``d C^-1 / d alpha`` (its sign and zeros for ``alpha > 0``)::
+
+        g = (1 - alpha^2)(1 - cos 2 theta) + q^2 (S - (alpha^2 + cos 2 theta))
+
+    which is the paper's Eq. (34). ``abbreviate=True`` keeps ``S`` as a symbol (display).
+    """
+    S = _parts(abbreviate)[0]
+    return (1 - ALPHA**2) * (1 - _COS2) + Q**2 * (S - (ALPHA**2 + _COS2))
+
+
+def dbound_dalpha_closed(abbreviate: bool = False) -> sp.Expr:
+    """Factored form of :func:`dbound_dalpha`: ``2 alpha g / (S C D^2)``, ``g`` of
+    :func:`stationarity_alpha`; equivalently ``2 alpha g / (S sqrt(N) D^(3/2))`` with
+    ``N = 1 + alpha^2 - S``. ``abbreviate=True`` keeps ``S``, ``C``, ``D`` as symbols (display)."""
+    S, C, D = _parts(abbreviate)
+    return 2 * ALPHA * stationarity_alpha(abbreviate) / (S * C * D**2)
+
+
+def printed_stationarity_alpha() -> sp.Expr:
+    """Eq. (34) as printed in the proof of Theorem 5 (left-hand side)."""
+    c = sp.cos(2 * THETA)
+    return (1 - ALPHA**2) * (1 - c) + Q**2 * (
+        sp.sqrt(1 + ALPHA**4 + 2 * ALPHA**2 * c) - (ALPHA**2 + c)
+    )
+
+
+def printed_dbound_dalpha() -> sp.Expr:
+    """The expression the proof of Theorem 5 sets to zero for ``d C^-1 / d alpha`` at a fixed
+    ``theta`` (the display before Eq. (34)): ``alpha [Eq. (34)] / D^2.5``."""
+    return ALPHA * printed_stationarity_alpha() / _D ** sp.Rational(5, 2)
+
+
+def printed_dbound_dalpha_halfpi() -> sp.Expr:
+    """The proof's ``d C^-1 / d alpha`` at ``theta = +-pi/2``:
+    ``alpha (1 - alpha^2) / (1 + alpha^2 + |1 - alpha^2| + 2 q^2)^2.5``."""
+    return ALPHA * (1 - ALPHA**2) / (
+        1 + ALPHA**2 + sp.Abs(1 - ALPHA**2) + 2 * Q**2
+    ) ** sp.Rational(5, 2)
+
+
+def printed_max_halfpi() -> sp.Expr:
+    """The proof's maximum over ``theta`` for fixed ``alpha`` (at ``theta = +-pi/2``):
+    ``sqrt((1 + alpha^2 - |1 - alpha^2|) / (1 + alpha^2 + |1 - alpha^2| + 2 q^2))``."""
+    a = sp.Abs(1 - ALPHA**2)
+    return sp.sqrt((1 + ALPHA**2 - a) / (1 + ALPHA**2 + a + 2 * Q**2))
+
+
+def bound_halfpi_piecewise() -> sp.Expr:
+    """``C^-1`` at ``theta = +-pi/2`` without absolute values: ``alpha / sqrt(1 + q^2)`` for
+    ``alpha <= 1`` and ``1 / sqrt(alpha^2 + q^2)`` for ``alpha >= 1`` (a corner at
+    ``alpha = 1``)."""
+    return sp.Piecewise(
+        (ALPHA / sp.sqrt(1 + Q**2), ALPHA <= 1), (1 / sp.sqrt(ALPHA**2 + Q**2), True)
+    )
+
+
+@lru_cache(maxsize=None)
+def alpha_star_squared() -> sp.Expr:
+    """``alpha*^2``, the square of the maximising ``alpha`` for a fixed ``theta``, derived.
+
+    Write ``t = alpha^2``, ``c = cos 2 theta``. Eq. (34) is
+    ``q^2 S = q^2 (t + c) + (t - 1)(1 - c)``; squaring gives a quadratic in ``t`` which SymPy
+    solves. Of its two roots the larger one satisfies the unsquared equation (``t >= 1``, because
+    ``S >= |t + c|`` makes the ``q^2`` term of Eq. (34) non-negative); the notebook and tests
+    check this at rational points.
+    Returned in ``c`` form with ``c = cos 2 theta`` substituted.
+    """
+    t = sp.Symbol("t", positive=True)
+    c = sp.Symbol("c", real=True)
+    lhs = Q**4 * (1 + t**2 + 2 * t * c)
+    rhs = (Q**2 * (t + c) + (t - 1) * (1 - c)) ** 2
+    roots = sp.solve(sp.expand(rhs - lhs), t)
+    if len(roots) != 2:
+        raise RuntimeError(f"expected two roots, got {roots}")
+    # the root with + sqrt: evaluate at a generic point to pick the larger one
+    at = {c: sp.Rational(1, 3), Q: sp.Rational(1, 2)}
+    big = max(roots, key=lambda r: float(r.subs(at)))
+    return sp.simplify(big.subs(c, _COS2))
+
+
+def alpha_star_closed() -> sp.Expr:
+    """Simplified form of the maximiser (beyond the paper)::
+
+        alpha*(theta, q) = sqrt( sqrt(1 + q^2) (sqrt(1 + q^2) sin^2 theta + q^2 |cos theta|)
+                                 / (q^2 + sin^2 theta) )
+
+    ``alpha* = 1`` exactly when ``q = 0`` or ``cos theta = 0``; otherwise ``alpha* > 1``.
+    """
+    r = sp.sqrt(1 + Q**2)
+    s2 = sp.sin(THETA) ** 2
+    return sp.sqrt(r * (r * s2 + Q**2 * sp.Abs(sp.cos(THETA))) / (Q**2 + s2))
+
+
+# --- Theorem 1: the Weyl step for 2x2 symmetric matrices ---------------------------------------
+def weyl_2x2_slacks() -> dict[str, tuple[sp.Expr, sp.Expr]]:
+    """The Weyl inequalities of the proof of Theorem 1 (Eq. (18)) for 2x2 symmetric ``X, Y``.
+
+    ``X = [[a, b], [b, c]]``, ``Y = [[d, e], [e, f]]``, eigenvalues from ``Matrix.eigenvals`` in
+    ascending order. Each entry maps a name to ``(slack, triangle)``: ``slack >= 0`` is the
+    inequality, and ``triangle`` is the same quantity written as a triangle-inequality slack
+    ``(|x| + |y| - |x + y|) / 2`` in the plane, with ``v(X) = (a - c, 2 b)`` (so that
+    ``lambda_{1,2}(X) = tr X / 2 -+ |v(X)| / 2``). ``slack - triangle`` simplifies to 0.
+
+    Names: ``"l1 >= l1+l1"`` (Weyl, i = j = 1), ``"l1 <= l1+l2"``, ``"l1 <= l2+l1"``
+    (dual Weyl, the two arguments of the ``min``), ``"l2 <= l2+l2"`` (dual Weyl, i = j = 2),
+    ``"l2 >= l1+l2"``, ``"l2 >= l2+l1"`` (Weyl, the two arguments of the ``max``).
+    """
+    a, b, c, d, e, f = sp.symbols("a b c d e f", real=True)
+    x = sp.Matrix([[a, b], [b, c]])
+    y = sp.Matrix([[d, e], [e, f]])
+    x1, x2 = eigenvalues(x)
+    y1, y2 = eigenvalues(y)
+    s1, s2 = eigenvalues(x + y)
+
+    def norm(v):
+        return sp.sqrt(sp.expand(v[0] ** 2 + v[1] ** 2))
+
+    def tri(p, r):
+        return (norm(p) + norm(r) - norm((p[0] + r[0], p[1] + r[1]))) / 2
+
+    vx = (a - c, 2 * b)
+    vy = (d - f, 2 * e)
+    vs = (vx[0] + vy[0], vx[1] + vy[1])
+    neg = lambda v: (-v[0], -v[1])  # noqa: E731
+    return {
+        "l1 >= l1+l1": (s1 - (x1 + y1), tri(vx, vy)),
+        "l1 <= l1+l2": ((x1 + y2) - s1, tri(vs, neg(vy))),
+        "l1 <= l2+l1": ((x2 + y1) - s1, tri(vs, neg(vx))),
+        "l2 <= l2+l2": ((x2 + y2) - s2, tri(vx, vy)),
+        "l2 >= l1+l2": (s2 - (x1 + y2), tri(vs, neg(vx))),
+        "l2 >= l2+l1": (s2 - (x2 + y1), tri(vs, neg(vy))),
+    }
+
+
+# --- evaluation helpers ------------------------------------------------------------------------
+def lambdify_expr(expr, args, modules: str = "numpy"):
+    """A numerical function of ``args`` from a SymPy expression (``sympy.lambdify``).
+
+    Parameters
+    ----------
+    expr : sympy.Expr
+        Expression to evaluate.
+    args : sequence of sympy.Symbol
+        Positional arguments of the returned function, in order.
+    modules : {"numpy", "mpmath"}
+        Backend. ``"mpmath"`` evaluates at the working precision of ``mpmath.mp`` (use
+        ``mpmath.workdps``) and takes scalars.
+
+    Raises
+    ------
+    ValueError
+        If ``expr`` has free symbols not among ``args``, or ``modules`` is unknown.
+    """
+    if modules not in ("numpy", "mpmath"):
+        raise ValueError(f"modules must be 'numpy' or 'mpmath', got {modules!r}")
+    args = tuple(args)
+    if not all(isinstance(a, sp.Symbol) for a in args):
+        raise ValueError("args must be SymPy symbols")
+    free = sp.sympify(expr).free_symbols - set(args)
+    if free:
+        names = sorted(str(s) for s in free)
+        raise ValueError(f"expression has free symbols not in args: {names}")
+    return sp.lambdify(args, expr, modules=modules)
+
+
+def _rational(rng: np.random.Generator, lo: float, hi: float, den: int = 997) -> sp.Rational:
+    k = int(rng.integers(int(np.ceil(lo * den)), int(np.floor(hi * den)) + 1))
+    f = Fraction(k, den)
+    return sp.Rational(f.numerator, f.denominator)
+
+
+def max_difference_at_rational_points(
+    lhs, rhs, ranges: dict, n_points: int, seed: int = 0, digits: int = 50, point_map=None
+) -> float:
+    """Largest ``|lhs - rhs|`` over random rational points, evaluated at ``digits`` digits.
+
+    Where SymPy cannot simplify ``lhs - rhs`` to zero, equality is decided by evaluation at
+    exact rational points with ``digits`` significant digits (mpmath): differences of order
+    ``10^-digits`` (relative to the size of the terms) mean the two expressions agree, while a
+    wrong expression differs by order one.
+
+    Parameters
+    ----------
+    lhs, rhs : sympy.Expr
+        The two expressions.
+    ranges : dict
+        ``symbol -> (lo, hi)``; each point draws every symbol as a rational ``k / 997`` in
+        ``[lo, hi]``.
+    n_points : int
+        Number of points (positive).
+    seed : int
+        Seed of the draw.
+    digits : int
+        Working precision in decimal digits, at least 15.
+    point_map : callable, optional
+        ``point -> dict`` of extra substitutions (exact SymPy values) computed from the drawn
+        point, e.g. :func:`cartesian_ratio_values`; they are evaluated to ``digits + 10`` digits.
+
+    Returns
+    -------
+    float
+        The largest absolute difference; a point where the difference is not finite counts
+        as infinity.
+    """
+    import mpmath
+
+    if int(n_points) != n_points or n_points < 1:
+        raise ValueError(f"n_points must be a positive integer, got {n_points!r}")
+    if digits < 15:
+        raise ValueError(f"digits must be at least 15, got {digits!r}")
+    for s, r in ranges.items():
+        if not isinstance(s, sp.Symbol) or len(r) != 2 or not r[0] < r[1]:
+            raise ValueError(f"bad range for {s}: {r!r}")
+    diff = sp.sympify(lhs) - sp.sympify(rhs)
+    rng = np.random.default_rng(seed)
+    points = []
+    for _ in range(int(n_points)):
+        point = {s: _rational(rng, *r) for s, r in ranges.items()}
+        extra = point_map(point) if point_map is not None else {}
+        points.append((point, extra))
+    known = set(points[0][0]) | set(points[0][1])
+    free = diff.free_symbols - known
+    if free:
+        raise ValueError(f"no range for symbols {sorted(map(str, free))}")
+    syms = sorted(diff.free_symbols, key=str)
+    f = sp.lambdify(syms, diff, modules="mpmath")
+    worst = mpmath.mpf(0)
+    with mpmath.workdps(digits):
+        for point, extra in points:
+            vals = {s: mpmath.mpf(r.p) / r.q for s, r in point.items()}
+            vals.update({s: mpmath.mpf(sp.N(v, digits + 10)) for s, v in extra.items()})
+            val = abs(f(*[vals[s] for s in syms]))
+            if not mpmath.isfinite(val):
+                return float("inf")
+            worst = max(worst, val)
+    return float(worst)
+
+
+def latex_eq(lhs: str, expr) -> str:
+    """``lhs = <LaTeX of expr>``, for display with ``IPython.display.Math``."""
+    return f"{lhs} = {sp.latex(expr)}"
