@@ -46,10 +46,13 @@ class PairAssignment:
     """Result of a pair assignment: ``triples`` ``(i, j, l)`` with ``i < j`` and their total ``value``.
 
     For the greedy algorithms the triples are in pick order; otherwise sorted by target.
+    ``n_evaluations`` counts the pair weights the call computed from geometry (``None`` when it
+    was given ``W``): a machine-independent measure of work.
     """
 
     triples: list
     value: float
+    n_evaluations: int | None = None
 
 
 def _as_weights(W) -> np.ndarray:
@@ -163,9 +166,11 @@ class _GeometrySource:
         self.y = np.ascontiguousarray(v[..., 1].T)
         self.r = self.x * self.x + self.y * self.y
         self.u2 = u2
+        self.n_evaluations = 0
 
     def _weights(self, l, a, b):
         x, y = self.x[l], self.y[l]
+        self.n_evaluations += a.size
         return _pair_kernel(x[a], y[a], x[b], y[b], self.u2[l])
 
     def top_pairs(self, l, idx, k):
@@ -274,7 +279,9 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     n, n_targets = v.shape[0], v.shape[1]
     _check_sizes(n, n_targets)
     v, u2 = _normalise(v, as_u_max(u_max, n_targets) ** 2)
-    return _greedy(_GeometrySource(v, u2), n, n_targets, k)
+    source = _GeometrySource(v, u2)
+    result = _greedy(source, n, n_targets, k)
+    return PairAssignment(result.triples, result.value, source.n_evaluations)
 
 
 def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=None, cov=None) -> PairAssignment:
@@ -292,6 +299,7 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
 
         def block(s_free, t_free):
             return arr[np.ix_(s_free, s_free, t_free)]
+        counted = None
     elif sensors is not None and targets is not None and u_max is not None:
         v = relative_vectors(sensors, targets, cov)
         n, n_targets = v.shape[0], v.shape[1]
@@ -300,6 +308,7 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
         def block(s_free, t_free):
             x, y = v[np.ix_(s_free, t_free, [0])][..., 0], v[np.ix_(s_free, t_free, [1])][..., 0]
             return _pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2[t_free])
+        counted = 0
     else:
         raise ValueError("give W, or sensors=, targets= and u_max=")
     _check_sizes(n, n_targets)
@@ -309,6 +318,8 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
     while t_free.size and s_free.size >= 2:
         w = block(s_free, t_free)
         m = s_free.size
+        if counted is not None:
+            counted += m * (m - 1) // 2 * t_free.size  # distinct pairs; the block holds both orders
         upper = np.triu(np.ones((m, m), dtype=bool), 1)
         w = np.where(upper[:, :, None], w, -np.inf)
         a, b, c = np.unravel_index(int(np.argmax(w)), w.shape)  # C order = (i, j, l) order
@@ -317,7 +328,7 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
         value += float(w[a, b, c])
         s_free = s_free[(s_free != i) & (s_free != j)]
         t_free = t_free[t_free != l]
-    return PairAssignment(triples=triples, value=float(value))
+    return PairAssignment(triples=triples, value=float(value), n_evaluations=counted)
 
 
 # --------------------------------------------------------------------------------------------
@@ -371,9 +382,11 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
         n, n_targets = arr.shape[0], arr.shape[2]
         ii, jj = np.triu_indices(n, 1)
         cost = arr[ii, jj, :].T  # (L, P)
+        counted = None
     elif sensors is not None and targets is not None and u_max is not None:
         ii, jj, cost = upper_pair_weights(sensors, targets, u_max, cov)
         n, n_targets = int(np.asarray(sensors).shape[0]), cost.shape[0]
+        counted = int(cost.size)
     else:
         raise ValueError("give W, or sensors=, targets= and u_max=")
     if n_targets < 1:
@@ -387,7 +400,7 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
         (min(int(ii[c]), int(jj[c])), max(int(ii[c]), int(jj[c])), int(r)) for r, c in zip(rows, cols)
     )
     triples.sort(key=lambda t: t[2])
-    return PairAssignment(triples=triples, value=float(cost[rows, cols].sum()))
+    return PairAssignment(triples=triples, value=float(cost[rows, cols].sum()), n_evaluations=counted)
 
 
 def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignment:

@@ -21,7 +21,7 @@ import time
 
 import numpy as np
 
-__all__ = ["one_pass", "bench_assignment", "scaling", "ALGORITHMS", "main"]
+__all__ = ["one_pass", "bench_assignment", "evaluation_counts", "COUNTED", "main"]
 
 
 def _timed(fn, repeat: int = 1):
@@ -56,46 +56,39 @@ def one_pass(sensors, targets, u_max, chunk: int = 1 << 20) -> float:
     return best
 
 
-def _algorithms():
-    from . import assignment as a
-    from .bounds import pair_bounds
+def evaluation_counts(sizes: dict, seed: int = 0) -> dict:
+    """Pair weights computed by each algorithm against ``N`` (``L = N / 2``), uniform instances.
 
-    return {
+    A machine-independent measure of work (wall time is what :func:`bench_assignment` reports).
+    ``sizes`` maps a name of :data:`COUNTED` to the ``N`` to run it at; returns
+    ``{name: (N array, count array)}``, plus ``"one pass"``, ``N (N - 1) / 2 * L`` at every size.
+    """
+    from . import assignment as a
+
+    algos = {
         "greedy (geometry)": lambda S, T: a.greedy_pair_assignment(sensors=S, targets=T, u_max=1.0),
-        "greedy (from W)": lambda S, T: a.greedy_pair_assignment(pair_bounds(S, T, 1.0)),
         "literal Algorithm 1": lambda S, T: a.greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0),
         "relaxed matching": lambda S, T: a.relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0),
-        "exact optimum (MILP)": lambda S, T: a.optimal_pair_assignment(pair_bounds(S, T, 1.0)),
     }
-
-
-#: Names of the algorithms :func:`scaling` times.
-ALGORITHMS = ("greedy (geometry)", "greedy (from W)", "literal Algorithm 1", "relaxed matching",
-              "exact optimum (MILP)")
-
-
-def scaling(sizes: dict, seed: int = 0, repeat: int = 1) -> dict:
-    """Wall time of each algorithm against ``N`` (with ``L = N / 2``), uniform instances.
-
-    ``sizes`` maps an algorithm name of :data:`ALGORITHMS` to the list of ``N`` to time it at.
-    Returns ``{name: (N array, seconds array)}``; the same instance is used for every algorithm
-    at a given ``N``.
-    """
-    algos = _algorithms()
     unknown = set(sizes) - set(algos)
     if unknown:
         raise ValueError(f"unknown algorithm(s) {sorted(unknown)}; known: {list(algos)}")
-    out = {}
-    warm = np.random.default_rng(seed).uniform(0, 100, (8, 2))
+    out, every_n = {}, set()
     for name, ns in sizes.items():
-        algos[name](warm, warm[:4] + 0.5)  # first call pays imports and caches; not timed
-        times = []
+        counts = []
         for n in ns:
             rng = np.random.default_rng([seed, n])
             S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (n // 2, 2))
-            times.append(_timed(lambda: algos[name](S, T), repeat)[0])
-        out[name] = (np.array(ns), np.array(times))
+            counts.append(algos[name](S, T).n_evaluations)
+            every_n.add(int(n))
+        out[name] = (np.array(ns), np.array(counts))
+    ns = np.array(sorted(every_n))
+    out["one pass"] = (ns, ns * (ns - 1) // 2 * (ns // 2))
     return out
+
+
+#: Algorithms :func:`evaluation_counts` can run.
+COUNTED = ("greedy (geometry)", "literal Algorithm 1", "relaxed matching")
 
 
 def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l_small: int = 200,

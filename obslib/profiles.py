@@ -108,10 +108,8 @@ PROFILES: dict[str, dict[str, dict]] = {
         "09_scaling": {
             "seed": 0,
             "greedy_sizes": [20, 50, 100, 200, 400, 800, 1600],
-            "greedy_w_sizes": [20, 50, 100, 200, 400],
             "literal_sizes": [20, 50, 100, 200],
             "relaxed_sizes": [20, 50, 100, 200, 400],
-            "milp_sizes": [8, 12, 16, 20],
         },
     },
     "quick": {
@@ -137,10 +135,8 @@ PROFILES: dict[str, dict[str, dict]] = {
         "08_general_assignment": {"trials": 5, "compare_trials": 3, "n_tiny": 50},
         "09_scaling": {
             "greedy_sizes": [20, 100, 400],
-            "greedy_w_sizes": [20, 100],
             "literal_sizes": [20, 50],
             "relaxed_sizes": [20, 100],
-            "milp_sizes": [8, 12],
         },
     },
 }

@@ -71,14 +71,33 @@ def _literal(text: str):
         return text
 
 
+def _merge_streams(outputs: list) -> list:
+    """Join consecutive stream outputs of the same name (stdout/stderr).
+
+    How the kernel chunks printed text into messages depends on timing, so two runs with the
+    same text can store it as different lists of outputs; merged, they are identical.
+    """
+    merged: list = []
+    for out in outputs:
+        prev = merged[-1] if merged else None
+        if (out.get("output_type") == "stream" and prev is not None
+                and prev.get("output_type") == "stream" and prev.get("name") == out.get("name")):
+            prev["text"] = prev["text"] + out["text"]
+        else:
+            merged.append(out)
+    return merged
+
+
 def _clean(path: Path) -> None:
-    """Drop run-specific metadata so that identical results give identical files."""
+    """Drop run-specific metadata and chunking so that identical results give identical files."""
     import nbformat
 
     nb = nbformat.read(path, as_version=4)
     nb.metadata.pop("papermill", None)
     nb.metadata.get("language_info", {}).pop("version", None)
     for cell in nb.cells:
+        if cell.cell_type == "code":
+            cell.outputs = _merge_streams(cell.outputs)
         cell.metadata.pop("papermill", None)
         cell.metadata.pop("execution", None)
         tags = [t for t in cell.metadata.pop("tags", []) if t != "papermill-error-cell-tag"]

@@ -106,6 +106,7 @@ __all__ = [
     "CHI2_2DOF_9973",
     "draw_snapshot",
     "animate",
+    "animation_html",
 ]
 
 STRATEGIES = ("best-pair", "best-partner", "fixed-pair")
@@ -1315,3 +1316,21 @@ def animate(result: TrackingResult, every: int = 3, dpi: int = 50, figsize=(4.0,
     anim = FuncAnimation(fig, frame, frames=frames, interval=interval, blit=False)
     plt.close(fig)
     return anim
+
+
+def animation_html(anim, uid: str = "anim") -> str:
+    """Self-contained, stable HTML/JS for a matplotlib animation (``anim.to_jshtml()``).
+
+    ``to_jshtml`` names its elements with a random id and links Font Awesome from a CDN for its
+    buttons. The id is replaced by ``uid`` so the stored notebook does not change from run to
+    run, and the external stylesheet is dropped so the page fetches nothing at view time (the
+    book's theme ships Font Awesome itself).
+    """
+    import re
+
+    html = anim.to_jshtml()
+    m = re.search(r'id="_anim_img([0-9a-f]+)"', html)
+    if m is None:
+        raise ValueError("not the HTML of matplotlib's to_jshtml: no _anim_img element")
+    html = html.replace(m.group(1), uid)
+    return re.sub(r'<link[^>]*href="(?:https?:)?//[^"]*"[^>]*>\s*', "", html)

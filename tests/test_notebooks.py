@@ -73,7 +73,7 @@ def report_statuses():
 
     out = {}
     for line in (ROOT / "book" / "report.md").read_text().splitlines():
-        m = re.match(r"\| `([^`]+)` \|.*\| \**(reproduced|partly|refuted|untestable)\** \| \{doc\}", line)
+        m = re.match(r"\| \{ref\}`(\S+) <claim-[^`]+>` \|.*\| \**(reproduced|partly|refuted|untestable)\** \| \{doc\}", line)
         if m:
             out[m.group(1)] = m.group(2)
     return out

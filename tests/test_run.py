@@ -55,3 +55,16 @@ def test_execute_injects_parameters_and_strips_run_metadata(tiny_notebook, tmp_p
 def test_cli_refuses_in_place_with_parameters():
     with pytest.raises(SystemExit):
         run.main(["--in-place", "-p", "seed", "1"])
+
+
+def test_stream_chunks_are_merged():
+    outs = [
+        {"output_type": "stream", "name": "stdout", "text": "a\n"},
+        {"output_type": "stream", "name": "stdout", "text": "b\n"},
+        {"output_type": "stream", "name": "stderr", "text": "w\n"},
+        {"output_type": "display_data", "data": {}, "metadata": {}},
+        {"output_type": "stream", "name": "stdout", "text": "c"},
+        {"output_type": "stream", "name": "stdout", "text": "\n"},
+    ]
+    merged = run._merge_streams(outs)
+    assert [o.get("text") for o in merged] == ["a\nb\n", "w\n", None, "c\n"]

@@ -11,8 +11,8 @@ __all__ = ["render_report"]
 HEADER = """\
 # Reproduction report
 
-Each row is one claim of the paper, re-checked by a function of `obslib.claims` at the
-paper's parameters. *paper* is what the paper states, *ours* what we measured, and
+Each claim of the paper is re-checked by a function of `obslib.claims` at the paper's
+parameters. For every claim, *paper* is what the paper states, *ours* what we measured, and
 *status* the verdict the evidence gives: `reproduced`, `partly` (holds with a correction or
 only in part), `refuted` (the evidence contradicts it), or `untestable`. A status is a
 finding, not a target.
@@ -28,26 +28,43 @@ def _cell(text: str) -> str:
 
 
 def render_report(records: list[Record], profile: str = "paper") -> str:
-    """MyST Markdown for the report page: a summary by status, the table, what is missing."""
+    """MyST Markdown for the report page: a summary by status, an index table, one section per
+    claim (claim, paper, ours, evidence link), and the required ids not yet audited."""
     lines = [HEADER.format(profile=profile), "## Summary", ""]
     counts = Counter(r.status for r in records)
     lines += ["| status | claims |", "| --- | --- |"]
     lines += [f"| {s} | {counts.get(s, 0)} |" for s in STATUSES]
-    lines += [f"| **total** | {len(records)} |", "", "## Claims", ""]
-    lines += [
-        "| id | where | claim | paper | ours | status | notebook |",
-        "| --- | --- | --- | --- | --- | --- | --- |",
-    ]
+    lines += [f"| **total** | {len(records)} |", "", "## Claims at a glance", ""]
+    lines += ["| id | where | status | notebook |", "| --- | --- | --- | --- |"]
+
+    def status_md(r):
+        return f"**{r.status}**" if r.status != "reproduced" else r.status
+
+    def link(r):
+        return f"{{doc}}`{r.notebook} <../notebooks/{r.notebook}>`"
+
     for r in records:
-        status = f"**{r.status}**" if r.status != "reproduced" else r.status
-        link = f"{{doc}}`{r.notebook[:2]} <../notebooks/{r.notebook}>`"
         lines.append(
-            f"| `{r.id}` | {_cell(r.where)} | {_cell(r.statement)} | {_cell(r.paper)} | "
-            f"{_cell(r.ours)} | {status} | {link} |"
+            f"| {{ref}}`{r.id} <claim-{r.id}>` | {_cell(r.where)} | {status_md(r)} | {link(r)} |"
         )
+    lines += ["", "## Claims in detail", ""]
+    for r in records:
+        lines += [
+            f"(claim-{r.id})=",
+            f"### `{r.id}`: {r.where}",
+            "",
+            f"*Status:* {status_md(r)}. *Evidence:* {link(r)}.",
+            "",
+            f"**Claim.** {' '.join(r.statement.split())}",
+            "",
+            f"**Paper.** {' '.join(r.paper.split())}",
+            "",
+            f"**Ours.** {' '.join(r.ours.split())}",
+            "",
+        ]
     have = {r.id for r in records}
     missing = [i for i in REQUIRED_IDS if i not in have]
-    lines += ["", "## Not yet audited", ""]
+    lines += ["## Not yet audited", ""]
     if missing:
         lines.append(
             "These claims are in the plan (DESIGN.md) but their checks are not written yet, so "
@@ -56,5 +73,5 @@ def render_report(records: list[Record], profile: str = "paper") -> str:
             + "."
         )
     else:
-        lines.append("None: every required claim has a record above.")
+        lines.append("None: every claim the plan requires has a record above.")
     return "\n".join(lines) + "\n"
