@@ -9,6 +9,12 @@ prints a few readable lines and, last, one JSON object.
     same kernel (target <= 2). ``literal_over_greedy``: Algorithm 1 as printed (recomputing all
     weights each round, vectorised per round) over the greedy at ``N = 400``, ``L = 200``
     (target >= 100). ``peak_rss_gb``: the process's peak resident memory (target < 4).
+
+``book``
+    ``exec_s``: executing every notebook at its default parameters the way ``make book`` does
+    (papermill, one kernel per notebook, into a scratch folder); ``floor_s``: executing the same
+    number of trivial notebooks the same way, the fixed cost of a kernel per notebook;
+    ``exec_over_floor`` their ratio (target <= 3).
 """
 
 from __future__ import annotations
@@ -21,7 +27,7 @@ import time
 
 import numpy as np
 
-__all__ = ["one_pass", "bench_assignment", "evaluation_counts", "COUNTED", "main"]
+__all__ = ["one_pass", "bench_assignment", "bench_book", "evaluation_counts", "COUNTED", "main"]
 
 
 def _timed(fn, repeat: int = 1):
@@ -122,12 +128,50 @@ def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l
     }
 
 
+def bench_book() -> dict:
+    """Run the book benchmark; returns the JSON-ready dict (see the module docstring)."""
+    import tempfile
+    from pathlib import Path
+
+    import nbformat
+    from nbformat.v4 import new_code_cell, new_notebook
+
+    from .run import execute, notebooks
+
+    nbs = notebooks()
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        t0 = time.perf_counter()
+        for nb in nbs:
+            dt = execute(nb, tmp / nb.name)
+            print(f"{nb.name:40s} {dt:7.1f} s", flush=True)
+        exec_s = time.perf_counter() - t0
+        trivial = new_notebook(cells=[new_code_cell("x = 1", metadata={"tags": ["parameters"]}),
+                                      new_code_cell("print(x + 1)")])
+        for k, c in enumerate(trivial.cells):
+            c.id = f"c{k}"
+        trivial.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+        src = tmp / "trivial.ipynb"
+        nbformat.write(trivial, src)
+        t0 = time.perf_counter()
+        for k in range(len(nbs)):
+            execute(src, tmp / f"trivial_{k}.ipynb")
+        floor_s = time.perf_counter() - t0
+    print(f"{len(nbs)} notebooks {exec_s:.1f} s, {len(nbs)} trivial notebooks {floor_s:.1f} s", flush=True)
+    return {
+        "notebooks": len(nbs),
+        "exec_s": round(exec_s, 2),
+        "floor_s": round(floor_s, 2),
+        "exec_over_floor": round(exec_s / floor_s, 3),
+    }
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python -m obslib.bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("which", choices=["assignment"], help="benchmark to run")
+    ap.add_argument("which", choices=["assignment", "book"], help="benchmark to run")
     args = ap.parse_args(argv)
-    result = bench_assignment()
+    result = bench_assignment() if args.which == "assignment" else bench_book()
     json.dump(result, sys.stdout)
     print()
     return 0
