@@ -10,6 +10,11 @@ prints a few readable lines and, last, one JSON object.
     weights each round, vectorised per round) over the greedy at ``N = 400``, ``L = 200``
     (target >= 100). ``peak_rss_gb``: the process's peak resident memory (target < 4).
 
+``scaling``
+    Wall time of each assignment algorithm against ``N`` (``L = N / 2``), written with the
+    machine's description to ``book/data/scaling_times.json`` (``--write``), which the scaling
+    notebook plots: measured times are committed data, so ``make book`` stays deterministic.
+
 ``book``
     ``exec_s``: executing every notebook at its default parameters the way ``make book`` does
     (papermill, one kernel per notebook, into a scratch folder); ``floor_s``: executing the same
@@ -27,7 +32,19 @@ import time
 
 import numpy as np
 
-__all__ = ["one_pass", "bench_assignment", "bench_book", "evaluation_counts", "COUNTED", "main"]
+__all__ = [
+    "one_pass", "bench_assignment", "bench_book", "bench_scaling", "evaluation_counts", "COUNTED",
+    "SCALING_SIZES", "main",
+]
+
+#: Sizes ``N`` at which :func:`bench_scaling` times each algorithm (``L = N / 2``).
+SCALING_SIZES = {
+    "greedy (geometry)": [20, 50, 100, 200, 400, 800, 1600, 2000],
+    "greedy (from W)": [20, 50, 100, 200, 400],
+    "literal Algorithm 1": [20, 50, 100, 200, 400],
+    "relaxed matching": [20, 50, 100, 200, 400],
+    "exact optimum (MILP)": [8, 12, 16, 20],
+}
 
 
 def _timed(fn, repeat: int = 1):
@@ -128,6 +145,42 @@ def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l
     }
 
 
+def bench_scaling(seed: int = 0, repeat: int = 3) -> dict:
+    """Best-of-``repeat`` wall time of each algorithm at the sizes of :data:`SCALING_SIZES`."""
+    import os
+    import platform
+
+    from . import assignment as a
+    from .bounds import pair_bounds
+
+    algos = {
+        "greedy (geometry)": lambda S, T: a.greedy_pair_assignment(sensors=S, targets=T, u_max=1.0),
+        "greedy (from W)": lambda S, T: a.greedy_pair_assignment(pair_bounds(S, T, 1.0)),
+        "literal Algorithm 1": lambda S, T: a.greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0),
+        "relaxed matching": lambda S, T: a.relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0),
+        "exact optimum (MILP)": lambda S, T: a.optimal_pair_assignment(pair_bounds(S, T, 1.0)),
+    }
+    warm = np.random.default_rng(seed).uniform(0, 100, (8, 2))
+    out = {}
+    for name, ns in SCALING_SIZES.items():
+        algos[name](warm, warm[:4] + 0.5)  # imports and first-call costs are not timed
+        times = []
+        for n in ns:
+            rng = np.random.default_rng([seed, n])
+            S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (n // 2, 2))
+            reps = 1 if name == "literal Algorithm 1" and n >= 400 else repeat
+            times.append(round(_timed(lambda: algos[name](S, T), reps)[0], 6))
+            print(f"{name:22s} N={n:5d} {times[-1]:10.4f} s", flush=True)
+        out[name] = {"N": list(ns), "seconds": times}
+    return {
+        "machine": f"{platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
+                   f"numpy {np.__version__}",
+        "seed": seed,
+        "repeat": repeat,
+        "times": out,
+    }
+
+
 def bench_book() -> dict:
     """Run the book benchmark; returns the JSON-ready dict (see the module docstring)."""
     import tempfile
@@ -169,9 +222,20 @@ def bench_book() -> dict:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python -m obslib.bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("which", choices=["assignment", "book"], help="benchmark to run")
+    ap.add_argument("which", choices=["assignment", "book", "scaling"], help="benchmark to run")
+    ap.add_argument("--write", help="scaling: also write the JSON to this file")
     args = ap.parse_args(argv)
-    result = bench_assignment() if args.which == "assignment" else bench_book()
+    if args.which == "assignment":
+        result = bench_assignment()
+    elif args.which == "book":
+        result = bench_book()
+    else:
+        result = bench_scaling()
+        if args.write:
+            from pathlib import Path
+
+            Path(args.write).parent.mkdir(parents=True, exist_ok=True)
+            Path(args.write).write_text(json.dumps(result, indent=1) + "\n")
     json.dump(result, sys.stdout)
     print()
     return 0

@@ -465,18 +465,11 @@ class Theorem4Audit:
 
 
 def _random_pair_scenes(n: int, seed: int):
-    """``n`` random (sensors (2, 2), target (2,), u) with the sensors apart from each other and the
-    target (distance > 1e-3 of the scale), scale 1e-2 .. 1e2."""
-    rng = np.random.default_rng(seed)
-    out = []
-    while len(out) < n:
-        scale = 10.0 ** rng.uniform(-2, 2)
-        pts = rng.uniform(-1, 1, size=(3, 2))
-        d = np.linalg.norm(pts[:, None] - pts[None], axis=-1) + np.eye(3)
-        if d.min() <= 1e-3:
-            continue
-        out.append((scale * pts[1:], scale * pts[0], scale * rng.uniform(0, 3)))
-    return out
+    """``n`` random two-sensor scenes ``(sensors (2, 2), target (2,), u_max)``, scales 1e-2 .. 1e2."""
+    from .scenes import random_scenes
+
+    return [(sc.sensors, sc.target, sc.u_max)
+            for sc in random_scenes(n, seed, n_sensors=(2, 2), scale=(1e-2, 1e2), kinds=("generic",))]
 
 
 @lru_cache(maxsize=8)

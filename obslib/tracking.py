@@ -56,7 +56,7 @@ from typing import Iterable
 
 import numpy as np
 
-from ._validate import as_points, check_distinct
+from ._validate import as_point, as_points, check_distinct
 from .bound_checks import disc_controls
 from .bounds import pair_bounds
 from .observability import _inverse_condition
@@ -173,15 +173,7 @@ def _matrix(value, name: str) -> tuple:
 
 
 def _point(value, name: str) -> tuple:
-    try:
-        p = np.asarray(value, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"{name} must be a numeric point (x, y): {exc}") from None
-    if p.shape != (2,):
-        raise ValueError(f"{name} must have shape (2,), got {p.shape}")
-    if not np.isfinite(p).all():
-        raise ValueError(f"{name} has a non-finite coordinate: {p.tolist()}")
-    return tuple(p.tolist())
+    return tuple(as_point(value, name).tolist())
 
 
 def _scalar(value, name: str, *, positive=False, nonneg=False) -> float:

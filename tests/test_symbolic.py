@@ -14,6 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import obslib as ob
+from obslib.scenes import random_scenes
 from obslib import symbolic as sy
 
 A, TH, Q = sy.ALPHA, sy.THETA, sy.Q
@@ -104,15 +105,8 @@ def test_a_wrong_closed_form_is_detected():
 
 
 def _scenes(n, seed):
-    rng = np.random.default_rng(seed)
-    out = []
-    while len(out) < n:
-        scale = 10.0 ** rng.uniform(-2, 2)
-        pts = rng.uniform(-1, 1, size=(3, 2))
-        d = np.linalg.norm(pts[:, None] - pts[None], axis=-1) + np.eye(3)
-        if d.min() > 1e-3:
-            out.append((scale * pts[1:], scale * pts[0], scale * rng.uniform(0, 3)))
-    return out
+    return [(sc.sensors, sc.target, sc.u_max)
+            for sc in random_scenes(n, seed, n_sensors=(2, 2), scale=(1e-2, 1e2), kinds=("generic",))]
 
 
 def test_lambdified_cartesian_bound_equals_pair_bounds():
