@@ -14,6 +14,7 @@ __all__ = [
     "as_point",
     "as_u_max",
     "as_cov",
+    "check_spd2",
     "check_distinct",
     "check_not_on_targets",
 ]
@@ -98,15 +99,19 @@ def as_cov(cov, n_targets: int) -> np.ndarray:
     if arr.shape != (n_targets, 2, 2):
         raise ValueError(f"cov must have shape (2, 2) or ({n_targets}, 2, 2), got {arr.shape}")
     for l in range(n_targets):
-        c = arr[l]
-        if not np.isfinite(c).all():
-            raise ValueError(f"cov of target {l} has a non-finite entry")
-        if abs(c[0, 1] - c[1, 0]) > 1e-12 * max(1.0, abs(c).max()):
-            raise ValueError(f"cov of target {l} is not symmetric: {c.tolist()}")
-        # Sylvester's criterion for a 2x2 symmetric matrix.
-        if not (c[0, 0] > 0 and c[0, 0] * c[1, 1] - c[0, 1] * c[1, 0] > 0):
-            raise ValueError(f"cov of target {l} is not positive definite: {c.tolist()}")
+        check_spd2(arr[l], f"cov of target {l}")
     return arr
+
+
+def check_spd2(m: np.ndarray, name: str) -> None:
+    """Raise unless the 2x2 array ``m`` is finite, symmetric and positive definite."""
+    if not np.isfinite(m).all():
+        raise ValueError(f"{name} has a non-finite entry: {m.tolist()}")
+    if abs(m[0, 1] - m[1, 0]) > 1e-12 * max(1.0, abs(m).max()):
+        raise ValueError(f"{name} is not symmetric: {m.tolist()}")
+    # Sylvester's criterion for a 2x2 symmetric matrix.
+    if not (m[0, 0] > 0 and m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0] > 0):
+        raise ValueError(f"{name} is not positive definite: {m.tolist()}")
 
 
 def check_distinct(sensors: np.ndarray) -> None:

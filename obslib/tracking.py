@@ -56,7 +56,7 @@ from typing import Iterable
 
 import numpy as np
 
-from ._validate import as_point, as_points, check_distinct
+from ._validate import as_point, as_points, check_distinct, check_spd2
 from .bound_checks import disc_controls
 from .bounds import pair_bounds
 from .observability import _inverse_condition
@@ -163,12 +163,7 @@ def _matrix(value, name: str) -> tuple:
         m = m * np.eye(2)
     if m.shape != (2, 2):
         raise ValueError(f"{name} must be a 2x2 matrix (or a scalar times I), got shape {m.shape}")
-    if not np.isfinite(m).all():
-        raise ValueError(f"{name} has a non-finite entry: {m.tolist()}")
-    if abs(m[0, 1] - m[1, 0]) > 1e-12 * max(1.0, abs(m).max()):
-        raise ValueError(f"{name} is not symmetric: {m.tolist()}")
-    if not (m[0, 0] > 0 and m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0] > 0):
-        raise ValueError(f"{name} is not positive definite: {m.tolist()}")
+    check_spd2(m, name)
     return tuple(map(tuple, m.tolist()))
 
 
