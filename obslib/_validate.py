@@ -98,7 +98,13 @@ def as_cov(cov, n_targets: int) -> np.ndarray:
         arr = np.broadcast_to(arr, (n_targets, 2, 2))
     if arr.shape != (n_targets, 2, 2):
         raise ValueError(f"cov must have shape (2, 2) or ({n_targets}, 2, 2), got {arr.shape}")
-    for l in range(n_targets):
+    # vectorised checks; on failure, the first offending target gets the detailed message
+    finite = np.isfinite(arr).all(axis=(1, 2))
+    sym = np.abs(arr[:, 0, 1] - arr[:, 1, 0]) <= 1e-12 * np.maximum(1.0, np.abs(arr).max(axis=(1, 2)))
+    pd = (arr[:, 0, 0] > 0) & (arr[:, 0, 0] * arr[:, 1, 1] - arr[:, 0, 1] * arr[:, 1, 0] > 0)
+    bad = ~(finite & sym & pd)
+    if bad.any():
+        l = int(np.flatnonzero(bad)[0])
         check_spd2(arr[l], f"cov of target {l}")
     return arr
 

@@ -375,20 +375,22 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
     sensors, targets, u_max, cov : optional
         Instead of ``W``: the geometry (only the ``i < j`` weights are computed).
     """
-    from scipy.optimize import linear_sum_assignment
-
     if W is not None:
         arr = _as_weights(W)
         n, n_targets = arr.shape[0], arr.shape[2]
         ii, jj = np.triu_indices(n, 1)
-        cost = arr[ii, jj, :].T  # (L, P)
-        counted = None
-    elif sensors is not None and targets is not None and u_max is not None:
+        return _relaxed_from_cost(n, ii, jj, arr[ii, jj, :].T, ordered, counted=None)
+    if sensors is not None and targets is not None and u_max is not None:
         ii, jj, cost = upper_pair_weights(sensors, targets, u_max, cov)
-        n, n_targets = int(np.asarray(sensors).shape[0]), cost.shape[0]
-        counted = int(cost.size)
-    else:
-        raise ValueError("give W, or sensors=, targets= and u_max=")
+        return _relaxed_from_cost(int(np.asarray(sensors).shape[0]), ii, jj, cost, ordered, int(cost.size))
+    raise ValueError("give W, or sensors=, targets= and u_max=")
+
+
+def _relaxed_from_cost(n, ii, jj, cost, ordered, counted) -> PairAssignment:
+    """Problem 3 from the ``(L, P)`` weights ``cost`` of the pairs ``(ii, jj)``, ``ii < jj``."""
+    from scipy.optimize import linear_sum_assignment
+
+    n_targets = cost.shape[0]
     if n_targets < 1:
         raise ValueError("there must be at least one target")
     if n < 2:

@@ -222,16 +222,16 @@ def fig8_trial(n_targets: int, trial: int, seed: int, u_max: float = 1.0, side: 
     relaxed (Problem 3), ordered-pair relaxed (the original code's) values, and the exact optimum
     when ``with_optimum`` (NaN otherwise).
     """
-    from .assignment import optimal_pair_assignment, relaxed_pair_assignment
+    from .assignment import _relaxed_from_cost, optimal_pair_assignment, upper_pair_weights
 
     rng = np.random.default_rng([seed, n_targets, trial])
     S = rng.uniform(0, side, size=(2 * n_targets, 2))
     T = rng.uniform(0, side, size=(n_targets, 2))
-    geo = dict(sensors=S, targets=T, u_max=u_max)
+    ii, jj, cost = upper_pair_weights(S, T, u_max)  # shared by both relaxations
     out = {
-        "greedy": greedy_pair_assignment(**geo).value,
-        "relaxed": relaxed_pair_assignment(**geo).value,
-        "relaxed_ordered": relaxed_pair_assignment(ordered=True, **geo).value,
+        "greedy": greedy_pair_assignment(sensors=S, targets=T, u_max=u_max).value,
+        "relaxed": _relaxed_from_cost(2 * n_targets, ii, jj, cost, False, None).value,
+        "relaxed_ordered": _relaxed_from_cost(2 * n_targets, ii, jj, cost, True, None).value,
         "optimum": np.nan,
     }
     if with_optimum:

@@ -63,7 +63,8 @@ def theorem1_audit(n_scenes: int, n_controls: int, seed: int) -> Theorem1Audit:
 
     For every scene, ``n_controls`` controls are drawn uniformly in the disc, plus the
     worst-case control of :func:`obslib.bounds.worst_case_control`; the bound (SVD of ``O(o)``)
-    is compared with the exact inverse condition number (SVD of ``O(o, u)``).
+    is compared with the exact inverse condition number of ``O(o, u)`` (from its Gram matrix,
+    :func:`obslib.inverse_condition_number`).
     """
     rng = np.random.default_rng(seed + 1)
     n_eval = 0
@@ -238,7 +239,7 @@ class Remark1Audit:
 def remark1_audit(n_scenes: int, seed: int, n_radii: int = 8, n_angles: int = 64) -> Remark1Audit:
     """Check Remark 1 (the bound is exact for ``u_o = 0``) and its moving-target counterpart.
 
-    For every scene: the exact ``C^{-1}`` of the stationary target (SVD of ``O(o, 0)``, zero
+    For every scene: the exact ``C^{-1}`` of the stationary target (``O(o, 0)``, zero
     row included) against the bound in eigenvalue form with ``u_max = 0`` (``eigvalsh`` of
     ``O(o)^T O(o)``; compared as squares, since a tiny ``lambda_min`` is only known to
     ``eps * lambda_max``); the exact ``C^{-1}`` at the worst-case control (norm ``u_max`` along

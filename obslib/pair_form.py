@@ -9,6 +9,8 @@ Every audit is a pure function of its arguments and is cached.
 
 from __future__ import annotations
 
+from ._format import format_small  # noqa: F401  (re-exported for the notebook)
+
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -47,11 +49,6 @@ __all__ = [
     "WeylAudit",
     "weyl_audit",
 ]
-
-
-def format_small(x: float, floor: float = 1e-12, fmt: str = ".3g") -> str:
-    """``x`` formatted with ``fmt``, or ``"< floor"`` when ``|x| < floor`` (machine-stable text)."""
-    return f"< {floor:.0e}" if abs(x) < floor else format(x, fmt)
 
 
 def audit_ratios(u_max: float, d_io: float, u_over_d_curves) -> tuple:

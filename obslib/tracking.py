@@ -1297,7 +1297,8 @@ def animate(result: TrackingResult, every: int = 3, dpi: int = 50, figsize=(4.0,
         est.set_data([e[0]], [e[1]])
         ell.set_data(*cov_ellipse(e, result.cov[i]).T)
         i0, j0 = result.pairs[i] + 1
-        title.set_text(f"k = {k}, pair ($s_{{{i0}}}$, $s_{{{j0}}}$)")
+        # plain text: a mathtext title differs every frame, and parsing it dominated rendering
+        title.set_text(f"k = {k}, pair (s{i0}, s{j0})")
         return links, path, target, est, ell, title
 
     anim = FuncAnimation(fig, frame, frames=frames, interval=interval, blit=False)

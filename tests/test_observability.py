@@ -42,3 +42,17 @@ def test_single_sensor_without_control_has_rank_one():
 def test_control_perpendicular_and_equal_length_is_perfectly_conditioned():
     # one sensor at distance 2 along x, control of norm 2 along y: O = [[-2, 0], [0, 2]]
     assert ob.inverse_condition_number([[2.0, 0.0]], [0.0, 0.0], [0.0, 2.0]) == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("m", [2, 3, 5, 8, 9, 12])
+def test_closed_form_inverse_condition_equals_svd(m):
+    """The Cauchy-Binet closed form (m <= 8 rows) and the SVD path agree with numpy's SVD."""
+    from obslib.observability import _inverse_condition
+
+    rng = np.random.default_rng(m)
+    stack = rng.normal(size=(500, m, 2)) * 10.0 ** rng.uniform(-3, 4, size=(500, 1, 1))
+    stack[:50, :, 1] = 3.0 * stack[:50, :, 0]  # parallel rows: rank one
+    stack[50:100, 1:, :] = stack[50:100, :1, :] * rng.uniform(0.5, 2, size=(50, m - 1, 1))  # collinear
+    stack[50:100, 1:, 1] += 1e-9 * stack[50:100, 1:, 0]  # ... nearly
+    sv = np.linalg.svd(stack, compute_uv=False)
+    np.testing.assert_allclose(_inverse_condition(stack), sv[:, -1] / sv[:, 0], rtol=1e-7, atol=1e-14)
