@@ -74,3 +74,16 @@ __all__ = [
     "optimal_team_assignment",
     "tracking",
 ]
+
+#: Submodules imported on first attribute access (``obslib.claims.evaluate(...)`` works after a
+#: bare ``import obslib``) rather than at import time, since they pull in SymPy, papermill etc.
+_LAZY = ("claims", "profiles", "run", "bench", "symbolic", "pair_form", "bound_checks", "scenes",
+         "assignment_study", "team_study", "sweep")
+
+
+def __getattr__(name):
+    if name in _LAZY:
+        import importlib
+
+        return importlib.import_module(f".{name}", __name__)
+    raise AttributeError(f"module 'obslib' has no attribute {name!r}")
