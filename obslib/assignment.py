@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import as_u_max
+from ._validate import as_points, as_u_max
 from .bounds import _normalise, _pair_kernel, relative_vectors
 
 __all__ = [
@@ -38,6 +38,7 @@ __all__ = [
     "optimal_pair_assignment",
     "assignment_value",
     "upper_pair_weights",
+    "upper_pair_weight_blocks",
 ]
 
 
@@ -336,24 +337,36 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
 # --------------------------------------------------------------------------------------------
 
 
-def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
-    """Weights of the unordered pairs ``i < j`` for every target, as ``(ii, jj, C)``.
+def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
+    """The weights of the pairs ``i < j`` (``numpy.triu_indices(N, 1)`` order), target block by block.
 
-    ``C[l, p]`` is ``pair_bounds(...)[ii[p], jj[p], l]`` (one shared kernel, so bitwise equal)
-    with pairs in ``numpy.triu_indices(N, 1)`` order; shape ``(L, P)``. Targets are processed in
-    chunks of about ``chunk`` weights so the temporaries stay in cache.
+    Yields ``(l0, l1, block)`` with ``block[l - l0, p]`` the weight of pair ``p`` for target
+    ``l``, ``l0 <= l < l1``; blocks hold about ``chunk`` weights (at least one target), so the
+    whole ``(L, P)`` array never needs to exist. Same kernel as :func:`obslib.pair_bounds`.
     """
     v = relative_vectors(sensors, targets, cov)
     v, u2 = _normalise(v, as_u_max(u_max, v.shape[1]) ** 2)
     ii, jj = np.triu_indices(v.shape[0], 1)
     xt, yt = np.ascontiguousarray(v[..., 0].T), np.ascontiguousarray(v[..., 1].T)  # (L, N)
-    n_targets = xt.shape[0]
-    out = np.empty((n_targets, ii.size))
     step = max(1, chunk // max(ii.size, 1))
-    for a in range(0, n_targets, step):
-        b = min(a + step, n_targets)
+    for a in range(0, xt.shape[0], step):
+        b = min(a + step, xt.shape[0])
         x, y = xt[a:b], yt[a:b]
-        out[a:b] = _pair_kernel(x[:, ii], y[:, ii], x[:, jj], y[:, jj], u2[a:b, None])
+        yield a, b, _pair_kernel(x[:, ii], y[:, ii], x[:, jj], y[:, jj], u2[a:b, None])
+
+
+def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
+    """Weights of the unordered pairs ``i < j`` for every target, as ``(ii, jj, C)``.
+
+    ``C[l, p]`` is ``pair_bounds(...)[ii[p], jj[p], l]`` (one shared kernel, so bitwise equal)
+    with pairs in ``numpy.triu_indices(N, 1)`` order; shape ``(L, P)``, filled from
+    :func:`upper_pair_weight_blocks`.
+    """
+    n, n_targets = as_points(sensors, "sensors").shape[0], as_points(targets, "targets").shape[0]
+    ii, jj = np.triu_indices(n, 1)
+    out = np.empty((n_targets, ii.size))
+    for a, b, block in upper_pair_weight_blocks(sensors, targets, u_max, cov, chunk):
+        out[a:b] = block
     return ii, jj, out
 
 
@@ -377,7 +390,7 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
     """
     if W is not None:
         arr = _as_weights(W)
-        n, n_targets = arr.shape[0], arr.shape[2]
+        n = arr.shape[0]
         ii, jj = np.triu_indices(n, 1)
         return _relaxed_from_cost(n, ii, jj, arr[ii, jj, :].T, ordered, counted=None)
     if sensors is not None and targets is not None and u_max is not None:

@@ -58,26 +58,14 @@ def _timed(fn, repeat: int = 1):
 
 
 def one_pass(sensors, targets, u_max, chunk: int = 1 << 20) -> float:
-    """Evaluate every pair bound ``i < j`` for every target once, in chunks; return the maximum.
+    """Evaluate every pair bound ``i < j`` for every target once, in blocks; return the maximum.
 
     The reference cost for the greedy: one vectorised sweep of all ``N (N - 1) / 2 * L``
     weights with the kernel of :func:`obslib.pair_bounds`, without keeping them.
     """
-    from .bounds import _normalise, _pair_kernel, relative_vectors
-    from ._validate import as_u_max
+    from .assignment import upper_pair_weight_blocks
 
-    v = relative_vectors(sensors, targets)
-    v, u2 = _normalise(v, as_u_max(u_max, v.shape[1]) ** 2)
-    ii, jj = np.triu_indices(v.shape[0], 1)
-    xt, yt = np.ascontiguousarray(v[..., 0].T), np.ascontiguousarray(v[..., 1].T)
-    best = 0.0
-    step_pairs = max(1, min(ii.size, chunk))
-    for l in range(xt.shape[0]):
-        x, y = xt[l], yt[l]
-        for a in range(0, ii.size, step_pairs):
-            i, j = ii[a:a + step_pairs], jj[a:a + step_pairs]
-            best = max(best, float(_pair_kernel(x[i], y[i], x[j], y[j], u2[l]).max()))
-    return best
+    return max(float(block.max()) for _, _, block in upper_pair_weight_blocks(sensors, targets, u_max, chunk=chunk))
 
 
 def evaluation_counts(sizes: dict, seed: int = 0) -> dict:

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validate import as_cov, as_point, as_points, as_u_max, check_distinct, check_not_on_targets
+from ._validate import as_cov, as_points, as_u_max, check_distinct, check_not_on_targets
 from .observability import relative_rows
 
 __all__ = [
