@@ -9,11 +9,13 @@ the spread of the counts within a trial and compared with a uniformly random ass
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from .teams import greedy_team_assignment, optimal_team_assignment, team_value
 
-__all__ = ["fig9_trial", "fig9_sweep", "random_spread", "greedy_vs_optimal_teams"]
+__all__ = ["fig9_trial", "fig9_sweep", "random_spread", "Evenness", "evenness", "greedy_vs_optimal_teams"]
 
 
 def fig9_trial(n_sensors: int, trial: int, seed: int, n_targets: int = 5, measure: str = "logdet",
@@ -56,6 +58,37 @@ def random_spread(n_sensors: int, n_targets: int) -> float:
     """
     p = 1.0 / n_targets
     return float(np.sqrt(n_sensors * p * (1 - p)))
+
+
+@dataclass(frozen=True)
+class Evenness:
+    """How evenly a sweep's counts (shape ``(len(N), trials, L)``) share the sensors out, per ``N``.
+
+    ``within`` is the mean over trials of the standard deviation of the ``L`` counts of a trial,
+    ``baseline`` the same for a uniformly random assignment (:func:`random_spread`) and
+    ``relative = within / baseline``. ``mean_deviation`` is the largest ``|mean count - N/L|``
+    over ``N`` and targets, and ``z`` those deviations over their standard errors: the means are
+    ``N/L`` by symmetry, so they say nothing about evenness by themselves.
+    """
+
+    fair: np.ndarray
+    within: np.ndarray
+    baseline: np.ndarray
+    relative: np.ndarray
+    mean_deviation: float
+    z: np.ndarray
+
+
+def evenness(counts, N_values, n_targets: int) -> Evenness:
+    """Evenness statistics of Fig. 9 sweep counts (see :class:`Evenness`)."""
+    C = np.asarray(counts)
+    fair = np.asarray(N_values, dtype=float) / n_targets
+    dev = np.abs(C.mean(axis=1) - fair[:, None])
+    se = C.std(axis=1, ddof=1) / np.sqrt(C.shape[1]) if C.shape[1] > 1 else np.zeros(dev.shape)
+    z = dev / np.where(se > 0, se, np.inf)
+    within = C.std(axis=2).mean(axis=1)
+    baseline = np.array([random_spread(int(n), n_targets) for n in N_values])
+    return Evenness(fair, within, baseline, within / baseline, float(dev.max()), z)
 
 
 def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets=(1, 3),

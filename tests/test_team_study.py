@@ -24,3 +24,12 @@ def test_statuses_follow_the_evidence():
     rel = np.array(recs["fig9-even"].evidence["relative_to_random"])
     assert recs["fig9-even"].status == ("reproduced" if (rel < 1).all() else "partly")
     assert recs["greedy-half"].status == ("reproduced" if recs["greedy-half"].evidence["min_ratio"] >= 0.5 else "refuted")
+
+
+def test_evenness_statistics_by_hand():
+    counts = np.array([[[2, 2, 2, 2, 2], [4, 0, 2, 2, 2]]])  # N = 10, two trials, L = 5
+    e = ts.evenness(counts, [10], 5)
+    assert e.within[0] == np.mean([0.0, np.std([4, 0, 2, 2, 2])])
+    assert e.baseline[0] == ts.random_spread(10, 5)
+    assert e.relative[0] == e.within[0] / e.baseline[0]
+    assert e.mean_deviation == 1.0  # target 1 averages 3, target 2 averages 1, N/L = 2

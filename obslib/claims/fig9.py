@@ -48,16 +48,10 @@ def _half(profile: str) -> Finding:
 def _fig9(profile: str) -> Finding:
     p = params(NB, profile)
     C = _sweep(p["N_min"], p["N_max"], p["trials"], p["seed"], p["n_targets"], p["eps"], p["side"])
-    N = np.arange(p["N_min"], p["N_max"] + 1)
-    fair = N / p["n_targets"]
     # The mean count of each target is N/L by symmetry (targets are exchangeable), so it is
     # reported as a z-score only; evenness is judged within trials, against random assignment.
-    se = C.std(axis=1, ddof=1) / np.sqrt(C.shape[1])
-    z = np.abs(C.mean(axis=1) - fair[:, None]) / np.where(se > 0, se, np.inf)
-    mean_dev = np.abs(C.mean(axis=1) - fair[:, None]).max()
-    within = C.std(axis=2).mean(axis=1)  # mean over trials of the spread across targets
-    baseline = np.array([ts.random_spread(int(n), p["n_targets"]) for n in N])
-    rel = within / baseline
+    e = ts.evenness(C, range(p["N_min"], p["N_max"] + 1), p["n_targets"])
+    z, mean_dev, within, rel = e.z, e.mean_deviation, e.within, e.relative
     ok = bool((rel < 1).all())
     return Finding(
         "reproduced" if ok else "partly",
