@@ -39,6 +39,7 @@ __all__ = [
     "assignment_value",
     "upper_pair_weights",
     "upper_pair_weight_blocks",
+    "relaxed_from_geometry",
 ]
 
 
@@ -186,7 +187,7 @@ class _GeometrySource:
             hi = np.full(m, m)
         else:
             # sample: each sensor with its next few neighbours in distance order
-            width = min(m - 1, -(-4 * k // m) + 1)
+            width = min(m - 1, -(-_SAMPLE * k // m) + 1)
             pa, pb = _band(np.minimum(np.arange(m) + width + 1, m))
             tau = np.partition(self._weights(l, order[pa], order[pb]), pa.size - k)[pa.size - k]
             if tau <= 0:
@@ -199,6 +200,10 @@ class _GeometrySource:
         w = self._weights(l, a, b)
         complete = pa.size == n_pairs and w.size <= k
         return (*_keep_top(a, b, w, k), complete)
+
+
+#: Size of the sample that sets the pruning threshold, in multiples of ``k`` (speed only).
+_SAMPLE = 16
 
 
 def _band(hi):
@@ -214,7 +219,7 @@ def _band(hi):
 def _greedy(source, n: int, n_targets: int, k: int | None = None) -> PairAssignment:
     """Algorithm 1 with a lazily refilled candidate list per target and a global heap."""
     if k is None:
-        k = 64
+        k = 8
     free = np.ones(n, dtype=bool)
     queues = [_TargetQueue(source, l, k) for l in range(n_targets)]
     heap = []
@@ -257,7 +262,7 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
         Mahalanobis with ``cov``), computed on demand so the ``(N, N, L)`` array is never
         materialised.
     k : int, optional
-        Candidates kept per target between refills (default 64); affects speed only.
+        Candidates kept per target between refills (default 8); affects speed only.
 
     Returns
     -------
@@ -394,9 +399,80 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
         ii, jj = np.triu_indices(n, 1)
         return _relaxed_from_cost(n, ii, jj, arr[ii, jj, :].T, ordered, counted=None)
     if sensors is not None and targets is not None and u_max is not None:
-        ii, jj, cost = upper_pair_weights(sensors, targets, u_max, cov)
-        return _relaxed_from_cost(int(np.asarray(sensors).shape[0]), ii, jj, cost, ordered, int(cost.size))
+        return relaxed_from_geometry(sensors, targets, u_max, cov, orders=(ordered,))[0]
     raise ValueError("give W, or sensors=, targets= and u_max=")
+
+
+def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True)) -> list:
+    """Problem 3 from geometry, evaluating only each target's ``L`` best pairs.
+
+    A target matched to a pair outside its ``L`` heaviest could move to one of them, since the
+    other ``L - 1`` targets hold at most ``L - 1`` pairs; it would gain weight, so every optimum
+    uses only those candidates (with ``(i, j)`` and ``(j, i)`` for the ordered variant, whose
+    ``L``-th best ordered weight is at least the ``L``-th best unordered one). The candidates are
+    found with the greedy's exact distance pruning (``_GeometrySource``), without computing most
+    weights, and the sparse matching is solved with
+    ``scipy.sparse.csgraph.min_weight_full_bipartite_matching``. Returns one
+    :class:`PairAssignment` per entry of ``orders`` (``ordered`` flags), sharing the candidates;
+    ``n_evaluations`` counts the weights computed (once, for all of them).
+    """
+    from scipy.sparse import csr_array
+    from scipy.sparse.csgraph import min_weight_full_bipartite_matching
+
+    v = relative_vectors(sensors, targets, cov)
+    n, n_targets = v.shape[0], v.shape[1]
+    if n < 2:
+        raise ValueError(f"pairs need at least two sensors, got {n}")
+    v, u2 = _normalise(v, as_u_max(u_max, n_targets) ** 2)
+    source = _GeometrySource(v, u2)
+    every = np.arange(n)
+    rows, ids, ws = [], [], []
+    for l in range(n_targets):
+        a, b, w, _ = source.top_pairs(l, every, n_targets)
+        rows.append(np.full(w.size, l))
+        ids.append(np.minimum(a, b) * n + np.maximum(a, b))
+        ws.append(w)
+    rows, ids, ws = np.concatenate(rows), np.concatenate(ids), np.concatenate(ws)
+    pairs, col = np.unique(ids, return_inverse=True)
+    ii, jj = pairs // n, pairs % n
+    out = []
+    for ordered in orders:
+        r, c, w, m = rows, col, ws, pairs.size
+        if ordered:  # the second copy of pair p is column m + p
+            r, c, w, m = np.r_[rows, rows], np.r_[col, col + pairs.size], np.r_[ws, ws], 2 * pairs.size
+        # every full matching has L edges, so the offset (edges must be nonzero) changes no choice
+        graph = csr_array((w + 1.0, (r, c)), shape=(n_targets, m))
+        mr, mc = min_weight_full_bipartite_matching(graph, maximize=True)
+        key = r.astype(np.int64) * m + c  # each (target, column) edge once
+        order = np.argsort(key)
+        mr, mc = np.asarray(mr), np.asarray(mc)
+        value = w[order[np.searchsorted(key[order], mr.astype(np.int64) * m + mc)]]
+        p = mc % pairs.size
+        triples = sorted(zip(ii[p].tolist(), jj[p].tolist(), np.asarray(mr).tolist()), key=lambda t: t[2])
+        out.append(PairAssignment(triples=triples, value=float(value.sum()), n_evaluations=source.n_evaluations))
+    return out
+
+
+def _greedy_from_cost(ii, jj, cost) -> PairAssignment:
+    """Algorithm 1 from the ``(L, P)`` weights of the pairs ``(ii, jj)``, ``ii < jj`` in
+    ``numpy.triu_indices`` order: each round the first maximum over ``(pair, target)``, i.e. the
+    smallest ``(i, j, l)`` among equal weights, as :func:`greedy_pair_assignment`. One ``argmax``
+    over the whole array per round, for small instances whose weights are already computed.
+    """
+    w = np.array(cost.T, dtype=float)  # (P, L): C order is (i, j, l) order
+    n_targets = w.shape[1]
+    triples, value = [], 0.0
+    for _ in range(n_targets):
+        flat = int(np.argmax(w))
+        p, l = divmod(flat, n_targets)
+        if w[p, l] == -np.inf:
+            break
+        i, j = int(ii[p]), int(jj[p])
+        triples.append((i, j, l))
+        value += float(w[p, l])
+        w[(ii == i) | (jj == i) | (ii == j) | (jj == j)] = -np.inf
+        w[:, l] = -np.inf
+    return PairAssignment(triples=triples, value=float(value))
 
 
 def _relaxed_from_cost(n, ii, jj, cost, ordered, counted) -> PairAssignment:

@@ -1,11 +1,12 @@
 """Studies of Algorithm 1 against the exact optimum (Section IV-A, Theorem 6).
 
-The paper could not compute the optimum of Problem 1; for small instances we can, by enumerating
-every assignment of disjoint sensor pairs to targets once per ``(N, L)`` and evaluating all of
-them for a whole batch of instances with NumPy. This module holds that batch optimum, the random
-greedy-versus-optimum study, a local search for instances where the greedy does worst, the
-charging argument of Theorem 6's proof made explicit, and the classic weights on which the 1/3
-of Theorem 6 is tight.
+The paper could not compute the optimum of Problem 1; for small instances we can, exactly, by
+dynamic programming over the sets of used sensors, for a whole batch of instances at once with
+NumPy (:func:`optimal_values`; :func:`pair_assignments` enumerates every assignment instead, the
+brute force the tests compare it with). This module holds that batch optimum, Algorithm 1 on a
+batch (:func:`greedy_values`), the random greedy-versus-optimum study, a local search for
+instances where the greedy does worst, the charging argument of Theorem 6's proof made explicit,
+and the classic weights on which the 1/3 of Theorem 6 is tight.
 """
 
 from __future__ import annotations
@@ -17,11 +18,13 @@ from itertools import combinations
 import numpy as np
 
 from .assignment import greedy_pair_assignment
-from .bounds import pair_bounds
+from .bounds import _pair_kernel, pair_bounds
 
 __all__ = [
     "pair_assignments",
     "optimal_values",
+    "greedy_values",
+    "batch_pair_bounds",
     "GreedyStudy",
     "greedy_vs_optimal",
     "worst_instance_search",
@@ -64,13 +67,104 @@ def pair_assignments(n: int, n_targets: int) -> tuple[np.ndarray, np.ndarray]:
     return arr[:, :, 0], arr[:, :, 1]
 
 
-def optimal_values(W: np.ndarray) -> np.ndarray:
-    """Problem 1's optimum for a batch of weight arrays ``W`` of shape ``(K, N, N, L)``."""
+#: Largest ``N`` :func:`optimal_values` accepts (its tables have up to ``2^N`` entries per instance).
+MAX_DP_SENSORS = 16
+
+
+def _as_batch(W) -> np.ndarray:
     W = np.asarray(W, dtype=float)
+    if W.ndim != 4 or W.shape[1] != W.shape[2]:
+        raise ValueError(f"W must be a batch of weight arrays of shape (K, N, N, L), got {W.shape}")
     k, n, _, n_targets = W.shape
-    P, Q = pair_assignments(n, n_targets)
-    lidx = np.arange(n_targets)[None, :]
-    return W[:, P, Q, lidx].sum(axis=2).max(axis=1)
+    if n_targets < 1 or n < 2 * n_targets:
+        raise ValueError(f"need L >= 1 and N >= 2L, got N = {n}, L = {n_targets}")
+    if not np.isfinite(W).all():
+        raise ValueError("W must be finite")
+    return W
+
+
+def optimal_values(W) -> np.ndarray:
+    """Problem 1's optimum for a batch of weight arrays ``W`` of shape ``(K, N, N, L)``.
+
+    Dynamic programming over targets in order: after target ``l``, ``best[mask]`` is the largest
+    total weight of giving targets ``0..l`` disjoint pairs that use exactly the sensors in the
+    bit set ``mask``; target ``l + 1`` extends each set by every pair disjoint from it. With
+    non-negative weights an optimum assigns every target (``N >= 2L``), so the optimum is the
+    largest entry after the last target. The sums are formed in target order, as a direct sum
+    over an assignment would be, and rounding is monotone, so the result equals the maximum over
+    :func:`pair_assignments` exactly (the tests compare them). Work grows like ``2^N N^2 L`` per
+    instance; ``N`` is limited to :data:`MAX_DP_SENSORS`.
+    """
+    W = _as_batch(W)
+    k, n, _, n_targets = W.shape
+    if n > MAX_DP_SENSORS:
+        raise ValueError(f"N = {n} sensors is too many for the exact optimum (at most {MAX_DP_SENSORS})")
+    ii, jj = np.triu_indices(n, 1)
+    pair_mask = (np.int64(1) << ii) | (np.int64(1) << jj)
+    states = np.zeros(1, dtype=np.int64)  # sensor sets reachable after the targets so far
+    best = np.zeros((k, 1))
+    for l in range(n_targets):
+        s, p = np.nonzero((states[:, None] & pair_mask[None, :]) == 0)  # set s extended by pair p
+        new = states[s] | pair_mask[p]
+        order = np.argsort(new, kind="stable")
+        new = new[order]
+        starts = np.flatnonzero(np.r_[True, new[1:] != new[:-1]])
+        vals = best[:, s[order]] + W[:, ii[p[order]], jj[p[order]], l]
+        best = np.maximum.reduceat(vals, starts, axis=1)
+        states = new[starts]
+    return best.max(axis=1)
+
+
+def greedy_values(W) -> np.ndarray:
+    """Algorithm 1's value for a batch of weight arrays ``W`` of shape ``(K, N, N, L)``.
+
+    Every round takes, in each instance at once, the heaviest triple ``(i, j, l)``, ``i < j``,
+    whose sensors and target are unused, the smallest ``(i, j, l)`` among equal weights (the
+    first maximum in C order), as :func:`obslib.greedy_pair_assignment` does; the values are
+    summed in pick order, so they equal its ``value`` exactly (the tests compare them).
+    """
+    W = _as_batch(W)
+    k, n, _, n_targets = W.shape
+    upper = np.triu(np.ones((n, n), dtype=bool), 1)[None, :, :, None]
+    w = np.where(upper, W, -np.inf)
+    rows = np.arange(k)
+    total = np.zeros(k)
+    for _ in range(n_targets):
+        flat = np.argmax(w.reshape(k, -1), axis=1)
+        i, j, l = np.unravel_index(flat, (n, n, n_targets))
+        total += w[rows, i, j, l]
+        for s in (i, j):
+            w[rows, s, :, :] = -np.inf
+            w[rows, :, s, :] = -np.inf
+        w[rows, :, :, l] = -np.inf
+    return total
+
+
+def batch_pair_bounds(sensors, targets, u_max) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`obslib.pair_bounds` (Theorem 4, Euclidean) for a batch of geometries.
+
+    ``sensors`` ``(K, N, 2)`` and ``targets`` ``(K, L, 2)``; returns ``(W, valid)``: ``W`` of
+    shape ``(K, N, N, L)``, equal bit for bit to ``pair_bounds(sensors[k], targets[k], u_max)``
+    (same normalisation, same kernel), and ``valid[k]``, false where that call would raise
+    because two sensors coincide or a sensor sits on a target (``W[k]`` is then meaningless).
+    """
+    S = np.asarray(sensors, dtype=float)
+    T = np.asarray(targets, dtype=float)
+    if S.ndim != 3 or T.ndim != 3 or S.shape[2] != 2 or T.shape[2] != 2 or S.shape[0] != T.shape[0]:
+        raise ValueError(f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}")
+    if not (np.isfinite(S).all() and np.isfinite(T).all()):
+        raise ValueError("sensor and target positions must be finite")
+    n = S.shape[1]
+    v = T[:, None, :, :] - S[:, :, None, :]  # (K, N, L, 2), as relative_vectors
+    same = (S[:, :, None, :] == S[:, None, :, :]).all(axis=-1) & ~np.eye(n, dtype=bool)
+    valid = ~same.any(axis=(1, 2)) & ~(v == 0).all(axis=-1).any(axis=(1, 2))
+    scale = np.sqrt(np.einsum("knlc,knlc->knl", v, v).max(axis=1))  # (K, L), as _normalise
+    with np.errstate(divide="ignore", invalid="ignore"):
+        v = v / scale[:, None, :, None]
+        u2 = float(u_max) ** 2 / scale**2
+        x, y = v[..., 0], v[..., 1]  # (K, N, L)
+        W = _pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
+    return W, valid
 
 
 @dataclass(frozen=True)
@@ -89,14 +183,31 @@ class GreedyStudy:
             return np.where(self.optimum > 0, self.greedy / self.optimum, 1.0)
 
 
-def _random_weights(rng, n, n_targets, u_max, side):
+def _valid_geometry(S, T) -> bool:
+    """What :func:`obslib.pair_bounds` checks of random positions: distinct sensors, none on a target."""
+    n = S.shape[0]
+    same = (S[:, None, :] == S[None, :, :]).all(axis=-1)
+    return not (same.sum() > n or (S[:, None, :] == T[None, :, :]).all(axis=-1).any())
+
+
+def _random_geometry(rng, n, n_targets, side):
     while True:
         S = rng.uniform(0, side, size=(n, 2))
         T = rng.uniform(0, side, size=(n_targets, 2))
-        try:
-            return S, T, pair_bounds(S, T, u_max)
-        except ValueError:  # a coincidence of zero probability; draw again
-            continue
+        if _valid_geometry(S, T):
+            return S, T
+        # a coincidence of zero probability; draw again
+
+
+def _ratios(S, T, u_max) -> np.ndarray:
+    """Greedy / optimum for a batch of geometries; ``inf`` where the geometry or optimum is degenerate."""
+    W, valid = batch_pair_bounds(S, T, u_max)
+    W[~valid] = 0.0
+    opt = optimal_values(W)
+    ok = valid & (opt > 0)
+    out = np.full(opt.shape, np.inf)
+    out[ok] = greedy_values(W[ok]) / opt[ok]
+    return out
 
 
 def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2), u_max=1.0,
@@ -105,23 +216,24 @@ def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2),
 
     Each instance draws ``L`` uniformly from ``targets`` and ``N = 2L + e`` with ``e`` from
     ``extra`` (both inclusive), positions uniform in ``[0, side]^2``, weights the pair bounds
-    with ``u_max`` (Euclidean). Optima are computed in batches per ``(N, L)``.
+    with ``u_max`` (Euclidean). Instances are drawn one after the other from one generator, then
+    solved in batches per ``(N, L)`` (:func:`greedy_values`, :func:`optimal_values`).
     """
     rng = np.random.default_rng(seed)
-    sizes, Ws, greedy = [], [], []
+    sizes, geoms = [], []
     for _ in range(n_instances):
         L = int(rng.integers(targets[0], targets[1] + 1))
         n = 2 * L + int(rng.integers(extra[0], extra[1] + 1))
-        _, _, W = _random_weights(rng, n, L, u_max, side)
         sizes.append((n, L))
-        Ws.append(W)
-        greedy.append(greedy_pair_assignment(W).value)
-    sizes_arr = np.array(sizes)
-    optimum = np.zeros(n_instances)
+        geoms.append(_random_geometry(rng, n, L, side))
+    sizes_arr = np.array(sizes).reshape(-1, 2)
+    greedy, optimum = np.zeros(n_instances), np.zeros(n_instances)
     for n, L in sorted(set(sizes)):
         idx = np.flatnonzero((sizes_arr[:, 0] == n) & (sizes_arr[:, 1] == L))
-        optimum[idx] = optimal_values(np.stack([Ws[i] for i in idx]))
-    return GreedyStudy(sizes_arr[:, 0], sizes_arr[:, 1], np.array(greedy), optimum)
+        W, _ = batch_pair_bounds(np.stack([geoms[i][0] for i in idx]), np.stack([geoms[i][1] for i in idx]), u_max)
+        greedy[idx] = greedy_values(W)
+        optimum[idx] = optimal_values(W)
+    return GreedyStudy(sizes_arr[:, 0], sizes_arr[:, 1], greedy, optimum)
 
 
 def worst_instance_search(n_sensors: int, n_targets: int, seed: int, n_starts: int = 20,
@@ -130,40 +242,38 @@ def worst_instance_search(n_sensors: int, n_targets: int, seed: int, n_starts: i
 
     From ``n_starts`` random instances, repeatedly moves one random point (sensor or target) by a
     Gaussian step (shrinking over time) and keeps the move when the ratio does not increase.
+    Each start's draws (its instance, then per step the point and the step) come from one
+    generator, start after start; the starts are then advanced together, as a batch.
 
     Returns
     -------
     (float, ndarray, ndarray)
-        The smallest ratio found, and its sensors and targets.
+        The smallest ratio found (the first start reaching it), and its sensors and targets.
     """
+    if n_starts < 1 or n_steps < 0:
+        raise ValueError(f"need n_starts >= 1 and n_steps >= 0, got {n_starts} and {n_steps}")
     rng = np.random.default_rng(seed)
-    best = (np.inf, None, None)
-
-    def ratio(S, T):
-        try:
-            W = pair_bounds(S, T, u_max)
-        except ValueError:
-            return np.inf
-        opt = optimal_values(W[None])[0]
-        return greedy_pair_assignment(W).value / opt if opt > 0 else np.inf
-
-    for _ in range(n_starts):
-        S, T, _ = _random_weights(rng, n_sensors, n_targets, u_max, side)
-        r = ratio(S, T)
+    m = n_sensors + n_targets
+    P = np.empty((n_starts, m, 2))  # sensors then targets, per start
+    moved = np.empty((n_starts, n_steps), dtype=np.int64)
+    delta = np.empty((n_starts, n_steps, 2))
+    for c in range(n_starts):
+        S, T = _random_geometry(rng, n_sensors, n_targets, side)
+        P[c] = np.vstack([S, T])
         for step in range(n_steps):
             scale = side * 0.2 * (1 - step / n_steps) + 0.01
-            S2, T2 = S.copy(), T.copy()
-            k = int(rng.integers(n_sensors + n_targets))
-            if k < n_sensors:
-                S2[k] += rng.normal(0, scale, 2)
-            else:
-                T2[k - n_sensors] += rng.normal(0, scale, 2)
-            r2 = ratio(S2, T2)
-            if r2 <= r:
-                S, T, r = S2, T2, r2
-        if r < best[0]:
-            best = (r, S, T)
-    return best
+            moved[c, step] = int(rng.integers(m))
+            delta[c, step] = rng.normal(0, scale, 2)
+    rows = np.arange(n_starts)
+    r = _ratios(P[:, :n_sensors], P[:, n_sensors:], u_max)
+    for step in range(n_steps):
+        P2 = P.copy()
+        P2[rows, moved[:, step]] += delta[:, step]
+        r2 = _ratios(P2[:, :n_sensors], P2[:, n_sensors:], u_max)
+        keep = r2 <= r
+        P[keep], r[keep] = P2[keep], r2[keep]
+    c = int(np.argmin(r))
+    return float(r[c]), P[c, :n_sensors].copy(), P[c, n_sensors:].copy()
 
 
 def charging(W, greedy_triples, optimal_triples) -> list[dict]:
@@ -211,6 +321,9 @@ def tight_weights(eps: float = 1e-3) -> np.ndarray:
 
 
 FIG8_KEYS = ("greedy", "relaxed", "relaxed_ordered", "optimum")
+#: Up to this many pair weights a Fig. 8 trial computes them all and shares them between the
+#: algorithms; beyond, the greedy and the relaxations prune (the values are the same either way).
+FIG8_DENSE_WEIGHTS = 1 << 17
 
 
 def fig8_trial(n_targets: int, trial: int, seed: int, u_max: float = 1.0, side: float = 100.0,
@@ -222,21 +335,30 @@ def fig8_trial(n_targets: int, trial: int, seed: int, u_max: float = 1.0, side: 
     relaxed (Problem 3), ordered-pair relaxed (the original code's) values, and the exact optimum
     when ``with_optimum`` (NaN otherwise).
     """
-    from .assignment import _relaxed_from_cost, optimal_pair_assignment, upper_pair_weights
+    from .assignment import (_greedy_from_cost, _relaxed_from_cost, optimal_pair_assignment,
+                             relaxed_from_geometry, upper_pair_weights)
 
     rng = np.random.default_rng([seed, n_targets, trial])
-    S = rng.uniform(0, side, size=(2 * n_targets, 2))
+    n = 2 * n_targets
+    S = rng.uniform(0, side, size=(n, 2))
     T = rng.uniform(0, side, size=(n_targets, 2))
-    ii, jj, cost = upper_pair_weights(S, T, u_max)  # shared by both relaxations
+    if n * (n - 1) // 2 * n_targets <= FIG8_DENSE_WEIGHTS:  # small: every weight, computed once
+        ii, jj, cost = upper_pair_weights(S, T, u_max)
+        greedy = _greedy_from_cost(ii, jj, cost)
+        relaxed = [_relaxed_from_cost(n, ii, jj, cost, ordered, None) for ordered in (False, True)]
+    else:  # large: each algorithm evaluates only the pairs that can matter
+        greedy = greedy_pair_assignment(sensors=S, targets=T, u_max=u_max)
+        relaxed = relaxed_from_geometry(S, T, u_max)
     out = {
-        "greedy": greedy_pair_assignment(sensors=S, targets=T, u_max=u_max).value,
-        "relaxed": _relaxed_from_cost(2 * n_targets, ii, jj, cost, False, None).value,
-        "relaxed_ordered": _relaxed_from_cost(2 * n_targets, ii, jj, cost, True, None).value,
+        "greedy": greedy.value,
+        "relaxed": relaxed[0].value,
+        "relaxed_ordered": relaxed[1].value,
         "optimum": np.nan,
     }
     if with_optimum:
         W = pair_bounds(S, T, u_max)
-        out["optimum"] = float(optimal_values(W[None])[0]) if n_targets <= 4 else optimal_pair_assignment(W).value
+        out["optimum"] = (float(optimal_values(W[None])[0]) if 2 * n_targets <= MAX_DP_SENSORS
+                          else optimal_pair_assignment(W).value)
     return out
 
 

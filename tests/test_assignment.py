@@ -136,3 +136,39 @@ def test_bad_geometry_for_greedy():
         greedy_pair_assignment(np.zeros((2, 2, 1)), sensors=[[0, 0], [1, 1]], targets=[[5, 5]])
     with pytest.raises(ValueError, match="u_max"):
         greedy_pair_assignment(sensors=[[0, 0], [1, 1]], targets=[[5, 5]])
+
+
+def test_pruned_relaxation_equals_the_full_matching():
+    # relaxed_from_geometry matches only each target's L best pairs; the full LSA sees every pair
+    from obslib.assignment import relaxed_from_geometry
+
+    rng = np.random.default_rng(11)
+    for _ in range(300):
+        L, extra = int(rng.integers(1, 9)), int(rng.integers(0, 5))
+        S, T, W = random_instance(rng, L, extra, grid=bool(rng.integers(2)))
+        plain, ordered = relaxed_from_geometry(S, T, 1.0)
+        full, full_ordered = relaxed_pair_assignment(W), relaxed_pair_assignment(W, ordered=True)
+        assert plain.value == pytest.approx(full.value, rel=1e-12, abs=1e-15)
+        assert ordered.value == pytest.approx(full_ordered.value, rel=1e-12, abs=1e-15)
+        assert plain.value == pytest.approx(sum(W[i, j, l] for i, j, l in plain.triples), rel=1e-12)
+        assert len({(i, j) for i, j, _ in plain.triples}) == L and sorted(l for *_, l in plain.triples) == list(range(L))
+        assert all(i < j for i, j, _ in ordered.triples)
+
+
+def test_pruned_relaxation_skips_most_weights_on_large_instances():
+    rng = np.random.default_rng(0)
+    S, T = rng.uniform(0, 100, (300, 2)), rng.uniform(0, 100, (150, 2))
+    res = relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0)
+    assert res.n_evaluations < 0.5 * 300 * 299 // 2 * 150
+
+
+def test_greedy_from_shared_weights_equals_the_greedy():
+    from obslib.assignment import _greedy_from_cost, upper_pair_weights
+
+    rng = np.random.default_rng(12)
+    for _ in range(300):
+        L, extra = int(rng.integers(1, 8)), int(rng.integers(0, 4))
+        S, T, W = random_instance(rng, L, extra, grid=bool(rng.integers(2)))
+        ii, jj, cost = upper_pair_weights(S, T, 1.0)
+        a, b = _greedy_from_cost(ii, jj, cost), greedy_pair_assignment(W)
+        assert a.triples == b.triples and a.value == b.value

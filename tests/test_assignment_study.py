@@ -81,3 +81,88 @@ def test_fig8_status_follows_the_ratio():
     ratio = np.array(rec.evidence["ratio_by_L"])
     expected = "reproduced" if ratio[1:].min() >= 0.75 and abs(ratio[0] - 1) < 1e-9 else "refuted"
     assert rec.status == expected
+
+
+def test_dynamic_programming_optimum_equals_enumeration_exactly():
+    rng = np.random.default_rng(4)
+    for n, L in [(2, 1), (5, 1), (4, 2), (7, 2), (6, 3), (9, 3), (8, 4), (10, 4), (10, 5)]:
+        S, T = rng.uniform(0, 100, (20, n, 2)), rng.uniform(0, 100, (20, L, 2))
+        W, valid = st.batch_pair_bounds(S, T, 1.0)
+        assert valid.all()
+        P, Q = st.pair_assignments(n, L)
+        by_enumeration = W[:, P, Q, np.arange(L)[None, :]].sum(axis=2).max(axis=1)
+        np.testing.assert_array_equal(st.optimal_values(W), by_enumeration)
+
+
+def test_batch_greedy_and_weights_equal_the_single_instance_functions():
+    rng = np.random.default_rng(5)
+    for n, L in [(2, 1), (6, 2), (7, 3), (10, 4)]:
+        S, T = rng.uniform(0, 100, (30, n, 2)), rng.uniform(0, 100, (30, L, 2))
+        S[0, 1] = S[0, 0]  # two sensors coincide
+        S[1, 0] = T[1, 0]  # a sensor on a target
+        W, valid = st.batch_pair_bounds(S, T, 2.5)
+        assert valid.tolist() == [False, False] + [True] * 28
+        for k in range(2, 30):
+            np.testing.assert_array_equal(W[k], ob.pair_bounds(S[k], T[k], 2.5))
+        np.testing.assert_array_equal(st.greedy_values(W[2:]), [ob.greedy_pair_assignment(w).value for w in W[2:]])
+
+
+def test_batch_functions_reject_bad_input():
+    with pytest.raises(ValueError, match="N >= 2L"):
+        st.optimal_values(np.zeros((1, 3, 3, 2)))
+    with pytest.raises(ValueError, match="too many"):
+        st.optimal_values(np.zeros((1, 18, 18, 2)))
+    with pytest.raises(ValueError, match="shape"):
+        st.greedy_values(np.zeros((3, 3, 2)))
+    with pytest.raises(ValueError, match="finite"):
+        st.batch_pair_bounds(np.full((1, 2, 2), np.nan), np.zeros((1, 1, 2)), 1.0)
+
+
+def test_search_equals_the_sequential_local_search():
+    # the batched search against a direct transcription: one start after the other, ratio from
+    # the single-instance greedy and the enumerated optimum
+    n, L, seed, starts, steps = 5, 2, 7, 3, 40
+    rng = np.random.default_rng(seed)
+
+    def ratio(S, T):
+        W = ob.pair_bounds(S, T, 1.0)
+        P, Q = st.pair_assignments(n, L)
+        opt = W[P, Q, np.arange(L)[None, :]].sum(axis=1).max()
+        return ob.greedy_pair_assignment(W).value / opt
+
+    best = (np.inf, None, None)
+    for _ in range(starts):
+        S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (L, 2))
+        r = ratio(S, T)
+        for step in range(steps):
+            scale = 100 * 0.2 * (1 - step / steps) + 0.01
+            S2, T2 = S.copy(), T.copy()
+            k = int(rng.integers(n + L))
+            d = rng.normal(0, scale, 2)
+            if k < n:
+                S2[k] += d
+            else:
+                T2[k - n] += d
+            r2 = ratio(S2, T2)
+            if r2 <= r:
+                S, T, r = S2, T2, r2
+        if r < best[0]:
+            best = (r, S, T)
+    r, S, T = st.worst_instance_search(n, L, seed, starts, steps)
+    assert r == best[0]
+    np.testing.assert_array_equal(S, best[1])
+    np.testing.assert_array_equal(T, best[2])
+
+
+def test_fig8_dense_and_pruned_paths_agree():
+    # trials small enough to share all weights, solved again by the pruning algorithms
+    from obslib.assignment import relaxed_from_geometry
+
+    for L in (3, 9, 20):
+        t = st.fig8_trial(L, 0, 3)
+        rng = np.random.default_rng([3, L, 0])
+        S, T = rng.uniform(0, 100, (2 * L, 2)), rng.uniform(0, 100, (L, 2))
+        plain, ordered = relaxed_from_geometry(S, T, 1.0)
+        assert t["greedy"] == ob.greedy_pair_assignment(sensors=S, targets=T, u_max=1.0).value
+        assert t["relaxed"] == pytest.approx(plain.value, rel=1e-12)
+        assert t["relaxed_ordered"] == pytest.approx(ordered.value, rel=1e-12)
