@@ -13,9 +13,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .teams import greedy_team_assignment, optimal_team_assignment, team_value
+from .teams import greedy_team_assignment, greedy_team_counts, optimal_team_assignment, team_value
 
-__all__ = ["fig9_trial", "fig9_sweep", "random_spread", "Evenness", "evenness", "greedy_vs_optimal_teams"]
+__all__ = ["fig9_trial", "fig9_trials", "fig9_sweep", "random_spread", "Evenness", "evenness", "greedy_vs_optimal_teams"]
+
+
+def _fig9_geometry(n_sensors, trial, seed, n_targets, side):
+    rng = np.random.default_rng([seed, n_sensors, trial])
+    return rng.uniform(0, side, size=(n_sensors, 2)), rng.uniform(0, side, size=(n_targets, 2))
 
 
 def fig9_trial(n_sensors: int, trial: int, seed: int, n_targets: int = 5, measure: str = "logdet",
@@ -25,11 +30,17 @@ def fig9_trial(n_sensors: int, trial: int, seed: int, n_targets: int = 5, measur
     The draw depends only on ``(seed, N, trial)`` (``default_rng([seed, N, trial])``): sensors
     first, then targets, uniform in ``[0, side]^2``.
     """
-    rng = np.random.default_rng([seed, n_sensors, trial])
-    S = rng.uniform(0, side, size=(n_sensors, 2))
-    T = rng.uniform(0, side, size=(n_targets, 2))
+    S, T = _fig9_geometry(n_sensors, trial, seed, n_targets, side)
     teams = greedy_team_assignment(S, T, measure=measure, eps=eps)
     return np.array([len(t) for t in teams])
+
+
+def fig9_trials(n_sensors: int, trials, seed: int, n_targets: int = 5, measure: str = "logdet",
+                eps: float = 1.0, side: float = 100.0) -> np.ndarray:
+    """:func:`fig9_trial` for several trials of one ``N`` at once (one batch), shape ``(len(trials), L)``."""
+    geoms = [_fig9_geometry(n_sensors, t, seed, n_targets, side) for t in trials]
+    return greedy_team_counts(np.array([g[0] for g in geoms]).reshape(-1, n_sensors, 2),
+                              np.array([g[1] for g in geoms]).reshape(-1, n_targets, 2), measure, eps)
 
 
 def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: str = "logdet",
@@ -37,17 +48,19 @@ def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: st
                scheduler=None) -> np.ndarray:
     """Counts of shape ``(len(N_values), trials, L)`` for the Fig. 9 sweep.
 
-    ``backend``, ``n_jobs`` and ``scheduler`` go to :func:`obslib.sweep.run_sweep`; the counts do
-    not depend on them.
+    One task per ``N`` runs its trials as a batch (:func:`fig9_trials`); every trial keeps its own
+    seed, so ``backend``, ``n_jobs`` and ``scheduler`` (for :func:`obslib.sweep.run_sweep`) do
+    not change the counts.
     """
     from .sweep import run_sweep
 
     N_values = [int(n) for n in N_values]
     tasks = [
-        dict(n_sensors=n, trial=t, seed=seed, n_targets=n_targets, measure=measure, eps=eps, side=side)
-        for n in N_values for t in range(trials)
+        dict(n_sensors=n, trials=list(range(trials)), seed=seed, n_targets=n_targets, measure=measure, eps=eps,
+             side=side)
+        for n in N_values
     ]
-    counts = run_sweep(fig9_trial, tasks, backend, n_jobs, scheduler)
+    counts = run_sweep(fig9_trials, tasks, backend, n_jobs, scheduler)
     return np.array(counts).reshape(len(N_values), trials, n_targets)
 
 
@@ -93,14 +106,42 @@ def evenness(counts, N_values, n_targets: int) -> Evenness:
 
 def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets=(1, 3),
                             measure: str = "logdet", eps: float = 1.0, side: float = 100.0) -> np.ndarray:
-    """Greedy / exact optimum of Problem 2 on tiny random instances (array of ratios)."""
+    """Greedy / exact optimum of Problem 2 on tiny random instances (array of ratios).
+
+    Instances are drawn one after the other (``N``, then ``L``, then sensors and targets); those of
+    the same ``(N, L)`` are then solved together: a measure table over all ``2^N`` teams per
+    target (:func:`obslib.measures.measure_from_vectors`), the greedy's teams looked up in it and
+    the optimum found over all ``L^N`` assignments, as :func:`obslib.optimal_team_assignment` does.
+    """
+    from itertools import product
+
+    from .bounds import relative_vectors
+    from .measures import measure_from_vectors, subset_masks
+    from .teams import RANK_RTOL, _check_eps, _check_measure, _greedy_teams
+
+    e = _check_eps(eps)
+    _check_measure(measure, e)
     rng = np.random.default_rng(seed)
-    out = []
+    draws = []
     for _ in range(n_instances):
         n = int(rng.integers(sensors[0], sensors[1] + 1))
         L = int(rng.integers(targets[0], targets[1] + 1))
-        S, T = rng.uniform(0, side, (n, 2)), rng.uniform(0, side, (L, 2))
-        g = team_value(S, T, greedy_team_assignment(S, T, measure, eps), measure, eps)
-        _, opt = optimal_team_assignment(S, T, measure, eps)
-        out.append(g / opt if opt > 0 else 1.0)
-    return np.array(out)
+        draws.append((n, L, rng.uniform(0, side, (n, 2)), rng.uniform(0, side, (L, 2))))
+    out = np.ones(n_instances)
+    for n, L in sorted({(d[0], d[1]) for d in draws}):
+        idx = [k for k, d in enumerate(draws) if d[:2] == (n, L)]
+        V = np.stack([relative_vectors(draws[k][2], draws[k][3]) for k in idx])  # (K, N, L, 2), validated
+        tables = [measure_from_vectors(V[:, :, l, :], subset_masks(n), measure, e) for l in range(L)]  # (K, 2^N)
+        bits = 1 << np.arange(n, dtype=np.int64)
+        labels = np.array(list(product(range(L), repeat=n)), dtype=np.int64).reshape(-1, n)
+        total = np.zeros((len(idx), labels.shape[0]))
+        for l in range(L):
+            total += tables[l][:, ((labels == l) * bits).sum(axis=1)]
+        opt = total.max(axis=1)
+        picks_i, picks_l = _greedy_teams(V, None, measure, e, RANK_RTOL)
+        g = np.zeros(len(idx))
+        for l in range(L):
+            g += np.take_along_axis(tables[l], (np.where(picks_l == l, bits[picks_i], 0)).sum(axis=1)[:, None], 1)[:, 0]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out[idx] = np.where(opt > 0, g / opt, 1.0)
+    return out

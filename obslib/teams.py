@@ -21,7 +21,7 @@ from ._validate import as_points
 from .bounds import relative_vectors
 from .measures import RANK_RTOL, _check_eps, _check_name, _from_tr_det, measure_from_vectors, subset_masks
 
-__all__ = ["greedy_team_assignment", "optimal_team_assignment", "team_value", "MAXIMISABLE"]
+__all__ = ["greedy_team_assignment", "greedy_team_counts", "optimal_team_assignment", "team_value", "MAXIMISABLE"]
 
 #: Measures that can only increase as sensors join a team (the greedy maximises one of these).
 MAXIMISABLE = ("trace", "logdet", "rank", "neg_trace_inverse")
@@ -63,7 +63,9 @@ def greedy_team_assignment(sensors, targets, measure: str = "logdet", eps: float
     ``G_l = O_l^T O_l + eps I`` (rows ``o_l - p_i`` of the team, and ``u`` if given). Only the
     chosen target's gains change between rounds; they are updated from the trace and the
     Cauchy-Binet determinant ``det(A + v v^T) = det A + sum_k (v x r_k)^2`` over the team's rows
-    ``r_k``, which is exact for parallel rows (so ``rank`` is decided reliably).
+    ``r_k``, a sum of non-negative terms that is exact for parallel rows (so ``rank`` is decided
+    reliably); each sensor's sum is accumulated as the team grows, so a round costs ``O(N)``.
+    The same code runs a batch of instances at once (:func:`greedy_team_counts`).
 
     Parameters
     ----------
@@ -86,47 +88,75 @@ def greedy_team_assignment(sensors, targets, measure: str = "logdet", eps: float
     e = _check_eps(eps)
     _check_measure(measure, e)
     v, uu = _rows(sensors, targets, u)
-    n, n_targets = v.shape[0], v.shape[1]
-    if n_targets < 1:
+    if v.shape[1] < 1:
         raise ValueError("there must be at least one target")
-    # Per target: the team's rows R_l (and u), tr_l = sum ||r||^2 and, by Cauchy-Binet,
-    # det_l = sum over pairs of rows of their squared cross product: a sum of non-negative terms,
-    # exact for parallel rows, so the numerical rank is decided as in obslib.measures.
-    rows = [[uu[l]] if u is not None else [] for l in range(n_targets)]
-    tr = np.einsum("lk,lk->l", uu, uu)
-    det = np.zeros(n_targets)
-    vx, vy = v[..., 0], v[..., 1]  # (N, L)
+    picks_i, picks_l = _greedy_teams(v[None], uu[None] if u is not None else None, measure, e, rank_rtol)
+    teams: list[list[int]] = [[] for _ in range(v.shape[1])]
+    for i, l in zip(picks_i[0].tolist(), picks_l[0].tolist()):
+        teams[l].append(i)
+    return teams
+
+
+def greedy_team_counts(sensors, targets, measure: str = "logdet", eps: float = 1.0,
+                       rank_rtol: float = RANK_RTOL) -> np.ndarray:
+    """Team sizes of :func:`greedy_team_assignment` for a batch of instances, shape ``(K, L)``.
+
+    ``sensors`` ``(K, N, 2)`` and ``targets`` ``(K, L, 2)``, each instance validated as in
+    :func:`greedy_team_assignment`; the instances run together, round by round, with the same
+    arithmetic, so each count equals the single-instance call's (the tests compare them).
+    """
+    e = _check_eps(eps)
+    _check_measure(measure, e)
+    S, T = np.asarray(sensors, dtype=float), np.asarray(targets, dtype=float)
+    if S.ndim != 3 or T.ndim != 3 or S.shape[0] != T.shape[0]:
+        raise ValueError(f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}")
+    if T.shape[1] < 1:
+        raise ValueError("there must be at least one target")
+    v = np.stack([relative_vectors(s, t) for s, t in zip(S, T)])  # validated, (K, N, L, 2)
+    _, picks_l = _greedy_teams(v, None, measure, e, rank_rtol)
+    return np.stack([np.bincount(p, minlength=T.shape[1]) for p in picks_l]) if len(picks_l) else np.zeros((0, T.shape[1]), int)
+
+
+def _greedy_teams(v, uu, measure, e, rank_rtol):
+    """The greedy of :func:`greedy_team_assignment` on a batch: ``v`` ``(K, N, L, 2)``, ``uu``
+    ``(K, L, 2)`` or None. Returns the picked sensors and targets, each ``(K, N)``, in order."""
+    k, n, n_targets, _ = v.shape
+    vx, vy = v[..., 0], v[..., 1]  # (K, N, L)
+    # Per instance and target: tr and det of the team's A = sum r r^T, and for every sensor the
+    # Cauchy-Binet increment C = sum over the team's rows r of (v x r)^2 (det(A + v v^T) = det + C).
+    if uu is not None:
+        tr = uu[..., 0] * uu[..., 0] + uu[..., 1] * uu[..., 1]
+        cross = vx * uu[:, None, :, 1] - vy * uu[:, None, :, 0]
+        C = cross * cross
+    else:
+        tr = np.zeros((k, n_targets))
+        C = np.zeros((k, n, n_targets))
+    det = np.zeros((k, n_targets))
 
     def value(tr_, det_):
         half = 0.5 * tr_
         lmax = half + np.sqrt(np.maximum(half * half - det_, 0.0))
         return _from_tr_det(measure, tr_, det_, lmax, e, rank_rtol)
 
-    def gains(l):
-        """Marginal gains of every sensor for target ``l``, shape (N,)."""
-        x, y = vx[:, l], vy[:, l]
-        det_new = np.full(n, det[l])
-        if rows[l]:
-            R = np.array(rows[l])
-            cross = x[:, None] * R[None, :, 1] - y[:, None] * R[None, :, 0]
-            det_new = det_new + np.einsum("nm,nm->n", cross, cross)
-        return value(tr[l] + x * x + y * y, det_new) - value(tr[l], det[l])
-
-    g = np.stack([gains(l) for l in range(n_targets)], axis=1)  # (N, L)
-    free = np.ones(n, dtype=bool)
-    teams: list[list[int]] = [[] for _ in range(n_targets)]
-    for _ in range(n):
-        masked = np.where(free[:, None], g, -np.inf)
-        i, l = np.unravel_index(int(np.argmax(masked)), masked.shape)  # C order: smallest i, then l
-        teams[l].append(int(i))
-        free[i] = False
-        vi = v[i, l]
-        for r in rows[l]:
-            det[l] += (vi[0] * r[1] - vi[1] * r[0]) ** 2
-        tr[l] += vi @ vi
-        rows[l].append(vi)
-        g[:, l] = gains(l)
-    return teams
+    g = value(tr[:, None, :] + vx * vx + vy * vy, det[:, None, :] + C) - value(tr, det)[:, None, :]
+    rows = np.arange(k)
+    free = np.ones((k, n), dtype=bool)
+    picks_i = np.empty((k, n), dtype=np.int64)
+    picks_l = np.empty((k, n), dtype=np.int64)
+    for r in range(n):
+        masked = np.where(free[:, :, None], g, -np.inf).reshape(k, -1)
+        i, l = np.divmod(np.argmax(masked, axis=1), n_targets)  # C order: smallest i, then l
+        picks_i[:, r], picks_l[:, r] = i, l
+        free[rows, i] = False
+        xi, yi = vx[rows, i, l], vy[rows, i, l]
+        det[rows, l] = det[rows, l] + C[rows, i, l]
+        tr[rows, l] = tr[rows, l] + xi * xi + yi * yi
+        xl, yl = vx[rows, :, l], vy[rows, :, l]  # (K, N): every sensor's row for the chosen target
+        cross = xl * yi[:, None] - yl * xi[:, None]
+        C[rows, :, l] = C[rows, :, l] + cross * cross
+        t_l, d_l = tr[rows, l], det[rows, l]
+        g[rows, :, l] = value(t_l[:, None] + xl * xl + yl * yl, d_l[:, None] + C[rows, :, l]) - value(t_l, d_l)[:, None]
+    return picks_i, picks_l
 
 
 def team_value(sensors, targets, teams, measure: str = "logdet", eps: float = 1.0, u=None,

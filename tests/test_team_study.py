@@ -33,3 +33,17 @@ def test_evenness_statistics_by_hand():
     assert e.baseline[0] == ts.random_spread(10, 5)
     assert e.relative[0] == e.within[0] / e.baseline[0]
     assert e.mean_deviation == 1.0  # target 1 averages 3, target 2 averages 1, N/L = 2
+
+
+def test_grouped_greedy_vs_optimum_equals_the_instance_by_instance_study():
+    from obslib.teams import greedy_team_assignment, optimal_team_assignment, team_value
+
+    rng = np.random.default_rng(9)
+    expected = []
+    for _ in range(60):
+        n, L = int(rng.integers(3, 7)), int(rng.integers(1, 4))
+        S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (L, 2))
+        g = team_value(S, T, greedy_team_assignment(S, T, "logdet", 1.0), "logdet", 1.0)
+        expected.append(g / optimal_team_assignment(S, T, "logdet", 1.0)[1])
+    # same draws; the tables are summed in a different order, hence the last-bit tolerance
+    np.testing.assert_allclose(ts.greedy_vs_optimal_teams(60, 9, (3, 6)), expected, rtol=1e-13)

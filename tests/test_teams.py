@@ -92,3 +92,16 @@ def test_bad_geometry():
     with pytest.raises(ValueError, match="too many"):
         optimal_team_assignment(np.random.default_rng(0).uniform(0, 9, (30, 2)), [[50, 50], [60, 60]])
     assert ob.greedy_team_assignment is greedy_team_assignment
+
+
+def test_batched_counts_equal_single_instances():
+    from obslib.teams import greedy_team_counts
+
+    rng = np.random.default_rng(4)
+    for name, eps in [("logdet", 1.0), ("trace", 0.0), ("neg_trace_inverse", 0.5), ("rank", 0.0)]:
+        S, T = rng.uniform(0, 100, (12, 9, 2)), rng.uniform(0, 100, (12, 3, 2))
+        counts = greedy_team_counts(S, T, name, eps)
+        single = [[len(t) for t in greedy_team_assignment(s, t, name, eps)] for s, t in zip(S, T)]
+        np.testing.assert_array_equal(counts, single)
+    with pytest.raises(ValueError, match="coincide"):
+        greedy_team_counts(np.zeros((1, 2, 2)), np.ones((1, 1, 2)))
