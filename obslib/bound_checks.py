@@ -12,12 +12,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .bounds import lower_bound, worst_case_control
-from .observability import inverse_condition_number, relative_rows
-from .scenes import random_scenes
+from .bounds import lower_bounds, worst_case_controls
+from .observability import inverse_condition_numbers, inverse_condition_numbers_polar
+from .scenes import check_batch, random_scene_batch
 
 __all__ = [
     "disc_controls",
+    "disc_mesh",
     "Theorem1Audit",
     "theorem1_audit",
     "Theorem2Audit",
@@ -46,6 +47,35 @@ def disc_controls(u_max: float, n_radii: int, n_angles: int) -> np.ndarray:
     return np.vstack([np.zeros((1, 2)), grid])
 
 
+def disc_mesh(controls, values, n_radii: int, n_angles: int):
+    """Values on the grid of :func:`disc_controls` as a closed polar mesh, for ``contourf``.
+
+    Parameters
+    ----------
+    controls : array_like, shape (1 + n_radii * n_angles, 2)
+        The grid, as returned by :func:`disc_controls` (``u = 0`` first, then ring by ring).
+    values : array_like, shape (1 + n_radii * n_angles,)
+        A value per control (e.g. the exact ``C^{-1}``).
+
+    Returns
+    -------
+    X, Y, Z : ndarray, shape (n_radii + 1, n_angles + 1)
+        Row 0 is the centre ``u = 0``; the last column repeats the first direction, so the
+        quadrilaterals cover the whole disc (the same points a triangulation would use).
+    """
+    c = np.asarray(controls, dtype=float)
+    v = np.asarray(values, dtype=float)
+    k = 1 + n_radii * n_angles
+    if c.shape != (k, 2) or v.shape != (k,):
+        raise ValueError(f"need controls ({k}, 2) and values ({k},), got {c.shape}, {v.shape}")
+    pts = np.concatenate([np.broadcast_to(c[0], (1, n_angles, 2)),
+                          c[1:].reshape(n_radii, n_angles, 2)])
+    z = np.concatenate([np.full((1, n_angles), v[0]), v[1:].reshape(n_radii, n_angles)])
+    pts = np.concatenate([pts, pts[:, :1]], axis=1)
+    z = np.concatenate([z, z[:, :1]], axis=1)
+    return pts[..., 0], pts[..., 1], z
+
+
 @dataclass(frozen=True)
 class Theorem1Audit:
     """Bound versus exact ``C^{-1}`` over random scenes and controls in the disc."""
@@ -61,36 +91,36 @@ class Theorem1Audit:
 def theorem1_audit(n_scenes: int, n_controls: int, seed: int) -> Theorem1Audit:
     """Check ``lower_bound <= C^{-1}(O(o, u))`` for random ``||u|| <= u_max`` (Theorem 1).
 
-    For every scene, ``n_controls`` controls are drawn uniformly in the disc, plus the
-    worst-case control of :func:`obslib.bounds.worst_case_control`; the bound (SVD of ``O(o)``)
-    is compared with the exact inverse condition number of ``O(o, u)`` (from its Gram matrix,
-    :func:`obslib.inverse_condition_number`).
+    For every scene (:func:`obslib.scenes.random_scene_batch`), ``n_controls`` controls are
+    drawn uniformly in the disc, plus the worst-case control ``u_max v_max``
+    (:func:`obslib.bounds.worst_case_controls`); the bound (SVD of ``O(o)``,
+    :func:`obslib.bounds.lower_bounds`) is compared with the exact inverse condition number of
+    ``O(o, u)`` (from its Gram matrix, :func:`obslib.observability.inverse_condition_numbers`).
+    All scenes are evaluated at once; the batched functions equal the per-scene ones
+    (:func:`lower_bound`, :func:`worst_case_control`, :func:`inverse_condition_number`) to
+    rounding, as the tests check.
     """
+    batch = random_scene_batch(n_scenes, seed)
+    rows, u_max = batch.rows, batch.u_max
     rng = np.random.default_rng(seed + 1)
-    n_eval = 0
-    n_viol = 0
-    worst_excess = -np.inf
-    max_attain = 0.0
-    min_slack: dict[str, float] = {}
-    for sc in random_scenes(n_scenes, seed):
-        bound = lower_bound(sc.sensors, sc.target, sc.u_max)
-        r = sc.u_max * np.sqrt(rng.uniform(size=n_controls))
-        phi = rng.uniform(0, 2 * np.pi, size=n_controls)
-        u_star = worst_case_control(sc.sensors, sc.target, sc.u_max)
-        controls = np.vstack([np.column_stack([r * np.cos(phi), r * np.sin(phi)]), u_star])
-        exact = inverse_condition_number(sc.sensors, sc.target, controls)
-        excess = bound - exact
-        n_eval += exact.size
-        n_viol += int((excess > ATOL).sum())
-        worst_excess = max(worst_excess, float(excess.max()))
-        max_attain = max(max_attain, float(abs(exact[-1] - bound)))
-        min_slack[sc.kind] = min(min_slack.get(sc.kind, np.inf), float((-excess).min()))
+    r = u_max[:, None] * np.sqrt(rng.uniform(size=(n_scenes, n_controls)))
+    phi = rng.uniform(0, 2 * np.pi, size=(n_scenes, n_controls))
+    bound = lower_bounds(rows, u_max)
+    u_star = worst_case_controls(rows, u_max)
+    controls = np.concatenate(
+        [np.stack([r * np.cos(phi), r * np.sin(phi)], axis=-1), u_star[:, None, :]], axis=1
+    )
+    exact = inverse_condition_numbers(rows, controls)  # (S, n_controls + 1), u* last
+    excess = bound[:, None] - exact
+    kinds = np.array(batch.kinds)
+    slack = (-excess).min(axis=1)
+    min_slack = {k: float(slack[kinds == k].min()) for k in dict.fromkeys(batch.kinds)}
     return Theorem1Audit(
         n_scenes=n_scenes,
-        n_evaluations=n_eval,
-        n_violations=n_viol,
-        worst_excess=worst_excess,
-        max_attainment_error=max_attain,
+        n_evaluations=int(exact.size),
+        n_violations=int((excess > ATOL).sum()),
+        worst_excess=float(excess.max()),
+        max_attainment_error=float(np.abs(exact[:, -1] - bound).max()),
         min_slack_by_kind=min_slack,
     )
 
@@ -108,27 +138,25 @@ class Theorem2Audit:
 def theorem2_audit(n_scenes: int, seed: int) -> Theorem2Audit:
     """Check Theorem 2: with one sensor the bound is 0 wherever the sensor is.
 
-    The bound is recomputed from ``numpy.linalg.eigvalsh`` of the 2x2 matrix
-    ``O_i(o)^T O_i(o)`` (not from :func:`lower_bound`, which returns 0 for ``N < 2`` by
-    definition). The exact one-sensor ``C^{-1}`` with a random control is reported too: it is
-    not 0, so the sensor's geometry does matter once ``u_o`` is known.
+    The bound is recomputed from ``numpy.linalg.eigvalsh`` of the 2x2 matrices
+    ``O_i(o)^T O_i(o)`` (stacked over the scenes; not from :func:`lower_bound`, which returns 0
+    for ``N < 2`` by definition). The exact one-sensor ``C^{-1}`` with a random control is
+    reported too: it is not 0, so the sensor's geometry does matter once ``u_o`` is known.
     """
+    batch = random_scene_batch(n_scenes, seed, n_sensors=(1, 1), kinds=("generic", "spread"))
+    rows = batch.rows  # (S, 1, 2)
+    lam = np.linalg.eigvalsh(np.swapaxes(rows, 1, 2) @ rows)
     rng = np.random.default_rng(seed + 2)
-    max_bound = 0.0
-    max_rel = 0.0
-    exact_vals = []
-    for sc in random_scenes(n_scenes, seed, n_sensors=(1, 1), kinds=("generic", "spread")):
-        rows = relative_rows(sc.sensors, sc.target)
-        lam = np.linalg.eigvalsh(rows.T @ rows)
-        max_rel = max(max_rel, abs(lam[0]) / lam[1])
-        max_bound = max(max_bound, float(np.sqrt(max(lam[0], 0.0) / (lam[1] + sc.u_max**2))))
-        u = sc.u_max * rng.uniform() * np.array([np.cos(a := rng.uniform(0, 2 * np.pi)), np.sin(a)])
-        exact_vals.append(inverse_condition_number(sc.sensors, sc.target, u))
+    mag = batch.u_max * rng.uniform(size=n_scenes)
+    a = rng.uniform(0, 2 * np.pi, size=n_scenes)
+    u = mag[:, None] * np.column_stack([np.cos(a), np.sin(a)])
+    exact = inverse_condition_numbers(rows, u)
+    bound = np.sqrt(np.maximum(lam[:, 0], 0.0) / (lam[:, 1] + batch.u_max**2))
     return Theorem2Audit(
         n_scenes=n_scenes,
-        max_bound=max_bound,
-        max_relative_lambda_min=float(max_rel),
-        exact_range=(float(min(exact_vals)), float(max(exact_vals))),
+        max_bound=float(bound.max()),
+        max_relative_lambda_min=float((np.abs(lam[:, 0]) / lam[:, 1]).max()),
+        exact_range=(float(exact.min()), float(exact.max())),
     )
 
 
@@ -158,71 +186,62 @@ class Theorem3Audit:
 def theorem3_audit(n_trials: int, seed: int) -> Theorem3Audit:
     """Check Theorem 3 and the condition printed in its proof on random configurations.
 
-    Each trial draws a "before" and an "after" set of 2-4 sensors around a target at the
-    origin and a speed ``u``. The theorem's condition ("stated") is that both
-    ``C^{-1}(O(o))`` and ``sigma_min(O(o))`` do not decrease; the proof's Eq. (27)
-    ("printed") asks instead for the ratio not to decrease and ``lambda'_min >= lambda_max``.
-    Also counted: each half of the stated condition alone, and the weaker condition of
-    Remark 2 (``T1 + T2 >= 0``), which is necessary and sufficient.
+    Each trial draws a "before" and an "after" set of 2-4 sensors, uniform in a square of
+    half-side ``10**U(-1, 1)`` around a target at the origin, and a speed ``u ~ U(0, 2)``. The
+    theorem's condition ("stated") is that both ``C^{-1}(O(o))`` and ``sigma_min(O(o))`` do
+    not decrease; the proof's Eq. (27) ("printed") asks instead for the ratio not to decrease
+    and ``lambda'_min >= lambda_max``. Also counted: each half of the stated condition alone,
+    and the weaker condition of Remark 2 (``T1 + T2 >= 0``), which is necessary and sufficient.
+    All trials are drawn and evaluated at once (``eigvalsh`` of the stacked 2x2 matrices
+    ``O(o)^T O(o)``); a witness is the first trial, in draw order, of its row.
     """
     rng = np.random.default_rng(seed)
-    names = ("stated", "printed", "ratio only", "sigma_min only", "remark 2", "neither")
-    counts = {k: [0, 0] for k in names}
-    witnesses: dict[str, dict] = {}
-    printed_implies = True
-    necessary_violations = 0
-    target = np.zeros(2)
-    for _ in range(n_trials):
-        lams = []
-        configs = []
-        for _side in range(2):
-            n = int(rng.integers(2, 5))
-            scale = 10.0 ** rng.uniform(-1, 1)
-            sensors = rng.uniform(-scale, scale, size=(n, 2))
-            rows = relative_rows(sensors, target)
-            lams.append(np.linalg.eigvalsh(rows.T @ rows))
-            configs.append(sensors)
-        u2 = float(rng.uniform(0, 2)) ** 2
-        (lmin, lmax), (lmin2, lmax2) = lams
-        b_before = np.sqrt(lmin / (lmax + u2))
-        b_after = np.sqrt(lmin2 / (lmax2 + u2))
-        decreased = bool(b_after < b_before * (1 - 1e-12))
-        ratio_up = lmin2 * lmax >= lmax2 * lmin
-        smin_up = lmin2 >= lmin
-        t1, t2 = theorem3_terms((lmin, lmax), (lmin2, lmax2), u2)
-        holds = {
-            "stated": ratio_up and smin_up,
-            "printed": ratio_up and lmin2 >= lmax,
-            "ratio only": ratio_up and not smin_up,
-            "sigma_min only": smin_up and not ratio_up,
-            "remark 2": t1 + t2 >= 0,
-            "neither": not ratio_up and not smin_up,
-        }
-        if b_after > b_before * (1 + 1e-9) and not holds["remark 2"]:
-            necessary_violations += 1
-        if holds["printed"] and not holds["stated"]:
-            printed_implies = False
-        for k, h in holds.items():
-            if h:
-                counts[k][0] += 1
-                if decreased:
-                    counts[k][1] += 1
-                    witnesses.setdefault(
-                        k,
-                        {
-                            "before": configs[0].round(6).tolist(),
-                            "after": configs[1].round(6).tolist(),
-                            "u": round(float(np.sqrt(u2)), 6),
-                            "bound_before": round(float(b_before), 6),
-                            "bound_after": round(float(b_after), 6),
-                        },
-                    )
+    T = int(n_trials)
+    counts_n = rng.integers(2, 5, size=(T, 2))  # sensors before / after
+    scale = 10.0 ** rng.uniform(-1, 1, size=(T, 2))
+    sensors = rng.uniform(-1, 1, size=(T, 2, 4, 2)) * scale[..., None, None]
+    u = rng.uniform(0, 2, size=T)
+    valid = np.arange(4) < counts_n[..., None]  # (T, 2, 4)
+    flat = np.where(valid[..., None], sensors, np.nan).reshape(2 * T, 4, 2)
+    check_batch(flat, np.zeros((2 * T, 2)), counts_n.reshape(-1))
+    rows = np.where(valid[..., None], -sensors, 0.0)  # o - p_i with o = 0, zero padding
+    lam = np.linalg.eigvalsh(np.swapaxes(rows, -1, -2) @ rows)  # (T, 2, 2)
+    u2 = u**2
+    lmin, lmax, lmin2, lmax2 = lam[:, 0, 0], lam[:, 0, 1], lam[:, 1, 0], lam[:, 1, 1]
+    b_before = np.sqrt(lmin / (lmax + u2))
+    b_after = np.sqrt(lmin2 / (lmax2 + u2))
+    decreased = b_after < b_before * (1 - 1e-12)
+    ratio_up = lmin2 * lmax >= lmax2 * lmin
+    smin_up = lmin2 >= lmin
+    t1, t2 = theorem3_terms((lmin, lmax), (lmin2, lmax2), u2)
+    holds = {
+        "stated": ratio_up & smin_up,
+        "printed": ratio_up & (lmin2 >= lmax),
+        "ratio only": ratio_up & ~smin_up,
+        "sigma_min only": smin_up & ~ratio_up,
+        "remark 2": t1 + t2 >= 0,
+        "neither": ~ratio_up & ~smin_up,
+    }
+    necessary = int(((b_after > b_before * (1 + 1e-9)) & ~holds["remark 2"]).sum())
+    counts, witnesses = {}, {}
+    for k, h in holds.items():
+        bad = h & decreased
+        counts[k] = (int(h.sum()), int(bad.sum()))
+        if bad.any():
+            i = int(np.argmax(bad))
+            witnesses[k] = {
+                "before": sensors[i, 0, : counts_n[i, 0]].round(6).tolist(),
+                "after": sensors[i, 1, : counts_n[i, 1]].round(6).tolist(),
+                "u": round(float(u[i]), 6),
+                "bound_before": round(float(b_before[i]), 6),
+                "bound_after": round(float(b_after[i]), 6),
+            }
     return Theorem3Audit(
         n_trials=n_trials,
-        counts={k: tuple(v) for k, v in counts.items()},
+        counts=counts,
         witnesses=witnesses,
-        printed_implies_stated=printed_implies,
-        remark2_necessary_violations=necessary_violations,
+        printed_implies_stated=bool(not (holds["printed"] & ~holds["stated"]).any()),
+        remark2_necessary_violations=necessary,
     )
 
 
@@ -243,24 +262,23 @@ def remark1_audit(n_scenes: int, seed: int, n_radii: int = 8, n_angles: int = 64
     row included) against the bound in eigenvalue form with ``u_max = 0`` (``eigvalsh`` of
     ``O(o)^T O(o)``; compared as squares, since a tiny ``lambda_min`` is only known to
     ``eps * lambda_max``); the exact ``C^{-1}`` at the worst-case control (norm ``u_max`` along
-    the principal eigenvector) against :func:`lower_bound`; and the minimum of the exact value
-    over a polar grid of the disc, which can only approach the bound from above.
+    the principal eigenvector) against the bound (SVD); and the minimum of the exact value
+    over a polar grid of the disc (:func:`disc_controls`), which can only approach the bound
+    from above. All scenes at once, with the batched functions of :func:`theorem1_audit`.
     """
-    stat = 0.0
-    moving = 0.0
-    gap = np.inf
-    for sc in random_scenes(n_scenes, seed, kinds=("generic", "spread")):
-        rows = relative_rows(sc.sensors, sc.target)
-        lam = np.linalg.eigvalsh(rows.T @ rows)
-        exact0 = inverse_condition_number(sc.sensors, sc.target, np.zeros(2))
-        stat = max(stat, abs(exact0**2 - lam[0] / lam[1]))
-        b = lower_bound(sc.sensors, sc.target, sc.u_max)
-        u_star = worst_case_control(sc.sensors, sc.target, sc.u_max)
-        moving = max(moving, abs(inverse_condition_number(sc.sensors, sc.target, u_star) - b))
-        grid = inverse_condition_number(
-            sc.sensors, sc.target, disc_controls(sc.u_max, n_radii, n_angles)
-        )
-        gap = min(gap, float(grid.min() - b))
+    batch = random_scene_batch(n_scenes, seed, kinds=("generic", "spread"))
+    rows, u_max = batch.rows, batch.u_max
+    lam = np.linalg.eigvalsh(np.swapaxes(rows, 1, 2) @ rows)
+    exact0 = inverse_condition_numbers(rows, np.zeros((n_scenes, 2)))
+    stat = np.abs(exact0**2 - lam[:, 0] / lam[:, 1]).max()
+    b = lower_bounds(rows, u_max)
+    u_star = worst_case_controls(rows, u_max)
+    moving = np.abs(inverse_condition_numbers(rows, u_star) - b).max()
+    # the polar grid of disc_controls(u_max, n_radii, n_angles): u = 0, then n_radii rings
+    radii = u_max[:, None] * np.arange(1, n_radii + 1)[None, :] / n_radii
+    rings = inverse_condition_numbers_polar(rows, radii, 2 * np.pi * np.arange(n_angles) / n_angles)
+    grid_min = np.minimum(exact0, rings.min(axis=(1, 2)))
+    gap = (grid_min - b).min()
     return Remark1Audit(
         n_scenes=n_scenes,
         max_stationary_error=float(stat),

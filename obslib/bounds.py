@@ -24,6 +24,8 @@ __all__ = [
     "pair_bound_polar",
     "worst_case_control",
     "relative_vectors",
+    "lower_bounds",
+    "worst_case_controls",
 ]
 
 
@@ -210,3 +212,65 @@ def worst_case_control(sensors, target, u_max) -> np.ndarray:
     if v[0] < 0 or (v[0] == 0 and v[1] < 0):
         v = -v
     return u * v
+
+
+def _stacked_rows(rows) -> np.ndarray:
+    r = np.asarray(rows, dtype=float)
+    if r.ndim < 2 or r.shape[-1] != 2:
+        raise ValueError(f"rows must have shape (..., N, 2), got {r.shape}")
+    if not np.isfinite(r).all():
+        raise ValueError("rows have a non-finite coordinate")
+    return r
+
+
+def _stacked_u_max(u_max, shape) -> np.ndarray:
+    u = np.asarray(u_max, dtype=float)
+    if not np.isfinite(u).all() or (u < 0).any():
+        raise ValueError("u_max must be finite and non-negative")
+    try:
+        return np.broadcast_to(u, shape)
+    except ValueError:
+        raise ValueError(f"u_max must be a scalar or of shape {shape}, got {u.shape}") from None
+
+
+def lower_bounds(rows, u_max) -> np.ndarray:
+    """Theorem 1's bound (Eq. (21)) for a stack of scenes, by batched SVD of ``O(o)``.
+
+    The batched form of :func:`lower_bound`: ``sigma_min / sqrt(sigma_max^2 + u_max^2)`` from
+    ``numpy.linalg.svd`` of every ``(N, 2)`` matrix at once.
+
+    Parameters
+    ----------
+    rows : array_like, shape (..., N, 2)
+        Rows ``o - p_i`` of each scene (validated by the caller). All-zero rows are padding:
+        they change no singular value, so a scene with one real row gets 0 (Theorem 2).
+    u_max : float or array_like, shape (...)
+        Speed bound of each scene (non-negative).
+
+    Returns
+    -------
+    ndarray, shape (...)
+    """
+    r = _stacked_rows(rows)
+    u = _stacked_u_max(u_max, r.shape[:-2])
+    if r.shape[-2] < 2:
+        return np.zeros(r.shape[:-2])
+    sv = np.linalg.svd(r, compute_uv=False)
+    den = np.sqrt(sv[..., 0] ** 2 + u**2)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(den > 0, sv[..., -1] / np.where(den > 0, den, 1.0), 0.0)
+
+
+def worst_case_controls(rows, u_max) -> np.ndarray:
+    """:func:`worst_case_control` for a stack of scenes: ``u_max v_max`` of each, shape ``(..., 2)``.
+
+    ``v_max`` is the principal eigenvector of ``O(o)^T O(o)`` (``numpy.linalg.eigh`` on the
+    stacked 2 x 2 matrices), signed so that its first nonzero component is positive. Zero rows
+    (padding) do not change ``O(o)^T O(o)``.
+    """
+    r = _stacked_rows(rows)
+    u = _stacked_u_max(u_max, r.shape[:-2])
+    _, vecs = np.linalg.eigh(np.swapaxes(r, -1, -2) @ r)
+    v = vecs[..., :, -1]
+    flip = (v[..., 0] < 0) | ((v[..., 0] == 0) & (v[..., 1] < 0))
+    return np.where(flip[..., None], -v, v) * u[..., None]

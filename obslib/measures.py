@@ -64,6 +64,7 @@ __all__ = [
     "measure",
     "measure_table",
     "measure_from_vectors",
+    "measures_from_vectors",
     "subset_masks",
     "symmetric_observability_matrix",
 ]
@@ -154,6 +155,30 @@ def symmetric_observability_matrix(sensors, target, u=None, eps: float = 0.0) ->
     return O.T @ O + e * np.eye(2)
 
 
+#: Largest ``rows * inner * columns`` of one matrix product in :func:`_matmul_rows`.
+_GEMM_BLOCK = 1 << 18
+
+
+def _matmul_rows(x: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """``x @ w`` for a 2-D ``x``, in blocks of rows.
+
+    The products here are thin (a few dozen inner terms): a multi-threaded BLAS spends more on
+    waking and spinning its threads than on the arithmetic, and steals the core the rest of the
+    computation runs on. Blocks of at most :data:`_GEMM_BLOCK` multiply-adds stay below
+    OpenBLAS's threading threshold. Each entry is the same dot product either way (the inner
+    dimension is not split), so the result equals ``x @ w``; a test checks it bit for bit.
+    """
+    if x.ndim != 2:
+        return x @ w
+    step = max(1, _GEMM_BLOCK // max(1, w.shape[0] * w.shape[1]))
+    if x.shape[0] <= step:
+        return x @ w
+    out = np.empty((x.shape[0], w.shape[1]))
+    for i in range(0, x.shape[0], step):
+        np.matmul(x[i:i + step], w, out=out[i:i + step])
+    return out
+
+
 def _tr_det(vectors: np.ndarray, masks: np.ndarray):
     """``tr``, ``det``, ``lambda_max`` of ``sum_{k in S} v_k v_k^T`` for each row ``S`` of ``masks``.
 
@@ -162,12 +187,12 @@ def _tr_det(vectors: np.ndarray, masks: np.ndarray):
     """
     m = masks.astype(float)
     sq = np.einsum("...mk,...mk->...m", vectors, vectors)
-    tr = sq @ m.T
+    tr = _matmul_rows(sq, m.T)
     n = vectors.shape[-2]
     if n >= 2:
         a, b = np.array(list(combinations(range(n), 2))).T
         cross = vectors[..., a, 0] * vectors[..., b, 1] - vectors[..., a, 1] * vectors[..., b, 0]
-        det = (cross * cross) @ (m[:, a] * m[:, b]).T
+        det = _matmul_rows(cross * cross, (m[:, a] * m[:, b]).T)
     else:
         det = np.zeros_like(tr)
     half = 0.5 * tr
@@ -177,10 +202,10 @@ def _tr_det(vectors: np.ndarray, masks: np.ndarray):
 
 def _from_tr_det(name: str, tr, det, lmax, eps: float, rank_rtol: float):
     """Measure ``name`` of ``G = A + eps I`` from ``tr``, ``det``, ``lambda_max`` of ``A = O^T O``."""
-    with np.errstate(divide="ignore", invalid="ignore"):
-        full = det > (rank_rtol * lmax) ** 2  # sigma_min / sigma_max > rank_rtol, and A != 0
     if name == "trace":
         return tr + 2.0 * eps
+    with np.errstate(divide="ignore", invalid="ignore"):
+        full = det > (rank_rtol * lmax) ** 2  # sigma_min / sigma_max > rank_rtol, and A != 0
     if name == "rank":
         return np.where(full, 2.0, np.where(tr > 0, 1.0, 0.0))
     det_g = det + eps * tr + eps * eps
@@ -218,6 +243,19 @@ def measure_from_vectors(vectors, masks, name: str, eps: float = 0.0, u=None,
     ndarray, shape (..., K)
     """
     _check_name(name)
+    return measures_from_vectors(vectors, masks, (name,), eps, u, rank_rtol)[name]
+
+
+def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=None,
+                          rank_rtol: float = RANK_RTOL) -> dict:
+    """Several measures of the same subsets at once: ``{name: table}``.
+
+    ``tr``, ``det`` and ``lambda_max`` of ``O^T O`` are computed once and shared by all
+    ``names``; each table is bitwise the one :func:`measure_from_vectors` returns for that name
+    (it is the same code). Parameters as in :func:`measure_from_vectors`.
+    """
+    for name in names:
+        _check_name(name)
     e = _check_eps(eps)
     r = _check_rtol(rank_rtol)
     v = np.asarray(vectors, dtype=float)
@@ -231,7 +269,7 @@ def measure_from_vectors(vectors, masks, name: str, eps: float = 0.0, u=None,
         v = np.concatenate([v, uu[..., None, :]], axis=-2)
         m = np.concatenate([m, np.ones((m.shape[0], 1), dtype=bool)], axis=1)
     tr, det, lmax = _tr_det(v, m)
-    return _from_tr_det(name, tr, det, lmax, e, r)
+    return {name: _from_tr_det(name, tr, det, lmax, e, r) for name in names}
 
 
 def measure_table(sensors, target, name: str, eps: float = 0.0, u=None, masks=None,

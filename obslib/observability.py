@@ -16,7 +16,13 @@ import numpy as np
 
 from ._validate import as_point, as_points, check_distinct, check_not_on_targets
 
-__all__ = ["observability_matrix", "inverse_condition_number", "relative_rows"]
+__all__ = [
+    "observability_matrix",
+    "inverse_condition_number",
+    "inverse_condition_numbers",
+    "inverse_condition_numbers_polar",
+    "relative_rows",
+]
 
 
 def relative_rows(sensors, target) -> np.ndarray:
@@ -128,3 +134,116 @@ def inverse_condition_number(sensors, target, u=None):
         [np.broadcast_to(rows, (uu.shape[0],) + rows.shape), uu[:, None, :]], axis=1
     )
     return _inverse_condition(stack)
+
+
+def _as_stack(x, name: str, min_ndim: int) -> np.ndarray:
+    arr = np.asarray(x, dtype=float)
+    if arr.ndim < min_ndim or arr.shape[-1] != 2:
+        raise ValueError(f"{name} must have shape (..., {'N, ' if min_ndim > 1 else ''}2), "
+                         f"got {arr.shape}")
+    if not np.isfinite(arr).all():
+        raise ValueError(f"{name} has a non-finite coordinate")
+    return arr
+
+
+def inverse_condition_numbers(rows, u=None) -> np.ndarray:
+    """Batched exact ``C^{-1}(O(o, u_o))`` of Eq. (6) for many scenes and controls at once.
+
+    The same closed form as :func:`inverse_condition_number` (``sqrt(det G) / lambda_max`` of
+    ``G = O^T O``, ``det G`` by Cauchy-Binet as a sum of squared cross products, accurate for
+    nearly parallel rows), organised for stacks: the sensor-sensor part of the Cauchy-Binet sum
+    is computed once per scene and each control adds ``sum_k (r_k x u)^2`` and ``||u||^2``.
+
+    Parameters
+    ----------
+    rows : array_like, shape (..., N, 2)
+        Rows ``o - p_i`` of each scene (validated by the caller, e.g.
+        :func:`obslib.scenes.check_batch`). All-zero rows are allowed as padding: they leave
+        ``O^T O`` unchanged, so scenes with different ``N`` can share one array.
+    u : array_like, shape (..., K, 2) or (..., 2), optional
+        Controls, ``K`` per scene (or one per scene); ``None``: the stationary target.
+
+    Returns
+    -------
+    ndarray, shape (..., K) or (...)
+        ``sigma_min / sigma_max`` in ``[0, 1]``; 0 when the matrix has rank < 2. Equal to
+        :func:`inverse_condition_number` to rounding (a test compares them scene by scene).
+    """
+    r = _as_stack(rows, "rows", 2)
+    det, tr = _gram_parts(r)
+    if u is not None:
+        uu = _as_stack(u, "u", 1)
+        single = uu.ndim == r.ndim - 1
+        if single:
+            uu = uu[..., None, :]
+        ux, uy = uu[..., 0][..., None], uu[..., 1][..., None]  # (..., K, 1)
+        cu = r[..., None, :, 0] * uy - r[..., None, :, 1] * ux  # (..., K, N): r_k x u
+        det = det[..., None] + np.einsum("...k,...k->...", cu, cu)
+        tr = tr[..., None] + (uu[..., 0] ** 2 + uu[..., 1] ** 2)
+        if single:
+            det, tr = det[..., 0], tr[..., 0]
+    return _ratio_from_gram(det, tr)
+
+
+def _gram_parts(r: np.ndarray):
+    """``det`` (Cauchy-Binet sum of squared cross products) and ``tr`` of ``O^T O``, stacked."""
+    x, y = r[..., 0], r[..., 1]
+    a, b = np.triu_indices(r.shape[-2], 1)
+    cross = x[..., a] * y[..., b] - y[..., a] * x[..., b]
+    det = np.einsum("...k,...k->...", cross, cross)
+    tr = np.einsum("...k,...k->...", x, x) + np.einsum("...k,...k->...", y, y)
+    return det, tr
+
+
+def _ratio_from_gram(det, tr):
+    """``sqrt(det) / lambda_max`` with ``lambda_max = tr/2 + sqrt((tr/2)^2 - det)``; 0 if ``tr = 0``."""
+    half = np.multiply(tr, 0.5)
+    disc = np.asarray(half * half - det)  # a fresh array of the broadcast shape
+    np.maximum(disc, 0.0, out=disc)
+    np.sqrt(disc, out=disc)
+    lmax = np.asarray(disc + half)
+    np.sqrt(det, out=disc)
+    zero = lmax <= 0
+    if zero.any():
+        lmax[zero] = 1.0
+        disc[zero] = 0.0
+    disc /= lmax
+    return disc if disc.ndim else float(disc)
+
+
+def inverse_condition_numbers_polar(rows, radii, angles) -> np.ndarray:
+    """Batched exact ``C^{-1}(O(o, u))`` on a polar grid of controls ``u = rho (cos phi, sin phi)``.
+
+    The same closed form as :func:`inverse_condition_numbers`, with the control's Cauchy-Binet
+    terms factored as ``sum_k (r_k x u)^2 = rho^2 sum_k (r_k x e_phi)^2``: the sum over sensors is
+    done once per direction instead of once per control.
+
+    Parameters
+    ----------
+    rows : array_like, shape (S, N, 2)
+        Rows ``o - p_i`` of each scene, zero rows as padding (as in
+        :func:`inverse_condition_numbers`).
+    radii : array_like, shape (S, R)
+        Control norms ``rho`` of each scene (non-negative).
+    angles : array_like, shape (A,)
+        Directions ``phi`` shared by all scenes.
+
+    Returns
+    -------
+    ndarray, shape (S, R, A)
+    """
+    r = _as_stack(rows, "rows", 2)
+    if r.ndim != 3:
+        raise ValueError(f"rows must have shape (S, N, 2), got {r.shape}")
+    rho = np.asarray(radii, dtype=float)
+    phi = np.asarray(angles, dtype=float)
+    if rho.ndim != 2 or rho.shape[0] != r.shape[0] or phi.ndim != 1:
+        raise ValueError(f"need radii (S, R) with S = {r.shape[0]} and angles (A,), got "
+                         f"{rho.shape}, {phi.shape}")
+    if not (np.isfinite(rho).all() and np.isfinite(phi).all()) or (rho < 0).any():
+        raise ValueError("radii must be finite and non-negative, angles finite")
+    det0, tr0 = _gram_parts(r)
+    c = r[:, None, :, 0] * np.sin(phi)[None, :, None] - r[:, None, :, 1] * np.cos(phi)[None, :, None]
+    q = np.einsum("sak,sak->sa", c, c)  # (S, A): sum_k (r_k x e_phi)^2
+    rho2 = (rho * rho)[:, :, None]  # (S, R, 1)
+    return _ratio_from_gram(det0[:, None, None] + rho2 * q[:, None, :], tr0[:, None, None] + rho2)

@@ -12,6 +12,10 @@ can lose accuracy:
     sensors on a line through the target, then moved off it by ``1e-9 * scale``;
 ``"spread"``
     sensors whose distances to the target differ by up to seven orders of magnitude.
+
+:func:`random_scenes` draws scene by scene (a list of :class:`Scene`);
+:func:`random_scene_batch` draws the same kinds array by array into one padded
+:class:`SceneBatch`, for the vectorised audits of :mod:`obslib.bound_checks`.
 """
 
 from __future__ import annotations
@@ -20,7 +24,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Scene", "random_scene", "random_scenes", "SCENE_KINDS"]
+__all__ = [
+    "Scene",
+    "random_scene",
+    "random_scenes",
+    "SCENE_KINDS",
+    "SceneBatch",
+    "random_scene_batch",
+    "check_batch",
+]
 
 SCENE_KINDS = ("generic", "collinear", "near-parallel", "spread")
 
@@ -84,3 +96,122 @@ def random_scenes(
         s = float(10.0 ** rng.uniform(lo, hi))
         out.append(random_scene(rng, n, kinds[k % len(kinds)], s))
     return out
+
+
+@dataclass(frozen=True)
+class SceneBatch:
+    """Many random scenes as stacked arrays, for vectorised audits.
+
+    Scene ``k`` has ``counts[k]`` sensors, stored in the first rows of ``sensors[k]``; the
+    remaining rows are padding (NaN in ``sensors``, zero in :attr:`rows`). A zero row adds
+    nothing to ``O(o)^T O(o)``, to its Cauchy-Binet determinant or to its singular values, so
+    the padded :attr:`rows` can go straight into the batched functions
+    (:func:`obslib.observability.inverse_condition_numbers`, :func:`obslib.bounds.lower_bounds`).
+    """
+
+    sensors: np.ndarray  #: (S, M, 2), NaN beyond ``counts``
+    targets: np.ndarray  #: (S, 2)
+    u_max: np.ndarray  #: (S,)
+    kinds: tuple  #: kind of each scene
+    counts: np.ndarray  #: (S,) number of sensors of each scene
+
+    def __len__(self) -> int:
+        return self.targets.shape[0]
+
+    @property
+    def rows(self) -> np.ndarray:
+        """Rows ``o - p_i`` of every scene, shape ``(S, M, 2)``, zero rows as padding."""
+        r = self.targets[:, None, :] - self.sensors
+        return np.where(self.valid[..., None], r, 0.0)
+
+    @property
+    def valid(self) -> np.ndarray:
+        """``(S, M)`` mask of the real (non-padding) sensor rows."""
+        return np.arange(self.sensors.shape[1])[None, :] < self.counts[:, None]
+
+    def scene(self, k: int) -> Scene:
+        """Scene ``k`` as a :class:`Scene` (for the per-scene functions)."""
+        return Scene(self.sensors[k, : self.counts[k]].copy(), self.targets[k].copy(),
+                     float(self.u_max[k]), self.kinds[k])
+
+
+def check_batch(sensors, targets, counts) -> None:
+    """Validate padded stacked scenes as the per-scene functions would.
+
+    Raises ``ValueError`` naming the scene and sensor for a non-finite coordinate, a sensor on
+    the target (zero distance) or two coincident sensors (among the first ``counts[k]`` rows of
+    scene ``k``; the padding is not checked).
+    """
+    s = np.asarray(sensors, dtype=float)
+    t = np.asarray(targets, dtype=float)
+    c = np.asarray(counts)
+    if s.ndim != 3 or s.shape[2] != 2 or t.shape != (s.shape[0], 2) or c.shape != (s.shape[0],):
+        raise ValueError(f"need sensors (S, M, 2), targets (S, 2), counts (S,); got "
+                         f"{s.shape}, {t.shape}, {c.shape}")
+    if (c < 0).any() or (c > s.shape[1]).any():
+        raise ValueError(f"counts must lie in [0, {s.shape[1]}]")
+    valid = np.arange(s.shape[1])[None, :] < c[:, None]
+    finite = np.isfinite(s).all(axis=2)
+    if not (finite | ~valid).all() or not np.isfinite(t).all():
+        bad = ~np.isfinite(t).all(axis=1) | (valid & ~finite).any(axis=1)
+        raise ValueError(f"scene {int(np.flatnonzero(bad)[0])} has a non-finite coordinate")
+    zero = valid & (s[..., 0] == t[:, None, 0]) & (s[..., 1] == t[:, None, 1])
+    if zero.any():
+        k, i = (int(v) for v in np.argwhere(zero)[0])
+        raise ValueError(f"scene {k}: sensor {i} is on the target (zero distance)")
+    a, b = np.triu_indices(s.shape[1], 1)
+    same = (s[:, a, 0] == s[:, b, 0]) & (s[:, a, 1] == s[:, b, 1]) & valid[:, b]
+    if same.any():
+        k, p = (int(v) for v in np.argwhere(same)[0])
+        raise ValueError(f"scene {k}: sensors {int(a[p])} and {int(b[p])} coincide")
+
+
+def random_scene_batch(
+    n_scenes: int,
+    seed: int,
+    n_sensors: tuple[int, int] = (2, 6),
+    scale: tuple[float, float] = (1e-3, 1e4),
+    kinds: tuple[str, ...] = SCENE_KINDS,
+) -> SceneBatch:
+    """``n_scenes`` scenes drawn at once from ``numpy.random.default_rng(seed)``.
+
+    The same distributions as :func:`random_scenes` (kinds cycling through ``kinds``, the number
+    of sensors uniform in ``n_sensors``, the scale log-uniform in ``scale``, each kind as in
+    :func:`random_scene`), drawn array by array instead of scene by scene, so the stream (and
+    hence the scenes) differ from :func:`random_scenes` with the same seed.
+    """
+    if n_scenes < 1:
+        raise ValueError(f"n_scenes must be at least 1, got {n_scenes}")
+    for kind in kinds:
+        if kind not in SCENE_KINDS:
+            raise ValueError(f"kind must be one of {SCENE_KINDS}, got {kind!r}")
+    lo_n, hi_n = int(n_sensors[0]), int(n_sensors[1])
+    if lo_n < 1 or hi_n < lo_n:
+        raise ValueError(f"n_sensors must be (lo, hi) with 1 <= lo <= hi, got {n_sensors}")
+    rng = np.random.default_rng(seed)
+    S, M = int(n_scenes), hi_n
+    counts = rng.integers(lo_n, hi_n + 1, size=S)
+    s = 10.0 ** rng.uniform(np.log10(scale[0]), np.log10(scale[1]), size=S)
+    kind_of = np.arange(S) % len(kinds)
+    names = np.array(kinds)[kind_of]
+    targets = rng.uniform(-1.0, 1.0, size=(S, 2)) * s[:, None]
+    # every kind's variates are drawn for every scene, then each scene keeps its own kind's
+    generic = rng.uniform(-1.0, 1.0, size=(S, M, 2)) * s[:, None, None]
+    phi = rng.uniform(0.0, np.pi, size=S)
+    direction = np.column_stack([np.cos(phi), np.sin(phi)])
+    mags = s[:, None] * 10.0 ** rng.uniform(-4.0, 3.0, size=(S, M))
+    angles = rng.uniform(0.0, 2 * np.pi, size=(S, M))
+    spread = mags[..., None] * np.stack([np.cos(angles), np.sin(angles)], axis=-1)
+    t = rng.uniform(0.05, 1.0, size=(S, M)) * rng.choice([-1.0, 1.0], size=(S, M))
+    line = s[:, None, None] * t[..., None] * direction[:, None, :]
+    normal = np.column_stack([-direction[:, 1], direction[:, 0]])
+    near = line + (1e-9 * s[:, None, None] * rng.standard_normal((S, M))[..., None]
+                   * normal[:, None, :])
+    offsets = np.select(
+        [(names == k)[:, None, None] for k in ("generic", "collinear", "near-parallel")],
+        [generic, line, near], spread)
+    u_max = s * 10.0 ** rng.uniform(-2.0, 1.0, size=S)
+    sensors = targets[:, None, :] + offsets
+    sensors[np.arange(M)[None, :] >= counts[:, None]] = np.nan
+    check_batch(sensors, targets, counts)
+    return SceneBatch(sensors, targets, u_max, tuple(names.tolist()), counts)

@@ -7,7 +7,10 @@ from hypothesis import strategies as st
 from strategies import scenes
 
 import obslib as ob
-from obslib.scenes import SCENE_KINDS, random_scenes
+from obslib import bound_checks as bc
+from obslib.bounds import lower_bounds, worst_case_controls
+from obslib.observability import relative_rows
+from obslib.scenes import SCENE_KINDS, check_batch, random_scene_batch, random_scenes
 
 
 def svd_bound(rows, u_max):
@@ -186,3 +189,186 @@ def test_stationary_target_bound_is_exact():
         s = rng.uniform(-5, 5, size=(rng.integers(2, 6), 2))
         o = rng.uniform(-5, 5, size=2)
         assert ob.lower_bound(s, o, 0.0) == pytest.approx(ob.inverse_condition_number(s, o, [0, 0]), abs=1e-14)
+
+
+# --------------------------------------------------------------------------- batched forms and audits
+
+
+def test_scene_batch_is_seeded_legal_and_of_every_kind():
+    a, b = random_scene_batch(300, 8), random_scene_batch(300, 8)
+    assert np.array_equal(a.sensors, b.sensors, equal_nan=True) and np.array_equal(a.u_max, b.u_max)
+    assert a.kinds == tuple(SCENE_KINDS[k % 4] for k in range(300))
+    assert a.counts.min() == 2 and a.counts.max() == 6
+    assert np.isnan(a.sensors[~a.valid]).all() and (a.rows[~a.valid] == 0).all()
+    for k in range(300):
+        sc = a.scene(k)
+        rows = relative_rows(sc.sensors, sc.target)  # distinct, none on the target
+        assert np.array_equal(rows, a.rows[k, : a.counts[k]])
+        cross = rows[:, 0, None] * rows[None, :, 1] - rows[:, 1, None] * rows[None, :, 0]
+        rel = np.abs(cross).max() / (rows**2).sum(axis=1).max()
+        if sc.kind == "collinear":
+            assert rel < 1e-14
+        elif sc.kind == "near-parallel":
+            assert rel < 1e-7
+    one = random_scene_batch(50, 1, n_sensors=(1, 1), kinds=("spread",))
+    assert (one.counts == 1).all() and set(one.kinds) == {"spread"}
+
+
+def test_check_batch_names_the_offending_scene():
+    b = random_scene_batch(6, 2, n_sensors=(3, 3))
+    s = b.sensors.copy()
+    s[4, 2] = s[4, 0]
+    with pytest.raises(ValueError, match="scene 4: sensors 0 and 2 coincide"):
+        check_batch(s, b.targets, b.counts)
+    s = b.sensors.copy()
+    s[1, 1] = b.targets[1]
+    with pytest.raises(ValueError, match="scene 1: sensor 1 is on the target"):
+        check_batch(s, b.targets, b.counts)
+    s = b.sensors.copy()
+    s[3, 0, 1] = np.inf
+    with pytest.raises(ValueError, match="scene 3 has a non-finite"):
+        check_batch(s, b.targets, b.counts)
+    with pytest.raises(ValueError, match="kind"):
+        random_scene_batch(5, 0, kinds=("round",))
+
+
+def test_batched_bound_and_worst_case_control_equal_the_per_scene_functions():
+    batch = random_scene_batch(600, 6)
+    bounds = lower_bounds(batch.rows, batch.u_max)
+    controls = worst_case_controls(batch.rows, batch.u_max)
+    for k in range(600):
+        sc = batch.scene(k)
+        assert bounds[k] == pytest.approx(ob.lower_bound(sc.sensors, sc.target, sc.u_max), rel=1e-12, abs=1e-14)
+        np.testing.assert_allclose(controls[k], ob.worst_case_control(sc.sensors, sc.target, sc.u_max),
+                                   rtol=0, atol=1e-12 * sc.u_max)
+    assert lower_bounds(batch.rows[:, :1], batch.u_max).max() == 0.0  # one sensor: Theorem 2
+    with pytest.raises(ValueError, match="u_max"):
+        lower_bounds(batch.rows, -1.0)
+
+
+def _unit_disc_draws(n_scenes, n_controls, seed):
+    rng = np.random.default_rng(seed + 1)
+    return rng.uniform(size=(n_scenes, n_controls)), rng.uniform(0, 2 * np.pi, size=(n_scenes, n_controls))
+
+
+def test_theorem1_audit_equals_a_scene_by_scene_loop():
+    """The batched audit against lower_bound / worst_case_control / inverse_condition_number per scene."""
+    n, m, seed = 300, 16, 4
+    a = bc.theorem1_audit(n, m, seed)
+    batch = random_scene_batch(n, seed)
+    r, phi = _unit_disc_draws(n, m, seed)
+    n_viol, worst, attain, slack = 0, -np.inf, 0.0, {}
+    for k in range(n):
+        sc = batch.scene(k)
+        bound = ob.lower_bound(sc.sensors, sc.target, sc.u_max)
+        rad = sc.u_max * np.sqrt(r[k])
+        u = np.vstack([np.column_stack([rad * np.cos(phi[k]), rad * np.sin(phi[k])]),
+                       ob.worst_case_control(sc.sensors, sc.target, sc.u_max)])
+        excess = bound - ob.inverse_condition_number(sc.sensors, sc.target, u)
+        n_viol += int((excess > bc.ATOL).sum())
+        worst = max(worst, excess.max())
+        attain = max(attain, abs(excess[-1]))
+        slack[sc.kind] = min(slack.get(sc.kind, np.inf), (-excess).min())
+    # Both paths share the closed form of C^-1; summed in another order they agree to rounding
+    # (~1e-14 for nearly isotropic O^T O), far inside the audit's decision tolerance.
+    assert a.n_scenes == n and a.n_evaluations == n * (m + 1) and a.n_violations == n_viol == 0
+    assert a.worst_excess == pytest.approx(worst, abs=bc.ATOL)
+    assert a.max_attainment_error == pytest.approx(attain, abs=bc.ATOL)
+    assert list(a.min_slack_by_kind) == list(SCENE_KINDS)
+    for kind, v in slack.items():
+        assert a.min_slack_by_kind[kind] == pytest.approx(v, abs=bc.ATOL)
+
+
+def test_theorem2_audit_equals_a_scene_by_scene_loop():
+    n, seed = 300, 5
+    a = bc.theorem2_audit(n, seed)
+    batch = random_scene_batch(n, seed, n_sensors=(1, 1), kinds=("generic", "spread"))
+    rng = np.random.default_rng(seed + 2)
+    mag, ang = rng.uniform(size=n), rng.uniform(0, 2 * np.pi, size=n)
+    exact, rel, bound = [], 0.0, 0.0
+    for k in range(n):
+        sc = batch.scene(k)
+        rows = relative_rows(sc.sensors, sc.target)
+        lam = np.linalg.eigvalsh(rows.T @ rows)
+        rel = max(rel, abs(lam[0]) / lam[1])
+        bound = max(bound, np.sqrt(max(lam[0], 0.0) / (lam[1] + sc.u_max**2)))
+        u = sc.u_max * mag[k] * np.array([np.cos(ang[k]), np.sin(ang[k])])
+        exact.append(ob.inverse_condition_number(sc.sensors, sc.target, u))
+    assert a.max_relative_lambda_min < 1e-14 and rel < 1e-14
+    assert a.max_bound < 1e-7 and bound < 1e-7
+    assert a.exact_range == pytest.approx((min(exact), max(exact)), rel=1e-12)
+
+
+def test_theorem3_audit_equals_a_trial_by_trial_loop():
+    """The same draws as theorem3_audit, decided one trial at a time from relative_rows and eigvalsh."""
+    n, seed = 3000, 6
+    a = bc.theorem3_audit(n, seed)
+    rng = np.random.default_rng(seed)
+    counts_n = rng.integers(2, 5, size=(n, 2))
+    scale = 10.0 ** rng.uniform(-1, 1, size=(n, 2))
+    pts = rng.uniform(-1, 1, size=(n, 2, 4, 2)) * scale[..., None, None]
+    speed = rng.uniform(0, 2, size=n)
+    counts = {k: [0, 0] for k in a.counts}
+    first = {}
+    necessary = 0
+    for i in range(n):
+        lam = []
+        for side in range(2):
+            rows = relative_rows(pts[i, side, : counts_n[i, side]], np.zeros(2))
+            lam.append(np.linalg.eigvalsh(rows.T @ rows))
+        (l0, l1), (m0, m1) = lam
+        u2 = speed[i] ** 2
+        before, after = np.sqrt(l0 / (l1 + u2)), np.sqrt(m0 / (m1 + u2))
+        ratio_up, smin_up = m0 * l1 >= m1 * l0, m0 >= l0
+        holds = {"stated": ratio_up and smin_up, "printed": ratio_up and m0 >= l1,
+                 "ratio only": ratio_up and not smin_up, "sigma_min only": smin_up and not ratio_up,
+                 "remark 2": (m0 * l1 - m1 * l0) + u2 * (m0 - l0) >= 0,
+                 "neither": not ratio_up and not smin_up}
+        necessary += after > before * (1 + 1e-9) and not holds["remark 2"]
+        for k, h in holds.items():
+            if h:
+                counts[k][0] += 1
+                if after < before * (1 - 1e-12):
+                    counts[k][1] += 1
+                    first.setdefault(k, i)
+    assert a.counts == {k: tuple(v) for k, v in counts.items()}
+    assert a.remark2_necessary_violations == necessary == 0 and a.printed_implies_stated
+    assert set(a.witnesses) == set(first)
+    for k, i in first.items():
+        w = a.witnesses[k]
+        assert w["before"] == pts[i, 0, : counts_n[i, 0]].round(6).tolist()
+        assert w["u"] == round(float(speed[i]), 6)
+
+
+def test_remark1_audit_equals_a_scene_by_scene_loop():
+    n, seed = 200, 7
+    a = bc.remark1_audit(n, seed, n_radii=4, n_angles=16)
+    batch = random_scene_batch(n, seed, kinds=("generic", "spread"))
+    stat, moving, gap = 0.0, 0.0, np.inf
+    for k in range(n):
+        sc = batch.scene(k)
+        rows = relative_rows(sc.sensors, sc.target)
+        lam = np.linalg.eigvalsh(rows.T @ rows)
+        stat = max(stat, abs(ob.inverse_condition_number(sc.sensors, sc.target, np.zeros(2)) ** 2
+                             - lam[0] / lam[1]))
+        b = ob.lower_bound(sc.sensors, sc.target, sc.u_max)
+        u_star = ob.worst_case_control(sc.sensors, sc.target, sc.u_max)
+        moving = max(moving, abs(ob.inverse_condition_number(sc.sensors, sc.target, u_star) - b))
+        grid = ob.inverse_condition_number(sc.sensors, sc.target, bc.disc_controls(sc.u_max, 4, 16))
+        gap = min(gap, grid.min() - b)
+    assert a.max_stationary_error < 1e-12 and stat < 1e-12
+    assert a.max_moving_error < 1e-12 and moving < 1e-12
+    assert a.min_over_disc_gap == pytest.approx(gap, abs=1e-13)
+
+
+def test_disc_mesh_closes_the_polar_grid():
+    controls = bc.disc_controls(2.0, 3, 8)
+    vals = np.arange(len(controls), dtype=float)
+    X, Y, Z = bc.disc_mesh(controls, vals, 3, 8)
+    assert X.shape == Y.shape == Z.shape == (4, 9)
+    assert (X[0] == 0).all() and (Z[0] == 0).all()
+    assert np.array_equal(Z[:, -1], Z[:, 0]) and np.array_equal(X[:, -1], X[:, 0])
+    np.testing.assert_allclose(np.hypot(X[-1], Y[-1]), 2.0)
+    assert Z[1, 0] == 1 and Z[3, 7] == len(controls) - 1
+    with pytest.raises(ValueError, match="controls"):
+        bc.disc_mesh(controls[1:], vals[1:], 3, 8)

@@ -65,7 +65,7 @@ def test_thm1_evidence_recomputed(records):
 
 def test_thm1_check_can_fail(monkeypatch):
     """A wrong bound (ignoring u_max) must make the check report 'refuted'."""
-    monkeypatch.setattr(bc, "lower_bound", lambda s, o, u: ob.lower_bound(s, o, 0.0))
+    monkeypatch.setattr(bc, "lower_bounds", lambda rows, u: ob.bounds.lower_bounds(rows, 0.0))
     f = claims.registry()["thm1"].check("quick")
     assert f.status == "refuted" and f.evidence["n_violations"] > 0
 

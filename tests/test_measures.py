@@ -320,3 +320,53 @@ def test_neg_trace_inverse_hand_example():
     # b and c are mirror images about a, so the same holds with their roles swapped; no other
     assert a.n_submodular_violations == 2
     assert np.isclose(t[0b111] - t[0b101], t[0b111] - t[0b011])
+
+
+# --------------------------------------------------------------------------- the shared kernels
+
+
+@pytest.mark.parametrize("with_u", [False, True])
+def test_measures_from_vectors_is_bitwise_measure_from_vectors(with_u):
+    rng = np.random.default_rng(4)
+    v = rng.normal(size=(700, 6, 2)) * 10.0 ** rng.uniform(-2, 2, size=(700, 1, 1))
+    u = rng.normal(size=(700, 2)) if with_u else None
+    masks = me.subset_masks(6)
+    for eps in (0.0, 1.0):
+        many = me.measures_from_vectors(v, masks, me.MEASURES, eps, u)
+        for name in me.MEASURES:
+            assert np.array_equal(many[name], me.measure_from_vectors(v, masks, name, eps, u),
+                                  equal_nan=True), name
+
+
+def test_blocked_matrix_product_is_bitwise_the_product():
+    rng = np.random.default_rng(5)
+    for rows, inner, cols in ((5000, 21, 64), (3000, 7, 128), (10, 3, 8), (20000, 28, 256)):
+        x = rng.normal(size=(rows, inner)) * 10.0 ** rng.uniform(-3, 3, size=(rows, 1))
+        w = (rng.random((inner, cols)) < 0.5).astype(float)
+        assert np.array_equal(me._matmul_rows(x, w), x @ w)
+        assert np.array_equal(me._matmul_rows(x, w.T.copy().T), x @ w)
+
+
+def test_theorem8_rows_equal_per_instance_audits():
+    """theorem8_audit (instances and tr/det shared, fast verdicts) against audit_tables per instance."""
+    n_inst, n_sens, seed, eps, u_max = 60, 4, 5, 1.0, 1.0
+    rows = sm.theorem8_audit(n_inst, n_sens, seed, eps, u_max)
+    assert [(r.measure, r.config) for r in rows] == [(m, c[0]) for m in me.MEASURES for c in sm.CONFIGS]
+    for r in rows:
+        assert r == sm.measure_audit(r.measure, n_inst, n_sens, seed, eps, u_max, r.config)
+    for name, use_eps, use_u, min_size, kinds in ((c[0],) + c[1:] for c in sm.CONFIGS):
+        for measure in me.MEASURES:
+            audits = []
+            for k, kind in enumerate(kinds):  # the draws of measure_audit, one instance at a time
+                s, t = sm.random_instances(n_inst, n_sens, seed + 7919 * k, kind)
+                phi = np.random.default_rng(seed + 104729 + k).uniform(0, 2 * np.pi, n_inst)
+                for i in range(n_inst):
+                    u = u_max * np.array([np.cos(phi[i]), np.sin(phi[i])]) if use_u else None
+                    table = me.measure_table(s[i], t[i], measure, eps if use_eps else 0.0, u)
+                    audits.append(sm.audit_set_function(s[i], values=table, min_size=min_size))
+            r = next(x for x in rows if x.measure == measure and x.config == name)
+            assert r.n_instances == len(audits)
+            assert r.n_not_increasing == sum(not a.monotone_increasing for a in audits)
+            assert r.n_not_decreasing == sum(not a.monotone_decreasing for a in audits)
+            assert r.n_not_submodular == sum(not a.submodular for a in audits)
+            assert r.n_not_supermodular == sum(not a.supermodular for a in audits)

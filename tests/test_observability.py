@@ -56,3 +56,68 @@ def test_closed_form_inverse_condition_equals_svd(m):
     stack[50:100, 1:, 1] += 1e-9 * stack[50:100, 1:, 0]  # ... nearly
     sv = np.linalg.svd(stack, compute_uv=False)
     np.testing.assert_allclose(_inverse_condition(stack), sv[:, -1] / sv[:, 0], rtol=1e-7, atol=1e-14)
+
+
+# --------------------------------------------------------------------------- batched forms
+
+
+def test_batched_inverse_condition_numbers_equal_the_per_scene_function():
+    """Padded stacks of scenes of every kind (2-6 sensors, scales 1e-3..1e4), control by control."""
+    from obslib.observability import inverse_condition_numbers
+    from obslib.scenes import random_scene_batch
+
+    batch = random_scene_batch(400, 3)
+    rng = np.random.default_rng(4)
+    controls = rng.normal(size=(400, 9, 2)) * batch.u_max[:, None, None]
+    many = inverse_condition_numbers(batch.rows, controls)
+    one = inverse_condition_numbers(batch.rows, controls[:, 0])
+    still = inverse_condition_numbers(batch.rows)
+    assert many.shape == (400, 9) and one.shape == (400,) and still.shape == (400,)
+    for k in range(400):
+        sc = batch.scene(k)
+        want = ob.inverse_condition_number(sc.sensors, sc.target, controls[k])
+        np.testing.assert_allclose(many[k], want, rtol=1e-12, atol=1e-15)
+        assert one[k] == pytest.approx(want[0], rel=1e-12, abs=1e-15)
+        assert still[k] == pytest.approx(ob.inverse_condition_number(sc.sensors, sc.target),
+                                         rel=1e-12, abs=1e-15)
+
+
+def test_batched_polar_grid_equals_the_per_scene_function():
+    from obslib.bound_checks import disc_controls
+    from obslib.observability import inverse_condition_numbers_polar
+    from obslib.scenes import random_scene_batch
+
+    batch = random_scene_batch(200, 5, kinds=("generic", "spread", "near-parallel"))
+    n_radii, n_angles = 5, 16
+    radii = batch.u_max[:, None] * np.arange(1, n_radii + 1)[None, :] / n_radii
+    grid = inverse_condition_numbers_polar(batch.rows, radii, 2 * np.pi * np.arange(n_angles) / n_angles)
+    assert grid.shape == (200, n_radii, n_angles)
+    for k in range(200):
+        sc = batch.scene(k)
+        want = ob.inverse_condition_number(sc.sensors, sc.target, disc_controls(sc.u_max, n_radii, n_angles))
+        np.testing.assert_allclose(grid[k].ravel(), want[1:], rtol=1e-11, atol=1e-15)
+
+
+def test_batched_forms_reject_bad_input():
+    from obslib.observability import inverse_condition_numbers, inverse_condition_numbers_polar
+
+    with pytest.raises(ValueError, match="rows"):
+        inverse_condition_numbers(np.ones((3, 2, 3)))
+    with pytest.raises(ValueError, match="non-finite"):
+        inverse_condition_numbers([[[np.nan, 1.0], [1.0, 2.0]]])
+    with pytest.raises(ValueError, match="u"):
+        inverse_condition_numbers(np.ones((3, 2, 2)), np.full((3, 2), np.inf))
+    with pytest.raises(ValueError, match="radii"):
+        inverse_condition_numbers_polar(np.ones((3, 2, 2)), -np.ones((3, 2)), np.zeros(4))
+
+
+def test_batched_form_on_one_scene_and_on_padding_only():
+    from obslib.observability import inverse_condition_numbers
+
+    s, o, u = np.array([[0.0, 0.0], [3.0, 1.0], [1.0, 4.0]]), np.array([1.0, 2.0]), [0.5, -0.2]
+    rows = o - s
+    assert inverse_condition_numbers(rows) == pytest.approx(ob.inverse_condition_number(s, o), rel=1e-14)
+    assert inverse_condition_numbers(rows, u) == pytest.approx(ob.inverse_condition_number(s, o, u), rel=1e-14)
+    padded = np.vstack([rows, np.zeros((3, 2))])
+    assert inverse_condition_numbers(padded, u) == pytest.approx(ob.inverse_condition_number(s, o, u), rel=1e-14)
+    assert inverse_condition_numbers(np.zeros((4, 3, 2))).tolist() == [0.0] * 4  # empty scenes

@@ -266,3 +266,82 @@ def test_random_instances_are_seeded_and_legal():
     ranks = measure_from_vectors(t[:, None, :] - s, subset_masks(6), "rank")
     pairs = subset_masks(6).sum(axis=1) == 2
     assert (ranks[:, pairs] == 1).any() and (ranks[:, pairs] == 2).any()
+
+
+# --------------------------------------------------------------------------- the fast verdicts
+
+
+def _flags_from_audits(audits):
+    """The per-table verdicts audit_flags promises, read off the full audit_tables objects."""
+    return {
+        "decreases": [not a.monotone_increasing for a in audits],
+        "increases": [not a.monotone_decreasing for a in audits],
+        "not_submodular": [not a.submodular for a in audits],
+        "not_supermodular": [not a.supermodular for a in audits],
+        "monotone_witness_size": [len(a.monotone_witness.B) if a.monotone_witness else -1
+                                  for a in audits],
+        "submodular_witness_size": [len(a.submodular_witness.B) if a.submodular_witness else -1
+                                    for a in audits],
+        "tol": [a.tol for a in audits],
+    }
+
+
+@pytest.mark.parametrize("n, min_size", [(n, m) for n in range(1, 8) for m in range(4) if m <= n])
+def test_audit_flags_equal_the_full_audit(n, min_size):
+    """audit_flags (subset-min transform) decides exactly as audit_tables (every triple)."""
+    rng = np.random.default_rng(100 * n + min_size)
+    k = 2**n
+    tables = [
+        rng.integers(0, 4, size=(300, k)).astype(float),  # many ties and violations
+        rng.normal(size=(300, k)),
+        np.cumsum(rng.random((300, k)), axis=1),  # increasing in the bitmask, not in the lattice
+        # modular up to rounding (a sum of per-element weights): never beyond the tolerance
+        (subset_masks(n)[None, :, :] * rng.random((300, 1, n))).sum(axis=2) * 1e3,
+    ]
+    # log-determinant-like values with -inf below min_size: ignored, never warned about
+    small = subset_masks(n).sum(axis=1) < min_size
+    t = rng.normal(size=(300, k))
+    t[:, small] = -np.inf
+    tables.append(t)
+    for v in tables:
+        fast = sm.audit_flags(v, n, min_size)
+        slow = _flags_from_audits(sm.audit_tables(v, n, min_size))
+        for key, want in slow.items():
+            assert np.array_equal(getattr(fast, key), want), key
+
+
+def test_audit_flags_is_blockwise_independent(monkeypatch):
+    """Tables are processed in blocks; the verdicts do not depend on the block size."""
+    v = np.random.default_rng(7).normal(size=(1000, 32))
+    full = sm.audit_flags(v, 5, 1)
+    monkeypatch.setattr(sm, "_FLAGS_BLOCK", 37)
+    part = sm.audit_flags(v, 5, 1)
+    for key in full.__dataclass_fields__:
+        assert np.array_equal(getattr(full, key), getattr(part, key)), key
+
+
+def test_audit_flags_bad_input():
+    with pytest.raises(ValueError, match="not finite"):
+        sm.audit_flags(np.full((2, 8), np.nan), 3)
+    with pytest.raises(ValueError, match="shape"):
+        sm.audit_flags(np.zeros((2, 7)), 3)
+
+
+def test_random_audits_equal_the_per_instance_audits():
+    """lower_bound_audit and measure_audit (fast verdicts) against audit_tables instance by instance."""
+    for u_max, min_size in ((1.0, 2), (0.0, 2), (0.5, 0)):
+        a = sm.lower_bound_audit(150, 5, 3, u_max, min_size)
+        s, t = sm.random_instances(150, 5, 3, "generic")
+        audits = sm.audit_tables(sm.lower_bound_tables(t[:, None, :] - s, u_max), 5, min_size)
+        assert a.n_not_increasing == sum(not x.monotone_increasing for x in audits)
+        assert a.n_not_submodular == sum(not x.submodular for x in audits)
+        for key, attr in (("witness", "submodular_witness"), ("monotone_witness", "monotone_witness")):
+            hits = [(len(getattr(x, attr).B), i) for i, x in enumerate(audits) if getattr(x, attr)]
+            w = getattr(a, key)
+            if not hits:
+                assert w is None
+                continue
+            i = min(hits)[1]
+            want = getattr(audits[i], attr).as_dict()
+            assert w["instance"] == i and all(w[k] == want[k] for k in want)
+            assert np.array_equal(w["sensors"], s[i]) and np.array_equal(w["target"], t[i])
