@@ -201,10 +201,13 @@ def stationarity_alpha(alpha, theta, u_over_d):
 def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):
     """The ``alpha`` maximising Theorem 4's bound for a fixed ``theta``, solved numerically.
 
-    Solves Eq. (34) (:func:`stationarity_alpha`) by Brent's method. ``g(1) >= 0`` and
-    ``g < 0`` for large ``alpha``, and ``g > 0`` on ``(0, 1)``, so the root is the unique
-    maximiser and lies in ``[1, inf)`` (the bound is 0 at ``alpha = 0`` and tends to 0 as
-    ``alpha -> inf``).
+    Solves Eq. (34) (:func:`stationarity_alpha`) by bisection, for all ``theta`` at once.
+    ``g(1) >= 0`` and ``g < 0`` for large ``alpha``, and ``g > 0`` on ``(0, 1)``, so the root is
+    the unique maximiser and lies in ``[1, inf)`` (the bound is 0 at ``alpha = 0`` and tends to 0
+    as ``alpha -> inf``). The bracket ``[1, 2^k]`` is doubled until ``g < 0`` at its top, then
+    halved until it is narrower than ``xtol + 4 eps alpha`` (or cannot shrink in floating point).
+    Bisection needs no derivative and cannot leave the bracket; it is independent of the closed
+    form :func:`maximising_alpha_closed` it is compared with.
 
     Parameters
     ----------
@@ -212,26 +215,37 @@ def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):
         ``theta_ji``, not a multiple of ``pi`` (where the bound is 0 for every ``alpha``).
     u_over_d : array_like
         ``u_max / d_io``, non-negative.
+    xtol : float
+        Absolute tolerance on ``alpha*``.
 
     Returns
     -------
     float or ndarray
         ``alpha*``; exactly 1 when ``u_over_d = 0`` or ``cos theta = 0``.
     """
-    from scipy.optimize import brentq
-
     th, q = _check_theta_q(theta, u_over_d)
-    out = np.empty(th.shape)
-    for idx in np.ndindex(th.shape):
-        t, qq = float(th[idx]), float(q[idx])
-        g = lambda a: float(stationarity_alpha(a, t, qq))  # noqa: E731
-        if g(1.0) <= 0.0:
-            out[idx] = 1.0
-            continue
-        hi = 2.0
-        while g(hi) > 0.0:
-            hi *= 2.0
-        out[idx] = brentq(g, 1.0, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
+    th, q = np.broadcast_arrays(th, q)
+    shape = th.shape
+    th, q = th.ravel(), q.ravel()
+    out = np.ones(th.size)
+    inner = stationarity_alpha(np.ones(th.size), th, q) > 0.0  # else alpha* = 1
+    th, q = th[inner], q[inner]
+    lo, hi = np.ones(th.size), np.full(th.size, 2.0)
+    up = stationarity_alpha(hi, th, q) > 0.0
+    while up.any():  # double the bracket where g is still positive at its top
+        lo[up], hi[up] = hi[up], 2.0 * hi[up]
+        up[up] = stationarity_alpha(hi[up], th[up], q[up]) > 0.0
+    eps = np.finfo(float).eps
+    for _ in range(2100):  # bounds the float halvings of any bracket
+        mid = 0.5 * (lo + hi)
+        live = (hi - lo > xtol + 4 * eps * mid) & (mid > lo) & (mid < hi)
+        if not live.any():
+            break
+        pos = stationarity_alpha(mid[live], th[live], q[live]) > 0.0
+        idx = np.flatnonzero(live)
+        lo[idx[pos]], hi[idx[~pos]] = mid[idx[pos]], mid[idx[~pos]]
+    out[inner] = 0.5 * (lo + hi)
+    out = out.reshape(shape)
     return float(out) if out.ndim == 0 else out
 
 
@@ -382,7 +396,7 @@ def _even_stride(n: int, most: int = 80) -> int:
     return int(np.ceil(cells / most))
 
 
-def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None):
+def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str = "all"):
     """Fig. 2's four panels: surface (a) and contour (b) over ``(alpha, theta)``, surface (c)
     and contour (d) over ``(alpha cos theta, alpha sin theta)``.
 
@@ -396,6 +410,9 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None):
         Figure title.
     mark : GridMax, optional
         Grid maxima to mark with red stars.
+    panels : {"all", "contour"}
+        ``"contour"`` draws only the contour panels (b) and (d), side by side (the 3D surfaces
+        take most of the rendering time and show nothing the contours do not).
 
     Returns
     -------
@@ -403,6 +420,8 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None):
     """
     import matplotlib.pyplot as plt
 
+    if panels not in ("all", "contour"):
+        raise ValueError(f"panels must be 'all' or 'contour', got {panels!r}")
     a = np.asarray(alpha, dtype=float)
     t = np.asarray(theta, dtype=float)
     Z = np.asarray(Z, dtype=float)
@@ -410,20 +429,22 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None):
         raise ValueError(f"Z must have shape {(t.size, a.size)}, got {Z.shape}")
     A, T = np.meshgrid(a, t)
     X, Y = A * np.cos(T), A * np.sin(T)
-    fig = plt.figure(figsize=(11, 8.6))
-    panels = (
+    surfaces = panels == "all"
+    fig = plt.figure(figsize=(11, 8.6) if surfaces else (11, 4.6))
+    rows = (
         ("(a)", A, T, r"$\alpha$", r"$\theta_{ji}$"),
         ("(c)", X, Y, r"$\alpha\cos\theta_{ji}$", r"$\alpha\sin\theta_{ji}$"),
     )
-    for row, (tag, P, R, xl, yl) in enumerate(panels):
-        ax3 = fig.add_subplot(2, 2, 2 * row + 1, projection="3d")
-        ax3.plot_surface(P, R, Z, cmap="viridis", rstride=_even_stride(t.size),
-                         cstride=_even_stride(a.size), linewidth=0)
-        ax3.set_xlabel(xl)
-        ax3.set_ylabel(yl)
-        ax3.set_zlabel(r"$\underline{C}^{-1}$")
-        ax3.set_title(f"{tag} surface")
-        ax2 = fig.add_subplot(2, 2, 2 * row + 2)
+    for row, (tag, P, R, xl, yl) in enumerate(rows):
+        if surfaces:
+            ax3 = fig.add_subplot(2, 2, 2 * row + 1, projection="3d")
+            ax3.plot_surface(P, R, Z, cmap="viridis", rstride=_even_stride(t.size),
+                             cstride=_even_stride(a.size), linewidth=0)
+            ax3.set_xlabel(xl)
+            ax3.set_ylabel(yl)
+            ax3.set_zlabel(r"$\underline{C}^{-1}$")
+            ax3.set_title(f"{tag} surface")
+        ax2 = fig.add_subplot(2, 2, 2 * row + 2) if surfaces else fig.add_subplot(1, 2, row + 1)
         cs = ax2.contour(P, R, Z, levels=list(levels), cmap="viridis")
         ax2.clabel(cs, fontsize=7, fmt="%.1f")
         ax2.set_xlabel(xl)
@@ -448,8 +469,8 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None):
 class Theorem4Audit:
     """SymPy's eigenvalues of ``O_ij^T O_ij`` against Eq. (33) and Theorem 4, and against obslib."""
 
-    polar_matrix_printed_equal: bool  #: printed polar matrix - derived simplifies to 0
-    eigenvalues_printed_equal: bool  #: SymPy eigenvalues (polar) - Eq. (33) simplify to 0
+    polar_matrix_printed_equal: bool  #: printed polar matrix - derived expands to 0
+    eigenvalues_printed_equal: bool  #: SymPy eigenvalues (polar) - Eq. (33): 0 (see theorem4_audit)
     theorem4_ratio_equal: bool  #: lambda_min/(lambda_max + u^2) in alpha, theta, q - Eq. (9)^2 -> 0
     cartesian_discriminant_equal: bool  #: Cartesian discriminant - Eq. (33)'s radicand expands to 0
     cartesian_max_difference: float  #: Cartesian SymPy bound vs Eq. (9) at rational points
@@ -475,10 +496,12 @@ def theorem4_audit(
 ) -> Theorem4Audit:
     """Derive Theorem 4 with SymPy (:mod:`obslib.symbolic`) and check it four ways.
 
-    1. the printed polar matrix and the printed eigenvalues (Eq. (33)) equal the derived ones
-       (symbolic simplification to zero);
+    1. the printed polar matrix equals the derived one (the difference expands to zero), and so
+       do the printed eigenvalues (Eq. (33)): the double-angle form of the derived roots expands
+       to Eq. (33), and independently the trace and ``(lambda_max - lambda_min)^2`` of the roots
+       leave remainder 0 modulo ``cos^2 + sin^2 = 1`` (:func:`obslib.symbolic.theorem4_residuals`);
     2. ``lambda_min / (lambda_max + u^2)`` with ``d_jo = alpha d_io``,
-       ``theta_j = theta_i + theta``, ``u = q d_io`` simplifies to Eq. (9) squared;
+       ``theta_j = theta_i + theta``, ``u = q d_io`` cancels to Eq. (9) squared;
     3. in Cartesian coordinates: the discriminant identity (polynomial, expands to zero) and the
        whole bound, with ``alpha``, ``theta = atan2`` differences and ``q`` computed from the point,
        at ``n_rational_points`` rational points with ``digits`` digits;
@@ -486,46 +509,48 @@ def theorem4_audit(
        :func:`obslib.pair_bound_polar` at ``n_random_points`` random points.
     """
     import mpmath
-    import sympy as sp
 
     from . import symbolic as sy
 
     n_rat = _positive_int("n_rational_points", n_rational_points)
     n_rand = _positive_int("n_random_points", n_random_points)
-    gp = sy.polar_gram()
-    polar_ok = all(sp.simplify(e) == 0 for e in (gp - sy.printed_polar_gram()))
-    lmin, lmax = sy.polar_eigenvalues()
-    pmin, pmax = sy.printed_eigenvalues()
-    eig_ok = sp.simplify(lmin - pmin) == 0 and sp.simplify(lmax - pmax) == 0
-    ratio = (lmin / (lmax + sy.U**2)).subs(sy.ratio_substitution())
-    ratio_ok = sp.simplify(ratio - sy.theorem4_bound(squared=True)) == 0
-    disc, paper = sy.discriminant_cartesian()
-    disc_ok = sp.expand(disc - paper) == 0
+    res = sy.theorem4_residuals()
+    polar_ok = all(e == 0 for e in res["polar matrix"])
+    eig_ok = all(
+        res[k] == 0 for k in ("lambda_min", "lambda_max", "trace (mod cos^2 + sin^2 = 1)",
+                              "(lambda_max - lambda_min)^2 (mod cos^2 + sin^2 = 1)")
+    )
+    ratio_ok = res["ratio"] == 0
+    disc_ok = res["cartesian discriminant"] == 0
     cmin, cmax = sy.cartesian_eigenvalues()
     f_cart = sy.bound_from_eigenvalues(cmin, cmax)
     ranges = {s: (-3.0, 3.0) for s in sy.CARTESIAN_ARGS[:-1]}
     ranges[sy.U] = (0.0, 2.0)
     cart_diff = sy.max_difference_at_rational_points(
         f_cart, sy.theorem4_bound(), ranges, n_rat, seed, digits,
-        point_map=sy.cartesian_ratio_values,
+        point_map=lambda pt: sy.cartesian_ratio_values(pt, digits + 10),
     )
 
-    f_mp = sy.lambdify_expr(f_cart, sy.CARTESIAN_ARGS, "mpmath")
+    f_mp = sy.lambdify_expr(f_cart, sy.CARTESIAN_ARGS, "mpmath", cse=True)
     f_np = sy.lambdify_expr(f_cart, sy.CARTESIAN_ARGS, "numpy")
-    t_mp = sy.lambdify_expr(sy.theorem4_bound(), sy.RATIO_ARGS, "mpmath")
-    err_pb = err_np = err_polar = 0.0
+    t_mp = sy.lambdify_expr(sy.theorem4_bound(), sy.RATIO_ARGS, "mpmath", cse=True)
+    scenes = _random_pair_scenes(n_rand, seed)
+    w = np.array([pair_bounds(sen, tgt[None, :], u)[0, 1, 0] for sen, tgt, u in scenes])
+    args = np.array([(*tgt, *sen[0], *sen[1], u) for sen, tgt, u in scenes])  # (n, 7)
+    # polar points: the same draws as (a, theta, q) = uniform(0, 5), uniform(-pi, pi),
+    # uniform(0, 3) per point, in that order
     rng = np.random.default_rng(seed + 1)
+    pts = rng.uniform((0.0, -np.pi, 0.0), (5.0, np.pi, 3.0), (n_rand, 3))
+    exact = np.empty(n_rand)
+    exact_p = np.empty(n_rand)
     with mpmath.workdps(30):
-        for sensors, target, u in _random_pair_scenes(n_rand, seed):
-            w = pair_bounds(sensors, target[None, :], u)[0, 1, 0]
-            args = (*target, *sensors[0], *sensors[1], u)
-            exact = f_mp(*[mpmath.mpf(float(x)) for x in args])
-            err_pb = max(err_pb, abs(float(exact) - w))
-            if float(exact) > 1e-3:
-                err_np = max(err_np, abs(float(f_np(*args)) - w))
-            a, th, q = rng.uniform(0, 5), rng.uniform(-np.pi, np.pi), rng.uniform(0, 3)
-            exact_p = t_mp(mpmath.mpf(a), mpmath.mpf(th), mpmath.mpf(q))
-            err_polar = max(err_polar, abs(float(exact_p) - pair_bound_polar(a, th, q)))
+        for k in range(n_rand):
+            exact[k] = float(f_mp(*[mpmath.mpf(x) for x in args[k]]))
+            exact_p[k] = float(t_mp(*[mpmath.mpf(x) for x in pts[k]]))
+    err_pb = float(np.abs(exact - w).max())
+    big = exact > 1e-3  # the naive NumPy form loses lambda_min to cancellation near 0
+    err_np = float(np.abs(f_np(*args.T) - w)[big].max(initial=0.0))
+    err_polar = float(np.abs(exact_p - pair_bound_polar(*pts.T)).max())
     return Theorem4Audit(
         polar_ok, eig_ok, ratio_ok, disc_ok, cart_diff, n_rat, int(digits), err_pb, err_polar,
         err_np, n_rand,
@@ -565,9 +590,8 @@ def printed_matrix_audit() -> PrintedMatrixAudit:
     p_w = printed.subs(witness)
     eig = tuple(float(x) for x in sorted(np.linalg.eigvalsh(np.array(p_w, dtype=float))))
     sub = sy.polar_substitution()
-    consistent = all(
-        sp.simplify(e) == 0
-        for e in (printed.subs(sub).applyfunc(sp.expand) - sy.printed_polar_gram())
+    consistent = all(  # remainder modulo cos^2 + sin^2 = 1: 0 iff the identity holds
+        sy.pythagorean_remainder(e) == 0 for e in (printed.subs(sub) - sy.printed_polar_gram())
     )
     return PrintedMatrixAudit(
         wrong,
@@ -587,7 +611,7 @@ class Theorem5Audit:
     grid_max: tuple  #: per q, the grid maximum
     argmax: tuple  #: per q, the grid points within 1e-12 of the maximum
     predicted_max: tuple  #: per q, ``1 / sqrt(1 + q^2)``
-    symbolic_max_exact: bool  #: SymPy: C^-1(1, pi/2) simplifies to 1/sqrt(1+q^2)
+    symbolic_max_exact: bool  #: SymPy: C^-1(1, pi/2) - 1/sqrt(1+q^2) expands to 0
     max_on_zero_lines: float  #: largest value on theta = 0, +-pi and on alpha = 0
     value_at_large_alpha: float  #: largest value at alpha = 1e6 over the theta grid and q's
     printed_max_halfpi_equal: float  #: printed max over theta vs C^-1(alpha, pi/2), rational points
@@ -630,7 +654,7 @@ def theorem5_audit(
         zero_lines = max(zero_lines, float(Z[on_zero].max()), float(Z[:, alpha == 0].max()))
         large = max(large, float(pair_bound_polar(1e6, theta, q).max()))
     f = sy.theorem4_bound()
-    exact = sp.simplify(f.subs({sy.ALPHA: 1, sy.THETA: sp.pi / 2}) - 1 / sp.sqrt(1 + sy.Q**2)) == 0
+    exact = sy.max_value_exact() == 0
     printed = sy.max_difference_at_rational_points(
         sy.printed_max_halfpi(), f.subs(sy.THETA, sp.pi / 2),
         {sy.ALPHA: (0.01, 5.0), sy.Q: (0.0, 3.0)}, n_rational_points, 0, 30,
@@ -645,7 +669,7 @@ def theorem5_audit(
 class ThetaDerivativeAudit:
     """The proof's ``d C^-1/d theta = 0 => alpha^2 sin 2 theta = 0`` and its second derivatives."""
 
-    closed_form_equal: bool  #: SymPy's derivative - our factored form simplifies to 0
+    closed_form_equal: bool  #: SymPy's derivative - our factored form vanishes identically
     slope_at_zero: str  #: right-hand slope at theta = 0 (a formula; the left one is its negative)
     slope_at_zero_error: float  #: max |derivative at theta = +-1e-12 -+ formula| over the points
     slope_at_zero_min: float  #: smallest slope over those points (> 0: a corner, not stationary)
@@ -665,8 +689,8 @@ def theta_derivative_audit(n_rational_points: int, seed: int) -> ThetaDerivative
 
     n = _positive_int("n_rational_points", n_rational_points)
     a, th, q = sy.ALPHA, sy.THETA, sy.Q
-    closed_ok = sp.simplify(sy.dbound_dtheta() - sy.dbound_dtheta_closed()) == 0
-    deriv = sy.lambdify_expr(sy.dbound_dtheta_closed(), sy.RATIO_ARGS, "mpmath")
+    closed_ok = sy.closed_forms_hold()["dtheta"]
+    deriv = sy.lambdify_expr(sy.dbound_dtheta_closed(), sy.RATIO_ARGS, "mpmath", cse=True)
     slope = sy.lambdify_expr(sy.dbound_dtheta_at_zero(), (a, q), "mpmath")
     rng0 = np.random.default_rng(seed + 7)
     slope_err, slope_min = 0.0, np.inf
@@ -680,7 +704,8 @@ def theta_derivative_audit(n_rational_points: int, seed: int) -> ThetaDerivative
             s0 = slope(av, qv)
             slope_err = max(slope_err, float(abs(right - s0)), float(abs(left + s0)))
             slope_min = min(slope_min, float(s0))
-    d2 = sy.lambdify_expr(sp.diff(sy.theorem4_bound(squared=True), th, 2), sy.RATIO_ARGS, "mpmath")
+    square = sy.theorem4_bound(squared=True)
+    d2 = sy.lambdify_expr(sp.diff(sp.diff(square, th), th), sy.RATIO_ARGS, "mpmath", cse=True)
     rng = np.random.default_rng(seed)
     vals0, valsh = [], []
     with mpmath.workdps(30):
@@ -708,8 +733,8 @@ def theta_derivative_audit(n_rational_points: int, seed: int) -> ThetaDerivative
 class AlphaDerivativeAudit:
     """The proof's ``d C^-1 / d alpha`` at ``theta = +-pi/2`` and at a general fixed ``theta``."""
 
-    closed_form_equal: bool  #: SymPy's derivative - our factored form simplifies to 0
-    numerator_equals_eq36: bool  #: our numerator g - the printed Eq. (34) simplifies to 0
+    closed_form_equal: bool  #: SymPy's derivative - our factored form vanishes identically
+    numerator_equals_eq36: bool  #: our numerator g - the printed Eq. (34) expands to 0
     printed_ratio_spread: tuple  #: (min, max) of true / printed derivative over rational points
     slope_at_alpha0: float  #: max |slope at alpha = 0+ - |sin theta| / sqrt(1 + q^2)|
     slope_at_alpha0_min: float  #: smallest slope at alpha = 0+ (> 0: alpha = 0 is not stationary)
@@ -730,10 +755,10 @@ def alpha_derivative_audit(n_rational_points: int, seed: int) -> AlphaDerivative
 
     n = _positive_int("n_rational_points", n_rational_points)
     a, q = sy.ALPHA, sy.Q
-    closed_ok = sp.simplify(sy.dbound_dalpha() - sy.dbound_dalpha_closed()) == 0
-    num_ok = sp.simplify(sy.stationarity_alpha() - sy.printed_stationarity_alpha()) == 0
-    true_f = sy.lambdify_expr(sy.dbound_dalpha_closed(), sy.RATIO_ARGS, "mpmath")
-    printed_f = sy.lambdify_expr(sy.printed_dbound_dalpha(), sy.RATIO_ARGS, "mpmath")
+    closed_ok = sy.closed_forms_hold()["dalpha"]
+    num_ok = sp.expand(sy.stationarity_alpha() - sy.printed_stationarity_alpha()) == 0
+    true_f = sy.lambdify_expr(sy.dbound_dalpha_closed(), sy.RATIO_ARGS, "mpmath", cse=True)
+    printed_f = sy.lambdify_expr(sy.printed_dbound_dalpha(), sy.RATIO_ARGS, "mpmath", cse=True)
     rng = np.random.default_rng(seed)
     ratios, slope_err, slopes = [], 0.0, []
     with mpmath.workdps(60):
@@ -756,10 +781,14 @@ def alpha_derivative_audit(n_rational_points: int, seed: int) -> AlphaDerivative
     right = float(sp.diff(hi_branch, a).subs(a, 1))
     printed_h = sy.printed_dbound_dalpha_halfpi().subs(q, 1)
     at1 = float(printed_h.subs(a, 1))
-    grid = [sp.Rational(k, 50) for k in range(1, 50)]
+    grid = np.arange(1, 50) / 50.0  # alpha = k/50 in (0, 1)
     d_lo = sp.diff(lo_branch, a)
-    vs_true = max(abs(float(printed_h.subs(a, g)) - float(d_lo.subs(a, g))) for g in grid)
-    second = max(abs(float(sp.diff(lo_branch, a, 2).subs(a, g))) for g in grid)
+
+    def on_grid(expr):
+        return np.broadcast_to(sy.lambdify_expr(expr, (a,))(grid), grid.shape)
+
+    vs_true = float(np.abs(on_grid(printed_h) - on_grid(d_lo)).max())
+    second = float(np.abs(on_grid(sp.diff(lo_branch, a, 2))).max())
     return AlphaDerivativeAudit(
         closed_ok, num_ok, (min(ratios), max(ratios)), slope_err, min(slopes),
         (below, left, right), at1, vs_true, second,
@@ -772,12 +801,12 @@ class AlphaStarAudit:
 
     u_over_d: tuple
     n_theta: int
-    max_closed_vs_numeric: float  #: max |closed form - Brent root|
+    max_closed_vs_numeric: float  #: max |closed form - bisection root|
     max_brute_force_gap: float  #: max of (best grid value - value at alpha*) (<= 0 up to rounding)
     min_distance_from_1: float  #: min over q > 0 and theta off {0, +-pi/2, pi} of alpha* - 1
     alpha_star_at_q0: float  #: max |alpha* - 1| for q = 0 (stationary target)
     symbolic_root_checks: float  #: max |Eq. (34)| at the derived closed form, rational points
-    stationarity_at_1: str  #: Eq. (34) at alpha = 1, simplified
+    stationarity_at_1: str  #: Eq. (34) at alpha = 1, factored
 
 
 @lru_cache(maxsize=8)
@@ -786,7 +815,8 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
 
     ``theta`` runs over ``n_theta`` interior points of ``(0, pi)`` avoiding ``pi/2``
     (``alpha*`` depends on ``theta`` only through ``sin^2`` and ``|cos|``). Brute force: the
-    bound on a dense ``alpha`` grid never beats its value at ``alpha*``.
+    bound never beats its value at ``alpha*`` on a grid over ``[0, 10]`` (step 0.01) and on a
+    finer grid around ``alpha*`` (step 1e-4, ``alpha* +- 0.005``).
     """
     import sympy as sp
 
@@ -796,7 +826,8 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
     n = _positive_int("n_theta", n_theta)
     theta = np.pi * (np.arange(1, n + 1) / (n + 1))
     theta = theta[np.abs(np.cos(theta)) > 1e-3]
-    dense = np.linspace(0.0, 10.0, 20001)
+    coarse = np.linspace(0.0, 10.0, 1001)
+    local = 1e-4 * np.arange(-50, 51)
     closed_vs_num = gap = 0.0
     min_dist = np.inf
     q0 = 0.0
@@ -804,7 +835,11 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
         num = maximising_alpha(theta, q)
         clo = maximising_alpha_closed(theta, q)
         closed_vs_num = max(closed_vs_num, float(np.abs(num - clo).max()))
-        best = pair_bound_polar(dense[None, :], theta[:, None], q).max(axis=1)
+        dense = np.concatenate(
+            [np.broadcast_to(coarse, (theta.size, coarse.size)),
+             np.maximum(num[:, None] + local, 0.0)], axis=1,
+        )
+        best = pair_bound_polar(dense, theta[:, None], q).max(axis=1)
         gap = max(gap, float((best - pair_bound_polar(num, theta, q)).max()))
         if q > 0:
             min_dist = min(min_dist, float((num - 1.0).min()))
@@ -814,7 +849,7 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
         sy.stationarity_alpha().subs(sy.ALPHA, sp.sqrt(sy.alpha_star_squared())), 0,
         {sy.THETA: (0.02, 3.12), sy.Q: (0.0, 3.0)}, n_rational_points, 0, 40,
     )
-    at1 = sp.simplify(sp.expand_trig(sy.stationarity_alpha().subs(sy.ALPHA, 1)))
+    at1 = sy.stationarity_alpha_at_1()
     return AlphaStarAudit(qs, int(theta.size), closed_vs_num, gap, min_dist, q0, root, str(at1))
 
 
@@ -822,7 +857,7 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
 class WeylAudit:
     """The Weyl inequalities of the proof of Theorem 1 for 2x2 symmetric matrices."""
 
-    symbolic_triangle_equal: dict  #: name -> slack - triangle form simplifies to 0
+    symbolic_triangle_equal: dict  #: name -> slack - triangle form expands to 0
     n_pairs: int
     min_relative_slack: dict  #: name -> min of slack / (|X| + |Y|) over random pairs (>= -1e-15)
     min_ratio_slack: float  #: Eq. (19) over random PSD pairs
@@ -838,7 +873,7 @@ def weyl_audit(n_pairs: int, seed: int) -> WeylAudit:
     from . import symbolic as sy
 
     n = _positive_int("n_pairs", n_pairs)
-    sym = {k: bool(sp.simplify(s - t) == 0) for k, (s, t) in sy.weyl_2x2_slacks().items()}
+    sym = {k: bool(sp.expand(s - t) == 0) for k, (s, t) in sy.weyl_2x2_slacks().items()}
     X = random_symmetric_2x2(n, seed)
     Y = random_symmetric_2x2(n, seed + 1)
     norm = np.abs(np.linalg.eigvalsh(X)).max(axis=-1) + np.abs(np.linalg.eigvalsh(Y)).max(axis=-1)

@@ -12,9 +12,15 @@ SymPy, so that the notebook ``02_pair_closed_form`` and the tests can compare th
 expressions with the derived ones:
 
 * :func:`cartesian_gram`, :func:`polar_gram` and :func:`eigenvalues` derive the matrix and its
-  eigenvalues; :func:`printed_cartesian_gram`, :func:`printed_polar_gram` and
-  :func:`printed_eigenvalues` are the appendix's printed versions.
-* :func:`theorem4_bound` is Eq. (9) in ``alpha``, ``theta`` and ``q = u_max / d_io``.
+  eigenvalues (roots of the characteristic polynomial); :func:`polar_eigenvalues` rewrites them
+  with SymPy's double-angle rules, :func:`pythagorean_remainder` decides trigonometric polynomial
+  identities exactly (remainder modulo ``cos^2 + sin^2 = 1``), and :func:`polar_ratio` reduces
+  ``lambda_min / (lambda_max + u^2)`` to Theorem 4's variables. :func:`printed_cartesian_gram`,
+  :func:`printed_polar_gram` and :func:`printed_eigenvalues` are the appendix's printed versions.
+* :func:`theorem4_bound` is Eq. (9) in ``alpha``, ``theta`` and ``q = u_max / d_io``;
+  :func:`vanishes_with_radicals` proves an expression with nested square roots (such as ``S`` and
+  ``C`` of Eq. (9)) identically zero by polynomial remainders, and :func:`pull_out_of_roots`
+  moves common factors out of square roots.
 * :func:`dbound_dtheta`, :func:`dbound_dalpha` (SymPy's derivatives), their factored forms
   :func:`dbound_dtheta_closed`, :func:`dbound_dalpha_closed`, the stationarity condition
   :func:`stationarity_alpha` and the paper's printed derivatives (``printed_*``).
@@ -27,6 +33,8 @@ expressions with the derived ones:
   rational points, evaluated at high precision.
 
 All expressions are built on the module's symbols (:data:`OX`, ..., :data:`Q`) and cached.
+Identities are established by polynomial arithmetic (``expand``, ``cancel``, ``sympy.Poly``
+remainders), not by the heuristic ``sympy.simplify``: an expansion that returns 0 is a proof.
 """
 
 from __future__ import annotations
@@ -36,13 +44,16 @@ from functools import lru_cache
 
 import numpy as np
 import sympy as sp
+from sympy.simplify.fu import TR5, TR8, TR10i
 
 __all__ = [
     "OX", "OY", "PIX", "PIY", "PJX", "PJY", "U", "D_IO", "D_JO", "THETA_I", "THETA_J",
     "ALPHA", "THETA", "Q", "S_SYM", "C_SYM", "D_SYM", "CARTESIAN_ARGS", "POLAR_ARGS", "RATIO_ARGS",
     "relative_rows", "cartesian_gram", "printed_cartesian_gram", "polar_substitution",
     "polar_gram", "printed_polar_gram", "eigenvalues", "cartesian_eigenvalues", "polar_eigenvalues",
-    "printed_eigenvalues",
+    "printed_eigenvalues", "pythagorean_remainder", "polar_ratio", "vanishes_with_radicals",
+    "pull_out_of_roots", "stationarity_alpha_at_1", "max_value_exact", "theorem4_residuals",
+    "closed_forms_hold",
     "bound_from_eigenvalues", "ratio_substitution", "cartesian_ratio_values",
     "discriminant_cartesian", "theorem4_bound", "theorem4_radicand", "dbound_dtheta",
     "dbound_dtheta_closed", "dbound_dtheta_at_zero", "dbound_dalpha", "dbound_dalpha_closed",
@@ -137,40 +148,94 @@ def printed_polar_gram() -> sp.Matrix:
     )
 
 
-def eigenvalues(m: sp.Matrix) -> tuple[sp.Expr, sp.Expr]:
-    """``(lambda_min, lambda_max)`` of a symbolic symmetric 2x2 matrix, from ``Matrix.eigenvals``.
+_LAMBDA = sp.Dummy("lambda")
 
-    The two eigenvalues SymPy returns are ``tr/2 -+ sqrt(...)/2``; they are ordered by the sign
-    of their difference (the one carrying ``- sqrt`` is the smaller).
 
-    Raises
-    ------
-    ValueError
-        If ``m`` is not a symmetric 2x2 SymPy matrix.
+def _eigen_parts(m: sp.Matrix) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    """``(tr m, a - c, 2 b)`` for ``m = [[a, b], [b, c]]``, after deriving the eigenvalues.
+
+    SymPy forms the characteristic polynomial ``det(lambda I - m)`` as a polynomial in
+    ``lambda``; for the monic quadratic ``lambda^2 + B lambda + C`` the quadratic formula gives
+    ``(-B -+ sqrt(B^2 - 4 C)) / 2``. The checks ``-B = tr m`` and
+    ``B^2 - 4 C = (a - c)^2 + (2 b)^2`` are polynomial identities (expanded to zero), so the
+    roots are ``(tr m -+ |v|) / 2`` with ``v = (a - c, 2 b)``.
     """
     if not isinstance(m, sp.MatrixBase) or m.shape != (2, 2):
         shape = getattr(m, "shape", "")
         raise ValueError(f"expected a 2x2 SymPy matrix, got {type(m).__name__} {shape}")
     if sp.expand(m[0, 1] - m[1, 0]) != 0:
         raise ValueError("matrix is not symmetric: m[0, 1] != m[1, 0]")
-    e1, e2 = m.eigenvals(multiple=True)
-    gap = sp.expand(e2 - e1)
-    if gap.could_extract_minus_sign():
-        e1, e2 = e2, e1
-    return e1, e2
+    char = sp.Poly((_LAMBDA * sp.eye(2) - m).det(method="berkowitz"), _LAMBDA)
+    one, b, c = char.all_coeffs()
+    tr, v0, v1 = m[0, 0] + m[1, 1], m[0, 0] - m[1, 1], 2 * m[0, 1]
+    if one != 1 or sp.expand(tr + b) != 0 or sp.expand(b**2 - 4 * c - v0**2 - v1**2) != 0:
+        raise RuntimeError("characteristic polynomial is not lambda^2 - tr lambda + det")
+    return tr, v0, v1
+
+
+def eigenvalues(m: sp.Matrix) -> tuple[sp.Expr, sp.Expr]:
+    """``(lambda_min, lambda_max)`` of a symbolic symmetric 2x2 matrix ``[[a, b], [b, c]]``.
+
+    Derived as the roots of the characteristic polynomial (see :func:`_eigen_parts`):
+    ``(tr -+ sqrt((a - c)^2 + 4 b^2)) / 2``; the root with ``- sqrt`` is the smaller.
+
+    Raises
+    ------
+    ValueError
+        If ``m`` is not a symmetric 2x2 SymPy matrix.
+    RuntimeError
+        If the characteristic polynomial check fails (it cannot for a symmetric matrix).
+    """
+    tr, v0, v1 = _eigen_parts(m)
+    root = sp.sqrt(v0**2 + v1**2)
+    return (tr - root) / 2, (tr + root) / 2
 
 
 @lru_cache(maxsize=None)
 def cartesian_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
-    """:func:`eigenvalues` of :func:`cartesian_gram`, cached (SymPy factors the characteristic
-    polynomial, which takes seconds)."""
+    """:func:`eigenvalues` of :func:`cartesian_gram`, cached."""
     return eigenvalues(cartesian_gram())
+
+
+def _double_angle(expr: sp.Expr) -> sp.Expr:
+    """Products of ``sin``/``cos`` rewritten with double angles (SymPy's ``fu`` rules: TR8
+    product-to-sum, TR5 ``sin^2 = 1 - cos^2``, TR10i sum-to-angle-difference)."""
+    return TR10i(sp.expand(TR5(sp.expand(TR8(expr)))))
 
 
 @lru_cache(maxsize=None)
 def polar_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
-    """:func:`eigenvalues` of :func:`polar_gram`, cached."""
-    return eigenvalues(polar_gram())
+    """:func:`eigenvalues` of :func:`polar_gram`, in double-angle form, cached.
+
+    In polar form ``v = d_io^2 (cos 2 theta_i, sin 2 theta_i) + d_jo^2 (cos 2 theta_j,
+    sin 2 theta_j)`` and ``tr = d_io^2 + d_jo^2`` (SymPy's ``fu`` rules applied to the derived
+    ``tr`` and ``v``), so ``|v|^2`` becomes ``d_io^4 + d_jo^4 + 2 d_io^2 d_jo^2
+    cos(2 theta_i - 2 theta_j)``. :func:`pythagorean_remainder` confirms the rewriting
+    independently (the notebook and the audit do).
+    """
+    tr, v0, v1 = _eigen_parts(polar_gram())
+    tr = sp.expand(TR5(sp.expand(tr)))
+    v0, v1 = sp.expand(TR8(v0)), sp.expand(TR8(v1))
+    root = sp.sqrt(_double_angle(v0**2 + v1**2))
+    return (tr - root) / 2, (tr + root) / 2
+
+
+def pythagorean_remainder(expr: sp.Expr) -> sp.Expr:
+    """Remainder of a trigonometric polynomial in ``theta_i``, ``theta_j`` modulo
+    ``cos^2 + sin^2 = 1``.
+
+    Multiple angles are expanded (``sympy.expand_trig``), ``cos theta_k``, ``sin theta_k`` become
+    polynomial variables, and the polynomial is reduced by the Groebner basis
+    ``{c_i^2 + s_i^2 - 1, c_j^2 + s_j^2 - 1}`` (``sympy.reduced``). The remainder is a canonical
+    form: it is 0 exactly when ``expr`` vanishes for all angles.
+    """
+    ci, si, cj, sj = sp.symbols("c_i s_i c_j s_j", real=True)
+    rep = {sp.cos(THETA_I): ci, sp.sin(THETA_I): si, sp.cos(THETA_J): cj, sp.sin(THETA_J): sj}
+    poly = sp.expand(sp.expand_trig(expr).subs(rep))
+    if poly.has(THETA_I, THETA_J):
+        raise ValueError("expr is not a polynomial in cos and sin of theta_i, theta_j")
+    gens = (ci, cj, si, sj)
+    return sp.reduced(poly, [ci**2 + si**2 - 1, cj**2 + sj**2 - 1], *gens)[1]
 
 
 def printed_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
@@ -190,16 +255,51 @@ def ratio_substitution() -> dict:
     return {D_JO: ALPHA * D_IO, THETA_J: THETA_I + THETA, U: Q * D_IO}
 
 
-def cartesian_ratio_values(point: dict) -> dict:
+def pull_out_of_roots(expr: sp.Expr) -> sp.Expr:
+    """Common factors moved out of every square root: ``sqrt(d^4 X) -> d^2 sqrt(X)`` for
+    ``d > 0`` (``sympy.factor_terms`` on each radicand; SymPy then splits the root)."""
+    return sp.sympify(expr).replace(
+        lambda e: e.is_Pow and e.exp.is_Rational and e.exp.q == 2,
+        lambda e: sp.factor_terms(e.base) ** e.exp,
+    )
+
+
+@lru_cache(maxsize=None)
+def polar_ratio() -> sp.Expr:
+    """``lambda_min / (lambda_max + u^2)`` of :func:`polar_eigenvalues` after
+    :func:`ratio_substitution`: ``d_io^2`` leaves the square root (:func:`pull_out_of_roots`)
+    and cancels (``sympy.cancel``), so ``d_io`` and ``theta_i`` drop out."""
+    lmin, lmax = polar_eigenvalues()
+    ratio = (lmin / (lmax + U**2)).subs(ratio_substitution())
+    return sp.cancel(pull_out_of_roots(ratio))
+
+
+def cartesian_ratio_values(point: dict, digits: int | None = None) -> dict:
     """Theorem 4's ``alpha``, ``theta`` and ``q`` at a Cartesian point, as exact SymPy values.
 
     ``alpha = |o - p_j| / |o - p_i|``, ``theta = atan2(p_j - o) - atan2(p_i - o)`` and
     ``q = u / |o - p_i|`` (Eq. (8)). ``point`` maps the symbols of :data:`CARTESIAN_ARGS` to
-    numbers (rationals for exact evaluation).
+    numbers (rationals for exact evaluation). With ``digits``, the same values are returned as
+    mpmath numbers evaluated at ``digits`` significant digits from the exact rational coordinates
+    (what SymPy's ``N`` of the exact values gives, without building them symbolically).
     """
     missing = [s for s in CARTESIAN_ARGS if s not in point]
     if missing:
         raise ValueError(f"point lacks values for {missing}")
+    if digits is not None:
+        import mpmath
+
+        with mpmath.workdps(int(digits)):
+            v = {k: mpmath.mpf(sp.Rational(x).p) / sp.Rational(x).q for k, x in point.items()}
+            vix, viy, vjx, vjy = v[PIX] - v[OX], v[PIY] - v[OY], v[PJX] - v[OX], v[PJY] - v[OY]
+            di, dj = mpmath.hypot(vix, viy), mpmath.hypot(vjx, vjy)
+            if di == 0 or dj == 0:
+                raise ValueError("a sensor sits on the target (zero distance)")
+            return {
+                ALPHA: dj / di,
+                THETA: mpmath.atan2(vjy, vjx) - mpmath.atan2(viy, vix),
+                Q: v[U] / di,
+            }
     vix, viy = point[PIX] - point[OX], point[PIY] - point[OY]
     vjx, vjy = point[PJX] - point[OX], point[PJY] - point[OY]
     di = sp.sqrt(sp.sympify(vix) ** 2 + sp.sympify(viy) ** 2)
@@ -233,11 +333,42 @@ def discriminant_cartesian() -> tuple[sp.Expr, sp.Expr]:
     return disc, sp.expand(paper)
 
 
+@lru_cache(maxsize=None)
+def theorem4_residuals() -> dict[str, sp.Expr]:
+    """Every comparison of the derivation of Theorem 4 with the paper, as a residual that is 0
+    exactly when the two agree (computed once; the notebook prints them, the audit tests them).
+
+    ``"polar matrix"``: derived minus printed polar ``O_ij^T O_ij``, entries expanded;
+    ``"trace (mod cos^2 + sin^2 = 1)"`` and ``"(lambda_max - lambda_min)^2 (mod ...)"``: the
+    roots of the characteristic polynomial against Eq. (33), as :func:`pythagorean_remainder`;
+    ``"lambda_min"``, ``"lambda_max"``: :func:`polar_eigenvalues` minus Eq. (33), expanded;
+    ``"ratio"``: :func:`polar_ratio` minus Eq. (9) squared, cancelled; ``"cartesian
+    discriminant"``: :func:`discriminant_cartesian`, the difference expanded.
+    """
+    gp = polar_gram()
+    rmin, rmax = eigenvalues(gp)
+    pmin, pmax = printed_eigenvalues()
+    lmin, lmax = polar_eigenvalues()
+    disc, paper = discriminant_cartesian()
+    return {
+        "polar matrix": tuple(sp.expand(e) for e in gp - printed_polar_gram()),
+        "trace (mod cos^2 + sin^2 = 1)": pythagorean_remainder(rmin + rmax - (pmin + pmax)),
+        "(lambda_max - lambda_min)^2 (mod cos^2 + sin^2 = 1)": pythagorean_remainder(
+            (rmax - rmin) ** 2 - (pmax - pmin) ** 2
+        ),
+        "lambda_min": sp.expand(lmin - pmin),
+        "lambda_max": sp.expand(lmax - pmax),
+        "ratio": sp.cancel(polar_ratio() - theorem4_bound(squared=True)),
+        "cartesian discriminant": sp.expand(disc - paper),
+    }
+
+
 def theorem4_radicand() -> sp.Expr:
     """``S^2 = 1 + alpha^4 + 2 alpha^2 cos(2 theta)`` of Eq. (9)."""
     return 1 + ALPHA**4 + 2 * ALPHA**2 * _COS2
 
 
+@lru_cache(maxsize=None)
 def theorem4_bound(squared: bool = False) -> sp.Expr:
     """Theorem 4 (Eq. (9)) in ``alpha``, ``theta = theta_ji`` and ``q = u / d_io``.
 
@@ -246,6 +377,57 @@ def theorem4_bound(squared: bool = False) -> sp.Expr:
     """
     ratio = _N / _D
     return ratio if squared else sp.sqrt(ratio)
+
+
+def vanishes_with_radicals(expr: sp.Expr, radicals) -> bool:
+    """Whether ``expr``, rational in the given square roots, is identically zero.
+
+    Each radical ``sqrt(R_k)`` (outermost first; ``R_k`` may contain the later ones) is replaced
+    by a symbol ``y_k``. Working outwards-in, the numerator of the expression (``sympy.together``)
+    is a polynomial in ``y_k``; with ``y_k^2 = R_k`` it splits into ``P_even + y_k P_odd``, and
+    the expression vanishes if both parts vanish (checked recursively). At the end the numerator
+    must expand to 0. A ``True`` answer is a proof (for all values where the radicals are defined
+    and the denominators are nonzero); ``False`` means the test found no proof.
+
+    Parameters
+    ----------
+    expr : sympy.Expr
+    radicals : sequence of sympy.Expr
+        Square roots (``sympy.sqrt(...)``) occurring in ``expr``, outermost first.
+    """
+    radicals = [sp.sympify(r) for r in radicals]
+    if not all(r.is_Pow and r.exp == sp.S.Half for r in radicals):
+        raise ValueError("radicals must be square roots")
+    for k, r in enumerate(radicals):
+        if any(r.base.has(outer) for outer in radicals[:k]):
+            raise ValueError("radicals must be listed outermost first")
+    ys = [sp.Dummy(f"y{k}") for k in range(len(radicals))]
+    e = sp.sympify(expr)
+    for r, y in zip(radicals, ys):
+        e = e.subs(r, y)
+    bases = [r.base.subs(dict(zip(radicals[k + 1:], ys[k + 1:]))) for k, r in enumerate(radicals)]
+
+    def rec(x, k):
+        num = sp.numer(sp.together(x))
+        if k == len(ys):
+            return sp.expand(num) == 0
+        y, b = ys[k], bases[k]
+        if not num.has(y):
+            return rec(num, k + 1)
+        terms = sp.Poly(num, y).terms()
+        even = sp.Add(*[cf * b ** (m // 2) for (m,), cf in terms if m % 2 == 0])
+        odd = sp.Add(*[cf * b ** (m // 2) for (m,), cf in terms if m % 2 == 1])
+        return rec(even, k + 1) and rec(odd, k + 1)
+
+    return rec(e, 0)
+
+
+@lru_cache(maxsize=None)
+def max_value_exact() -> sp.Expr:
+    """``C^-1(alpha = 1, theta = pi/2) - 1 / sqrt(1 + q^2)`` with the common factor pulled out of
+    the square roots (:func:`pull_out_of_roots`); 0 when Theorem 5's maximum value is right."""
+    at = theorem4_bound().subs({ALPHA: 1, THETA: sp.pi / 2})
+    return sp.expand(pull_out_of_roots(at) - 1 / sp.sqrt(1 + Q**2))
 
 
 # --- Theorem 5: derivatives --------------------------------------------------------------------
@@ -302,6 +484,27 @@ def stationarity_alpha(abbreviate: bool = False) -> sp.Expr:
     return (1 - ALPHA**2) * (1 - _COS2) + Q**2 * (S - (ALPHA**2 + _COS2))
 
 
+@lru_cache(maxsize=None)
+def stationarity_alpha_at_1() -> sp.Expr:
+    """Eq. (34) at ``alpha = 1``: ``S = sqrt(2 + 2 cos 2 theta)``; with ``cos 2 theta =
+    2 cos^2 theta - 1`` (``sympy.expand_trig``) ``S = 2 |cos theta|``, and the bracket factors
+    as ``2 q^2 (|cos theta| - cos^2 theta)``."""
+    return sp.factor(sp.expand(sp.expand_trig(stationarity_alpha().subs(ALPHA, 1))))
+
+
+@lru_cache(maxsize=None)
+def closed_forms_hold() -> dict[str, bool]:
+    """Whether SymPy's derivatives equal the factored forms, decided once by
+    :func:`vanishes_with_radicals` with the radicals ``C`` (Eq. (9)) and ``S``:
+    ``"dtheta"`` (:func:`dbound_dtheta` vs :func:`dbound_dtheta_closed`) and ``"dalpha"``
+    (:func:`dbound_dalpha` vs :func:`dbound_dalpha_closed`)."""
+    radicals = [theorem4_bound(), _S]
+    return {
+        "dtheta": vanishes_with_radicals(dbound_dtheta() - dbound_dtheta_closed(), radicals),
+        "dalpha": vanishes_with_radicals(dbound_dalpha() - dbound_dalpha_closed(), radicals),
+    }
+
+
 def dbound_dalpha_closed(abbreviate: bool = False) -> sp.Expr:
     """Factored form of :func:`dbound_dalpha`: ``2 alpha g / (S C D^2)``, ``g`` of
     :func:`stationarity_alpha`; equivalently ``2 alpha g / (S sqrt(N) D^(3/2))`` with
@@ -352,24 +555,29 @@ def bound_halfpi_piecewise() -> sp.Expr:
 def alpha_star_squared() -> sp.Expr:
     """``alpha*^2``, the square of the maximising ``alpha`` for a fixed ``theta``, derived.
 
-    Write ``t = alpha^2``, ``c = cos 2 theta``. Eq. (34) is
-    ``q^2 S = q^2 (t + c) + (t - 1)(1 - c)``; squaring gives a quadratic in ``t`` which SymPy
-    solves. Of its two roots the larger one satisfies the unsquared equation (``t >= 1``, because
-    ``S >= |t + c|`` makes the ``q^2`` term of Eq. (34) non-negative); the notebook and tests
-    check this at rational points.
-    Returned in ``c`` form with ``c = cos 2 theta`` substituted.
+    Write ``t = alpha^2`` and ``c = cos 2 theta = 1 - 2 sigma`` with ``sigma = sin^2 theta > 0``.
+    Eq. (34) is ``q^2 S = q^2 (t + c) + (t - 1)(1 - c)``; squaring gives a quadratic
+    ``A t^2 + B t + C = 0`` (``sympy.Poly``), solved by the quadratic formula with the discriminant
+    factored (``sympy.factor``). Of its two roots the larger one satisfies the unsquared equation
+    (``t >= 1``, because ``S >= |t + c|`` makes the ``q^2`` term of Eq. (34) non-negative); the
+    notebook and tests check this at rational points. The root is factored and returned in
+    ``theta``, with ``sqrt(1 - sigma) = |cos theta|``.
     """
     t = sp.Symbol("t", positive=True)
-    c = sp.Symbol("c", real=True)
+    sigma = sp.Symbol("sigma", positive=True)
+    c = 1 - 2 * sigma
     lhs = Q**4 * (1 + t**2 + 2 * t * c)
     rhs = (Q**2 * (t + c) + (t - 1) * (1 - c)) ** 2
-    roots = sp.solve(sp.expand(rhs - lhs), t)
-    if len(roots) != 2:
-        raise RuntimeError(f"expected two roots, got {roots}")
+    a, b, c0 = sp.Poly(sp.expand(rhs - lhs), t).all_coeffs()
+    root = sp.sqrt(sp.factor(b**2 - 4 * a * c0))
+    roots = [(-b + root) / (2 * a), (-b - root) / (2 * a)]
     # the root with + sqrt: evaluate at a generic point to pick the larger one
-    at = {c: sp.Rational(1, 3), Q: sp.Rational(1, 2)}
-    big = max(roots, key=lambda r: float(r.subs(at)))
-    return sp.simplify(big.subs(c, _COS2))
+    at = {sigma: sp.Rational(1, 3), Q: sp.Rational(1, 2)}
+    big = sp.factor(max(roots, key=lambda r: float(r.subs(at))))
+    big = big.subs(sp.sqrt(1 - sigma), sp.Abs(sp.cos(THETA))).subs(sigma, sp.sin(THETA) ** 2)
+    if big.has(sigma) or big.has(t):
+        raise RuntimeError(f"unexpected form of the root: {big}")
+    return big
 
 
 def alpha_star_closed() -> sp.Expr:
@@ -389,11 +597,13 @@ def alpha_star_closed() -> sp.Expr:
 def weyl_2x2_slacks() -> dict[str, tuple[sp.Expr, sp.Expr]]:
     """The Weyl inequalities of the proof of Theorem 1 (Eq. (18)) for 2x2 symmetric ``X, Y``.
 
-    ``X = [[a, b], [b, c]]``, ``Y = [[d, e], [e, f]]``, eigenvalues from ``Matrix.eigenvals`` in
-    ascending order. Each entry maps a name to ``(slack, triangle)``: ``slack >= 0`` is the
-    inequality, and ``triangle`` is the same quantity written as a triangle-inequality slack
-    ``(|x| + |y| - |x + y|) / 2`` in the plane, with ``v(X) = (a - c, 2 b)`` (so that
-    ``lambda_{1,2}(X) = tr X / 2 -+ |v(X)| / 2``). ``slack - triangle`` simplifies to 0.
+    ``X = [[a, b], [b, c]]``, ``Y = [[d, e], [e, f]]``, eigenvalues from :func:`eigenvalues`
+    (roots of the characteristic polynomial) in ascending order. Each entry maps a name to
+    ``(slack, triangle)``: ``slack >= 0`` is the inequality, and ``triangle`` is the same quantity
+    written as a triangle-inequality slack ``(|x| + |y| - |x + y|) / 2`` in the plane, with
+    ``v(X) = (a - c, 2 b)`` (so that ``lambda_{1,2}(X) = tr X / 2 -+ |v(X)| / 2``).
+    ``slack - triangle`` expands to 0 (``sympy.expand`` brings the radicands, polynomials in
+    ``a .. f``, to one canonical form).
 
     Names: ``"l1 >= l1+l1"`` (Weyl, i = j = 1), ``"l1 <= l1+l2"``, ``"l1 <= l2+l1"``
     (dual Weyl, the two arguments of the ``min``), ``"l2 <= l2+l2"`` (dual Weyl, i = j = 2),
@@ -427,7 +637,7 @@ def weyl_2x2_slacks() -> dict[str, tuple[sp.Expr, sp.Expr]]:
 
 
 # --- evaluation helpers ------------------------------------------------------------------------
-def lambdify_expr(expr, args, modules: str = "numpy"):
+def lambdify_expr(expr, args, modules: str = "numpy", cse: bool = False):
     """A numerical function of ``args`` from a SymPy expression (``sympy.lambdify``).
 
     Parameters
@@ -439,6 +649,9 @@ def lambdify_expr(expr, args, modules: str = "numpy"):
     modules : {"numpy", "mpmath"}
         Backend. ``"mpmath"`` evaluates at the working precision of ``mpmath.mp`` (use
         ``mpmath.workdps``) and takes scalars.
+    cse : bool
+        Evaluate common subexpressions once (``sympy.lambdify(..., cse=True)``): the same
+        function, faster for large expressions.
 
     Raises
     ------
@@ -454,7 +667,9 @@ def lambdify_expr(expr, args, modules: str = "numpy"):
     if free:
         names = sorted(str(s) for s in free)
         raise ValueError(f"expression has free symbols not in args: {names}")
-    return sp.lambdify(args, expr, modules=modules)
+    # the NumPy module itself as namespace: the same printer and functions as "numpy", without
+    # lambdify's ``from numpy import *`` (which loads f2py, fft, polynomial, ... on first use)
+    return sp.lambdify(args, expr, modules=[np] if modules == "numpy" else modules, cse=cse)
 
 
 def _rational(rng: np.random.Generator, lo: float, hi: float, den: int = 997) -> sp.Rational:
@@ -487,8 +702,9 @@ def max_difference_at_rational_points(
     digits : int
         Working precision in decimal digits, at least 15.
     point_map : callable, optional
-        ``point -> dict`` of extra substitutions (exact SymPy values) computed from the drawn
-        point, e.g. :func:`cartesian_ratio_values`; they are evaluated to ``digits + 10`` digits.
+        ``point -> dict`` of extra substitutions computed from the drawn point, e.g.
+        :func:`cartesian_ratio_values`: exact SymPy values, evaluated to ``digits + 10`` digits,
+        or mpmath numbers already evaluated (at ``digits + 10`` digits, say), used as they are.
 
     Returns
     -------
@@ -517,12 +733,15 @@ def max_difference_at_rational_points(
     if free:
         raise ValueError(f"no range for symbols {sorted(map(str, free))}")
     syms = sorted(diff.free_symbols, key=str)
-    f = sp.lambdify(syms, diff, modules="mpmath")
+    f = sp.lambdify(syms, diff, modules="mpmath", cse=True)
     worst = mpmath.mpf(0)
     with mpmath.workdps(digits):
         for point, extra in points:
             vals = {s: mpmath.mpf(r.p) / r.q for s, r in point.items()}
-            vals.update({s: mpmath.mpf(sp.N(v, digits + 10)) for s, v in extra.items()})
+            vals.update({
+                s: v if isinstance(v, mpmath.mpf) else mpmath.mpf(sp.N(v, digits + 10))
+                for s, v in extra.items()
+            })
             val = abs(f(*[vals[s] for s in syms]))
             if not mpmath.isfinite(val):
                 return float("inf")

@@ -107,6 +107,25 @@ def test_maximising_alpha_vectorises_and_validates():
         pf.maximising_alpha(np.nan, 1.0)
 
 
+def test_bisection_root_agrees_with_scipy_brentq():
+    # an independent root finder on the same equation (Eq. (34)), one theta at a time
+    from scipy.optimize import brentq
+
+    rng = np.random.default_rng(6)
+    theta, q = rng.uniform(0.01, 3.13, 300), rng.uniform(0.01, 3, 300)
+    ours = pf.maximising_alpha(theta, q)
+    for t_, q_, a in zip(theta, q, ours):
+        g = lambda x: float(pf.stationarity_alpha(x, t_, q_))  # noqa: E731
+        if g(1.0) <= 0:
+            assert a == 1.0
+            continue
+        hi = 2.0
+        while g(hi) > 0:
+            hi *= 2
+        assert a == pytest.approx(brentq(g, 1.0, hi, xtol=1e-14, rtol=4 * np.finfo(float).eps), abs=3e-14)
+        assert g(a - 1e-9) > 0 > g(a + 1e-9)
+
+
 def test_stationarity_alpha_matches_symbolic_and_has_the_sign_of_the_derivative():
     g = sy.lambdify_expr(sy.stationarity_alpha(), sy.RATIO_ARGS)
     rng = np.random.default_rng(4)
@@ -172,7 +191,11 @@ def test_figures_draw():
     Z = pf.bound_surface(a, t)
     fig = pf.plot_fig2(a, t, Z, [0.1, 0.3, 0.5, 0.7], "test", mark=pf.grid_maximum(a, t, Z))
     assert len(fig.axes) == 4
+    fig = pf.plot_fig2(a, t, Z, [0.1, 0.3], mark=pf.grid_maximum(a, t, Z), panels="contour")
+    assert len(fig.axes) == 2 and all(ax.name == "rectilinear" for ax in fig.axes)
     plt.close("all")
+    with pytest.raises(ValueError, match="panels"):
+        pf.plot_fig2(a, t, Z, [0.1], panels="surface")
     with pytest.raises(ValueError, match="d_io"):
         pf.plot_fig1(d_io=0.0)
 
@@ -181,3 +204,34 @@ def test_format_small():
     assert pf.format_small(3e-17) == "< 1e-12"
     assert pf.format_small(0.123456) == "0.123"
     assert pf.format_small(2e-9, 1e-10) == "2e-09"
+
+
+def test_theorem4_audit_numerics_match_a_per_scene_loop():
+    """The audit evaluates the scenes in arrays; the straightforward loop gives the same errors."""
+    import mpmath
+
+    a = pf.theorem4_audit(5, 60, 3, 30)
+    cmin, cmax = sy.cartesian_eigenvalues()
+    f_cart = sy.bound_from_eigenvalues(cmin, cmax)
+    f_mp = sy.lambdify_expr(f_cart, sy.CARTESIAN_ARGS, "mpmath")
+    f_np = sy.lambdify_expr(f_cart, sy.CARTESIAN_ARGS, "numpy")
+    t_mp = sy.lambdify_expr(sy.theorem4_bound(), sy.RATIO_ARGS, "mpmath")
+    err_pb = err_np = err_polar = 0.0
+    rng = np.random.default_rng(3 + 1)
+    with mpmath.workdps(30):
+        for sensors, target, u in pf._random_pair_scenes(60, 3):
+            w = ob.pair_bounds(sensors, target[None, :], u)[0, 1, 0]
+            args = (*target, *sensors[0], *sensors[1], u)
+            exact = f_mp(*[mpmath.mpf(float(x)) for x in args])
+            err_pb = max(err_pb, abs(float(exact) - w))
+            if float(exact) > 1e-3:
+                err_np = max(err_np, abs(float(f_np(*args)) - w))
+            al, th, q = rng.uniform(0, 5), rng.uniform(-np.pi, np.pi), rng.uniform(0, 3)
+            exact_p = t_mp(mpmath.mpf(al), mpmath.mpf(th), mpmath.mpf(q))
+            err_polar = max(err_polar, abs(float(exact_p) - ob.pair_bound_polar(al, th, q)))
+    assert a.max_error_pair_bounds == pytest.approx(err_pb, abs=1e-18)
+    assert a.max_error_pair_bound_polar == pytest.approx(err_polar, abs=1e-18)
+    assert a.max_error_numpy_generic == pytest.approx(err_np, abs=1e-15)
+    assert a.polar_matrix_printed_equal and a.eigenvalues_printed_equal
+    assert a.theorem4_ratio_equal and a.cartesian_discriminant_equal
+    assert a.cartesian_max_difference < 1e-20

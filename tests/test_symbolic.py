@@ -44,12 +44,54 @@ def test_printed_polar_matrix_equals_derived_one():
 
 
 def test_sympy_eigenvalues_in_polar_form_are_eq33():
-    lmin, lmax = sy.eigenvalues(sy.polar_gram())
-    assert (lmin, lmax) == sy.polar_eigenvalues()
-    assert sp.simplify(lmin + lmax - sy.polar_gram().trace()) == 0
+    gp = sy.polar_gram()
+    rmin, rmax = sy.eigenvalues(gp)  # roots of the characteristic polynomial
+    lam = sp.Symbol("lam")
+    char = (lam * sp.eye(2) - gp).det()
+    for r in (rmin, rmax):
+        assert sp.simplify(char.subs(lam, r)) == 0
+    lmin, lmax = sy.polar_eigenvalues()  # the same roots in double-angle form
     pmin, pmax = sy.printed_eigenvalues()
     assert sp.simplify(lmin - pmin) == 0
     assert sp.simplify(lmax - pmax) == 0
+    assert sp.simplify(rmin - pmin) == 0
+    assert sp.simplify(rmax - pmax) == 0
+    assert all(v == 0 for k, v in sy.theorem4_residuals().items() if k != "polar matrix")
+    assert all(v == 0 for v in sy.theorem4_residuals()["polar matrix"])
+    # numerically, against numpy's eigenvalues of the printed polar matrix
+    f = sy.lambdify_expr(sp.Matrix([lmin, lmax]), sy.POLAR_ARGS[:-1])
+    g = sy.lambdify_expr(sy.printed_polar_gram(), sy.POLAR_ARGS[:-1])
+    rng = np.random.default_rng(3)
+    for _ in range(20):
+        d_i, d_j, t_i, t_j = rng.uniform(0.1, 3), rng.uniform(0.1, 3), *rng.uniform(-4, 4, 2)
+        got = np.array(f(d_i, d_j, t_i, t_j), dtype=float).ravel()
+        want = np.linalg.eigvalsh(np.array(g(d_i, d_j, t_i, t_j), dtype=float))
+        np.testing.assert_allclose(got, want, rtol=1e-12, atol=1e-12)
+
+
+def test_eigenvalues_of_numeric_and_symbolic_matrices():
+    x = sp.Matrix([[3, 1], [1, 2]])
+    lo, hi = sy.eigenvalues(x)
+    np.testing.assert_allclose([float(lo), float(hi)], np.linalg.eigvalsh([[3, 1], [1, 2]]))
+    a, b, c = sp.symbols("a b c", real=True)
+    lo, hi = sy.eigenvalues(sp.Matrix([[a, b], [b, c]]))
+    assert sp.expand(lo + hi - (a + c)) == 0 and sp.expand(lo * hi - (a * c - b * b)) == 0
+
+
+def test_pythagorean_remainder_decides_identities():
+    ti, tj = sy.THETA_I, sy.THETA_J
+    assert sy.pythagorean_remainder(sp.cos(ti) ** 2 + sp.sin(ti) ** 2 - 1) == 0
+    assert sy.pythagorean_remainder(sp.cos(2 * (ti - tj)) - 2 * sp.cos(ti - tj) ** 2 + 1) == 0
+    assert sy.pythagorean_remainder(sp.cos(ti) ** 2 - sp.sin(ti) ** 2 - 1) != 0
+    with pytest.raises(ValueError, match="polynomial"):
+        sy.pythagorean_remainder(sp.tan(ti))
+
+
+def test_polar_ratio_is_theorem4_squared():
+    ratio = sy.polar_ratio()
+    assert ratio.free_symbols == {A, TH, Q}
+    assert sp.cancel(ratio - sy.theorem4_bound(squared=True)) == 0
+    assert sp.cancel(ratio - sy.theorem4_bound(squared=True).subs(Q, 2 * Q)) != 0
 
 
 def test_eigenvalues_reduce_to_theorem4_in_alpha_theta():
@@ -167,6 +209,7 @@ def test_printed_cartesian_matrix_does_not_give_printed_polar_one():
 # --- Theorem 5 -----------------------------------------------------------------------------------
 def test_theta_derivative_closed_form_and_corner_at_zero():
     assert sp.simplify(sy.dbound_dtheta() - sy.dbound_dtheta_closed()) == 0
+    assert sy.closed_forms_hold() == {"dtheta": True, "dalpha": True}
     d = sy.lambdify_expr(sy.dbound_dtheta_closed(), sy.RATIO_ARGS, "mpmath")
     s = sy.lambdify_expr(sy.dbound_dtheta_at_zero(), (A, Q), "mpmath")
     with mpmath.workdps(60):
@@ -186,9 +229,26 @@ def test_theta_stationarity_is_alpha2_sin2theta_for_the_square():
     assert sp.simplify(d2 - 4 * A**2 * sp.sin(2 * TH) * (1 + A**2 + Q**2) / (S * D**2)) == 0
 
 
+def test_vanishes_with_radicals_proves_and_refutes():
+    radicals = [sy.theorem4_bound(), sp.sqrt(sy.theorem4_radicand())]
+    for d, closed in ((sy.dbound_dtheta(), sy.dbound_dtheta_closed()),
+                      (sy.dbound_dalpha(), sy.dbound_dalpha_closed())):
+        assert sy.vanishes_with_radicals(d - closed, radicals)
+        assert not sy.vanishes_with_radicals(d - closed * (1 + sp.Rational(1, 10**6)), radicals)
+        assert not sy.vanishes_with_radicals(d - closed.subs(Q, 2 * Q), radicals)
+    s = sp.sqrt(1 + A**2)
+    assert sy.vanishes_with_radicals(s**3 - (1 + A**2) * s, [s])
+    assert not sy.vanishes_with_radicals(s - A, [s])
+    with pytest.raises(ValueError, match="square roots"):
+        sy.vanishes_with_radicals(A, [A**2])
+    with pytest.raises(ValueError, match="outermost"):
+        sy.vanishes_with_radicals(A, radicals[::-1])
+
+
 def test_maximum_value_and_location_exact():
     f = sy.theorem4_bound()
     assert sp.simplify(f.subs({A: 1, TH: sp.pi / 2}) - 1 / sp.sqrt(1 + Q**2)) == 0
+    assert sy.max_value_exact() == 0
     assert sp.simplify(f.subs({A: 1, TH: -sp.pi / 2}) - 1 / sp.sqrt(1 + Q**2)) == 0
     for t in (0, sp.pi):  # S = 1 + alpha^2 there, so the numerator 1 + alpha^2 - S vanishes
         S = sp.sqrt(sp.factor(sy.theorem4_radicand().subs(TH, t)))
@@ -258,6 +318,8 @@ def test_alpha_star_closed_form_solves_eq34():
 
 def test_alpha_equal_1_is_stationary_only_for_q0_or_special_angles():
     g1 = sp.simplify(sp.expand_trig(sy.stationarity_alpha().subs(A, 1)))
+    assert sp.simplify(g1 - sy.stationarity_alpha_at_1()) == 0
+    assert sy.stationarity_alpha_at_1() == 2 * Q**2 * (sp.Abs(sp.cos(TH)) - sp.cos(TH) ** 2)
     assert sp.simplify(g1.subs(Q, 0)) == 0
     assert sp.simplify(g1.subs(TH, sp.pi / 2)) == 0
     assert sp.simplify(g1.subs(TH, 0)) == 0
@@ -269,6 +331,7 @@ def test_alpha_equal_1_is_stationary_only_for_q0_or_special_angles():
 def test_weyl_inequalities_are_triangle_inequalities():
     for name, (slack, tri) in sy.weyl_2x2_slacks().items():
         assert sp.simplify(slack - tri) == 0, name
+        assert sp.expand(slack - tri) == 0, name
 
 
 entry = st.one_of(
@@ -321,8 +384,34 @@ def test_eigenvalues_validates():
         sy.eigenvalues(sp.Matrix([[1, 2], [3, 4]]))
 
 
+def test_cartesian_ratio_values_in_mpmath_equal_the_exact_ones():
+    rng = np.random.default_rng(9)
+    for _ in range(10):
+        point = {s: sp.Rational(int(rng.integers(-2991, 2992)), 997) for s in sy.CARTESIAN_ARGS}
+        point[sy.U] = abs(point[sy.U])
+        exact = sy.cartesian_ratio_values(point)
+        fast = sy.cartesian_ratio_values(point, digits=60)
+        with mpmath.workdps(60):
+            for s in exact:
+                assert isinstance(fast[s], mpmath.mpf)
+                assert abs(fast[s] - mpmath.mpf(sp.N(exact[s], 70))) < mpmath.mpf(10) ** -55
+
+
+def test_lambdify_numpy_evaluates_arrays_and_piecewise():
+    f = sy.lambdify_expr(sy.bound_halfpi_piecewise().subs(Q, 1), (A,))
+    a = np.array([0.5, 1.0, 2.0])
+    np.testing.assert_allclose(f(a), [0.5 / np.sqrt(2), 1 / np.sqrt(2), 1 / np.sqrt(5)])
+    g = sy.lambdify_expr(sy.theorem4_bound(), sy.RATIO_ARGS, "mpmath", cse=True)
+    h = sy.lambdify_expr(sy.theorem4_bound(), sy.RATIO_ARGS, "mpmath")
+    with mpmath.workdps(40):
+        x = [mpmath.mpf(v) for v in (0.7, 1.1, 0.3)]
+        assert abs(g(*x) - h(*x)) < mpmath.mpf(10) ** -38
+
+
 def test_cartesian_ratio_values_rejects_sensor_on_target():
     point = {s: sp.Integer(0) for s in sy.CARTESIAN_ARGS}
     point[sy.PJX] = sp.Integer(1)
     with pytest.raises(ValueError, match="zero distance"):
         sy.cartesian_ratio_values(point)
+    with pytest.raises(ValueError, match="zero distance"):
+        sy.cartesian_ratio_values(point, digits=30)

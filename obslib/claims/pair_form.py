@@ -117,7 +117,9 @@ def _fig2_max(profile: str) -> Finding:
 def _thm5(profile: str) -> Finding:
     p = _params(profile)
     qs = _qs(p)
-    a = pf.theorem5_audit(qs, p["alpha_max"], p["fine_alpha_per_unit"], p["fine_theta_quarter"])
+    a = pf.theorem5_audit(
+        qs, p["alpha_max"], p["fine_alpha_per_unit"], p["fine_theta_quarter"], p["n_rational_points"]
+    )
     peaks_ok = all(
         abs(m - e) < TOL_FLOAT
         and {(round(al, 12), round(abs(th), 12)) for al, th in pts} == {(1.0, round(np.pi / 2, 12))}
@@ -171,7 +173,7 @@ def _thm5_alpha(profile: str) -> Finding:
         f"maximiser exceeds 1 (smallest alpha* - 1 = {a.min_distance_from_1:.2g} over {a.n_theta} "
         "angles and q in " + str([x for x in qs if x > 0]) + "), in closed form (ours) "
         "alpha*^2 = r (r sin^2 theta + q^2 |cos theta|) / (q^2 + sin^2 theta), r = sqrt(1 + q^2); "
-        "it matches Brent's root of Eq. (34) to "
+        "it matches the bisection root of Eq. (34) to "
         f"{pf.format_small(a.max_closed_vs_numeric, 1e-13)} and "
         "a dense brute-force search.",
         asdict(a),
