@@ -69,7 +69,7 @@ PROFILES: dict[str, dict[str, dict]] = {
             "r": 0.5,
             "p0": 0.5,
             "metric": "mahalanobis",
-            "anim_every": 5,
+            "anim_every": 8,
             "anim_dpi": 50,
         },
         "06_adversarial_target": {

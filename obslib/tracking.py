@@ -44,21 +44,24 @@ minimises the exact ``C^{-1}([o + u - p_i; o + u - p_j; u])`` (:func:`target_obj
 ``"next-pair"`` variant evaluates the pair the sensors will use next instead.
 
 Two engines compute the same runs: :func:`simulate` drives filterpy's EKF step by step (the
-reference), and :func:`simulate_batch` runs many noise seeds at once with the same equations in
-vectorised NumPy (for the Monte Carlo, :func:`monte_carlo`). The tests check they agree.
+reference), and the batch engine (:func:`simulate_many`, :func:`simulate_batch`,
+:func:`monte_carlo`) runs many noise seeds, strategies and setups at once with the same equations
+written as NumPy array operations over runs, without per-step validation. The tests check that
+they pick the same pairs and controls and agree to rounding.
 """
 
 from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Iterable
 
 import numpy as np
 
 from ._validate import as_point, as_points, check_distinct, check_spd2
 from .bound_checks import disc_controls
-from .bounds import pair_bounds
+from .bounds import pair_bounds, relative_vectors
 from .observability import _inverse_condition
 
 __all__ = [
@@ -85,6 +88,7 @@ __all__ = [
     "target_objective",
     "simulate",
     "simulate_batch",
+    "simulate_many",
     "monte_carlo",
     "compare_strategies",
     "spearman",
@@ -100,11 +104,15 @@ __all__ = [
     "mirror_point",
     "track_loss",
     "partner_study",
+    "partner_arms",
+    "partner_summary",
     "PUBLISHED_CIRCLE",
     "PUBLISHED_ADVERSARIAL",
     "cov_ellipse",
     "CHI2_2DOF_9973",
+    "sensor_label",
     "draw_snapshot",
+    "RunAnimation",
     "animate",
     "animation_html",
 ]
@@ -472,8 +480,34 @@ def choose_pairs(setup: TrackingSetup, strategy: str, xhat, cov):
     return pairs, scores[best, np.arange(b)]
 
 
+def _pair_value(vi, vj, u2, squared: bool = False) -> np.ndarray:
+    """Theorem 4's bound from the two rows ``vi``, ``vj`` and ``u2 = u_max^2``.
+
+    ``vi``, ``vj`` are arrays ``(..., 2)`` or pairs ``(x, y)`` of arrays. The eigenvalues of the
+    pair's Gram matrix: ``lmax = (r_i + r_j)/2 + sqrt(((r_i - r_j)/2)^2 + c^2)`` and
+    ``lmin lmax = (v_i x v_j)^2``, so ``bound = sqrt(lmin / (lmax + u2))`` is
+    ``sqrt((v_i x v_j)^2 / ((lmax + u2) lmax))`` (Eq. (9); the arithmetic of
+    :func:`obslib.pair_bounds`). ``squared=True`` returns the square (before the root).
+    """
+    if isinstance(vi, tuple):
+        (xi, yi), (xj, yj) = vi, vj
+    else:
+        xi, yi, xj, yj = vi[..., 0], vi[..., 1], vj[..., 0], vj[..., 1]
+    ri = xi * xi + yi * yi
+    rj = xj * xj + yj * yj
+    cross = xi * yj - yi * xj
+    dot = xi * xj + yi * yj
+    half = (ri - rj) * 0.5
+    lmax = (ri + rj) * 0.5 + np.sqrt(half * half + dot * dot)
+    sq = cross * cross / ((lmax + u2) * lmax)
+    return sq if squared else np.sqrt(sq)
+
+
 def pair_bound_series(setup: TrackingSetup, points, pairs, cov=None) -> np.ndarray:
     """Theorem 4's bound of the given pair at each point: ``W[pairs[k, 0], pairs[k, 1], k]``.
+
+    Equals indexing :func:`obslib.pair_bounds` (tests check it) but evaluates only the given
+    pair at each point, so whole Monte Carlo batches can be passed at once.
 
     Parameters
     ----------
@@ -483,10 +517,20 @@ def pair_bound_series(setup: TrackingSetup, points, pairs, cov=None) -> np.ndarr
     cov : array_like, shape (K, 2, 2), optional
         Mahalanobis distances in these covariances; Euclidean when omitted.
     """
-    pts = np.asarray(points, dtype=float)
+    v = relative_vectors(setup.sensors, points, cov)  # validated, (N, K, 2)
+    K = v.shape[1]
     pr = np.asarray(pairs)
-    W = pair_bounds(setup.sensors, pts, setup.u_max, cov=cov)
-    return W[pr[:, 0], pr[:, 1], np.arange(pts.shape[0])]
+    n = setup.n_sensors
+    if pr.shape != (K, 2) or not np.issubdtype(pr.dtype, np.integer):
+        raise ValueError(f"pairs must be integers of shape ({K}, 2), got {pr.dtype} {pr.shape}")
+    if K and (pr.min() < 0 or pr.max() >= n):
+        raise ValueError(f"pairs must be sensor indices in 0..{n - 1}")
+    # each point's vectors scaled by their largest length, as in pair_bounds
+    scale = np.sqrt(np.einsum("nlk,nlk->nl", v, v).max(axis=0)) if n else np.ones(K)
+    v = v / scale[None, :, None]
+    u2 = np.broadcast_to(setup.u_max**2, (K,)) / scale**2
+    k = np.arange(K)
+    return _pair_value(v[pr[:, 0], k], v[pr[:, 1], k], u2)
 
 
 def target_objective(pair_sensors, position, controls) -> np.ndarray:
@@ -542,14 +586,16 @@ class TrackingResult:
         ``Sigma_k`` before the update.
     control : (steps, 2)
         The target's move after step ``k``: ``u_k = o_{k+1} - o_k``.
-    objective : (steps,)
-        ``C^{-1}([o_{k+1} - p_i; o_{k+1} - p_j; u_k])`` with the pair of step ``k``: the value the
-        adversary of Section V-B minimises.
-    true_icn : (steps,)
-        The exact ``C^{-1}([o_k - p_i; o_k - p_j; u_{k-1}])`` the sensors face at step ``k``
-        with the pair they chose (``u_0 = 0``).
+    truth_end : (2,)
+        ``o_{steps+1}``, where the target is after its last move.
     next_pair : (2,) int
         The pair the sensors would choose after the last step.
+    objective : (steps,)
+        ``C^{-1}([o_{k+1} - p_i; o_{k+1} - p_j; u_k])`` with the pair of step ``k``: the value the
+        adversary of Section V-B minimises (computed on first access).
+    true_icn : (steps,)
+        The exact ``C^{-1}([o_k - p_i; o_k - p_j; u_{k-1}])`` the sensors face at step ``k``
+        with the pair they chose (``u_0 = 0``; computed on first access).
     """
 
     setup: TrackingSetup
@@ -564,9 +610,25 @@ class TrackingResult:
     estimate: np.ndarray
     cov: np.ndarray
     control: np.ndarray
-    objective: np.ndarray
-    true_icn: np.ndarray
+    truth_end: np.ndarray
     next_pair: np.ndarray
+
+    @cached_property
+    def objective(self) -> np.ndarray:
+        ps = self.setup.sensor_array[self.pairs]  # (..., steps, 2, 2)
+        nxt = np.concatenate([self.truth[..., 1:, :], self.truth_end[..., None, :]], axis=-2)
+        return _inverse_condition(
+            np.concatenate([nxt[..., None, :] - ps, self.control[..., None, :]], axis=-2)
+        )
+
+    @cached_property
+    def true_icn(self) -> np.ndarray:
+        ps = self.setup.sensor_array[self.pairs]
+        c = self.control
+        prev = np.concatenate([np.zeros_like(c[..., :1, :]), c[..., :-1, :]], axis=-2)
+        return _inverse_condition(
+            np.concatenate([self.truth[..., None, :] - ps, prev[..., None, :]], axis=-2)
+        )
 
     @property
     def steps(self) -> int:
@@ -617,7 +679,11 @@ class BatchResult(TrackingResult):
             if f.name not in ("setup", "strategy", "seed")
         }
         seed = self.seeds[b] if self.seeds else None
-        return TrackingResult(setup=self.setup, strategy=self.strategy, seed=seed, **arrays)
+        r = TrackingResult(setup=self.setup, strategy=self.strategy, seed=seed, **arrays)
+        for name in ("objective", "true_icn"):  # if already computed for the whole batch
+            if name in self.__dict__:
+                r.__dict__[name] = self.__dict__[name][b]
+        return r
 
 
 # --------------------------------------------------------------------------------------------
@@ -625,28 +691,21 @@ class BatchResult(TrackingResult):
 # --------------------------------------------------------------------------------------------
 
 
-def _derived(sensors, pairs, est, cov, truth_ext) -> dict:
-    """Arrays shared by both engines, for any leading shape: errors, traces, controls, C^{-1}.
+def _derived(est, cov, truth_ext) -> dict:
+    """Arrays shared by both engines, for any leading shape: errors, traces, truth, controls.
 
     ``truth_ext`` holds ``o_1 .. o_{steps+1}`` (the last is where the target moves after the
     last step).
     """
-    ps = sensors[pairs]  # (..., steps, 2, 2)
     control = truth_ext[..., 1:, :] - truth_ext[..., :-1, :]
-    prev = np.concatenate([np.zeros_like(control[..., :1, :]), control[..., :-1, :]], axis=-2)
-    cur, nxt = truth_ext[..., :-1, :], truth_ext[..., 1:, :]
-    obj = _inverse_condition(
-        np.concatenate([nxt[..., None, :] - ps, control[..., None, :]], axis=-2)
-    )
-    icn = _inverse_condition(np.concatenate([cur[..., None, :] - ps, prev[..., None, :]], axis=-2))
+    cur = truth_ext[..., :-1, :]
     diff = est - cur
     return {
         "error": np.hypot(diff[..., 0], diff[..., 1]),
         "trace_cov": cov[..., 0, 0] + cov[..., 1, 1],
         "truth": cur,
         "control": control,
-        "objective": obj,
-        "true_icn": icn,
+        "truth_end": truth_ext[..., -1, :].copy(),
     }
 
 
@@ -731,21 +790,495 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
         estimate=est,
         cov=cov,
         next_pair=pair[0].copy(),
-        **_derived(s, pairs, est, cov, truth),
+        **_derived(est, cov, truth),
     )
 
 
 # --------------------------------------------------------------------------------------------
-# The batch engine: many seeds at once, same equations in NumPy
+# The batch engine: many runs at once, same equations in NumPy
 # --------------------------------------------------------------------------------------------
+
+#: Setup fields that may differ between the rows of one batched pass (see :func:`simulate_many`).
+_ROW_FIELDS = ("metric", "anchor", "fixed_pair", "adversary", "controls")
+
+
+def _candidates(setup: TrackingSetup, strategy: str) -> np.ndarray:
+    """Which pairs (in ``(i, j)`` order, :func:`_pair_index`) a strategy chooses among, ``(P,)``.
+
+    Best pair: all; best partner: the pairs containing the anchor (in the order of the partner's
+    index, as in :func:`choose_pairs`); fixed pair: that pair alone.
+    """
+    ii, jj = _pair_index(setup.n_sensors)
+    if strategy == "best-pair":
+        return np.ones(ii.size, dtype=bool)
+    if strategy == "best-partner":
+        return (ii == setup.anchor) | (jj == setup.anchor)
+    i, j = sorted(setup.fixed_pair)
+    return (ii == i) & (jj == j)
+
+
+class _PairChooser:
+    """The strategies' picks for ``R`` runs at once, without per-step validation.
+
+    Built once per batched pass from each run's candidate pairs ``cand`` (``(R, P)`` bool,
+    :func:`_candidates`) and metric (``maha``, ``(R,)`` bool). Calling it with the runs'
+    estimates and covariance entries returns the chosen pair's index (in :func:`_pair_index`
+    order) and bound. The bound is :func:`obslib.pair_bounds`'s (the tests hold the two to
+    rounding): vectors ``xhat - p_i`` (the sign does not matter) rescaled to the Mahalanobis
+    length ``d_i^2 = v^T Sigma^-1 v`` where ``maha`` is set, each run's vectors divided by the
+    longest, then :func:`_pair_value` for the run's candidate pairs only. The pick is the first
+    maximum of the squared bound among the candidates in ``(i, j)`` order.
+
+    Runs with a single candidate (the fixed pair) need no scores to choose, so the call leaves
+    their bound out (NaN); :meth:`fixed_bounds` evaluates it afterwards over whole runs at once.
+    """
+
+    def __init__(self, sensors, cand, maha, u2):
+        self.sx = sensors[:, 0].copy()
+        self.sy = sensors[:, 1].copy()
+        self.n = n = sensors.shape[0]
+        self.ii, self.jj = _pair_index(n)
+        self.maha = np.asarray(maha, dtype=bool)
+        self.u2 = float(u2)
+        R_ = cand.shape[0]
+        counts = cand.sum(axis=1)
+        if (counts == 0).any():
+            raise ValueError("a run has no candidate pair")
+        self.best = np.empty(R_, dtype=int)
+        self.bound = np.full(R_, np.nan)
+        self.single = np.flatnonzero(counts == 1)
+        self.best[self.single] = np.nonzero(cand[self.single])[1]
+        self.multi = np.flatnonzero(counts > 1)
+        self.groups = []
+        for c in np.unique(counts[self.multi]):
+            rows = np.flatnonzero(counts == c)
+            cidx = np.nonzero(cand[rows])[1].reshape(rows.size, int(c))  # ascending pair index
+            loc = np.searchsorted(self.multi, rows)  # rows within the multi-candidate block
+            fi = loc[:, None] * n + self.ii[cidx]
+            fj = loc[:, None] * n + self.jj[cidx]
+            self.groups.append((rows, loc, cidx, fi, fj, np.arange(rows.size)))
+        self.maha_multi = self.maha[self.multi]
+
+    def _vectors(self, xx, xy, p00, p01, p10, p11, maha):
+        """Normalised (Mahalanobis) vectors ``(M, N)`` of ``M`` estimates and ``u2`` scaled."""
+        vx = xx[:, None] - self.sx
+        vy = xy[:, None] - self.sy
+        e2 = vx * vx + vy * vy
+        if not (e2 > 0).all():
+            raise ValueError("an estimate is not finite or sits on a sensor")
+        if maha.any():
+            det = p00 * p11 - p01 * p10
+            dm2 = p11[:, None] * (vx * vx)
+            dm2 -= (p01 + p10)[:, None] * (vx * vy)
+            dm2 += p00[:, None] * (vy * vy)
+            dm2 /= det[:, None]
+            n2 = np.where(maha[:, None], dm2, e2)
+            f = np.sqrt(n2 / e2)
+            vx *= f
+            vy *= f
+        else:
+            n2 = e2
+        inv = 1.0 / n2.max(axis=1)  # 1 / scale^2
+        sc = np.sqrt(inv)[:, None]
+        vx *= sc
+        vy *= sc
+        return vx, vy, self.u2 * inv
+
+    def __call__(self, xx, xy, p00, p01, p10, p11):
+        if self.groups:
+            m = self.multi
+            vx, vy, u2s = self._vectors(xx[m], xy[m], p00[m], p01[m], p10[m], p11[m],
+                                        self.maha_multi)
+            for rows, loc, cidx, fi, fj, ar in self.groups:
+                sq = _pair_value(
+                    (vx.take(fi), vy.take(fi)), (vx.take(fj), vy.take(fj)), u2s[loc, None], True
+                )
+                pick = sq.argmax(axis=1)
+                self.best[rows] = cidx[ar, pick]
+                self.bound[rows] = np.sqrt(sq[ar, pick])
+        elif not (np.isfinite(xx).all() and np.isfinite(xy).all()):
+            raise ValueError("an estimate is not finite")
+        return self.best.copy(), self.bound.copy()
+
+    def fixed_bounds(self, est, cov) -> np.ndarray:
+        """The bound of the single-candidate runs' pair over whole runs: ``est`` ``(R, T, 2)``
+        and ``cov`` ``(R, T, 2, 2)`` of all runs in; ``(len(single), T)`` out."""
+        r = self.single
+        T = est.shape[1]
+        k = np.repeat(self.best[r], T)
+        val = _fixed_pair_bound(self.sx, self.sy, self.ii[k], self.jj[k], self.u2,
+                                est[r].reshape(-1, 2), cov[r].reshape(-1, 2, 2),
+                                np.repeat(self.maha[r], T))
+        return val.reshape(r.size, T)
+
+
+def _fixed_pair_bound(sx, sy, i, j, u2, x, c, maha) -> np.ndarray:
+    """Theorem 4's bound of the pair ``(i[m], j[m])`` at estimate ``x[m]`` (covariance ``c[m]``,
+    Mahalanobis where ``maha[m]``), ``(M,)``: as :class:`_PairChooser` but only the pair's two
+    vectors (normalised by the longer of the two), in chunks that stay in cache."""
+    out = np.empty(x.shape[0])
+    step = 1 << 14
+    for a in range(0, x.shape[0], step):
+        sl = slice(a, a + step)
+        vs = []
+        for e in (i[sl], j[sl]):
+            vx = x[sl, 0] - sx[e]
+            vy = x[sl, 1] - sy[e]
+            e2 = vx * vx + vy * vy
+            if not (e2 > 0).all():
+                raise ValueError("an estimate is not finite or sits on a sensor")
+            m = maha[sl]
+            if m.any():
+                p00, p01, p10, p11 = c[sl, 0, 0], c[sl, 0, 1], c[sl, 1, 0], c[sl, 1, 1]
+                dm2 = (p11 * (vx * vx) - (p01 + p10) * (vx * vy) + p00 * (vy * vy)) / (
+                    p00 * p11 - p01 * p10
+                )
+                n2 = np.where(m, dm2, e2)
+                f = np.sqrt(n2 / e2)
+                vx, vy = vx * f, vy * f
+            else:
+                n2 = e2
+            vs.append((vx, vy, n2))
+        inv = 1.0 / np.maximum(vs[0][2], vs[1][2])
+        sc = np.sqrt(inv)
+        (xi, yi, _), (xj, yj, _) = vs
+        out[sl] = _pair_value((xi * sc, yi * sc), (xj * sc, yj * sc), u2 * inv)
+    return out
+
+
+def _control_basis(controls) -> np.ndarray:
+    """Monomials ``1, ux, uy, ux^2, ux uy, uy^2`` of each control, ``(6, K)``."""
+    ux, uy = controls[:, 0], controls[:, 1]
+    return np.stack([np.ones_like(ux), ux, uy, ux * ux, ux * uy, uy * uy])
+
+
+def _adversary_moves(eval_ps, o, controls, basis=None, barred=None) -> np.ndarray:
+    """Index of the control each run's adversary takes: the first minimiser of
+    :func:`target_objective` (its exact values, bit for bit), ``(R,)``.
+
+    With ``a = o - p_i``, ``b = o - p_j`` and the rows ``a + u``, ``b + u``, ``u`` of the matrix
+    ``M``, the three 2 x 2 minors of ``M`` are affine in ``u`` (``a x b + (a - b) x u``,
+    ``a x u``, ``b x u``), so ``det(M^T M)`` (their sum of squares, Cauchy-Binet) and
+    ``tr(M^T M)`` are quadratics in ``u``: one matrix product with the monomials of the controls
+    (:func:`_control_basis`) gives both for all runs and controls. ``C^{-1}(M)`` is an
+    increasing function of ``t = 4 det / tr^2`` (``C^{-2} = l_min / l_max`` and
+    ``t = 4 l_min l_max / (l_min + l_max)^2``), so the controls whose ``det / tr^2`` is within
+    ``1e-11`` of the run's minimum contain the exact minimiser (the screen's rounding error is
+    some 1e-15). Those few candidates (usually one) are evaluated with
+    :func:`target_objective`'s own arithmetic and the first exact minimiser is taken, so the
+    pick equals ``argmin`` of :func:`target_objective` over the whole set (tests check it).
+
+    ``barred`` (``(R, K)``, 0 or inf, optional) removes controls from a run's set: runs with
+    different control sets share one call with the union of the sets, each run's own set a
+    contiguous block of it in its own order.
+    """
+    if basis is None:
+        basis = _control_basis(controls)
+    R_ = o.shape[0]
+    ax, ay = o[:, 0] - eval_ps[:, 0, 0], o[:, 1] - eval_ps[:, 0, 1]
+    bx, by = o[:, 0] - eval_ps[:, 1, 0], o[:, 1] - eval_ps[:, 1, 1]
+    # minors as w0 + wx ux + wy uy: (a x b + (a - b) x u), (a x u), (b x u)
+    w0 = np.stack([ax * by - ay * bx, np.zeros(R_), np.zeros(R_)])
+    wx = np.stack([by - ay, -ay, -by])
+    wy = np.stack([ax - bx, ax, bx])
+    coef = np.empty((2 * R_, 6))
+    coef[:R_, 0] = (w0 * w0).sum(axis=0)
+    coef[:R_, 1] = 2 * (w0 * wx).sum(axis=0)
+    coef[:R_, 2] = 2 * (w0 * wy).sum(axis=0)
+    coef[:R_, 3] = (wx * wx).sum(axis=0)
+    coef[:R_, 4] = 2 * (wx * wy).sum(axis=0)
+    coef[:R_, 5] = (wy * wy).sum(axis=0)
+    coef[R_:, 0] = ax * ax + ay * ay + bx * bx + by * by
+    coef[R_:, 1] = 2 * (ax + bx)
+    coef[R_:, 2] = 2 * (ay + by)
+    coef[R_:, 3] = 3.0
+    coef[R_:, 4] = 0.0
+    coef[R_:, 5] = 3.0
+    dt = coef @ basis  # (2R, K): det and trace
+    q = dt[:R_]
+    q /= dt[R_:] * dt[R_:]
+    if barred is not None:
+        q += barred  # 0 or inf
+    ar = np.arange(R_)
+    ks = q.argmin(axis=1)  # the first screened minimum
+    m = q[ar, ks]
+    q[ar, ks] = np.inf
+    near = q.min(axis=1) <= m + 1e-11  # another control within the screen's margin
+    if not near.any():
+        return ks
+    q[ar, ks] = m
+    amb = np.flatnonzero(near)
+    rows, kk = np.nonzero(q[amb] <= m[amb, None] + 1e-11)
+    rows = amb[rows]
+    nxt = o[rows] + controls[kk]
+    stack = np.concatenate([nxt[:, None, :] - eval_ps[rows], controls[kk][:, None, :]], axis=1)
+    exact = _inverse_condition(stack)
+    order = np.lexsort((kk, exact, rows))  # by run, then value, then control index
+    first = np.ones(order.size, dtype=bool)
+    first[1:] = rows[order][1:] != rows[order][:-1]
+    ks[rows[order[first]]] = kk[order[first]]
+    return ks
+
+
+def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
+              barred=None) -> dict:
+    """The batch engine: ``R`` runs of one shared setup, each with its own pair candidates
+    (``cand``, ``(R, P)``), metric (``maha``) and adversary (``nextpair``), and noise table.
+    An adversary's controls are ``controls`` (default: the setup's) less each run's ``barred``
+    ones (see :func:`_adversary_moves`).
+
+    Run ``r`` uses the noise table ``tables[r % B]``. Per step, in the order of
+    :func:`simulate`: choose and log, predict ``P + Q``, measure the true position with the
+    chosen pair, update with the EKF's gain and the Joseph form
+    ``P = (I - K H) P (I - K H)^T + K R K^T`` (filterpy's equations, written out for 2 x 2
+    matrices), choose the next pair, move the target.
+    """
+    R_ = cand.shape[0]
+    B, steps, n = tables.shape  # run r uses table r % B
+    s = setup.sensor_array
+    sx, sy = s[:, 0].copy(), s[:, 1].copy()
+    ii, jj = _pair_index(n)
+    (q00, q01), (q10, q11) = setup.Q
+    (r00, r01), (r10, r11) = setup.R
+    q_diag = q01 == 0 and q10 == 0
+    r_diag = r01 == 0 and r10 == 0
+    # the logs are kept step-major ((steps, R) rows written contiguously), transposed at the end
+    noise = np.ascontiguousarray(tables.transpose(1, 0, 2)).reshape(steps, B * n)
+    rows_n = (np.arange(R_) % B) * n
+
+    xx = np.full(R_, float(setup.estimate0[0]))
+    xy = np.full(R_, float(setup.estimate0[1]))
+    (c00, c01), (c10, c11) = setup.cov0
+    p00, p01, p10, p11 = (np.full(R_, float(c)) for c in (c00, c01, c10, c11))
+    circle = setup.motion == "circle"
+    if circle:
+        path = circle_truth(setup)  # (steps + 1, 2), the same for every run
+    else:
+        truth = np.empty((steps + 1, R_, 2))
+        truth[0] = setup.start
+        if controls is None:
+            controls = setup.control_array
+        basis = _control_basis(controls)
+        anynext = bool(nextpair.any())
+
+    best_log = np.empty((steps, R_), dtype=int)
+    bound = np.empty((steps, R_))
+    est = np.empty((steps, 2, R_))
+    cov = np.empty((steps, 4, R_))
+
+    chooser = _PairChooser(s, cand, maha, setup.u_max**2)
+    best, b = chooser(xx, xy, p00, p01, p10, p11)
+    for k in range(steps):
+        best_log[k] = best
+        bound[k] = b
+        est[k, 0], est[k, 1] = xx, xy
+        cov[k, 0], cov[k, 1], cov[k, 2], cov[k, 3] = p00, p01, p10, p11
+        i0, i1 = ii[best], jj[best]
+        # measure the true o_k with the pair: z = 1/2 ||p - o||^2 + n
+        if circle:
+            ox, oy = path[k]
+        else:
+            ox, oy = truth[k, :, 0], truth[k, :, 1]
+        s0x, s0y, s1x, s1y = sx[i0], sy[i0], sx[i1], sy[i1]
+        d0x, d0y, d1x, d1y = s0x - ox, s0y - oy, s1x - ox, s1y - oy
+        z0 = 0.5 * (d0x * d0x + d0y * d0y) + noise[k].take(rows_n + i0)
+        z1 = 0.5 * (d1x * d1x + d1y * d1y) + noise[k].take(rows_n + i1)
+        # predict: F = I (adding a zero entry of Q is skipped: x + 0 = x)
+        pp00, pp11 = p00 + q00, p11 + q11
+        pp01, pp10 = (p01, p10) if q_diag else (p01 + q01, p10 + q10)
+        # Jacobian rows H_m = (xhat - p_m)^T and the predicted measurement
+        h0x, h0y, h1x, h1y = xx - s0x, xy - s0y, xx - s1x, xy - s1y
+        y0 = z0 - 0.5 * (h0x * h0x + h0y * h0y)
+        y1 = z1 - 0.5 * (h1x * h1x + h1y * h1y)
+        # P H^T, S = H P H^T + R, K = P H^T S^-1
+        a00, a10 = pp00 * h0x + pp01 * h0y, pp10 * h0x + pp11 * h0y
+        a01, a11 = pp00 * h1x + pp01 * h1y, pp10 * h1x + pp11 * h1y
+        s00 = h0x * a00 + h0y * a10 + r00
+        s01 = h0x * a01 + h0y * a11
+        s10 = h1x * a00 + h1y * a10
+        s11 = h1x * a01 + h1y * a11 + r11
+        if not r_diag:
+            s01, s10 = s01 + r01, s10 + r10
+        det = s00 * s11 - s01 * s10
+        i00, i01, i10, i11 = s11 / det, -s01 / det, -s10 / det, s00 / det
+        k00, k01 = a00 * i00 + a01 * i10, a00 * i01 + a01 * i11
+        k10, k11 = a10 * i00 + a11 * i10, a10 * i01 + a11 * i11
+        xx = xx + (k00 * y0 + k01 * y1)
+        xy = xy + (k10 * y0 + k11 * y1)
+        # Joseph form with A = I - K H
+        A00 = 1.0 - (k00 * h0x + k01 * h1x)
+        A01 = -(k00 * h0y + k01 * h1y)
+        A10 = -(k10 * h0x + k11 * h1x)
+        A11 = 1.0 - (k10 * h0y + k11 * h1y)
+        b00, b01 = A00 * pp00 + A01 * pp10, A00 * pp01 + A01 * pp11
+        b10, b11 = A10 * pp00 + A11 * pp10, A10 * pp01 + A11 * pp11
+        if r_diag:  # K R with R diagonal (the zero products are exact zeros)
+            e00, e01, e10, e11 = k00 * r00, k01 * r11, k10 * r00, k11 * r11
+        else:
+            e00, e01 = k00 * r00 + k01 * r10, k00 * r01 + k01 * r11
+            e10, e11 = k10 * r00 + k11 * r10, k10 * r01 + k11 * r11
+        p00 = (b00 * A00 + b01 * A01) + (e00 * k00 + e01 * k01)
+        p01 = (b00 * A10 + b01 * A11) + (e00 * k10 + e01 * k11)
+        p10 = (b10 * A00 + b11 * A01) + (e10 * k00 + e11 * k01)
+        p11 = (b10 * A10 + b11 * A11) + (e10 * k10 + e11 * k11)
+        # the next choice depends only on the posterior (a "next-pair" adversary may know it)
+        best, b = chooser(xx, xy, p00, p01, p10, p11)
+        if not circle:
+            eval_ps = s[np.stack([i0, i1], axis=1)]
+            if anynext:
+                nxt_ps = s[np.stack([ii[best], jj[best]], axis=1)]
+                eval_ps = np.where(nextpair[:, None, None], nxt_ps, eval_ps)
+            o = truth[k]
+            truth[k + 1] = o + controls[_adversary_moves(eval_ps, o, controls, basis, barred)]
+    pairs = np.stack([ii, jj], axis=1)[best_log.T]  # (R, steps, 2)
+    est = np.ascontiguousarray(est.transpose(2, 0, 1))
+    cov = np.ascontiguousarray(cov.transpose(2, 0, 1)).reshape(R_, steps, 2, 2)
+    bound = np.ascontiguousarray(bound.T)
+    if chooser.single.size:
+        bound[chooser.single] = chooser.fixed_bounds(est, cov)
+    next_pair = np.stack([ii[best], jj[best]], axis=1)
+    if circle:  # the same path for every run: read-only broadcast views
+        d = _derived(est, cov, path[None])
+        for name in ("truth", "control", "truth_end"):
+            d[name] = np.broadcast_to(d[name], (R_,) + d[name].shape[1:])
+    else:
+        d = _derived(est, cov, np.ascontiguousarray(truth.transpose(1, 0, 2)))
+    return dict(pairs=pairs, bound=bound, estimate=est, cov=cov, next_pair=next_pair, **d)
+
+
+def simulate_many(arms, seeds=None, noise=None) -> dict:
+    """Several (setup, strategy) arms over the same noise realisations, batched together.
+
+    Every arm runs once per seed (or noise table), with common noise: run ``b`` of every arm
+    uses ``noise_table(setup, seeds[b])``, so it equals ``simulate(setup, strategy,
+    seed=seeds[b])`` (the tests check this to rounding). Arms whose setups differ only in
+    ``metric``, ``anchor``, ``fixed_pair``, ``adversary`` and ``controls`` share one pass of the
+    batch engine (the filter's equations of :func:`simulate` written as NumPy array operations
+    over runs); a run does not depend on the other runs of its pass (bit for bit). Identical
+    arms are run once and share their result; so are fixed-pair arms that differ only in the
+    metric, whose runs are the same (only the logged bound is evaluated with each metric).
+
+    Parameters
+    ----------
+    arms : mapping
+        ``{name: (setup, strategy)}``.
+    seeds : iterable of int, optional
+    noise : array_like, shape (B, steps, N), optional
+        Explicit noise tables instead of seeds.
+
+    Returns
+    -------
+    dict
+        ``{name: BatchResult}`` in the order of ``arms``.
+    """
+    arms = dict(arms)
+    if not arms:
+        raise ValueError("no arms to run")
+    for name, arm in arms.items():
+        try:
+            setup, strategy = arm
+        except (TypeError, ValueError):
+            raise ValueError(f"arm {name!r} must be a (setup, strategy) pair") from None
+        if not isinstance(setup, TrackingSetup):
+            raise ValueError(
+                f"arm {name!r}: setup must be a TrackingSetup, got {type(setup).__name__}"
+            )
+        if strategy not in STRATEGIES:
+            raise ValueError(f"unknown strategy {strategy!r}; known: {STRATEGIES}")
+    if (seeds is None) == (noise is None):
+        raise ValueError("give either seeds or noise tables")
+    if noise is None:
+        seeds = tuple(int(x) for x in seeds)
+        if not seeds:
+            raise ValueError("seeds is empty")
+    else:
+        given = np.asarray(noise, dtype=float)
+        if given.ndim != 3:
+            raise ValueError(f"noise must have shape (B, steps, N), got {given.shape}")
+        seeds = ()
+
+    # identical runs are computed once (a fixed pair's run does not depend on the metric, only
+    # its logged bound does); arms differing only in _ROW_FIELDS share a pass
+    def run_key(arm):
+        setup, strategy = arm
+        if strategy == "fixed-pair" and setup.metric != "mahalanobis":
+            return setup.replace(metric="mahalanobis"), strategy
+        return arm
+
+    first: dict = {}
+    for name, arm in arms.items():
+        first.setdefault(run_key(arm), name)
+    groups: dict = {}
+    for name in first.values():
+        setup = arms[name][0]
+        key = tuple(getattr(setup, f.name) for f in dataclasses.fields(setup)
+                    if f.name not in _ROW_FIELDS)
+        groups.setdefault(key, []).append(name)
+    drawn: dict = {}
+    out = {}
+    for names in groups.values():
+        base = arms[names[0]][0]
+        if seeds:
+            tkey = (base.steps, base.n_sensors, base.noise_std)
+            if tkey not in drawn:
+                drawn[tkey] = np.stack([noise_table(base, x) for x in seeds])
+            tables = drawn[tkey]
+        else:
+            tables = np.stack([_check_noise(base, t) for t in given])
+        B = tables.shape[0]
+        cand = np.concatenate([np.tile(_candidates(*arms[n]), (B, 1)) for n in names])
+        maha = np.repeat([arms[n][0].metric == "mahalanobis" for n in names], B)
+        nxt = np.repeat([arms[n][0].adversary == "next-pair" for n in names], B)
+        controls = barred = None
+        if base.motion == "adversarial":
+            # the union of the arms' control sets, one contiguous block per distinct set
+            sets, block = [], []
+            for n in names:
+                c = arms[n][0].control_array
+                hit = [b for b, x in enumerate(sets) if np.array_equal(x, c)]
+                if not hit:
+                    sets.append(c)
+                block.append(hit[0] if hit else len(sets) - 1)
+            if len(sets) > 1:
+                controls = np.concatenate(sets)
+                edges = np.cumsum([0] + [len(x) for x in sets])
+                barred = np.full((len(names) * B, len(controls)), np.inf)
+                for g, b in enumerate(block):
+                    barred[g * B : (g + 1) * B, edges[b] : edges[b + 1]] = 0.0
+        res = _run_rows(base, cand, maha, nxt, tables, controls, barred)
+        for g, n in enumerate(names):
+            sl = slice(g * B, (g + 1) * B)
+            setup, strategy = arms[n]
+            out[n] = BatchResult(
+                setup=setup, strategy=strategy, seed=None, seeds=seeds, noise=tables,
+                **{k: v[sl] for k, v in res.items()},
+            )
+    result = {}
+    for n, arm in arms.items():
+        ref = first[run_key(arm)]
+        if arm == arms[ref]:
+            result[n] = out[ref]
+            continue
+        # the same run as arm `ref` with the other metric: only the logged bound differs
+        setup, r = arm[0], out[ref]
+        i, j = sorted(setup.fixed_pair)
+        M = r.bound.size
+        s = setup.sensor_array
+        bound = _fixed_pair_bound(
+            s[:, 0].copy(), s[:, 1].copy(), np.full(M, i), np.full(M, j), setup.u_max**2,
+            r.estimate.reshape(-1, 2), r.cov.reshape(-1, 2, 2),
+            np.full(M, setup.metric == "mahalanobis"),
+        ).reshape(r.bound.shape)
+        result[n] = dataclasses.replace(r, setup=setup, bound=bound)
+    return result
 
 
 def simulate_batch(setup: TrackingSetup, strategy: str, seeds=None, noise=None) -> BatchResult:
     """Many runs of one strategy at once: :func:`simulate` vectorised over noise realisations.
 
     The same equations as filterpy's ``predict`` and ``update`` (Joseph form) in the same order,
-    written with batched matrix products, so a run equals ``simulate(setup, strategy, seed=s)``
-    to rounding (checked in the tests).
+    written as NumPy array operations over runs (:func:`simulate_many`), so a run equals
+    ``simulate(setup, strategy, seed=s)`` to rounding (checked in the tests).
 
     Parameters
     ----------
@@ -756,75 +1289,7 @@ def simulate_batch(setup: TrackingSetup, strategy: str, seeds=None, noise=None) 
     """
     if strategy not in STRATEGIES:
         raise ValueError(f"unknown strategy {strategy!r}; known: {STRATEGIES}")
-    if (seeds is None) == (noise is None):
-        raise ValueError("give either seeds or noise tables")
-    if noise is None:
-        seeds = tuple(int(x) for x in seeds)
-        if not seeds:
-            raise ValueError("seeds is empty")
-        tables = np.stack([noise_table(setup, x) for x in seeds])
-    else:
-        tables = np.asarray(noise, dtype=float)
-        if tables.ndim != 3:
-            raise ValueError(f"noise must have shape (B, steps, N), got {tables.shape}")
-        tables = np.stack([_check_noise(setup, t) for t in tables])
-        seeds = ()
-    B = tables.shape[0]
-    steps = setup.steps
-    s = setup.sensor_array
-    Q = np.array(setup.Q)
-    R = np.array(setup.R)
-    eye = np.eye(2)
-    rows = np.arange(B)
-
-    x = np.broadcast_to(np.array(setup.estimate0), (B, 2)).copy()
-    P = np.broadcast_to(np.array(setup.cov0), (B, 2, 2)).copy()
-    circle = setup.motion == "circle"
-    truth = np.empty((B, steps + 1, 2))
-    if circle:
-        truth[:] = circle_truth(setup)[None]
-    else:
-        truth[:, 0] = setup.start
-        controls = setup.control_array
-
-    pairs = np.empty((B, steps, 2), dtype=int)
-    bound = np.empty((B, steps))
-    est = np.empty((B, steps, 2))
-    cov = np.empty((B, steps, 2, 2))
-    pair, b = choose_pairs(setup, strategy, x, P)
-    for k in range(steps):
-        pairs[:, k], bound[:, k] = pair, b
-        est[:, k], cov[:, k] = x, P
-        ps = s[pair]  # (B, 2, 2)
-        o = truth[:, k]
-        z = half_squared_range(o, ps) + tables[rows[:, None], k, pair]
-        Pp = P + Q  # predict: F = I
-        H = range_jacobian(x, ps)
-        HT = np.swapaxes(H, 1, 2)
-        PHT = Pp @ HT
-        S = H @ PHT + R
-        K = PHT @ np.linalg.inv(S)
-        x = x + (K @ (z - half_squared_range(x, ps))[..., None])[..., 0]
-        IKH = eye - K @ H
-        P = IKH @ Pp @ np.swapaxes(IKH, 1, 2) + K @ R @ np.swapaxes(K, 1, 2)
-        pair, b = choose_pairs(setup, strategy, x, P)
-        if not circle:
-            eval_ps = ps if setup.adversary == "current-pair" else s[pair]
-            best = np.argmin(target_objective(eval_ps, o, controls), axis=1)
-            truth[:, k + 1] = o + controls[best]
-    return BatchResult(
-        setup=setup,
-        strategy=strategy,
-        seed=None,
-        seeds=seeds,
-        noise=tables,
-        pairs=pairs,
-        bound=bound,
-        estimate=est,
-        cov=cov,
-        next_pair=pair,
-        **_derived(s, pairs, est, cov, truth),
-    )
+    return simulate_many({strategy: (setup, strategy)}, seeds=seeds, noise=noise)[strategy]
 
 
 def monte_carlo(
@@ -832,13 +1297,13 @@ def monte_carlo(
     n_seeds: int = 100,
     strategies: Iterable[str] = STRATEGIES,
     first_seed: int = 0,
-    batch: int = 100,
+    batch: int = 1000,
 ) -> dict[str, BatchResult]:
     """The strategies over ``n_seeds`` noise realisations, seeds ``first_seed, first_seed + 1, ..``.
 
     Trial ``t`` uses ``noise_table(setup, first_seed + t)`` for every strategy (common noise),
     so trial ``t`` of a strategy equals ``simulate(setup, strategy, seed=first_seed + t)``.
-    Runs are batched ``batch`` seeds at a time (:func:`simulate_batch`).
+    All strategies run together (:func:`simulate_many`), ``batch`` seeds at a time.
 
     Returns
     -------
@@ -847,25 +1312,30 @@ def monte_carlo(
     """
     if int(n_seeds) < 1:
         raise ValueError(f"n_seeds must be at least 1, got {n_seeds}")
+    if int(batch) < 1:
+        raise ValueError(f"batch must be at least 1, got {batch}")
+    strategies = list(strategies)
+    if not strategies:
+        return {}
     seeds = list(range(int(first_seed), int(first_seed) + int(n_seeds)))
-    out = {}
-    for strategy in strategies:
-        parts = [
-            simulate_batch(setup, strategy, seeds=seeds[i : i + batch])
-            for i in range(0, len(seeds), batch)
-        ]
-        out[strategy] = BatchResult(
+    arms = {s: (setup, s) for s in strategies}
+    parts = [simulate_many(arms, seeds=seeds[i : i + batch]) for i in range(0, len(seeds), batch)]
+    if len(parts) == 1:
+        return parts[0]
+    return {
+        s: BatchResult(
             setup=setup,
-            strategy=strategy,
+            strategy=s,
             seed=None,
             seeds=tuple(seeds),
             **{
-                f.name: np.concatenate([getattr(p, f.name) for p in parts])
+                f.name: np.concatenate([getattr(p[s], f.name) for p in parts])
                 for f in dataclasses.fields(TrackingResult)
                 if f.name not in ("setup", "strategy", "seed")
             },
         )
-    return out
+        for s in strategies
+    }
 
 
 # --------------------------------------------------------------------------------------------
@@ -923,12 +1393,32 @@ def compare_strategies(mc: dict, reference: str = "best-pair", skip_first: bool 
     return {"strategies": stats, "wins": wins}
 
 
+def _rank(a: np.ndarray) -> np.ndarray:
+    """Ranks ``1..n`` along the last axis, ties by their average rank (``scipy.stats.rankdata``'s
+    ``"average"`` method; the tests compare the two). A slice with a NaN gets NaN ranks."""
+    a = np.asarray(a, dtype=float)
+    shape = a.shape
+    n = shape[-1] if a.ndim else 1
+    flat = a.reshape(-1, n)
+    m = flat.shape[0]
+    order = np.argsort(flat, axis=1)  # tie order does not matter: ties share one rank
+    srt = np.take_along_axis(flat, order, axis=1)
+    new = np.ones((m, n), dtype=bool)
+    new[:, 1:] = srt[:, 1:] != srt[:, :-1]  # a tie group starts here
+    starts = np.flatnonzero(new.ravel())
+    sizes = np.diff(np.append(starts, m * n))
+    avg = (starts % n) + (sizes + 1) / 2.0  # 1-based average position of each group
+    ranks_sorted = np.repeat(avg, sizes).reshape(m, n)
+    ranks = np.empty_like(ranks_sorted)
+    np.put_along_axis(ranks, order, ranks_sorted, axis=1)
+    ranks[np.isnan(flat).any(axis=1)] = np.nan
+    return ranks.reshape(shape)
+
+
 def spearman(a, b, axis: int = -1) -> np.ndarray:
     """Spearman rank correlation of ``a`` and ``b`` along ``axis`` (ties by average rank)."""
-    from scipy.stats import rankdata
-
-    ra = rankdata(a, axis=axis)
-    rb = rankdata(b, axis=axis)
+    ra = np.moveaxis(_rank(np.moveaxis(np.asarray(a, dtype=float), axis, -1)), -1, axis)
+    rb = np.moveaxis(_rank(np.moveaxis(np.asarray(b, dtype=float), axis, -1)), -1, axis)
     ra = ra - ra.mean(axis=axis, keepdims=True)
     rb = rb - rb.mean(axis=axis, keepdims=True)
     num = (ra * rb).sum(axis=axis)
@@ -1042,6 +1532,7 @@ def entrapment_summary(batch: BatchResult) -> dict:
         smallest ``icn_min``, the mean ``icn_mean``, mean ``switches`` and ``mean_error``, and
         ``runs`` (the list of :class:`Entrapment`).
     """
+    batch.true_icn, batch.objective  # computed once for all runs
     es = [entrapment(batch.run(b)) for b in range(batch.n_runs)]
     return {
         "entrapped": float(np.mean([is_entrapped(e) for e in es])),
@@ -1130,10 +1621,10 @@ def bound_correlation(batch: BatchResult, bound: str = "own", skip_first: bool =
     if bound == "own":
         b = batch.bound
     elif bound == "euclidean":
-        b = np.stack([
-            pair_bound_series(batch.setup, batch.estimate[i], batch.pairs[i])
-            for i in range(batch.n_runs)
-        ])
+        shape = batch.bound.shape
+        b = pair_bound_series(
+            batch.setup, batch.estimate.reshape(-1, 2), batch.pairs.reshape(-1, 2)
+        ).reshape(shape)
     else:
         raise ValueError(f"bound must be 'own' or 'euclidean', got {bound!r}")
     return {
@@ -1182,25 +1673,21 @@ def track_loss(batch: BatchResult, threshold: float = 0.5) -> dict:
     }
 
 
-def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> dict:
-    """Strategy (3) with every partner of the anchor: Monte Carlo means per partner.
+def partner_arms(setup: TrackingSetup) -> dict:
+    """Strategy (3) with each partner ``j`` of the anchor: ``{j: (setup, "fixed-pair")}``, for
+    :func:`simulate_many` (the arms of :func:`partner_study`)."""
+    return {
+        j: (setup.replace(fixed_pair=(setup.anchor, j)), "fixed-pair")
+        for j in range(setup.n_sensors)
+        if j != setup.anchor
+    }
 
-    Checks the paper's choice of ``s_1`` as ``s_2``'s fixed partner ("it gives the best
-    performance amongst all other sensors, on an average, for the circular trajectory").
 
-    Returns
-    -------
-    dict
-        ``{partner: {"mean_bound", "mean_error", "median_error", "mean_trace", "lost"}}`` with
-        ``partner`` 0-based and ``lost`` the fraction of runs of :func:`track_loss`.
-    """
+def partner_summary(runs: dict) -> dict:
+    """Monte Carlo means per partner from the runs of :func:`partner_arms` (see
+    :func:`partner_study`)."""
     out = {}
-    for j in range(setup.n_sensors):
-        if j == setup.anchor:
-            continue
-        r = monte_carlo(
-            setup.replace(fixed_pair=(setup.anchor, j)), n_seeds, ["fixed-pair"], first_seed
-        )["fixed-pair"]
+    for j, r in runs.items():
         run_err = r.error[:, 1:].mean(axis=1)
         out[j] = {
             "mean_bound": float(r.bound[:, 1:].mean()),
@@ -1210,6 +1697,27 @@ def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> di
             "lost": float(track_loss(r)["lost"].mean()),
         }
     return out
+
+
+def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> dict:
+    """Strategy (3) with every partner of the anchor: Monte Carlo means per partner.
+
+    Checks the paper's choice of ``s_1`` as ``s_2``'s fixed partner ("it gives the best
+    performance amongst all other sensors, on an average, for the circular trajectory"). All
+    partners run over the same seeds in one batched pass (:func:`partner_arms`,
+    :func:`simulate_many`); partner ``j`` equals ``monte_carlo(setup.replace(fixed_pair=(anchor,
+    j)), n_seeds, ["fixed-pair"], first_seed)``.
+
+    Returns
+    -------
+    dict
+        ``{partner: {"mean_bound", "mean_error", "median_error", "mean_trace", "lost"}}`` with
+        ``partner`` 0-based and ``lost`` the fraction of runs of :func:`track_loss`.
+    """
+    if int(n_seeds) < 1:
+        raise ValueError(f"n_seeds must be at least 1, got {n_seeds}")
+    seeds = range(int(first_seed), int(first_seed) + int(n_seeds))
+    return partner_summary(simulate_many(partner_arms(setup), seeds=seeds))
 
 
 # --------------------------------------------------------------------------------------------
@@ -1228,6 +1736,15 @@ def cov_ellipse(mean, cov, chi2: float = CHI2_2DOF_9973, n: int = 100) -> np.nda
     return np.asarray(mean, dtype=float) + (circle * np.sqrt(chi2 * np.clip(w, 0, None))) @ v.T
 
 
+_SUBSCRIPT = str.maketrans("0123456789", "".join(chr(0x2080 + d) for d in range(10)))
+
+
+def sensor_label(i: int) -> str:
+    """``"s"`` with the 1-based index of sensor ``i`` (0-based) as Unicode subscript digits:
+    the figures' sensor names, plain text (no mathtext to parse)."""
+    return "s" + str(int(i) + 1).translate(_SUBSCRIPT)
+
+
 def draw_snapshot(ax, result: TrackingResult, k: int, *, legend: bool = True, ellipse_scale=1.0):
     """Draw step ``k`` (1-based) of a run as in Fig. 4 on ``ax``.
 
@@ -1239,31 +1756,127 @@ def draw_snapshot(ax, result: TrackingResult, k: int, *, legend: bool = True, el
     s = result.setup.sensor_array
     ax.plot(*s.T, "^", color="tab:blue", ms=8, label="sensors")
     for n, p in enumerate(s):
-        ax.annotate(f"$s_{{{n + 1}}}$", p, textcoords="offset points", xytext=(4, 4), fontsize=8)
+        ax.annotate(sensor_label(n), p, textcoords="offset points", xytext=(4, 4), fontsize=8)
     for j in result.pairs[i]:
         ax.plot(*np.array([s[j], result.estimate[i]]).T, "-", color="tab:green", lw=1)
     ax.plot(*result.truth[: i + 1].T, "-", color="0.6", lw=1, label="true path")
-    ax.plot(*result.truth[i], "o", color="k", ms=5, label="target $o_k$")
-    ax.plot(*result.estimate[i], "x", color="tab:red", ms=7, label=r"estimate $\hat o_k$")
+    ax.plot(*result.truth[i], "o", color="k", ms=5, label="target o\u2096")
+    ax.plot(*result.estimate[i], "x", color="tab:red", ms=7, label="estimate \u00f4\u2096")
     e = cov_ellipse(result.estimate[i], ellipse_scale**2 * result.cov[i])
     ax.plot(*e.T, "-", color="tab:red", lw=1, label="99.73 % ellipse")
     ax.set_aspect("equal")
-    i0, j0 = result.pairs[i] + 1
-    ax.set_title(f"k = {k}, pair ($s_{{{i0}}}$, $s_{{{j0}}}$)", fontsize=9)
+    i0, j0 = result.pairs[i]
+    ax.set_title(f"k = {k}, pair ({sensor_label(i0)}, {sensor_label(j0)})", fontsize=9)
     if legend:
         ax.legend(fontsize=6, loc="lower left")
     return ax
 
 
-def animate(result: TrackingResult, every: int = 3, dpi: int = 50, figsize=(4.0, 4.0), interval=80):
-    """A :class:`matplotlib.animation.FuncAnimation` of a run: every ``every``-th step and the last.
+class RunAnimation:
+    """An animation of a tracking run (:func:`animate`), rendered by blitting.
 
-    Each frame shows what :func:`draw_snapshot` draws (Fig. 4), updating persistent artists.
-    Show it in a notebook with ``IPython.display.HTML(anim.to_jshtml())``; the figure is closed
-    so that it is not also shown as a still.
+    The static part (axes, sensors, labels) is drawn once; each frame restores it and draws only
+    the moving artists (chosen pair, true path, target, estimate, ellipse, caption), then keeps
+    the canvas as a PNG. :meth:`to_jshtml` wraps the frames in matplotlib's JavaScript player
+    (:class:`matplotlib.animation.HTMLWriter`), like ``FuncAnimation.to_jshtml``;
+    :meth:`func_animation` gives a :class:`matplotlib.animation.FuncAnimation` of the same frames
+    for other writers.
+
+    Attributes
+    ----------
+    fig : matplotlib.figure.Figure
+        The (closed) figure.
+    frames : list of int
+        The steps shown (1-based).
+    interval : float
+        Milliseconds per frame.
+    """
+
+    def __init__(self, fig, update, artists, frames, interval):
+        self.fig = fig
+        self.frames = list(frames)
+        self.interval = float(interval)
+        self._update = update
+        self._artists = tuple(artists)
+        self._html = None
+
+    def draw(self, k: int):
+        """Set the moving artists to step ``k``; returns them."""
+        self._update(k)
+        return self._artists
+
+    def png_frames(self) -> list:
+        """Every frame as PNG bytes (blitting on an Agg canvas)."""
+        from io import BytesIO
+
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from PIL import Image
+
+        canvas = FigureCanvasAgg(self.fig)
+        for a in self._artists:
+            a.set_animated(True)
+        canvas.draw()  # everything but the moving artists
+        background = canvas.copy_from_bbox(self.fig.bbox)
+        out = []
+        for k in self.frames:
+            self.draw(k)
+            canvas.restore_region(background)
+            for a in self._artists:
+                self.fig.draw_artist(a)
+            w, h = canvas.get_width_height(physical=True)
+            img = Image.frombuffer("RGBA", (w, h), canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
+            f = BytesIO()
+            img.convert("RGB").save(f, format="png", compress_level=3)  # the figure is opaque
+            out.append(f.getvalue())
+        return out
+
+    def to_jshtml(self, default_mode: str = "loop") -> str:
+        """HTML/JS player with the frames embedded (matplotlib's ``HTMLWriter`` template)."""
+        if self._html is None:
+            import base64
+            import tempfile
+            from pathlib import Path
+
+            from matplotlib.animation import HTMLWriter
+
+            frames = self.png_frames()
+
+            class _Writer(HTMLWriter):
+                def grab_frame(self, **kwargs):
+                    self._saved_frames.append(base64.encodebytes(frames.pop(0)).decode("ascii"))
+
+            with tempfile.TemporaryDirectory() as tmp:
+                path = Path(tmp, "anim.html")
+                writer = _Writer(fps=1000.0 / self.interval, embed_frames=True,
+                                 default_mode=default_mode)
+                writer.setup(self.fig, path, dpi=self.fig.dpi)
+                for _ in self.frames:
+                    writer.grab_frame()
+                writer.finish()
+                self._html = path.read_text()
+        return self._html
+
+    def _repr_html_(self):
+        return self.to_jshtml()
+
+    def func_animation(self):
+        """The same frames as a :class:`matplotlib.animation.FuncAnimation` (blitted)."""
+        from matplotlib.animation import FuncAnimation
+
+        return FuncAnimation(self.fig, self.draw, frames=self.frames, interval=self.interval,
+                             blit=True)
+
+
+def animate(result: TrackingResult, every: int = 3, dpi: int = 50, figsize=(4.0, 4.0), interval=80):
+    """An animation of a run (:class:`RunAnimation`): every ``every``-th step and the last.
+
+    Each frame shows what :func:`draw_snapshot` draws (Fig. 4): sensors, the chosen pair's lines
+    to the estimate, the true path so far and the target, the estimate and its 99.73 %
+    covariance ellipse, and the step and pair as a caption. Show it in a notebook with
+    ``IPython.display.HTML(animation_html(anim))``; the figure is closed so that it is not also
+    shown as a still.
     """
     import matplotlib.pyplot as plt
-    from matplotlib.animation import FuncAnimation
 
     if int(every) < 1:
         raise ValueError(f"every must be at least 1, got {every}")
@@ -1276,13 +1889,13 @@ def animate(result: TrackingResult, every: int = 3, dpi: int = 50, figsize=(4.0,
     ax.set_aspect("equal")
     ax.plot(*s.T, "^", color="tab:blue", ms=7)
     for n, p in enumerate(s):
-        ax.annotate(f"$s_{{{n + 1}}}$", p, textcoords="offset points", xytext=(4, 4), fontsize=8)
+        ax.annotate(sensor_label(n), p, textcoords="offset points", xytext=(4, 4), fontsize=8)
     (links,) = ax.plot([], [], "-", color="tab:green", lw=1)
     (path,) = ax.plot([], [], "-", color="0.6", lw=1)
     (target,) = ax.plot([], [], "o", color="k", ms=4)
     (est,) = ax.plot([], [], "x", color="tab:red", ms=6)
     (ell,) = ax.plot([], [], "-", color="tab:red", lw=1)
-    title = ax.set_title("", fontsize=9)
+    title = ax.set_title(" ", fontsize=9)
     frames = list(range(1, result.steps + 1, int(every)))
     if frames[-1] != result.steps:
         frames.append(result.steps)
@@ -1296,18 +1909,16 @@ def animate(result: TrackingResult, every: int = 3, dpi: int = 50, figsize=(4.0,
         target.set_data([result.truth[i, 0]], [result.truth[i, 1]])
         est.set_data([e[0]], [e[1]])
         ell.set_data(*cov_ellipse(e, result.cov[i]).T)
-        i0, j0 = result.pairs[i] + 1
-        # plain text: a mathtext title differs every frame, and parsing it dominated rendering
-        title.set_text(f"k = {k}, pair (s{i0}, s{j0})")
-        return links, path, target, est, ell, title
+        i0, j0 = result.pairs[i]
+        title.set_text(f"k = {k}, pair ({sensor_label(i0)}, {sensor_label(j0)})")
 
-    anim = FuncAnimation(fig, frame, frames=frames, interval=interval, blit=False)
     plt.close(fig)
-    return anim
+    return RunAnimation(fig, frame, (links, path, target, est, ell, title), frames, interval)
 
 
 def animation_html(anim, uid: str = "anim") -> str:
-    """Self-contained, stable HTML/JS for a matplotlib animation (``anim.to_jshtml()``).
+    """Self-contained, stable HTML/JS for an animation (``anim.to_jshtml()``): a
+    :class:`RunAnimation` or a matplotlib animation.
 
     ``to_jshtml`` names its elements with a random id and links Font Awesome from a CDN for its
     buttons. The id is replaced by ``uid`` so the stored notebook does not change from run to

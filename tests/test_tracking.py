@@ -435,3 +435,212 @@ def test_runs_stay_well_formed(seed, strategy, metric, u_max):
     assert (r.trace_cov > 0).all()
     assert (np.linalg.eigvalsh(r.cov) > 0).all()
     assert (r.pairs[:, 0] != r.pairs[:, 1]).all()
+
+
+# --------------------------------------------------------------------------------------------
+# The batch engine's building blocks against the straightforward computations
+# --------------------------------------------------------------------------------------------
+
+
+def random_states(rng, n, spread=3.0):
+    """Estimates around the paper's scene and random SPD covariances."""
+    x = rng.normal([2.0, 2.0], spread, size=(n, 2))
+    A = rng.normal(size=(n, 2, 2))
+    cov = A @ np.swapaxes(A, 1, 2) + 0.05 * np.eye(2)
+    return x, cov
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_batch_pair_chooser_equals_pair_bounds_and_brute_force(seed):
+    """_PairChooser (no per-step validation, only the candidates' pairs) against
+    obslib.pair_bounds and the argmax over each strategy's candidates."""
+    rng = np.random.default_rng(seed)
+    setup = CIRCLE
+    s = setup.sensor_array
+    ii, jj = np.triu_indices(s.shape[0], 1)
+    n = 300
+    x, cov = random_states(rng, n)
+    strategies = rng.choice(tr.STRATEGIES, n)
+    maha = rng.random(n) < 0.5
+    anchors = rng.integers(0, 6, n)
+    fixed = [tuple(rng.choice(6, 2, replace=False)) for _ in range(n)]
+    setups = [
+        setup.replace(anchor=int(a), fixed_pair=f, metric="mahalanobis" if m else "euclidean")
+        for a, f, m in zip(anchors, fixed, maha)
+    ]
+    cand = np.stack([tr._candidates(su, st_) for su, st_ in zip(setups, strategies)])
+    ch = tr._PairChooser(s, cand, maha, setup.u_max**2)
+    best, bound = ch(x[:, 0], x[:, 1], cov[:, 0, 0], cov[:, 0, 1], cov[:, 1, 0], cov[:, 1, 1])
+    Wm = ob.pair_bounds(s, x, setup.u_max, cov=cov)[ii, jj]  # (P, n)
+    We = ob.pair_bounds(s, x, setup.u_max)[ii, jj]
+    W = np.where(maha, Wm, We)
+    multi = cand.sum(axis=1) > 1
+    for r in range(n):
+        c = np.flatnonzero(cand[r])
+        if not multi[r]:
+            assert best[r] == c[0] and np.isnan(bound[r])  # fixed pair: bound filled in later
+            continue
+        vals = W[c, r]
+        want = c[int(np.argmax(vals))]
+        top2 = np.sort(vals)[-2:]
+        if top2[1] - top2[0] > 1e-12:
+            assert best[r] == want
+        assert bound[r] == pytest.approx(W[best[r], r], rel=1e-13, abs=1e-15)
+        assert W[best[r], r] >= vals.max() - 1e-13
+    # the fixed pairs' bound over whole "runs" (here: runs of one step)
+    fb = ch.fixed_bounds(x[:, None, :], cov[:, None])
+    single = np.flatnonzero(~multi)
+    np.testing.assert_allclose(fb[:, 0], W[best[single], single], rtol=1e-13, atol=1e-15)
+
+
+def test_batch_pair_chooser_rejects_an_estimate_on_a_sensor():
+    s = CIRCLE.sensor_array
+    cand = np.ones((1, 15), bool)
+    ch = tr._PairChooser(s, cand, np.array([True]), 9.0)
+    one, zero = np.ones(1), np.zeros(1)
+    with pytest.raises(ValueError, match="sits on a sensor"):
+        ch(s[2:3, 0].copy(), s[2:3, 1].copy(), one, zero, zero, one)
+    with pytest.raises(ValueError, match="not finite"):
+        ch(np.array([np.nan]), one, one, zero, zero, one)
+
+
+@pytest.mark.parametrize("controls", ["paper", "disc"])
+def test_adversary_moves_equal_argmin_of_target_objective(controls):
+    """The screened pick is exactly the first minimiser of target_objective, also where the
+    target stands on a pair's baseline (C^-1 = 0 for several controls) or ties by symmetry."""
+    rng = np.random.default_rng(3)
+    s = CIRCLE.sensor_array
+    u = tr.paper_controls(0.1) if controls == "paper" else tr.disc_controls(0.1, 10, 180)
+    n = 400
+    pairs = np.array([rng.choice(6, 2, replace=False) for _ in range(n)])
+    ps = s[pairs]
+    o = rng.normal([2.0, 2.0], 2.5, size=(n, 2))
+    t = rng.random(n // 4)[:, None]  # on the baseline between (or beyond) the two sensors
+    o[: n // 4] = ps[: n // 4, 0] + (2 * t - 0.5) * (ps[: n // 4, 1] - ps[: n // 4, 0])
+    mid = 0.5 * (ps[n // 4 : n // 2, 0] + ps[n // 4 : n // 2, 1])  # symmetric positions
+    o[n // 4 : n // 2] = mid
+    got = tr._adversary_moves(ps, o, u)
+    want = np.argmin(tr.target_objective(ps, o, u), axis=1)
+    np.testing.assert_array_equal(got, want)
+
+
+def test_simulate_many_runs_do_not_depend_on_the_company():
+    """A run of the batch engine is the same, bit for bit, alone or batched with other arms,
+    and identical arms are computed once."""
+    setup = CIRCLE.replace(steps=60)
+    eu = setup.replace(metric="euclidean")
+    arms = {s: (setup, s) for s in tr.STRATEGIES}
+    arms.update({("eu", s): (eu, s) for s in tr.STRATEGIES})
+    arms.update({("partner", j): a for j, a in tr.partner_arms(setup).items()})
+    many = tr.simulate_many(arms, seeds=[4, 5, 6])
+    assert many[("partner", 0)] is many["fixed-pair"]  # the same arm: fixed pair (s2, s1)
+    for key, (su, s) in arms.items():
+        alone = tr.simulate_batch(su, s, seeds=[4, 5, 6])
+        for f in ("pairs", "bound", "estimate", "cov", "truth", "true_icn", "objective"):
+            np.testing.assert_array_equal(getattr(many[key], f), getattr(alone, f), err_msg=f)
+    mc = tr.monte_carlo(setup, 3, first_seed=4, batch=2)
+    for s in tr.STRATEGIES:
+        for f in ("pairs", "bound", "estimate", "cov", "error", "trace_cov"):
+            np.testing.assert_array_equal(getattr(mc[s], f), getattr(many[s], f), err_msg=f)
+
+
+def test_simulate_many_adversaries_equal_filterpy_runs():
+    """Arms with different adversaries and control sets in one call, against simulate."""
+    setup = ADV.replace(steps=80)
+    variants = tr.adversary_variants(setup, 3, 24)
+    many = tr.simulate_many({k: (v, "best-pair") for k, v in variants.items()}, seeds=[1, 2])
+    for k, v in variants.items():
+        alone = tr.simulate_batch(v, "best-pair", seeds=[1, 2])
+        for f in ("pairs", "truth", "estimate", "cov", "bound"):  # the company does not matter
+            np.testing.assert_array_equal(getattr(many[k], f), getattr(alone, f), err_msg=f)
+        for b, seed in enumerate([1, 2]):
+            r = tr.simulate(v, "best-pair", seed=seed)
+            np.testing.assert_array_equal(many[k].pairs[b], r.pairs)
+            np.testing.assert_allclose(many[k].truth[b], r.truth, rtol=0, atol=1e-9)
+            np.testing.assert_allclose(many[k].estimate[b], r.estimate, rtol=0, atol=1e-9)
+            np.testing.assert_allclose(many[k].objective[b], r.objective, rtol=0, atol=1e-9)
+
+
+def test_partner_study_equals_one_monte_carlo_per_partner():
+    setup = CIRCLE.replace(steps=50)
+    ps = tr.partner_study(setup, 3, first_seed=2)
+    assert sorted(ps) == [0, 2, 3, 4, 5]
+    for j, d in ps.items():
+        r = tr.monte_carlo(setup.replace(fixed_pair=(1, j)), 3, ["fixed-pair"], 2)["fixed-pair"]
+        run_err = r.error[:, 1:].mean(axis=1)
+        assert d["mean_error"] == pytest.approx(run_err.mean(), rel=1e-12)
+        assert d["mean_trace"] == pytest.approx(r.trace_cov[:, 1:].mean(), rel=1e-12)
+        assert d["mean_bound"] == pytest.approx(r.bound[:, 1:].mean(), rel=1e-12)
+
+
+def test_lazy_icn_of_a_run_equals_the_batch():
+    b = tr.simulate_batch(ADV.replace(steps=30), "best-pair", seeds=[0, 1])
+    r = b.run(1)
+    fresh = tr.TrackingResult(**{
+        f: getattr(r, f) for f in r.__dataclass_fields__
+    })
+    np.testing.assert_array_equal(fresh.true_icn, b.true_icn[1])
+    np.testing.assert_array_equal(fresh.objective, b.objective[1])
+    s = ADV.sensor_array
+    k = 7
+    want = ob.inverse_condition_number(s[r.pairs[k]], r.truth[k], r.control[k - 1])
+    assert r.true_icn[k] == pytest.approx(want, abs=1e-12)
+
+
+def test_simulate_many_bad_arguments_raise():
+    with pytest.raises(ValueError, match="no arms"):
+        tr.simulate_many({}, seeds=[0])
+    with pytest.raises(ValueError, match="unknown strategy"):
+        tr.simulate_many({"a": (CIRCLE, "random")}, seeds=[0])
+    with pytest.raises(ValueError, match="TrackingSetup"):
+        tr.simulate_many({"a": ("setup", "best-pair")}, seeds=[0])
+    with pytest.raises(ValueError, match="either seeds or noise"):
+        tr.simulate_many({"a": (CIRCLE, "best-pair")})
+    with pytest.raises(ValueError, match="seeds is empty"):
+        tr.simulate_many({"a": (CIRCLE, "best-pair")}, seeds=[])
+    with pytest.raises(ValueError, match="shape"):
+        tr.simulate_many({"a": (CIRCLE, "best-pair")}, noise=np.zeros((1, 10, 6)))
+
+
+def test_pair_bound_series_equals_pair_bounds():
+    rng = np.random.default_rng(5)
+    x, cov = random_states(rng, 50)
+    pairs = np.array([sorted(rng.choice(6, 2, replace=False)) for _ in range(50)])
+    s = CIRCLE.sensor_array
+    for c in (None, cov):
+        W = ob.pair_bounds(s, x, CIRCLE.u_max, cov=c)
+        want = W[pairs[:, 0], pairs[:, 1], np.arange(50)]
+        got = tr.pair_bound_series(CIRCLE, x, pairs, cov=c)
+        np.testing.assert_allclose(got, want, rtol=1e-14, atol=0)
+    with pytest.raises(ValueError, match="pairs must be"):
+        tr.pair_bound_series(CIRCLE, x, pairs[:-1])
+
+
+def test_spearman_ranks_equal_scipy():
+    from scipy.stats import rankdata, spearmanr
+
+    rng = np.random.default_rng(2)
+    a = rng.integers(0, 5, (4, 30)).astype(float)  # many ties
+    b = rng.normal(size=(4, 30))
+    for axis in (0, 1):
+        np.testing.assert_array_equal(
+            np.moveaxis(tr._rank(np.moveaxis(a, axis, -1)), -1, axis), rankdata(a, axis=axis)
+        )
+    for i in range(4):
+        assert tr.spearman(a[i], b[i]) == pytest.approx(spearmanr(a[i], b[i])[0], abs=1e-12)
+    assert np.isnan(tr.spearman(np.ones(5), np.arange(5.0)))
+
+
+def test_animation_has_every_frame():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    r = tr.simulate_batch(CIRCLE.replace(steps=20), "best-pair", seeds=[0]).run(0)
+    anim = tr.animate(r, every=6, dpi=30)
+    assert anim.frames == [1, 7, 13, 19, 20]
+    html = tr.animation_html(anim, uid="t")
+    assert html.count("data:image/png;base64") == 5
+    assert 'id="_anim_imgt"' in html and "cdnjs" not in html
+    assert tr.animation_html(tr.animate(r, every=6, dpi=30), uid="t") == html  # deterministic
+    with pytest.raises(ValueError, match="every"):
+        tr.animate(r, every=0)
