@@ -193,9 +193,10 @@ def bench_book() -> dict:
     import nbformat
     from nbformat.v4 import new_code_cell, new_notebook
 
-    from .run import execute, notebooks
+    from .run import execute, notebooks, precompile
 
     nbs = notebooks()
+    precompile()  # as make book does
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         trivial = new_notebook(cells=[new_code_cell("x = 1", metadata={"tags": ["parameters"]}),

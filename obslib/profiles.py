@@ -108,7 +108,7 @@ PROFILES: dict[str, dict[str, dict]] = {
         "09_scaling": {
             "times_file": "../book/data/scaling_times.json",
             "seed": 0,
-            "greedy_sizes": [20, 50, 100, 200, 400, 800, 1600],
+            "greedy_sizes": [20, 50, 100, 200, 400, 800],
             "literal_sizes": [20, 50, 100, 200],
             "relaxed_sizes": [20, 50, 100, 200, 400],
         },

@@ -28,7 +28,7 @@ import time
 from pathlib import Path
 
 __all__ = [
-    "ROOT", "NOTEBOOK_DIR", "RUNS_DIR", "notebooks", "resolve", "execute", "execution_page", "main",
+    "ROOT", "NOTEBOOK_DIR", "RUNS_DIR", "notebooks", "resolve", "precompile", "execute", "execution_page", "main",
 ]
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -106,6 +106,18 @@ def _clean(path: Path) -> None:
     nbformat.write(nb, path)
 
 
+def precompile() -> None:
+    """Byte-compile ``obslib`` once, so that no notebook's kernel compiles it again.
+
+    Python normally caches bytecode on first import; with ``PYTHONDONTWRITEBYTECODE`` set (as on
+    some CI machines) every kernel would recompile the modules it imports. ``compileall`` writes
+    the cache regardless (only for files whose cache is stale).
+    """
+    import compileall
+
+    compileall.compile_dir(str(Path(__file__).resolve().parent), quiet=1)
+
+
 def execute(src: Path, dst: Path, parameters: dict | None = None) -> float:
     """Execute ``src`` into ``dst`` with papermill; return the wall time in seconds.
 
@@ -131,6 +143,12 @@ def execute(src: Path, dst: Path, parameters: dict | None = None) -> float:
         kernel_name=KERNEL,
         progress_bar=False,
         cwd=str(src.parent),
+        # write the result once, at the end (on an error papermill still writes what ran), rather
+        # than the whole notebook again after every cell
+        request_save_on_cell_execute=False,
+        # every output has arrived when the last cell is done; a graceful shutdown only runs the
+        # kernel's exit hooks, and ipykernel sometimes takes seconds to honour it
+        shutdown_kernel="immediate",
     )
     elapsed = time.perf_counter() - t0
     _clean(dst)
@@ -192,6 +210,7 @@ def main(argv=None) -> int:
     if args.profile and overrides:
         label = f"{args.profile}-custom"
     times = {}
+    precompile()
     for nb in paths:
         if args.in_place:
             dst, parameters = nb, {}
