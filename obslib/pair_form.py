@@ -351,8 +351,9 @@ def plot_fig1(
     d_jo = _positive_float("d_jo", d_jo)
     if not (np.isfinite(theta_i) and np.isfinite(theta_j)):
         raise ValueError("theta_i and theta_j must be finite")
-    if ax is None:
-        _, ax = plt.subplots(figsize=(5, 4.4))
+    if ax is None:  # the frame's aspect is always 2 : 1.45, so one written-down layout fits it
+        fig, ax = plt.subplots(figsize=(4.1, 3))
+        fig.subplots_adjust(left=0.024, right=0.976, bottom=0.028, top=0.972)
     pi_ = d_io * np.array([np.cos(theta_i), np.sin(theta_i)])
     pj_ = d_jo * np.array([np.cos(theta_j), np.sin(theta_j)])
     lim = 1.25 * max(d_io, d_jo)
@@ -430,21 +431,26 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     A, T = np.meshgrid(a, t)
     X, Y = A * np.cos(T), A * np.sin(T)
     surfaces = panels == "all"
-    fig = plt.figure(figsize=(11, 8.6) if surfaces else (11, 4.6))
+    if surfaces:  # 3-D panels (a), (c) on the left, contours (b), (d) on the right
+        fig = plt.figure(figsize=(9.55, 8.6))
+        grid = fig.add_gridspec(2, 2, width_ratios=[1, 1.534])
+    else:  # (b) wide, (d) square
+        fig = plt.figure(figsize=(9.65, 4.6))
+        grid = fig.add_gridspec(1, 2, width_ratios=[1.45, 1])
     rows = (
         ("(a)", A, T, r"$\alpha$", r"$\theta_{ji}$"),
         ("(c)", X, Y, r"$\alpha\cos\theta_{ji}$", r"$\alpha\sin\theta_{ji}$"),
     )
     for row, (tag, P, R, xl, yl) in enumerate(rows):
         if surfaces:
-            ax3 = fig.add_subplot(2, 2, 2 * row + 1, projection="3d")
+            ax3 = fig.add_subplot(grid[row, 0], projection="3d")
             ax3.plot_surface(P, R, Z, cmap="viridis", rstride=_even_stride(t.size),
                              cstride=_even_stride(a.size), linewidth=0)
             ax3.set_xlabel(xl)
             ax3.set_ylabel(yl)
             ax3.set_zlabel(r"$\underline{C}^{-1}$")
             ax3.set_title(f"{tag} surface")
-        ax2 = fig.add_subplot(2, 2, 2 * row + 2) if surfaces else fig.add_subplot(1, 2, row + 1)
+        ax2 = fig.add_subplot(grid[row, 1] if surfaces else grid[0, row])
         cs = ax2.contour(P, R, Z, levels=list(levels), cmap="viridis")
         ax2.clabel(cs, fontsize=7, fmt="%.1f")
         ax2.set_xlabel(xl)
@@ -460,7 +466,14 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
                 ax2.plot(pts[:, 0] * np.cos(pts[:, 1]), pts[:, 0] * np.sin(pts[:, 1]), "r*", ms=10)
     if title:
         fig.suptitle(title)
-    fig.tight_layout()
+    # The layout is written down (found once with tight_layout; the 3-D panels' margins by eye):
+    # tight_layout or bbox_inches="tight" would draw the figure once more just to measure it.
+    if surfaces:
+        fig.subplots_adjust(left=0.005, right=0.985, bottom=0.070, top=0.921 if title else 0.955,
+                            wspace=0.266, hspace=0.243)
+    else:
+        fig.subplots_adjust(left=0.067, right=0.986, bottom=0.131, top=0.851 if title else 0.932,
+                            wspace=0.185)
     return fig
 
 
