@@ -74,6 +74,8 @@ __all__ = [
     "TrackingSetup",
     "PAPER_CIRCLE",
     "PAPER_ADVERSARIAL",
+    "TIE_RTOL",
+    "clearly_lower",
     "TrackingResult",
     "BatchResult",
     "paper_controls",
@@ -1343,6 +1345,22 @@ def monte_carlo(
 # --------------------------------------------------------------------------------------------
 
 
+#: Relative difference below which two logged values count as equal when strategies are compared.
+TIE_RTOL = 1e-9
+
+
+def clearly_lower(a, b, rtol: float = TIE_RTOL) -> np.ndarray:
+    """``a < b`` by more than ``rtol`` times the larger magnitude, elementwise.
+
+    Two strategies that pick the same pairs for long enough drive their filters to the same
+    state, equal up to rounding; whether such values compare as exactly equal then depends on the
+    order of floating-point operations (and could differ between engines or machines). Counting
+    only clear differences makes the win fractions independent of that: a tie wins for neither.
+    """
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a < b - rtol * np.maximum(np.abs(a), np.abs(b))
+
+
 def compare_strategies(mc: dict, reference: str = "best-pair", skip_first: bool = True) -> dict:
     """Monte Carlo statistics of Fig. 6: means, spreads and how often ``reference`` wins.
 
@@ -1357,9 +1375,12 @@ def compare_strategies(mc: dict, reference: str = "best-pair", skip_first: bool 
         ``sd_*`` (standard deviation over seeds of the per-run means), ``switches`` (mean pair
         changes per run) and per-step arrays ``step_mean_*`` and ``step_sd_*`` (over seeds).
         Per other strategy: ``error_pointwise`` / ``trace_pointwise``, the fraction of
-        (seed, step) with the reference strictly lower; ``error_stepmean`` / ``trace_stepmean``,
-        the fraction of steps where the reference's Monte Carlo mean is lower; and
-        ``bound_pointwise``, the fraction with the reference's bound strictly higher.
+        (seed, step) with the reference lower; ``error_stepmean`` / ``trace_stepmean``,
+        the fraction of steps where the reference's Monte Carlo mean is lower;
+        ``bound_pointwise``, the fraction with the reference's bound higher; ``run_error`` /
+        ``run_trace``, the fraction of runs with the reference's run mean lower. Lower and higher
+        mean by more than :data:`TIE_RTOL` relatively (:func:`clearly_lower`): ties count for
+        neither.
     """
     steps = next(iter(mc.values())).error.shape[1]
     sl = slice(1, None) if skip_first and steps > 1 else slice(None)
@@ -1382,13 +1403,13 @@ def compare_strategies(mc: dict, reference: str = "best-pair", skip_first: bool 
         e1, e2 = ref.error[:, sl], r.error[:, sl]
         t1, t2 = ref.trace_cov[:, sl], r.trace_cov[:, sl]
         wins[name] = {
-            "error_pointwise": float((e1 < e2).mean()),
-            "trace_pointwise": float((t1 < t2).mean()),
-            "error_stepmean": float((e1.mean(0) < e2.mean(0)).mean()),
-            "trace_stepmean": float((t1.mean(0) < t2.mean(0)).mean()),
-            "bound_pointwise": float((ref.bound[:, sl] > r.bound[:, sl]).mean()),
-            "run_error": float((e1.mean(1) < e2.mean(1)).mean()),
-            "run_trace": float((t1.mean(1) < t2.mean(1)).mean()),
+            "error_pointwise": float(clearly_lower(e1, e2).mean()),
+            "trace_pointwise": float(clearly_lower(t1, t2).mean()),
+            "error_stepmean": float(clearly_lower(e1.mean(0), e2.mean(0)).mean()),
+            "trace_stepmean": float(clearly_lower(t1.mean(0), t2.mean(0)).mean()),
+            "bound_pointwise": float(clearly_lower(r.bound[:, sl], ref.bound[:, sl]).mean()),
+            "run_error": float(clearly_lower(e1.mean(1), e2.mean(1)).mean()),
+            "run_trace": float(clearly_lower(t1.mean(1), t2.mean(1)).mean()),
         }
     return {"strategies": stats, "wins": wins}
 

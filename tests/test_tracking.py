@@ -644,3 +644,14 @@ def test_animation_has_every_frame():
     assert tr.animation_html(tr.animate(r, every=6, dpi=30), uid="t") == html  # deterministic
     with pytest.raises(ValueError, match="every"):
         tr.animate(r, every=0)
+
+
+def test_ties_between_strategies_count_for_neither():
+    a = np.array([1.0, 2.0, 3.0, 0.0])
+    b = np.array([1.0 + 1e-13, 2.5, 3.0 * (1 + 2e-9), 0.0])
+    np.testing.assert_array_equal(tr.clearly_lower(a, b), [False, True, True, False])
+    np.testing.assert_array_equal(tr.clearly_lower(b, a), [False, False, False, False])
+    # a strategy compared with an identical copy of itself wins nowhere
+    mc = tr.monte_carlo(CIRCLE.replace(steps=30), 3, first_seed=0)
+    same = {"best-pair": mc["best-pair"], "best-partner": mc["best-pair"], "fixed-pair": mc["fixed-pair"]}
+    assert all(v == 0.0 for v in tr.compare_strategies(same)["wins"]["best-partner"].values())

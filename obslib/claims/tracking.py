@@ -175,8 +175,8 @@ def _fig6_higher_bound(profile: str) -> Finding:
     p = params(NB5, profile)
     mc = _mc(circle_setup(p), p["n_seeds"], p["seed"])
     b1 = mc["best-pair"].bound[:, 1:]
-    frac = {o: float((b1.mean(0) > mc[o].bound[:, 1:].mean(0)).mean()) for o in tr.STRATEGIES[1:]}
-    point = {o: float((b1 > mc[o].bound[:, 1:]).mean()) for o in tr.STRATEGIES[1:]}
+    frac = {o: float(tr.clearly_lower(mc[o].bound[:, 1:].mean(0), b1.mean(0)).mean()) for o in tr.STRATEGIES[1:]}
+    point = {o: float(tr.clearly_lower(mc[o].bound[:, 1:], b1).mean()) for o in tr.STRATEGIES[1:]}
     avg = {o: bool(b1.mean() > mc[o].bound[:, 1:].mean()) for o in tr.STRATEGIES[1:]}
     if min(frac.values()) >= 0.9:
         status = "reproduced"
