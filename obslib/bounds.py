@@ -49,12 +49,7 @@ def lower_bound(sensors, target, u_max) -> float:
         The bound, in ``[0, 1]``. With fewer than two sensors ``O(o)`` has rank < 2 and the
         bound is 0 (Theorem 2).
     """
-    rows = relative_rows(sensors, target)
-    u = float(as_u_max(u_max))
-    if rows.shape[0] < 2:
-        return 0.0
-    sv = np.linalg.svd(rows, compute_uv=False)
-    return float(sv[-1] / np.sqrt(sv[0] ** 2 + u**2))
+    return float(lower_bounds(relative_rows(sensors, target), float(as_u_max(u_max))))
 
 
 def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
@@ -205,13 +200,7 @@ def worst_case_control(sensors, target, u_max) -> np.ndarray:
     -------
     ndarray, shape (2,)
     """
-    rows = relative_rows(sensors, target)
-    u = float(as_u_max(u_max))
-    w, vecs = np.linalg.eigh(rows.T @ rows)
-    v = vecs[:, -1]
-    if v[0] < 0 or (v[0] == 0 and v[1] < 0):
-        v = -v
-    return u * v
+    return worst_case_controls(relative_rows(sensors, target), float(as_u_max(u_max)))
 
 
 def _stacked_rows(rows) -> np.ndarray:

@@ -92,14 +92,7 @@ def _inverse_condition(stack: np.ndarray) -> np.ndarray:
         top = sv[..., 0]
         with np.errstate(invalid="ignore", divide="ignore"):
             return np.where(top > 0, sv[..., -1] / np.where(top > 0, top, 1.0), 0.0)
-    x, y = stack[..., 0], stack[..., 1]
-    a, b = np.triu_indices(m, 1)
-    cross = x[..., a] * y[..., b] - y[..., a] * x[..., b]
-    det = np.einsum("...k,...k->...", cross, cross)
-    half = 0.5 * np.einsum("...k,...k->...", x, x) + 0.5 * np.einsum("...k,...k->...", y, y)
-    lmax = half + np.sqrt(np.maximum(half * half - det, 0.0))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(lmax > 0, np.sqrt(det) / np.where(lmax > 0, lmax, 1.0), 0.0)
+    return _ratio_from_gram(*_gram_parts(stack))
 
 
 def inverse_condition_number(sensors, target, u=None):
