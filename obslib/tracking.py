@@ -61,7 +61,7 @@ import numpy as np
 
 from ._validate import as_point, as_points, check_distinct, check_spd2
 from .bound_checks import disc_controls
-from .bounds import pair_bounds, relative_vectors
+from .bounds import _pair_kernel, pair_bounds, relative_vectors
 from .observability import _inverse_condition
 
 __all__ = [
@@ -482,29 +482,6 @@ def choose_pairs(setup: TrackingSetup, strategy: str, xhat, cov):
     return pairs, scores[best, np.arange(b)]
 
 
-def _pair_value(vi, vj, u2, squared: bool = False) -> np.ndarray:
-    """Theorem 4's bound from the two rows ``vi``, ``vj`` and ``u2 = u_max^2``.
-
-    ``vi``, ``vj`` are arrays ``(..., 2)`` or pairs ``(x, y)`` of arrays. The eigenvalues of the
-    pair's Gram matrix: ``lmax = (r_i + r_j)/2 + sqrt(((r_i - r_j)/2)^2 + c^2)`` and
-    ``lmin lmax = (v_i x v_j)^2``, so ``bound = sqrt(lmin / (lmax + u2))`` is
-    ``sqrt((v_i x v_j)^2 / ((lmax + u2) lmax))`` (Eq. (9); the arithmetic of
-    :func:`obslib.pair_bounds`). ``squared=True`` returns the square (before the root).
-    """
-    if isinstance(vi, tuple):
-        (xi, yi), (xj, yj) = vi, vj
-    else:
-        xi, yi, xj, yj = vi[..., 0], vi[..., 1], vj[..., 0], vj[..., 1]
-    ri = xi * xi + yi * yi
-    rj = xj * xj + yj * yj
-    cross = xi * yj - yi * xj
-    dot = xi * xj + yi * yj
-    half = (ri - rj) * 0.5
-    lmax = (ri + rj) * 0.5 + np.sqrt(half * half + dot * dot)
-    sq = cross * cross / ((lmax + u2) * lmax)
-    return sq if squared else np.sqrt(sq)
-
-
 def pair_bound_series(setup: TrackingSetup, points, pairs, cov=None) -> np.ndarray:
     """Theorem 4's bound of the given pair at each point: ``W[pairs[k, 0], pairs[k, 1], k]``.
 
@@ -532,7 +509,8 @@ def pair_bound_series(setup: TrackingSetup, points, pairs, cov=None) -> np.ndarr
     v = v / scale[None, :, None]
     u2 = np.broadcast_to(setup.u_max**2, (K,)) / scale**2
     k = np.arange(K)
-    return _pair_value(v[pr[:, 0], k], v[pr[:, 1], k], u2)
+    vi, vj = v[pr[:, 0], k], v[pr[:, 1], k]
+    return _pair_kernel(vi[:, 0], vi[:, 1], vj[:, 0], vj[:, 1], u2)
 
 
 def target_objective(pair_sensors, position, controls) -> np.ndarray:
@@ -828,8 +806,8 @@ class _PairChooser:
     order) and bound. The bound is :func:`obslib.pair_bounds`'s (the tests hold the two to
     rounding): vectors ``xhat - p_i`` (the sign does not matter) rescaled to the Mahalanobis
     length ``d_i^2 = v^T Sigma^-1 v`` where ``maha`` is set, each run's vectors divided by the
-    longest, then :func:`_pair_value` for the run's candidate pairs only. The pick is the first
-    maximum of the squared bound among the candidates in ``(i, j)`` order.
+    longest, then the kernel of :func:`obslib.pair_bounds` for the run's candidate pairs only.
+    The pick is the first maximum among the candidates in ``(i, j)`` order.
 
     Runs with a single candidate (the fixed pair) need no scores to choose, so the call leaves
     their bound out (NaN); :meth:`fixed_bounds` evaluates it afterwards over whole runs at once.
@@ -892,12 +870,10 @@ class _PairChooser:
             vx, vy, u2s = self._vectors(xx[m], xy[m], p00[m], p01[m], p10[m], p11[m],
                                         self.maha_multi)
             for rows, loc, cidx, fi, fj, ar in self.groups:
-                sq = _pair_value(
-                    (vx.take(fi), vy.take(fi)), (vx.take(fj), vy.take(fj)), u2s[loc, None], True
-                )
-                pick = sq.argmax(axis=1)
+                w = _pair_kernel(vx.take(fi), vy.take(fi), vx.take(fj), vy.take(fj), u2s[loc, None])
+                pick = w.argmax(axis=1)
                 self.best[rows] = cidx[ar, pick]
-                self.bound[rows] = np.sqrt(sq[ar, pick])
+                self.bound[rows] = w[ar, pick]
         elif not (np.isfinite(xx).all() and np.isfinite(xy).all()):
             raise ValueError("an estimate is not finite")
         return self.best.copy(), self.bound.copy()
@@ -944,7 +920,7 @@ def _fixed_pair_bound(sx, sy, i, j, u2, x, c, maha) -> np.ndarray:
         inv = 1.0 / np.maximum(vs[0][2], vs[1][2])
         sc = np.sqrt(inv)
         (xi, yi, _), (xj, yj, _) = vs
-        out[sl] = _pair_value((xi * sc, yi * sc), (xj * sc, yj * sc), u2 * inv)
+        out[sl] = _pair_kernel(xi * sc, yi * sc, xj * sc, yj * sc, u2 * inv)
     return out
 
 
