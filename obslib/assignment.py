@@ -453,28 +453,6 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
     return out
 
 
-def _greedy_from_cost(ii, jj, cost) -> PairAssignment:
-    """Algorithm 1 from the ``(L, P)`` weights of the pairs ``(ii, jj)``, ``ii < jj`` in
-    ``numpy.triu_indices`` order: each round the first maximum over ``(pair, target)``, i.e. the
-    smallest ``(i, j, l)`` among equal weights, as :func:`greedy_pair_assignment`. One ``argmax``
-    over the whole array per round, for small instances whose weights are already computed.
-    """
-    w = np.array(cost.T, dtype=float)  # (P, L): C order is (i, j, l) order
-    n_targets = w.shape[1]
-    triples, value = [], 0.0
-    for _ in range(n_targets):
-        flat = int(np.argmax(w))
-        p, l = divmod(flat, n_targets)
-        if w[p, l] == -np.inf:
-            break
-        i, j = int(ii[p]), int(jj[p])
-        triples.append((i, j, l))
-        value += float(w[p, l])
-        w[(ii == i) | (jj == i) | (ii == j) | (jj == j)] = -np.inf
-        w[:, l] = -np.inf
-    return PairAssignment(triples=triples, value=float(value))
-
-
 def _relaxed_from_cost(n, ii, jj, cost, ordered, counted) -> PairAssignment:
     """Problem 3 from the ``(L, P)`` weights ``cost`` of the pairs ``(ii, jj)``, ``ii < jj``."""
     from scipy.optimize import linear_sum_assignment

@@ -17,6 +17,7 @@ from itertools import combinations
 
 import numpy as np
 
+from ._validate import check_distinct, check_not_on_targets
 from .assignment import greedy_pair_assignment
 from .bounds import _pair_kernel, pair_bounds
 
@@ -184,20 +185,16 @@ class GreedyStudy:
             return np.where(self.optimum > 0, self.greedy / self.optimum, 1.0)
 
 
-def _valid_geometry(S, T) -> bool:
-    """What :func:`obslib.pair_bounds` checks of random positions: distinct sensors, none on a target."""
-    n = S.shape[0]
-    same = (S[:, None, :] == S[None, :, :]).all(axis=-1)
-    return not (same.sum() > n or (S[:, None, :] == T[None, :, :]).all(axis=-1).any())
-
-
 def _random_geometry(rng, n, n_targets, side):
     while True:
         S = rng.uniform(0, side, size=(n, 2))
         T = rng.uniform(0, side, size=(n_targets, 2))
-        if _valid_geometry(S, T):
+        try:  # what pair_bounds would reject
+            check_distinct(S)
+            check_not_on_targets(T[None, :, :] - S[:, None, :])
             return S, T
-        # a coincidence of zero probability; draw again
+        except ValueError:  # a coincidence of zero probability; draw again
+            continue
 
 
 def _ratios(S, T, u_max) -> np.ndarray:
@@ -338,28 +335,28 @@ def fig8_trial(n_targets: int, trial: int, seed: int, u_max: float = 1.0, side: 
     relaxed (Problem 3), ordered-pair relaxed (the original code's) values, and the exact optimum
     when ``with_optimum`` (NaN otherwise).
     """
-    from .assignment import (_greedy_from_cost, _relaxed_from_cost, optimal_pair_assignment,
-                             relaxed_from_geometry, upper_pair_weights)
+    from .assignment import optimal_pair_assignment, relaxed_from_geometry, relaxed_pair_assignment
 
     rng = np.random.default_rng([seed, n_targets, trial])
     n = 2 * n_targets
     S = rng.uniform(0, side, size=(n, 2))
     T = rng.uniform(0, side, size=(n_targets, 2))
+    W = None
     if n * (n - 1) // 2 * n_targets <= FIG8_DENSE_WEIGHTS:  # small: every weight, computed once
-        ii, jj, cost = upper_pair_weights(S, T, u_max)
-        greedy = _greedy_from_cost(ii, jj, cost)
-        relaxed = [_relaxed_from_cost(n, ii, jj, cost, ordered, None) for ordered in (False, True)]
+        W = pair_bounds(S, T, u_max)
+        greedy = float(greedy_values(W[None])[0])
+        relaxed = [relaxed_pair_assignment(W, ordered) for ordered in (False, True)]
     else:  # large: each algorithm evaluates only the pairs that can matter
-        greedy = greedy_pair_assignment(sensors=S, targets=T, u_max=u_max)
+        greedy = greedy_pair_assignment(sensors=S, targets=T, u_max=u_max).value
         relaxed = relaxed_from_geometry(S, T, u_max)
     out = {
-        "greedy": greedy.value,
+        "greedy": greedy,
         "relaxed": relaxed[0].value,
         "relaxed_ordered": relaxed[1].value,
         "optimum": np.nan,
     }
     if with_optimum:
-        W = pair_bounds(S, T, u_max)
+        W = pair_bounds(S, T, u_max) if W is None else W
         out["optimum"] = (float(optimal_values(W[None])[0]) if 2 * n_targets <= MAX_DP_SENSORS
                           else optimal_pair_assignment(W).value)
     return out

@@ -160,15 +160,3 @@ def test_pruned_relaxation_skips_most_weights_on_large_instances():
     S, T = rng.uniform(0, 100, (300, 2)), rng.uniform(0, 100, (150, 2))
     res = relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0)
     assert res.n_evaluations < 0.5 * 300 * 299 // 2 * 150
-
-
-def test_greedy_from_shared_weights_equals_the_greedy():
-    from obslib.assignment import _greedy_from_cost, upper_pair_weights
-
-    rng = np.random.default_rng(12)
-    for _ in range(300):
-        L, extra = int(rng.integers(1, 8)), int(rng.integers(0, 4))
-        S, T, W = random_instance(rng, L, extra, grid=bool(rng.integers(2)))
-        ii, jj, cost = upper_pair_weights(S, T, 1.0)
-        a, b = _greedy_from_cost(ii, jj, cost), greedy_pair_assignment(W)
-        assert a.triples == b.triples and a.value == b.value
