@@ -113,11 +113,9 @@ def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets
     target (:func:`obslib.measures.measure_from_vectors`), the greedy's teams looked up in it and
     the optimum found over all ``L^N`` assignments, as :func:`obslib.optimal_team_assignment` does.
     """
-    from itertools import product
-
     from .bounds import relative_vectors
     from .measures import measure_from_vectors, subset_masks
-    from .teams import RANK_RTOL, _check_eps, _check_measure, _greedy_teams
+    from .teams import RANK_RTOL, _assignment_totals, _check_eps, _check_measure, _greedy_teams, _labellings
 
     e = _check_eps(eps)
     _check_measure(measure, e)
@@ -133,11 +131,7 @@ def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets
         V = np.stack([relative_vectors(draws[k][2], draws[k][3]) for k in idx])  # (K, N, L, 2), validated
         tables = [measure_from_vectors(V[:, :, l, :], subset_masks(n), measure, e) for l in range(L)]  # (K, 2^N)
         bits = 1 << np.arange(n, dtype=np.int64)
-        labels = np.array(list(product(range(L), repeat=n)), dtype=np.int64).reshape(-1, n)
-        total = np.zeros((len(idx), labels.shape[0]))
-        for l in range(L):
-            total += tables[l][:, ((labels == l) * bits).sum(axis=1)]
-        opt = total.max(axis=1)
+        opt = _assignment_totals(tables, _labellings(n, L)[1]).max(axis=1)
         picks_i, picks_l = _greedy_teams(V, None, measure, e, RANK_RTOL)
         g = np.zeros(len(idx))
         for l in range(L):

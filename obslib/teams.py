@@ -204,13 +204,31 @@ def optimal_team_assignment(sensors, targets, measure: str = "logdet", eps: floa
         [measure_from_vectors(v[:, l, :], masks, measure, e, uu[l] if u is not None else None, rank_rtol)
          for l in range(n_targets)]
     )  # (L, 2^N), subset k = bitmask k
-    labels = np.array(list(product(range(n_targets), repeat=n)), dtype=np.int64).reshape(-1, n)
-    bits = 1 << np.arange(n, dtype=np.int64)
-    total = np.zeros(labels.shape[0])
-    for l in range(n_targets):
-        total += tables[l, ((labels == l) * bits).sum(axis=1)]
+    labels, team_masks = _labellings(n, n_targets)
+    total = _assignment_totals(tables, team_masks)
     best = int(np.argmax(total))
     teams = [[int(i) for i in np.flatnonzero(labels[best] == l)] for l in range(n_targets)]
     return teams, float(total[best])
 
 
+def _labellings(n: int, n_targets: int):
+    """Every way to give each of ``n`` sensors to one of ``n_targets`` targets.
+
+    Returns ``labels`` ``(A, N)`` (the target of each sensor, in lexicographic order) and
+    ``team_masks`` ``(L, A)``: the bitmask of target ``l``'s team in each assignment.
+    """
+    labels = np.array(list(product(range(n_targets), repeat=n)), dtype=np.int64).reshape(-1, n)
+    bits = 1 << np.arange(n, dtype=np.int64)
+    return labels, np.stack([((labels == l) * bits).sum(axis=1) for l in range(n_targets)])
+
+
+def _assignment_totals(tables, team_masks) -> np.ndarray:
+    """``sum_l tables[l][..., team_masks[l]]`` in target order: every assignment's total value.
+
+    ``tables[l]`` has shape ``(..., 2^N)`` (target ``l``'s measure of every team); the result
+    ``(..., A)``.
+    """
+    total = np.zeros(np.shape(tables[0])[:-1] + (team_masks.shape[1],))
+    for l, mask in enumerate(team_masks):
+        total += tables[l][..., mask]
+    return total
