@@ -102,6 +102,7 @@ __all__ = [
     "entrapment_summary",
     "adversary_variants",
     "switch_rate",
+    "switch_back_fraction",
     "bound_correlation",
     "mirror_point",
     "track_loss",
@@ -1594,6 +1595,18 @@ def switch_mechanism(result: TrackingResult) -> dict:
         "raised": float((gain[sw] > 0).mean()) if sw.any() else float("nan"),
         "mean_gain": float(gain[sw].mean()) if sw.any() else float("nan"),
     }
+
+
+def switch_back_fraction(batch: BatchResult) -> float:
+    """Fraction of the pair switches that return at once to the pair of the step before.
+
+    Over all runs of ``batch`` and the transitions ``k -> k + 1`` with ``k >= 2``: a switch
+    (``pairs[k + 1] != pairs[k]``) counts as going back when ``pairs[k + 1] == pairs[k - 1]``.
+    Chattering between two nearly equal pairs shows as a high fraction.
+    """
+    sw = batch.switched[:, 1:]
+    back = (batch.pairs[:, 2:] == batch.pairs[:, :-2]).all(axis=2) & sw
+    return float(back.sum() / max(sw.sum(), 1))
 
 
 def switch_rate(batch: BatchResult) -> np.ndarray:

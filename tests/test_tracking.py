@@ -655,3 +655,17 @@ def test_ties_between_strategies_count_for_neither():
     mc = tr.monte_carlo(CIRCLE.replace(steps=30), 3, first_seed=0)
     same = {"best-pair": mc["best-pair"], "best-partner": mc["best-pair"], "fixed-pair": mc["fixed-pair"]}
     assert all(v == 0.0 for v in tr.compare_strategies(same)["wins"]["best-partner"].values())
+
+
+def test_switch_back_fraction_counts_returns_to_the_previous_pair():
+    mc = tr.monte_carlo(CIRCLE.replace(steps=60), 3, first_seed=0)
+    b = mc["best-pair"]
+    back = switches = 0
+    for r in range(b.pairs.shape[0]):
+        p = [tuple(x) for x in b.pairs[r]]
+        for k in range(1, len(p) - 1):  # transition k -> k + 1, with a step k - 1 before it
+            if p[k + 1] != p[k]:
+                switches += 1
+                back += p[k + 1] == p[k - 1]
+    assert switches > 0
+    assert tr.switch_back_fraction(b) == back / switches
