@@ -798,6 +798,16 @@ def _candidates(setup: TrackingSetup, strategy: str) -> np.ndarray:
     return (ii == i) & (jj == j)
 
 
+def _mahalanobis_sq(vx, vy, p00, p01, p10, p11):
+    """``v^T Sigma^-1 v`` for ``Sigma = [[p00, p01], [p10, p11]]`` (broadcasting), from the
+    adjugate: ``(p11 vx^2 - (p01 + p10) vx vy + p00 vy^2) / det Sigma``."""
+    dm2 = p11 * (vx * vx)
+    dm2 -= (p01 + p10) * (vx * vy)
+    dm2 += p00 * (vy * vy)
+    dm2 /= p00 * p11 - p01 * p10
+    return dm2
+
+
 class _PairChooser:
     """The strategies' picks for ``R`` runs at once, without per-step validation.
 
@@ -848,11 +858,7 @@ class _PairChooser:
         if not (e2 > 0).all():
             raise ValueError("an estimate is not finite or sits on a sensor")
         if maha.any():
-            det = p00 * p11 - p01 * p10
-            dm2 = p11[:, None] * (vx * vx)
-            dm2 -= (p01 + p10)[:, None] * (vx * vy)
-            dm2 += p00[:, None] * (vy * vy)
-            dm2 /= det[:, None]
+            dm2 = _mahalanobis_sq(vx, vy, *(c[:, None] for c in (p00, p01, p10, p11)))
             n2 = np.where(maha[:, None], dm2, e2)
             f = np.sqrt(n2 / e2)
             vx *= f
@@ -908,10 +914,7 @@ def _fixed_pair_bound(sx, sy, i, j, u2, x, c, maha) -> np.ndarray:
                 raise ValueError("an estimate is not finite or sits on a sensor")
             m = maha[sl]
             if m.any():
-                p00, p01, p10, p11 = c[sl, 0, 0], c[sl, 0, 1], c[sl, 1, 0], c[sl, 1, 1]
-                dm2 = (p11 * (vx * vx) - (p01 + p10) * (vx * vy) + p00 * (vy * vy)) / (
-                    p00 * p11 - p01 * p10
-                )
+                dm2 = _mahalanobis_sq(vx, vy, c[sl, 0, 0], c[sl, 0, 1], c[sl, 1, 0], c[sl, 1, 1])
                 n2 = np.where(m, dm2, e2)
                 f = np.sqrt(n2 / e2)
                 vx, vy = vx * f, vy * f
