@@ -34,6 +34,8 @@ profiles
     Named parameter sets (``paper``, ``quick``) for notebooks and the ledger.
 run
     The papermill runner behind ``make book`` and reruns.
+notebook
+    Figure settings every notebook applies in its import cell (``setup_figures``).
 """
 
 from .assignment import (

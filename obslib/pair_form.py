@@ -419,6 +419,7 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     -------
     matplotlib.figure.Figure
     """
+    import matplotlib as mpl
     import matplotlib.pyplot as plt
 
     if panels not in ("all", "contour"):
@@ -443,13 +444,16 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     )
     for row, (tag, P, R, xl, yl) in enumerate(rows):
         if surfaces:
-            ax3 = fig.add_subplot(grid[row, 0], projection="3d")
+            # 3-D axes keep Matplotlib's automatic title height (it clears the rotated box),
+            # whatever axes.titley says (obslib.notebook.setup_figures fixes it for 2-D axes)
+            with mpl.rc_context({"axes.titley": None}):
+                ax3 = fig.add_subplot(grid[row, 0], projection="3d")
+                ax3.set_title(f"{tag} surface")
             ax3.plot_surface(P, R, Z, cmap="viridis", rstride=_even_stride(t.size),
                              cstride=_even_stride(a.size), linewidth=0)
             ax3.set_xlabel(xl)
             ax3.set_ylabel(yl)
             ax3.set_zlabel(r"$\underline{C}^{-1}$")
-            ax3.set_title(f"{tag} surface")
         ax2 = fig.add_subplot(grid[row, 1] if surfaces else grid[0, row])
         cs = ax2.contour(P, R, Z, levels=list(levels), cmap="viridis")
         ax2.clabel(cs, fontsize=7, fmt="%.1f")
