@@ -19,7 +19,9 @@ prints a few readable lines and, last, one JSON object.
     ``exec_s``: executing every notebook at its default parameters the way ``make book`` does
     (papermill, one kernel per notebook, into a scratch folder); ``floor_s``: executing the same
     number of trivial notebooks the same way, the fixed cost of a kernel per notebook, each one
-    just before a notebook; ``exec_over_floor`` their ratio (target <= 3).
+    just before a notebook; ``exec_over_floor`` their ratio (target <= 3). ``--profile quick``
+    runs the notebooks at the ``quick`` profile's tiny sizes instead: what the same notebooks,
+    figures and derivations cost with almost no computation.
 """
 
 from __future__ import annotations
@@ -180,12 +182,13 @@ def bench_scaling(seed: int = 0, repeat: int = 3) -> dict:
     }
 
 
-def bench_book() -> dict:
+def bench_book(profile: str = "paper") -> dict:
     """Run the book benchmark; returns the JSON-ready dict (see the module docstring).
 
     Each notebook runs right after one trivial notebook, so that the floor and the notebooks see
     the same machine load (on a shared machine the speed drifts over a minute by tens of
-    percent); ``floor_s`` sums the trivial runs, ``exec_s`` the notebooks.
+    percent); ``floor_s`` sums the trivial runs, ``exec_s`` the notebooks. ``profile`` names the
+    parameters (:data:`obslib.profiles.PROFILES`); ``"paper"`` is the notebooks' defaults.
     """
     import tempfile
     from pathlib import Path
@@ -193,8 +196,11 @@ def bench_book() -> dict:
     import nbformat
     from nbformat.v4 import new_code_cell, new_notebook
 
+    from .profiles import PROFILES, params
     from .run import execute, notebooks, precompile
 
+    if profile not in PROFILES:
+        raise ValueError(f"unknown profile {profile!r}; known: {sorted(PROFILES)}")
     nbs = notebooks()
     precompile()  # as make book does
     with tempfile.TemporaryDirectory() as tmp:
@@ -209,12 +215,14 @@ def bench_book() -> dict:
         exec_s = floor_s = 0.0
         for k, nb in enumerate(nbs):
             floor_s += execute(src, tmp / f"trivial_{k}.ipynb")
-            dt = execute(nb, tmp / nb.name)
+            parameters = params(nb.stem, profile) if profile != "paper" else {}
+            dt = execute(nb, tmp / nb.name, parameters)
             exec_s += dt
             print(f"{nb.name:40s} {dt:7.1f} s", flush=True)
     print(f"{len(nbs)} notebooks {exec_s:.1f} s, {len(nbs)} trivial notebooks {floor_s:.1f} s", flush=True)
     return {
         "notebooks": len(nbs),
+        "profile": profile,
         "exec_s": round(exec_s, 2),
         "floor_s": round(floor_s, 2),
         "exec_over_floor": round(exec_s / floor_s, 3),
@@ -226,11 +234,13 @@ def main(argv=None) -> int:
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("which", choices=["assignment", "book", "scaling"], help="benchmark to run")
     ap.add_argument("--write", help="scaling: also write the JSON to this file")
+    ap.add_argument("--profile", default="paper",
+                    help="book: parameter profile of the notebooks (default: paper, their defaults)")
     args = ap.parse_args(argv)
     if args.which == "assignment":
         result = bench_assignment()
     elif args.which == "book":
-        result = bench_book()
+        result = bench_book(args.profile)
     else:
         result = bench_scaling()
         if args.write:

@@ -18,3 +18,12 @@ def test_evaluation_counts_one_pass_and_greedy():
     n, one = c["one pass"]
     assert list(n) == [20, 40] and list(one) == [20 * 19 // 2 * 10, 40 * 39 // 2 * 20]
     assert all(g > 0 for g in c["greedy (geometry)"][1])
+
+
+def test_book_benchmark_rejects_an_unknown_profile_before_running():
+    import pytest
+
+    from obslib.bench import bench_book
+
+    with pytest.raises(ValueError, match="unknown profile 'nope'"):
+        bench_book("nope")
