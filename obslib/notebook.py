@@ -1,12 +1,15 @@
-"""Settings the book's notebooks share: how figures are drawn inline.
+"""What the book's notebooks share: how figures are drawn inline, how small numbers print.
 
 Every notebook calls :func:`setup_figures` in its import cell, so the nine notebooks draw their
-figures the same way and each figure is drawn once.
+figures the same way and each figure is drawn once. :func:`format_small` prints a
+rounding-level number as a bound, so stored outputs are the same on every machine.
 """
 
 from __future__ import annotations
 
-__all__ = ["setup_figures"]
+from ._format import format_small
+
+__all__ = ["format_small", "setup_figures"]
 
 
 def setup_figures() -> None:

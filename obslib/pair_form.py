@@ -9,8 +9,6 @@ Every audit is a pure function of its arguments and is cached.
 
 from __future__ import annotations
 
-from ._format import format_small  # noqa: F401  (re-exported for the notebook)
-
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -19,7 +17,6 @@ import numpy as np
 from .bounds import pair_bound_polar, pair_bounds
 
 __all__ = [
-    "format_small",
     "audit_ratios",
     "paper_grid",
     "fine_grid",

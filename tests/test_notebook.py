@@ -1,4 +1,4 @@
-"""Figure settings shared by the notebooks (obslib.notebook)."""
+"""What the notebooks share (obslib.notebook): figure settings, small-number printing."""
 
 import matplotlib
 
@@ -9,7 +9,7 @@ import numpy as np  # noqa: E402
 from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 
-from obslib.notebook import setup_figures  # noqa: E402
+from obslib.notebook import format_small, setup_figures  # noqa: E402
 
 
 def _title_box(titley, projection=None, top_ticks=False):
@@ -43,3 +43,9 @@ def test_the_fixed_height_differs_where_the_docstring_says_it_does():
     assert _title_box(None, top_ticks=True)[1] > _title_box(1.0, top_ticks=True)[1]
     # and 3-D axes place their titles differently, hence pair_form's rc_context for them
     assert _title_box(None, projection="3d")[1] != _title_box(1.0, projection="3d")[1]
+
+
+def test_format_small():
+    assert format_small(3e-17) == "< 1e-12"
+    assert format_small(0.123456) == "0.123"
+    assert format_small(2e-9, 1e-10) == "2e-09"

@@ -200,12 +200,6 @@ def test_figures_draw():
         pf.plot_fig1(d_io=0.0)
 
 
-def test_format_small():
-    assert pf.format_small(3e-17) == "< 1e-12"
-    assert pf.format_small(0.123456) == "0.123"
-    assert pf.format_small(2e-9, 1e-10) == "2e-09"
-
-
 def test_theorem4_audit_numerics_match_a_per_scene_loop():
     """The audit evaluates the scenes in arrays; the straightforward loop gives the same errors."""
     import mpmath

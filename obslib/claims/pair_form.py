@@ -9,6 +9,7 @@ from dataclasses import asdict
 import numpy as np
 
 from .. import pair_form as pf
+from .._format import format_small
 from ._ledger import Finding, claim
 
 NB = "02_pair_closed_form"
@@ -27,7 +28,7 @@ def _params(profile: str) -> dict:
 
 
 def _cmp(text: str) -> str:
-    """``"= 0.3"`` or ``"< 1e-12"``: a relation for a :func:`obslib.pair_form.format_small` string."""
+    """``"= 0.3"`` or ``"< 1e-12"``: a relation for a :func:`obslib.notebook.format_small` string."""
     return text if text.startswith("<") else f"= {text}"
 
 
@@ -62,9 +63,9 @@ def _thm4(profile: str) -> Finding:
         f"(symbolic simplification to zero: {symbolic}); in Cartesian form the discriminant "
         "identity expands to zero and the whole bound, with alpha, theta_ji = atan2 difference and "
         f"u/d_io computed from the point, matches Eq. (9) at {a.n_rational_points} rational points "
-        f"to {pf.format_small(a.cartesian_max_difference, 1e-40)} ({a.digits} digits). Evaluated, "
-        f"it equals obslib.pair_bounds to {pf.format_small(a.max_error_pair_bounds, 1e-14)} and "
-        f"pair_bound_polar to {pf.format_small(a.max_error_pair_bound_polar, 1e-14)} at "
+        f"to {format_small(a.cartesian_max_difference, 1e-40)} ({a.digits} digits). Evaluated, "
+        f"it equals obslib.pair_bounds to {format_small(a.max_error_pair_bounds, 1e-14)} and "
+        f"pair_bound_polar to {format_small(a.max_error_pair_bound_polar, 1e-14)} at "
         f"{a.n_random_points} random points.",
         asdict(a),
     )
@@ -134,7 +135,7 @@ def _thm5(profile: str) -> Finding:
         f"For u/d_io in {list(qs)} the maximum over a {a.n_alpha} x {a.n_theta} grid containing "
         "theta = +-pi/2 equals 1/sqrt(1 + u^2/d^2) (to < 1e-10) and is attained only at alpha = 1, "
         "theta = +-pi/2; SymPy gives the value exactly. The bound is 0 (to "
-        f"{pf.format_small(a.max_on_zero_lines, 1e-15)}) on theta = 0, +-pi and alpha = 0, and "
+        f"{format_small(a.max_on_zero_lines, 1e-15)}) on theta = 0, +-pi and alpha = 0, and "
         f"below {a.value_at_large_alpha:.1e} at alpha = 1e6. Proof (ours): C^2 <= 1/(1+q^2) iff "
         "q^2 (alpha^2 - 1) <= S (2 + q^2), true as S >= |1 - alpha^2|, with equality only at "
         "alpha = 1, cos theta = 0. The maximum is a cone-shaped peak (S = 0 there), not a "
@@ -168,13 +169,13 @@ def _thm5_alpha(profile: str) -> Finding:
         status,
         "True for a moving target only. Eq. (34) at alpha = 1 simplifies to 2 q^2 |cos theta| "
         "(1 - |cos theta|), q = u/d_io, which vanishes for q = 0: with u = 0 the maximiser is "
-        f"alpha = 1 for every theta (max |alpha* - 1| {_cmp(pf.format_small(a.alpha_star_at_q0))}). "
+        f"alpha = 1 for every theta (max |alpha* - 1| {_cmp(format_small(a.alpha_star_at_q0))}). "
         "For q > 0 the "
         f"maximiser exceeds 1 (smallest alpha* - 1 = {a.min_distance_from_1:.2g} over {a.n_theta} "
         "angles and q in " + str([x for x in qs if x > 0]) + "), in closed form (ours) "
         "alpha*^2 = r (r sin^2 theta + q^2 |cos theta|) / (q^2 + sin^2 theta), r = sqrt(1 + q^2); "
         "it matches the bisection root of Eq. (34) to "
-        f"{pf.format_small(a.max_closed_vs_numeric, 1e-13)} and "
+        f"{format_small(a.max_closed_vs_numeric, 1e-13)} and "
         "a dense brute-force search.",
         asdict(a),
     )
@@ -360,7 +361,7 @@ def _dalpha(profile: str) -> Finding:
         "dC/dalpha = 2 alpha g / (S sqrt(N) D^1.5) with N = 1 + alpha^2 - S, D the printed base, "
         f"and the ratio derivative/printed ranges over [{lo:.2f}, {hi:.1f}]. Because sqrt(N) ~ "
         "alpha |sin theta| near 0, alpha = 0 is not a stationary point: the slope there is "
-        f"|sin theta|/sqrt(1 + q^2) (checked to {pf.format_small(a.slope_at_alpha0, 1e-12)}), "
+        f"|sin theta|/sqrt(1 + q^2) (checked to {format_small(a.slope_at_alpha0, 1e-12)}), "
         "a boundary minimum.",
         asdict(a),
     )
