@@ -291,26 +291,19 @@ def cartesian_ratio_values(point: dict, digits: int | None = None) -> dict:
 
         with mpmath.workdps(int(digits)):
             v = {k: mpmath.mpf(sp.Rational(x).p) / sp.Rational(x).q for k, x in point.items()}
-            vix, viy, vjx, vjy = v[PIX] - v[OX], v[PIY] - v[OY], v[PJX] - v[OX], v[PJY] - v[OY]
-            di, dj = mpmath.hypot(vix, viy), mpmath.hypot(vjx, vjy)
-            if di == 0 or dj == 0:
-                raise ValueError("a sensor sits on the target (zero distance)")
-            return {
-                ALPHA: dj / di,
-                THETA: mpmath.atan2(vjy, vjx) - mpmath.atan2(viy, vix),
-                Q: v[U] / di,
-            }
-    vix, viy = point[PIX] - point[OX], point[PIY] - point[OY]
-    vjx, vjy = point[PJX] - point[OX], point[PJY] - point[OY]
-    di = sp.sqrt(sp.sympify(vix) ** 2 + sp.sympify(viy) ** 2)
-    dj = sp.sqrt(sp.sympify(vjx) ** 2 + sp.sympify(vjy) ** 2)
+            return _ratio_values(v, mpmath.hypot, mpmath.atan2)
+    v = {k: sp.sympify(x) for k, x in point.items()}
+    return _ratio_values(v, lambda x, y: sp.sqrt(x**2 + y**2), sp.atan2)
+
+
+def _ratio_values(v: dict, hypot, atan2) -> dict:
+    """Eq. (8)'s ``alpha``, ``theta``, ``q`` from coordinates ``v``, in the arithmetic of
+    ``hypot`` and ``atan2`` (SymPy's exact one or mpmath's)."""
+    vix, viy, vjx, vjy = v[PIX] - v[OX], v[PIY] - v[OY], v[PJX] - v[OX], v[PJY] - v[OY]
+    di, dj = hypot(vix, viy), hypot(vjx, vjy)
     if di == 0 or dj == 0:
         raise ValueError("a sensor sits on the target (zero distance)")
-    return {
-        ALPHA: dj / di,
-        THETA: sp.atan2(vjy, vjx) - sp.atan2(viy, vix),
-        Q: point[U] / di,
-    }
+    return {ALPHA: dj / di, THETA: atan2(vjy, vjx) - atan2(viy, vix), Q: v[U] / di}
 
 
 def discriminant_cartesian() -> tuple[sp.Expr, sp.Expr]:
