@@ -196,12 +196,12 @@ def bench_book(profile: str = "paper") -> dict:
     import nbformat
     from nbformat.v4 import new_code_cell, new_notebook
 
-    from .profiles import PROFILES, params
+    from .profiles import params
     from .run import execute, notebooks, precompile
 
-    if profile not in PROFILES:
-        raise ValueError(f"unknown profile {profile!r}; known: {sorted(PROFILES)}")
     nbs = notebooks()
+    # every notebook's parameters first, so that a bad profile fails before anything runs
+    parameters = {nb: params(nb.stem, profile) if profile != "paper" else {} for nb in nbs}
     precompile()  # as make book does
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
@@ -215,8 +215,7 @@ def bench_book(profile: str = "paper") -> dict:
         exec_s = floor_s = 0.0
         for k, nb in enumerate(nbs):
             floor_s += execute(src, tmp / f"trivial_{k}.ipynb")
-            parameters = params(nb.stem, profile) if profile != "paper" else {}
-            dt = execute(nb, tmp / nb.name, parameters)
+            dt = execute(nb, tmp / nb.name, parameters[nb])
             exec_s += dt
             print(f"{nb.name:40s} {dt:7.1f} s", flush=True)
     print(f"{len(nbs)} notebooks {exec_s:.1f} s, {len(nbs)} trivial notebooks {floor_s:.1f} s", flush=True)
