@@ -114,6 +114,7 @@ __all__ = [
     "cov_ellipse",
     "CHI2_2DOF_9973",
     "sensor_label",
+    "draw_sensors",
     "draw_snapshot",
     "RunAnimation",
     "animate",
@@ -1758,6 +1759,14 @@ def sensor_label(i: int) -> str:
     return "s" + str(int(i) + 1).translate(_SUBSCRIPT)
 
 
+def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
+    """Sensors as blue triangles named ``s1..sN`` (:func:`sensor_label`) on ``ax``."""
+    s = np.asarray(sensors, dtype=float)
+    ax.plot(*s.T, "^", color="tab:blue", ms=ms, **({} if label is None else {"label": label}))
+    for n, p in enumerate(s):
+        ax.annotate(sensor_label(n), p, textcoords="offset points", xytext=(4, 4), fontsize=8)
+
+
 def draw_snapshot(ax, result: TrackingResult, k: int, *, legend: bool = True, ellipse_scale=1.0):
     """Draw step ``k`` (1-based) of a run as in Fig. 4 on ``ax``.
 
@@ -1767,9 +1776,7 @@ def draw_snapshot(ax, result: TrackingResult, k: int, *, legend: bool = True, el
     """
     i = k - 1
     s = result.setup.sensor_array
-    ax.plot(*s.T, "^", color="tab:blue", ms=8, label="sensors")
-    for n, p in enumerate(s):
-        ax.annotate(sensor_label(n), p, textcoords="offset points", xytext=(4, 4), fontsize=8)
+    draw_sensors(ax, s, label="sensors")
     for j in result.pairs[i]:
         ax.plot(*np.array([s[j], result.estimate[i]]).T, "-", color="tab:green", lw=1)
     ax.plot(*result.truth[: i + 1].T, "-", color="0.6", lw=1, label="true path")
@@ -1900,9 +1907,7 @@ def animate(result: TrackingResult, every: int = 3, dpi: int = 50, figsize=(4.0,
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal")
-    ax.plot(*s.T, "^", color="tab:blue", ms=7)
-    for n, p in enumerate(s):
-        ax.annotate(sensor_label(n), p, textcoords="offset points", xytext=(4, 4), fontsize=8)
+    draw_sensors(ax, s, ms=7)
     (links,) = ax.plot([], [], "-", color="tab:green", lw=1)
     (path,) = ax.plot([], [], "-", color="0.6", lw=1)
     (target,) = ax.plot([], [], "o", color="k", ms=4)
