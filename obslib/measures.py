@@ -165,8 +165,10 @@ def _matmul_rows(x: np.ndarray, w: np.ndarray) -> np.ndarray:
     The products here are thin (a few dozen inner terms): a multi-threaded BLAS spends more on
     waking and spinning its threads than on the arithmetic, and steals the core the rest of the
     computation runs on. Blocks of at most :data:`_GEMM_BLOCK` multiply-adds stay below
-    OpenBLAS's threading threshold. Each entry is the same dot product either way (the inner
-    dimension is not split), so the result equals ``x @ w``; a test checks it bit for bit.
+    OpenBLAS's threading threshold. Measured on two cores with the default BLAS threads: a
+    ``(2000, 15) @ (15, 64)`` product takes 0.4 ms blocked against 8 ms whole, ``(20000, 15) @
+    (15, 64)`` 3 ms against 8 ms. The result equals ``x @ w`` to rounding, not bit for bit: BLAS
+    chooses its summation order by CPU and block shape (a test bounds the difference).
     """
     if x.ndim != 2:
         return x @ w
