@@ -10,14 +10,47 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = [
+    "as_float_array",
     "as_points",
     "as_point",
     "as_u_max",
     "as_cov",
+    "as_int",
+    "as_bool",
+    "as_eps",
+    "as_rank_rtol",
+    "as_measure_name",
+    "as_weights",
     "check_spd2",
     "check_distinct",
     "check_not_on_targets",
+    "check_differences",
+    "check_weight_memory",
+    "MAX_WEIGHT_BYTES",
 ]
+
+
+def as_float_array(x, name: str) -> np.ndarray:
+    """``x`` as a float array; booleans, complex numbers, strings and ``None`` are refused.
+
+    NumPy would silently turn ``True`` into 1.0 and drop the imaginary part of a complex number;
+    here both are a :class:`TypeError` naming ``name``.
+    """
+    if x is None:
+        raise TypeError(f"{name} must be numeric, got None")
+    arr = np.asarray(x)
+    if arr.dtype.kind == "O":
+        try:
+            arr = np.asarray(x, dtype=float)
+        except (TypeError, ValueError) as exc:
+            raise TypeError(f"{name} must be numeric: {exc}") from None
+    if arr.dtype.kind == "b":
+        raise TypeError(f"{name} must be numeric, got booleans")
+    if arr.dtype.kind == "c":
+        raise TypeError(f"{name} must be real, got complex numbers")
+    if arr.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be numeric, got dtype {arr.dtype}")
+    return arr.astype(float, copy=False)
 
 
 def as_points(points, name: str = "sensors", *, min_count: int = 0) -> np.ndarray:
@@ -30,10 +63,7 @@ def as_points(points, name: str = "sensors", *, min_count: int = 0) -> np.ndarra
         ``min_count`` rows, or any coordinate is NaN or infinite (the message names
         the first offending row).
     """
-    try:
-        arr = np.asarray(points, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"{name} must be numeric, shape (n, 2): {exc}") from None
+    arr = as_float_array(points, name)
     if arr.ndim != 2 or arr.shape[1] != 2:
         raise ValueError(f"{name} must have shape (n, 2), got {arr.shape}")
     if arr.shape[0] < min_count:
@@ -48,10 +78,7 @@ def as_points(points, name: str = "sensors", *, min_count: int = 0) -> np.ndarra
 
 def as_point(point, name: str = "target") -> np.ndarray:
     """Return one point as a float array of shape ``(2,)`` (finite)."""
-    try:
-        arr = np.asarray(point, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"{name} must be numeric, shape (2,): {exc}") from None
+    arr = as_float_array(point, name)
     if arr.shape != (2,):
         raise ValueError(f"{name} must have shape (2,), got {arr.shape}")
     if not np.isfinite(arr).all():
@@ -65,10 +92,7 @@ def as_u_max(u_max, n_targets: int | None = None) -> np.ndarray:
     ``u_max`` is the bound on the target's control input, ``||u_o|| <= u_max``, so it must
     be finite and non-negative. With ``n_targets`` given, a vector of that length is accepted.
     """
-    try:
-        arr = np.asarray(u_max, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"u_max must be a non-negative number: {exc}") from None
+    arr = as_float_array(u_max, "u_max")
     if arr.ndim == 1 and n_targets is not None:
         if arr.shape[0] != n_targets:
             raise ValueError(
@@ -90,18 +114,15 @@ def as_cov(cov, n_targets: int) -> np.ndarray:
 
     A single ``(2, 2)`` matrix is shared by all targets.
     """
-    try:
-        arr = np.asarray(cov, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"cov must be numeric, shape (2, 2) or (L, 2, 2): {exc}") from None
+    arr = as_float_array(cov, "cov")
     if arr.shape == (2, 2):
         arr = np.broadcast_to(arr, (n_targets, 2, 2))
     if arr.shape != (n_targets, 2, 2):
         raise ValueError(f"cov must have shape (2, 2) or ({n_targets}, 2, 2), got {arr.shape}")
     # vectorised checks; on failure, the first offending target gets the detailed message
     finite = np.isfinite(arr).all(axis=(1, 2))
-    sym = np.abs(arr[:, 0, 1] - arr[:, 1, 0]) <= 1e-12 * np.maximum(1.0, np.abs(arr).max(axis=(1, 2)))
-    pd = (arr[:, 0, 0] > 0) & (arr[:, 0, 0] * arr[:, 1, 1] - arr[:, 0, 1] * arr[:, 1, 0] > 0)
+    with np.errstate(invalid="ignore", over="ignore"):
+        sym, pd = _spd2_flags(arr)
     bad = ~(finite & sym & pd)
     if bad.any():
         l = int(np.flatnonzero(bad)[0])
@@ -109,14 +130,30 @@ def as_cov(cov, n_targets: int) -> np.ndarray:
     return arr
 
 
+def _spd2_flags(arr: np.ndarray):
+    """Symmetric and positive definite flags of 2x2 matrices ``(..., 2, 2)``, independent of scale.
+
+    Each matrix is divided by its largest absolute entry first, so a covariance of scale
+    ``1e-170`` (determinant ``1e-340``, below the float range) or ``1e170`` is judged like the
+    same matrix of scale 1. Symmetric: off-diagonal entries equal to ``1e-12`` relative.
+    Positive definite: Sylvester's criterion on the normalised matrix.
+    """
+    top = np.abs(arr).max(axis=(-2, -1))
+    m = arr / np.where(top > 0, top, 1.0)[..., None, None]
+    sym = np.abs(m[..., 0, 1] - m[..., 1, 0]) <= 1e-12
+    pd = (m[..., 0, 0] > 0) & (m[..., 0, 0] * m[..., 1, 1] - m[..., 0, 1] * m[..., 1, 0] > 0)
+    return sym, pd
+
+
 def check_spd2(m: np.ndarray, name: str) -> None:
-    """Raise unless the 2x2 array ``m`` is finite, symmetric and positive definite."""
+    """Raise unless the 2x2 array ``m`` is finite, symmetric and positive definite (any scale)."""
+    m = np.asarray(m, dtype=float)
     if not np.isfinite(m).all():
         raise ValueError(f"{name} has a non-finite entry: {m.tolist()}")
-    if abs(m[0, 1] - m[1, 0]) > 1e-12 * max(1.0, abs(m).max()):
+    sym, pd = _spd2_flags(m)
+    if not sym:
         raise ValueError(f"{name} is not symmetric: {m.tolist()}")
-    # Sylvester's criterion for a 2x2 symmetric matrix.
-    if not (m[0, 0] > 0 and m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0] > 0):
+    if not pd:
         raise ValueError(f"{name} is not positive definite: {m.tolist()}")
 
 
@@ -140,3 +177,104 @@ def check_not_on_targets(diff: np.ndarray) -> None:
     if on.any():
         i, l = (int(v) for v in np.argwhere(on)[0])
         raise ValueError(f"sensor {i} coincides with target {l} (zero distance)")
+
+
+def check_differences(diff: np.ndarray, what: str = "target") -> None:
+    """Raise if a difference ``o_l - p_i`` overflowed (coordinates near the float limit)."""
+    bad = ~np.isfinite(diff).all(axis=-1)
+    if bad.any():
+        i, l = (int(v) for v in np.argwhere(bad)[0])
+        raise ValueError(
+            f"sensor {i} and {what} {l} are too far apart: their difference overflows "
+            "(coordinates out of the float range; use a larger unit of length)"
+        )
+
+
+def as_int(value, name: str, minimum: int | None = None) -> int:
+    """An integer argument: ``int`` or NumPy integer (not bool, not ``2.0``), at least ``minimum``."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an integer, got {value!r}")
+    if minimum is not None and value < minimum:
+        raise ValueError(f"{name} must be at least {minimum}, got {value}")
+    return int(value)
+
+
+def as_bool(value, name: str) -> bool:
+    """A flag: ``True`` or ``False`` only (a string such as ``"no"`` would be truthy)."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name} must be True or False, got {value!r}")
+    return bool(value)
+
+
+def _as_real(value, name: str) -> float:
+    if isinstance(value, (bool, np.bool_)) or value is None:
+        raise TypeError(f"{name} must be a real number, got {value!r}")
+    arr = as_float_array(value, name)
+    if arr.ndim != 0:
+        raise ValueError(f"{name} must be a scalar, got shape {arr.shape}")
+    return float(arr)
+
+
+def as_eps(eps) -> float:
+    """Prior information ``eps >= 0`` (finite) of Theorem 8's measures."""
+    e = _as_real(eps, "eps")
+    if not np.isfinite(e) or e < 0:
+        raise ValueError(f"eps must be finite and non-negative, got {eps!r}")
+    return e
+
+
+def as_rank_rtol(rank_rtol) -> float:
+    """Relative threshold of the numerical rank, in ``[0, 1)``."""
+    r = _as_real(rank_rtol, "rank_rtol")
+    if not (np.isfinite(r) and 0 <= r < 1):
+        raise ValueError(f"rank_rtol must be in [0, 1), got {rank_rtol!r}")
+    return r
+
+
+def as_measure_name(name, known) -> str:
+    """One of the measure names ``known``."""
+    if not isinstance(name, str) or name not in known:
+        raise ValueError(f"unknown measure {name!r}; known: {tuple(known)}")
+    return name
+
+
+def as_weights(W) -> np.ndarray:
+    """Pair weights ``W`` ``(N, N, L)``: finite, non-negative, symmetric in ``i, j``.
+
+    The solvers read only ``W[i, j, l]`` with ``i < j``; the diagonal ``W[i, i, l]`` is ignored
+    (``pair_bounds`` puts zeros there). Negative weights are refused: the problems are stated
+    for non-negative weights (the pair bounds), and with negative ones "assign a pair" and
+    "leave the target unassigned" are no longer comparable, so the solvers would disagree.
+    """
+    arr = as_float_array(W, "W")
+    if arr.ndim != 3 or arr.shape[0] != arr.shape[1]:
+        raise ValueError(f"W must have shape (N, N, L), got {arr.shape}")
+    if not np.isfinite(arr).all():
+        i, j, l = (int(v) for v in np.argwhere(~np.isfinite(arr))[0])
+        raise ValueError(f"W[{i}, {j}, {l}] is not finite")
+    if (arr < 0).any():
+        i, j, l = (int(v) for v in np.argwhere(arr < 0)[0])
+        raise ValueError(f"W[{i}, {j}, {l}] = {arr[i, j, l]!r} is negative; pair weights must be >= 0")
+    if not np.array_equal(arr, arr.transpose(1, 0, 2)):
+        i, j, l = (int(v) for v in np.argwhere(arr != arr.transpose(1, 0, 2))[0])
+        raise ValueError(f"W must be symmetric in its first two indices (pair weights): "
+                         f"W[{i}, {j}, {l}] != W[{j}, {i}, {l}]")
+    return arr
+
+
+#: Largest weight tensor ``(N, N, L)`` of float64 the library materialises: 1 GiB. Computing it
+#: takes about five arrays of that size at the peak, so about 5 GiB of memory.
+MAX_WEIGHT_BYTES = 1 << 30
+
+
+def check_weight_memory(n: int, n_targets: int) -> None:
+    """Refuse, before allocating, a weight tensor ``(N, N, L)`` over :data:`MAX_WEIGHT_BYTES`."""
+    need = 8 * n * n * n_targets
+    if need > MAX_WEIGHT_BYTES:
+        raise ValueError(
+            f"the (N, N, L) = ({n}, {n}, {n_targets}) weight tensor needs {need / 2**30:.1f} GiB "
+            f"(about {5 * need / 2**30:.0f} GiB to compute), over the limit of "
+            f"{MAX_WEIGHT_BYTES / 2**30:.0f} GiB; use the geometry-based path, e.g. "
+            "greedy_pair_assignment(sensors=..., targets=..., u_max=...) or "
+            "relaxed_pair_assignment(sensors=..., targets=..., u_max=...), which never builds it"
+        )

@@ -27,8 +27,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import as_points, as_u_max
-from .bounds import _normalise, _pair_kernel, relative_vectors
+from ._kernels import normalise, pair_kernel
+from ._validate import as_bool, as_float_array, as_int, as_points, as_u_max, as_weights, check_weight_memory
+from .bounds import _relative_vectors
 
 __all__ = [
     "PairAssignment",
@@ -57,21 +58,6 @@ class PairAssignment:
     n_evaluations: int | None = None
 
 
-def _as_weights(W) -> np.ndarray:
-    try:
-        arr = np.asarray(W, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"W must be a numeric array of shape (N, N, L): {exc}") from None
-    if arr.ndim != 3 or arr.shape[0] != arr.shape[1]:
-        raise ValueError(f"W must have shape (N, N, L), got {arr.shape}")
-    if not np.isfinite(arr).all():
-        i, j, l = (int(v) for v in np.argwhere(~np.isfinite(arr))[0])
-        raise ValueError(f"W[{i}, {j}, {l}] is not finite")
-    if not np.array_equal(arr, arr.transpose(1, 0, 2)):
-        raise ValueError("W must be symmetric in its first two indices (pair weights)")
-    return arr
-
-
 def _check_sizes(n: int, n_targets: int) -> None:
     if n_targets < 1:
         raise ValueError("there must be at least one target")
@@ -83,8 +69,17 @@ def _check_sizes(n: int, n_targets: int) -> None:
 
 def assignment_value(W, triples) -> float:
     """Total weight ``sum W[i, j, l]`` of an assignment (no feasibility check)."""
-    W = np.asarray(W, dtype=float)
+    W = as_float_array(W, "W")
     return float(sum(W[i, j, l] for i, j, l in triples))
+
+
+def _geometry(sensors, targets, u_max, cov):
+    """Validated rows ``o_l - p_i`` ``(N, L, 2)`` normalised per target, and ``u_max^2`` ``(L,)``
+    in the same unit: the input of :func:`obslib._kernels.pair_kernel` (as in ``pair_bounds``)."""
+    v, unit = _relative_vectors(sensors, targets, cov)
+    with np.errstate(over="ignore"):
+        u = as_u_max(u_max, v.shape[1]) / unit
+    return normalise(v, u)
 
 
 # --------------------------------------------------------------------------------------------
@@ -115,7 +110,12 @@ class _TargetQueue:
         self.pos = 0
 
     def head(self, free: np.ndarray):
-        """The best candidate with both sensors free, or None if the target has no free pair."""
+        """The best candidate with both sensors free, or None if the target has no free pair.
+
+        Terminates: a refill lists only pairs of free sensors, so after one refill the next
+        candidate is free or the list is complete (weights are finite, checked at the boundary).
+        """
+        refilled = False
         while True:
             while self.pos < len(self.cand):
                 w, i, j = self.cand[self.pos]
@@ -124,7 +124,10 @@ class _TargetQueue:
                 self.pos += 1
             if self.complete:
                 return None
+            if refilled:  # cannot happen with finite weights; never spin
+                raise RuntimeError(f"refilling the candidates of target {self.l} made no progress")
             self.fill(free)
+            refilled = True
 
 
 def _keep_top(a, b, w, k):
@@ -173,7 +176,10 @@ class _GeometrySource:
     def _weights(self, l, a, b):
         x, y = self.x[l], self.y[l]
         self.n_evaluations += a.size
-        return _pair_kernel(x[a], y[a], x[b], y[b], self.u2[l])
+        w = pair_kernel(x[a], y[a], x[b], y[b], self.u2[l])
+        if not np.isfinite(w).all():  # validation and normalisation exclude it; never feed a NaN on
+            raise RuntimeError(f"a pair weight of target {l} is not finite")
+        return w
 
     def top_pairs(self, l, idx, k):
         m = idx.size
@@ -270,21 +276,20 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
         ``triples`` in pick order, ``value`` their total (Algorithm 1's ``omega(GREEDY)``).
         The 1/3 guarantee is Theorem 6.
     """
-    if k is not None and k < 1:
-        raise ValueError(f"k must be at least 1, got {k}")
+    if k is not None:
+        k = as_int(k, "k", 1)
     if W is not None:
         if sensors is not None or targets is not None:
             raise ValueError("give either W or sensors/targets, not both")
-        arr = _as_weights(W)
+        arr = as_weights(W)
         n, n_targets = arr.shape[0], arr.shape[2]
         _check_sizes(n, n_targets)
         return _greedy(_WeightSource(arr), n, n_targets, k)
     if sensors is None or targets is None or u_max is None:
         raise ValueError("give W, or sensors=, targets= and u_max=")
-    v = relative_vectors(sensors, targets, cov)  # (N, L, 2), validated
+    v, u2 = _geometry(sensors, targets, u_max, cov)  # (N, L, 2) validated and normalised
     n, n_targets = v.shape[0], v.shape[1]
     _check_sizes(n, n_targets)
-    v, u2 = _normalise(v, as_u_max(u_max, n_targets) ** 2)
     source = _GeometrySource(v, u2)
     result = _greedy(source, n, n_targets, k)
     return PairAssignment(result.triples, result.value, source.n_evaluations)
@@ -300,20 +305,20 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
     in the number of rounds; for tests and benchmarks.
     """
     if W is not None:
-        arr = _as_weights(W)
+        arr = as_weights(W)
         n, n_targets = arr.shape[0], arr.shape[2]
 
         def block(s_free, t_free):
             return arr[np.ix_(s_free, s_free, t_free)]
         counted = None
     elif sensors is not None and targets is not None and u_max is not None:
-        v = relative_vectors(sensors, targets, cov)
+        v, u2 = _geometry(sensors, targets, u_max, cov)
         n, n_targets = v.shape[0], v.shape[1]
-        v, u2 = _normalise(v, as_u_max(u_max, n_targets) ** 2)
+        check_weight_memory(n, n_targets)  # the first round evaluates the whole (N, N, L) block
 
         def block(s_free, t_free):
             x, y = v[np.ix_(s_free, t_free, [0])][..., 0], v[np.ix_(s_free, t_free, [1])][..., 0]
-            return _pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2[t_free])
+            return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2[t_free])
         counted = 0
     else:
         raise ValueError("give W, or sensors=, targets= and u_max=")
@@ -349,15 +354,14 @@ def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 <
     ``l``, ``l0 <= l < l1``; blocks hold about ``chunk`` weights (at least one target), so the
     whole ``(L, P)`` array never needs to exist. Same kernel as :func:`obslib.pair_bounds`.
     """
-    v = relative_vectors(sensors, targets, cov)
-    v, u2 = _normalise(v, as_u_max(u_max, v.shape[1]) ** 2)
+    v, u2 = _geometry(sensors, targets, u_max, cov)
     ii, jj = np.triu_indices(v.shape[0], 1)
     xt, yt = np.ascontiguousarray(v[..., 0].T), np.ascontiguousarray(v[..., 1].T)  # (L, N)
     step = max(1, chunk // max(ii.size, 1))
     for a in range(0, xt.shape[0], step):
         b = min(a + step, xt.shape[0])
         x, y = xt[a:b], yt[a:b]
-        yield a, b, _pair_kernel(x[:, ii], y[:, ii], x[:, jj], y[:, jj], u2[a:b, None])
+        yield a, b, pair_kernel(x[:, ii], y[:, ii], x[:, jj], y[:, jj], u2[a:b, None])
 
 
 def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
@@ -393,8 +397,9 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
     sensors, targets, u_max, cov : optional
         Instead of ``W``: the geometry (only the ``i < j`` weights are computed).
     """
+    ordered = as_bool(ordered, "ordered")
     if W is not None:
-        arr = _as_weights(W)
+        arr = as_weights(W)
         n = arr.shape[0]
         ii, jj = np.triu_indices(n, 1)
         return _relaxed_from_cost(n, ii, jj, arr[ii, jj, :].T, ordered, counted=None)
@@ -419,11 +424,10 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
     from scipy.sparse import csr_array
     from scipy.sparse.csgraph import min_weight_full_bipartite_matching
 
-    v = relative_vectors(sensors, targets, cov)
+    v, u2 = _geometry(sensors, targets, u_max, cov)
     n, n_targets = v.shape[0], v.shape[1]
     if n < 2:
         raise ValueError(f"pairs need at least two sensors, got {n}")
-    v, u2 = _normalise(v, as_u_max(u_max, n_targets) ** 2)
     source = _GeometrySource(v, u2)
     every = np.arange(n)
     rows, ids, ws = [], [], []
@@ -487,9 +491,14 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
     from scipy.optimize import Bounds, LinearConstraint, milp
     from scipy.sparse import coo_matrix, vstack
 
-    arr = _as_weights(W)
+    arr = as_weights(W)
     n, n_targets = arr.shape[0], arr.shape[2]
     _check_sizes(n, n_targets)
+    if time_limit is not None:
+        if isinstance(time_limit, bool) or not isinstance(time_limit, (int, float, np.integer, np.floating)):
+            raise TypeError(f"time_limit must be a number of seconds or None, got {time_limit!r}")
+        if not (np.isfinite(time_limit) and time_limit > 0):
+            raise ValueError(f"time_limit must be positive and finite, got {time_limit!r}")
     ii, jj = np.triu_indices(n, 1)
     n_pairs = ii.size
     c = -arr[ii, jj, :].reshape(-1)  # variable index p * L + l

@@ -15,8 +15,22 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validate import as_cov, as_points, as_u_max, check_distinct, check_not_on_targets
+from ._kernels import mahalanobis_rescale, normalise, pair_kernel, pow2_scale
+from ._validate import (
+    as_cov,
+    as_float_array,
+    as_points,
+    as_u_max,
+    check_differences,
+    check_distinct,
+    check_not_on_targets,
+    check_weight_memory,
+)
 from .observability import relative_rows
+
+# Old private name, still imported by modules outside this one (obslib.tracking,
+# obslib.assignment_study).
+_pair_kernel = pair_kernel
 
 __all__ = [
     "lower_bound",
@@ -61,66 +75,34 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
     ``alpha = d_j / d_i`` and ``u_max^2 / d_i^2`` from Mahalanobis distances, ``theta_ji`` the
     Euclidean angle (``../shared/EXPERIMENTS.md``, "Pair bound as evaluated in the experiments").
     """
+    v, unit = _relative_vectors(sensors, targets, cov)
+    if cov is None:
+        return v
+    with np.errstate(over="ignore"):
+        out = v * unit[None, :, None]
+    if not np.isfinite(out).all():
+        l = int(np.flatnonzero(~np.isfinite(out).all(axis=(0, 2)))[0])
+        raise ValueError(f"the Mahalanobis lengths to target {l} overflow (cov of target {l} is "
+                         "tiny relative to the distances); pair_bounds handles such scales")
+    return out
+
+
+def _relative_vectors(sensors, targets, cov=None):
+    """Validated ``o_l - p_i`` ``(N, L, 2)``, Mahalanobis-rescaled with ``cov``, in units ``(L,)``.
+
+    The true vectors are ``v[:, l] * unit[l]``; ``unit`` is 1 except for a covariance or scene
+    outside the safe range (see :func:`obslib._kernels.mahalanobis_rescale`).
+    """
     s = as_points(sensors, "sensors")
     t = as_points(targets, "targets")
     check_distinct(s)
-    v = t[None, :, :] - s[:, None, :]
+    with np.errstate(over="ignore", invalid="ignore"):
+        v = t[None, :, :] - s[:, None, :]
+    check_differences(v)
     check_not_on_targets(v)
-    if cov is not None:
-        c = as_cov(cov, t.shape[0])
-        prec = np.linalg.inv(c)
-        d_maha2 = np.einsum("nlk,lkm,nlm->nl", v, prec, v)
-        d_eucl2 = np.einsum("nlk,nlk->nl", v, v)
-        v = v * np.sqrt(d_maha2 / d_eucl2)[..., None]
-    return v
-
-
-def _pair_kernel(xi, yi, xj, yj, u2):
-    """Pair bound from the rows ``(xi, yi)`` and ``(xj, yj)``, broadcasting; ``u2 = u_max^2``.
-
-    The nonzero eigenvalues of ``O^T O`` equal those of the Gram matrix
-    ``[[r_i, c], [c, r_j]]`` (``r = ||v||^2``, ``c = v_i . v_j``), so
-    ``lambda_max = (r_i + r_j)/2 + sqrt(((r_i - r_j)/2)^2 + c^2)`` without cancellation and
-    ``lambda_min = det / lambda_max`` with ``det = (v_i x v_j)^2`` (Lagrange's identity), hence
-    ``bound = |v_i x v_j| / sqrt(lambda_max (lambda_max + u_max^2))``.
-
-    Every caller (``pair_bounds``, the greedy assignment) goes through this function with rows
-    normalised by :func:`_normalise`, so equal geometry gives bitwise equal weights. The
-    arithmetic is done in place to keep memory traffic low (it is the hot loop of the
-    assignment algorithms).
-    """
-    ri = xi * xi + yi * yi
-    rj = xj * xj + yj * yj
-    cross = np.multiply(xi, yj)
-    cross -= yi * xj
-    dot = np.multiply(xi, xj)
-    dot += yi * yj
-    half = np.subtract(ri, rj)
-    half *= 0.5
-    half *= half
-    dot *= dot
-    dot += half
-    np.sqrt(dot, out=dot)
-    lmax = np.add(ri, rj, out=half)
-    lmax *= 0.5
-    lmax += dot  # lambda_max
-    cross *= cross  # det = lambda_min * lambda_max
-    den = np.add(lmax, u2, out=dot)
-    den *= lmax
-    with np.errstate(invalid="ignore"):
-        cross /= den  # 0/0 only for a zero row, which validation excludes
-    np.sqrt(cross, out=cross)
-    return cross
-
-
-def _normalise(v: np.ndarray, u2: np.ndarray):
-    """Scale each target's rows ``v[:, l]`` by ``1 / max_i ||v_il||`` and ``u2`` by its square.
-
-    The bound is invariant under scaling rows and ``u_max`` together; scaling keeps the squares in
-    :func:`_pair_kernel` far from overflow and underflow whatever the units.
-    """
-    scale = np.sqrt(np.einsum("nlk,nlk->nl", v, v).max(axis=0)) if v.shape[0] else np.ones(v.shape[1])
-    return v / scale[None, :, None], np.broadcast_to(u2, (v.shape[1],)) / scale**2
+    if cov is None:
+        return v, np.ones(t.shape[0])
+    return mahalanobis_rescale(v, as_cov(cov, t.shape[0]))
 
 
 def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
@@ -144,10 +126,13 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
         ``W[i, j, l] = sqrt(lambda_min / (lambda_max + u_max^2))`` for rows
         ``o_l - p_i, o_l - p_j`` (Eq. (9)); symmetric in ``i, j`` and zero on ``i == j``.
     """
-    v = relative_vectors(sensors, targets, cov)
-    v, u2 = _normalise(v, as_u_max(u_max, v.shape[1]) ** 2)
+    s = as_points(sensors, "sensors")
+    t = as_points(targets, "targets")
+    check_weight_memory(s.shape[0], t.shape[0])
+    v, unit = _relative_vectors(s, t, cov)
+    v, u2 = normalise(v, as_u_max(u_max, v.shape[1]) / unit)
     x, y = v[..., 0], v[..., 1]  # (N, L)
-    return _pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2)
+    return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2)
 
 
 def pair_bound_polar(alpha, theta, u_over_d):
@@ -173,17 +158,26 @@ def pair_bound_polar(alpha, theta, u_over_d):
     float or ndarray
         The bound, broadcast over the inputs.
     """
-    a, th, q = (np.asarray(x, dtype=float) for x in (alpha, theta, u_over_d))
+    a, th, q = (as_float_array(x, name) for x, name in
+                ((alpha, "alpha"), (theta, "theta"), (u_over_d, "u_over_d")))
     for name, x, nonneg in (("alpha", a, True), ("theta", th, False), ("u_over_d", q, True)):
         if not np.isfinite(x).all():
             raise ValueError(f"{name} must be finite")
         if nonneg and (x < 0).any():
             raise ValueError(f"{name} must be non-negative")
-    a2 = a * a
-    s = np.hypot(1.0 - a2, 2.0 * a * np.cos(th))
-    plus = 1.0 + a2 + s
-    minus = 4.0 * a2 * np.sin(th) ** 2 / plus
-    out = np.sqrt(minus / (plus + 2.0 * q * q))
+    # The bound is homogeneous of degree 0 in (d_io, d_jo, u_max) = d_io (1, alpha, u/d): for
+    # alpha beyond the safe range, divide all three by a power of two m (exact), so that alpha^2
+    # cannot overflow; b = 1/m is then the first length (b = 1 and the plain formula otherwise).
+    m = pow2_scale(np.maximum(a, 1.0))
+    b = 1.0 / m
+    a, q = a / m, q / m
+    with np.errstate(over="ignore", under="ignore"):
+        a2 = a * a
+        b2 = b * b
+        s = np.hypot(b2 - a2, 2.0 * b * a * np.cos(th))
+        plus = b2 + a2 + s
+        minus = 4.0 * a2 * b2 * np.sin(th) ** 2 / plus
+        out = np.sqrt(minus / (plus + 2.0 * q * q))
     return float(out) if out.ndim == 0 else out
 
 
@@ -204,7 +198,7 @@ def worst_case_control(sensors, target, u_max) -> np.ndarray:
 
 
 def _stacked_rows(rows) -> np.ndarray:
-    r = np.asarray(rows, dtype=float)
+    r = as_float_array(rows, "rows")
     if r.ndim < 2 or r.shape[-1] != 2:
         raise ValueError(f"rows must have shape (..., N, 2), got {r.shape}")
     if not np.isfinite(r).all():
@@ -213,7 +207,7 @@ def _stacked_rows(rows) -> np.ndarray:
 
 
 def _stacked_u_max(u_max, shape) -> np.ndarray:
-    u = np.asarray(u_max, dtype=float)
+    u = as_float_array(u_max, "u_max")
     if not np.isfinite(u).all() or (u < 0).any():
         raise ValueError("u_max must be finite and non-negative")
     try:
@@ -244,9 +238,12 @@ def lower_bounds(rows, u_max) -> np.ndarray:
     u = _stacked_u_max(u_max, r.shape[:-2])
     if r.shape[-2] < 2:
         return np.zeros(r.shape[:-2])
+    # the bound does not depend on the unit: bring each scene into the safe range (exact)
+    p = pow2_scale(np.abs(r).max(axis=(-2, -1)))
+    r, u = r / p[..., None, None], u / p
     sv = np.linalg.svd(r, compute_uv=False)
-    den = np.sqrt(sv[..., 0] ** 2 + u**2)
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        den = np.sqrt(sv[..., 0] ** 2 + u**2)
         return np.where(den > 0, sv[..., -1] / np.where(den > 0, den, 1.0), 0.0)
 
 
@@ -259,6 +256,8 @@ def worst_case_controls(rows, u_max) -> np.ndarray:
     """
     r = _stacked_rows(rows)
     u = _stacked_u_max(u_max, r.shape[:-2])
+    if r.shape[-2]:  # the direction does not depend on the unit: into the safe range (exact)
+        r = r / pow2_scale(np.abs(r).max(axis=(-2, -1)))[..., None, None]
     _, vecs = np.linalg.eigh(np.swapaxes(r, -1, -2) @ r)
     v = vecs[..., :, -1]
     flip = (v[..., 0] < 0) | ((v[..., 0] == 0) & (v[..., 1] < 0))

@@ -50,12 +50,16 @@ Computation.
 
 from __future__ import annotations
 
-from itertools import combinations
-
 import numpy as np
 
-from ._validate import as_point
+from ._kernels import GEMM_BLOCK as _GEMM_BLOCK, matmul_rows, pow2_scale, tr_det
+from ._validate import as_eps, as_float_array, as_int, as_measure_name, as_point, as_rank_rtol
 from .observability import observability_matrix, relative_rows
+
+# Old private names, still imported by modules outside this one (obslib.submodularity imports
+# _tr_det; obslib.teams, and through it obslib.team_study, the checks).
+_tr_det = tr_det
+_matmul_rows = matmul_rows
 
 __all__ = [
     "MEASURES",
@@ -89,26 +93,11 @@ MAX_GROUND_SET = 16
 
 
 def _check_name(name: str) -> str:
-    if name not in MEASURES:
-        raise ValueError(f"unknown measure {name!r}; known: {MEASURES}")
-    return name
+    return as_measure_name(name, MEASURES)
 
 
-def _check_eps(eps) -> float:
-    try:
-        e = float(eps)
-    except (TypeError, ValueError):
-        raise ValueError(f"eps must be a non-negative number, got {eps!r}") from None
-    if not np.isfinite(e) or e < 0:
-        raise ValueError(f"eps must be finite and non-negative, got {eps!r}")
-    return e
-
-
-def _check_rtol(rank_rtol) -> float:
-    r = float(rank_rtol)
-    if not (np.isfinite(r) and 0 <= r < 1):
-        raise ValueError(f"rank_rtol must be in [0, 1), got {rank_rtol!r}")
-    return r
+_check_eps = as_eps
+_check_rtol = as_rank_rtol
 
 
 def subset_masks(n: int) -> np.ndarray:
@@ -117,8 +106,7 @@ def subset_masks(n: int) -> np.ndarray:
     Row ``k`` is the subset whose elements are the set bits of ``k`` (element ``i`` <-> bit
     ``i``): row 0 is the empty set, row ``2**n - 1`` the whole ground set.
     """
-    if not isinstance(n, (int, np.integer)) or isinstance(n, bool) or n < 0:
-        raise ValueError(f"n must be a non-negative integer, got {n!r}")
+    n = as_int(n, "n", 0)
     if n > MAX_GROUND_SET:
         raise ValueError(f"ground set of {n} elements is too large to enumerate (max {MAX_GROUND_SET})")
     k = np.arange(2**n)[:, None]
@@ -155,70 +143,45 @@ def symmetric_observability_matrix(sensors, target, u=None, eps: float = 0.0) ->
     return O.T @ O + e * np.eye(2)
 
 
-#: Largest ``rows * inner * columns`` of one matrix product in :func:`_matmul_rows`.
-_GEMM_BLOCK = 1 << 18
+def _from_tr_det(name: str, tr, det, lmax, eps: float, rank_rtol: float, p=None):
+    """Measure ``name`` of ``G = A + eps I`` from ``tr``, ``det``, ``lambda_max`` of ``A = O^T O``.
 
-
-def _matmul_rows(x: np.ndarray, w: np.ndarray) -> np.ndarray:
-    """``x @ w`` for a 2-D ``x``, in blocks of rows.
-
-    The products here are thin (a few dozen inner terms): a multi-threaded BLAS spends more on
-    waking and spinning its threads than on the arithmetic, and steals the core the rest of the
-    computation runs on. Blocks of at most :data:`_GEMM_BLOCK` multiply-adds stay below
-    OpenBLAS's threading threshold. Measured on two cores with the default BLAS threads: a
-    ``(2000, 15) @ (15, 64)`` product takes 0.4 ms blocked against 8 ms whole, ``(20000, 15) @
-    (15, 64)`` 3 ms against 8 ms. The result equals ``x @ w`` to rounding, not bit for bit: BLAS
-    chooses its summation order by CPU and block shape (a test bounds the difference).
+    With ``p`` (a power of two per instance, broadcasting against ``tr``), ``tr``, ``det``,
+    ``lambda_max`` and ``eps`` are those of the scene in the unit ``p`` (rows divided by ``p``)
+    and the result is converted back to the original unit; ``eps`` may then be an array.
     """
-    if x.ndim != 2:
-        return x @ w
-    step = max(1, _GEMM_BLOCK // max(1, w.shape[0] * w.shape[1]))
-    if x.shape[0] <= step:
-        return x @ w
-    out = np.empty((x.shape[0], w.shape[1]))
-    for i in range(0, x.shape[0], step):
-        np.matmul(x[i:i + step], w, out=out[i:i + step])
-    return out
-
-
-def _tr_det(vectors: np.ndarray, masks: np.ndarray):
-    """``tr``, ``det``, ``lambda_max`` of ``sum_{k in S} v_k v_k^T`` for each row ``S`` of ``masks``.
-
-    ``vectors`` has shape ``(..., M, 2)`` and ``masks`` ``(K, M)``; the results have shape
-    ``(..., K)``. The determinant is the Cauchy-Binet sum of squared cross products.
-    """
-    m = masks.astype(float)
-    sq = np.einsum("...mk,...mk->...m", vectors, vectors)
-    tr = _matmul_rows(sq, m.T)
-    n = vectors.shape[-2]
-    if n >= 2:
-        a, b = np.array(list(combinations(range(n), 2))).T
-        cross = vectors[..., a, 0] * vectors[..., b, 1] - vectors[..., a, 1] * vectors[..., b, 0]
-        det = _matmul_rows(cross * cross, (m[:, a] * m[:, b]).T)
-    else:
-        det = np.zeros_like(tr)
-    half = 0.5 * tr
-    lmax = half + np.sqrt(np.maximum(half * half - det, 0.0))
-    return tr, det, lmax
-
-
-def _from_tr_det(name: str, tr, det, lmax, eps: float, rank_rtol: float):
-    """Measure ``name`` of ``G = A + eps I`` from ``tr``, ``det``, ``lambda_max`` of ``A = O^T O``."""
     if name == "trace":
-        return tr + 2.0 * eps
+        out = tr + 2.0 * eps
+        return out if p is None else _back(out * (p * p), name)
     with np.errstate(divide="ignore", invalid="ignore"):
         full = det > (rank_rtol * lmax) ** 2  # sigma_min / sigma_max > rank_rtol, and A != 0
     if name == "rank":
         return np.where(full, 2.0, np.where(tr > 0, 1.0, 0.0))
     det_g = det + eps * tr + eps * eps
     tr_g = tr + 2.0 * eps
-    if eps == 0.0:
-        det_g = np.where(full, det_g, 0.0)
+    if p is None:
+        if eps == 0.0:
+            det_g = np.where(full, det_g, 0.0)
+    else:
+        det_g = np.where(np.asarray(eps) == 0.0, np.where(full, det_g, 0.0), det_g)
     with np.errstate(divide="ignore", invalid="ignore"):
         if name == "logdet":
-            return np.where(det_g > 0, np.log(np.where(det_g > 0, det_g, 1.0)), -np.inf)
+            out = np.where(det_g > 0, np.log(np.where(det_g > 0, det_g, 1.0)), -np.inf)
+            return out if p is None else out + 4.0 * np.log(p)
         inv = np.where(det_g > 0, tr_g / np.where(det_g > 0, det_g, 1.0), np.inf)
+    if p is not None:
+        with np.errstate(over="ignore"):
+            inv = _back(np.where(np.isinf(inv), inv, inv / (p * p)), name, singular=np.isinf(inv))
     return inv if name == "trace_inverse" else -inv
+
+
+def _back(values, name, singular=None):
+    """Raise if converting a measure back to the original unit overflowed."""
+    over = np.isinf(values) if singular is None else np.isinf(values) & ~singular
+    if over.any():
+        raise ValueError(f"the {name} of these sensors and target overflows the float range "
+                         "(coordinates or eps too large or too small); use another unit of length")
+    return values
 
 
 def measure_from_vectors(vectors, masks, name: str, eps: float = 0.0, u=None,
@@ -256,22 +219,56 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
     ``names``; each table is bitwise the one :func:`measure_from_vectors` returns for that name
     (it is the same code). Parameters as in :func:`measure_from_vectors`.
     """
+    if isinstance(names, str):
+        raise TypeError(f"names must be a sequence of measure names, not the string {names!r}")
     for name in names:
         _check_name(name)
     e = _check_eps(eps)
     r = _check_rtol(rank_rtol)
-    v = np.asarray(vectors, dtype=float)
-    m = np.asarray(masks, dtype=bool)
+    v = as_float_array(vectors, "vectors")
+    m = np.asarray(masks)
+    if m.dtype.kind not in "biuf":
+        raise TypeError(f"masks must be booleans (or 0/1), got dtype {m.dtype}")
+    if m.dtype.kind != "b":
+        if not np.isin(m, (0, 1)).all():
+            raise ValueError("masks must hold only booleans or 0/1")
+        m = m.astype(bool)
     if v.ndim < 2 or v.shape[-1] != 2:
         raise ValueError(f"vectors must have shape (..., N, 2), got {v.shape}")
+    if not np.isfinite(v).all():
+        raise ValueError("vectors have a non-finite coordinate")
     if m.ndim != 2 or m.shape[1] != v.shape[-2]:
         raise ValueError(f"masks must have shape (K, {v.shape[-2]}), got {m.shape}")
     if u is not None:
-        uu = np.broadcast_to(np.asarray(u, dtype=float), v.shape[:-2] + (2,))
+        uu = as_float_array(u, "u")
+        if not np.isfinite(uu).all():
+            raise ValueError("u has a non-finite coordinate")
+        try:
+            uu = np.broadcast_to(uu, v.shape[:-2] + (2,))
+        except ValueError:
+            raise ValueError(f"u must have shape (2,) or {v.shape[:-2] + (2,)}, got {uu.shape}") from None
         v = np.concatenate([v, uu[..., None, :]], axis=-2)
         m = np.concatenate([m, np.ones((m.shape[0], 1), dtype=bool)], axis=1)
-    tr, det, lmax = _tr_det(v, m)
-    return {name: _from_tr_det(name, tr, det, lmax, e, r) for name in names}
+    # Scenes outside the safe range are computed in a unit of a power of two (exact) and
+    # converted back; the rest exactly as they are. The rank (a ratio) takes the unit from the
+    # rows alone; the other measures from the rows and eps (a squared length) together.
+    maxabs = np.abs(v).max(axis=(-2, -1), initial=0.0)
+    units = {"rank": pow2_scale(maxabs), "other": pow2_scale(np.maximum(maxabs, np.sqrt(e)))}
+    cache: dict = {}
+    out = {}
+    for name in names:
+        p = units["rank" if name == "rank" else "other"]
+        if (p == 1.0).all():
+            if "plain" not in cache:
+                cache["plain"] = tr_det(v, m)
+            out[name] = _from_tr_det(name, *cache["plain"], e, r)
+        else:
+            key = "rank" if name == "rank" else "other"
+            if key not in cache:
+                cache[key] = tr_det(v / p[..., None, None], m)
+            pp = p[..., None]
+            out[name] = _from_tr_det(name, *cache[key], e / (pp * pp), r, pp)
+    return out
 
 
 def measure_table(sensors, target, name: str, eps: float = 0.0, u=None, masks=None,

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validate import as_point, as_points, check_distinct, check_not_on_targets
+from ._validate import as_float_array, as_point, as_points, check_distinct, check_not_on_targets
 
 __all__ = [
     "observability_matrix",
@@ -70,29 +70,12 @@ def observability_matrix(sensors, target, u=None) -> np.ndarray:
     return np.vstack([rows, as_point(u, "u")])
 
 
-#: Up to this many rows the inverse condition number uses the closed form, beyond it the SVD.
-CLOSED_FORM_MAX_ROWS = 8
+from ._kernels import CLOSED_FORM_MAX_ROWS, gram_parts, inverse_condition, pow2_scale, ratio_from_gram  # noqa: E402
 
-
-def _inverse_condition(stack: np.ndarray) -> np.ndarray:
-    """``sigma_min / sigma_max`` of each ``(m, 2)`` matrix in ``stack`` (..., m, 2).
-
-    For ``G = O^T O`` (2 x 2), ``sigma_min / sigma_max = sqrt(lambda_min / lambda_max)
-    = sqrt(det G) / lambda_max`` with ``det G = sum_{k < l} (r_k x r_l)^2`` (Cauchy-Binet: a sum
-    of non-negative terms, accurate for nearly parallel rows) and
-    ``lambda_max = tr/2 + sqrt((tr/2)^2 - det)`` (no cancellation). For more than
-    :data:`CLOSED_FORM_MAX_ROWS` rows the pairs outnumber the SVD's work and the SVD is used.
-    A matrix with fewer than two rows has rank < 2, so its ratio is 0.
-    """
-    m = stack.shape[-2]
-    if m < 2:
-        return np.zeros(stack.shape[:-2])
-    if m > CLOSED_FORM_MAX_ROWS:
-        sv = np.linalg.svd(stack, compute_uv=False)
-        top = sv[..., 0]
-        with np.errstate(invalid="ignore", divide="ignore"):
-            return np.where(top > 0, sv[..., -1] / np.where(top > 0, top, 1.0), 0.0)
-    return _ratio_from_gram(*_gram_parts(stack))
+# Old private names, still imported by modules outside this one (obslib.tracking).
+_inverse_condition = inverse_condition
+_gram_parts = gram_parts
+_ratio_from_gram = ratio_from_gram
 
 
 def inverse_condition_number(sensors, target, u=None):
@@ -119,7 +102,7 @@ def inverse_condition_number(sensors, target, u=None):
     rows = relative_rows(sensors, target)
     if u is None:
         return float(_inverse_condition(rows))
-    uu = np.asarray(u, dtype=float) if not isinstance(u, np.ndarray) else u.astype(float)
+    uu = as_float_array(u, "u")
     if uu.ndim == 1:
         return float(_inverse_condition(np.vstack([rows, as_point(uu, "u")])))
     uu = as_points(uu, "u")
@@ -130,7 +113,7 @@ def inverse_condition_number(sensors, target, u=None):
 
 
 def _as_stack(x, name: str, min_ndim: int) -> np.ndarray:
-    arr = np.asarray(x, dtype=float)
+    arr = as_float_array(x, name)
     if arr.ndim < min_ndim or arr.shape[-1] != 2:
         raise ValueError(f"{name} must have shape (..., {'N, ' if min_ndim > 1 else ''}2), "
                          f"got {arr.shape}")
@@ -163,45 +146,24 @@ def inverse_condition_numbers(rows, u=None) -> np.ndarray:
         :func:`inverse_condition_number` to rounding (a test compares them scene by scene).
     """
     r = _as_stack(rows, "rows", 2)
-    det, tr = _gram_parts(r)
+    p = pow2_scale(np.abs(r).max(axis=(-2, -1), initial=0.0))  # per scene, into the safe range
     if u is not None:
         uu = _as_stack(u, "u", 1)
         single = uu.ndim == r.ndim - 1
         if single:
             uu = uu[..., None, :]
+        p = np.maximum(p, pow2_scale(np.abs(uu).max(axis=(-2, -1), initial=0.0)))
+        uu = uu / p[..., None, None]
+    r = r / p[..., None, None]
+    det, tr = gram_parts(r)
+    if u is not None:
         ux, uy = uu[..., 0][..., None], uu[..., 1][..., None]  # (..., K, 1)
         cu = r[..., None, :, 0] * uy - r[..., None, :, 1] * ux  # (..., K, N): r_k x u
         det = det[..., None] + np.einsum("...k,...k->...", cu, cu)
         tr = tr[..., None] + (uu[..., 0] ** 2 + uu[..., 1] ** 2)
         if single:
             det, tr = det[..., 0], tr[..., 0]
-    return _ratio_from_gram(det, tr)
-
-
-def _gram_parts(r: np.ndarray):
-    """``det`` (Cauchy-Binet sum of squared cross products) and ``tr`` of ``O^T O``, stacked."""
-    x, y = r[..., 0], r[..., 1]
-    a, b = np.triu_indices(r.shape[-2], 1)
-    cross = x[..., a] * y[..., b] - y[..., a] * x[..., b]
-    det = np.einsum("...k,...k->...", cross, cross)
-    tr = np.einsum("...k,...k->...", x, x) + np.einsum("...k,...k->...", y, y)
-    return det, tr
-
-
-def _ratio_from_gram(det, tr):
-    """``sqrt(det) / lambda_max`` with ``lambda_max = tr/2 + sqrt((tr/2)^2 - det)``; 0 if ``tr = 0``."""
-    half = np.multiply(tr, 0.5)
-    disc = np.asarray(half * half - det)  # a fresh array of the broadcast shape
-    np.maximum(disc, 0.0, out=disc)
-    np.sqrt(disc, out=disc)
-    lmax = np.asarray(disc + half)
-    np.sqrt(det, out=disc)
-    zero = lmax <= 0
-    if zero.any():
-        lmax[zero] = 1.0
-        disc[zero] = 0.0
-    disc /= lmax
-    return disc if disc.ndim else float(disc)
+    return ratio_from_gram(det, tr)
 
 
 def inverse_condition_numbers_polar(rows, radii, angles) -> np.ndarray:
@@ -228,15 +190,18 @@ def inverse_condition_numbers_polar(rows, radii, angles) -> np.ndarray:
     r = _as_stack(rows, "rows", 2)
     if r.ndim != 3:
         raise ValueError(f"rows must have shape (S, N, 2), got {r.shape}")
-    rho = np.asarray(radii, dtype=float)
-    phi = np.asarray(angles, dtype=float)
+    rho = as_float_array(radii, "radii")
+    phi = as_float_array(angles, "angles")
     if rho.ndim != 2 or rho.shape[0] != r.shape[0] or phi.ndim != 1:
         raise ValueError(f"need radii (S, R) with S = {r.shape[0]} and angles (A,), got "
                          f"{rho.shape}, {phi.shape}")
     if not (np.isfinite(rho).all() and np.isfinite(phi).all()) or (rho < 0).any():
         raise ValueError("radii must be finite and non-negative, angles finite")
-    det0, tr0 = _gram_parts(r)
+    p = np.maximum(pow2_scale(np.abs(r).max(axis=(-2, -1), initial=0.0)),
+                   pow2_scale(rho.max(axis=1, initial=0.0)))  # per scene, into the safe range
+    r, rho = r / p[:, None, None], rho / p[:, None]
+    det0, tr0 = gram_parts(r)
     c = r[:, None, :, 0] * np.sin(phi)[None, :, None] - r[:, None, :, 1] * np.cos(phi)[None, :, None]
     q = np.einsum("sak,sak->sa", c, c)  # (S, A): sum_k (r_k x e_phi)^2
     rho2 = (rho * rho)[:, :, None]  # (S, R, 1)
-    return _ratio_from_gram(det0[:, None, None] + rho2 * q[:, None, :], tr0[:, None, None] + rho2)
+    return ratio_from_gram(det0[:, None, None] + rho2 * q[:, None, :], tr0[:, None, None] + rho2)

@@ -17,9 +17,10 @@ from itertools import product
 
 import numpy as np
 
-from ._validate import as_points
+from ._kernels import pow2_scale
+from ._validate import as_float_array, as_points
 from .bounds import relative_vectors
-from .measures import RANK_RTOL, _check_eps, _check_name, _from_tr_det, measure_from_vectors, subset_masks
+from .measures import RANK_RTOL, _check_eps, _check_name, _check_rtol, _from_tr_det, measure_from_vectors, subset_masks
 
 __all__ = ["greedy_team_assignment", "greedy_team_counts", "optimal_team_assignment", "team_value", "MAXIMISABLE"]
 
@@ -47,7 +48,12 @@ def _check_measure(name: str, eps: float) -> None:
 def _rows(sensors, targets, u):
     v = relative_vectors(sensors, targets)  # (N, L, 2), validated
     if u is not None:
-        uu = as_points(np.broadcast_to(np.asarray(u, dtype=float), (v.shape[1], 2)), "u")
+        uu = as_float_array(u, "u")
+        try:
+            uu = np.broadcast_to(uu, (v.shape[1], 2))
+        except ValueError:
+            raise ValueError(f"u must have shape (2,) or ({v.shape[1]}, 2), got {uu.shape}") from None
+        uu = as_points(uu, "u")
     else:
         uu = np.zeros((v.shape[1], 2))
     return v, uu
@@ -87,6 +93,7 @@ def greedy_team_assignment(sensors, targets, measure: str = "logdet", eps: float
     """
     e = _check_eps(eps)
     _check_measure(measure, e)
+    rank_rtol = _check_rtol(rank_rtol)
     v, uu = _rows(sensors, targets, u)
     if v.shape[1] < 1:
         raise ValueError("there must be at least one target")
@@ -107,7 +114,8 @@ def greedy_team_counts(sensors, targets, measure: str = "logdet", eps: float = 1
     """
     e = _check_eps(eps)
     _check_measure(measure, e)
-    S, T = np.asarray(sensors, dtype=float), np.asarray(targets, dtype=float)
+    rank_rtol = _check_rtol(rank_rtol)
+    S, T = as_float_array(sensors, "sensors"), as_float_array(targets, "targets")
     if S.ndim != 3 or T.ndim != 3 or S.shape[0] != T.shape[0]:
         raise ValueError(f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}")
     if T.shape[1] < 1:
@@ -119,7 +127,40 @@ def greedy_team_counts(sensors, targets, measure: str = "logdet", eps: float = 1
 
 def _greedy_teams(v, uu, measure, e, rank_rtol):
     """The greedy of :func:`greedy_team_assignment` on a batch: ``v`` ``(K, N, L, 2)``, ``uu``
-    ``(K, L, 2)`` or None. Returns the picked sensors and targets, each ``(K, N)``, in order."""
+    ``(K, L, 2)`` or None. Returns the picked sensors and targets, each ``(K, N)``, in order.
+
+    Each instance is computed in a unit of a power of two that keeps its rows (and ``eps``, a
+    squared length) inside the safe range: 1 at ordinary scales (the arithmetic is then exactly
+    the plain one); the picks do not depend on the unit. Every instance's picks are checked to
+    use each sensor exactly once: teams come back valid or not at all.
+    """
+    top = np.abs(v).max(axis=(1, 2, 3), initial=0.0)
+    if uu is not None:
+        top = np.maximum(top, np.abs(uu).max(axis=(1, 2), initial=0.0))
+    p = pow2_scale(top if measure == "rank" else np.maximum(top, np.sqrt(e)))  # rank: no eps
+    if (p == p[:1]).all() if p.size else True:
+        c = float(p[0]) if p.size else 1.0
+        if c == 1.0:
+            picks = _greedy_teams_unit(v, uu, measure, e, rank_rtol)
+        else:
+            if measure in ("logdet", "neg_trace_inverse") and e / c / c < 2.0**-1000:
+                raise ValueError(
+                    f"eps = {e!r} is negligible against the squared distances (distances about "
+                    f"{c:.3g}): "
+                    f"the {measure!r} gains of teams of fewer than two sensors underflow; scale eps "
+                    "with the squared unit of length (e.g. eps = 1e-6 * distance**2)")
+            picks = _greedy_teams_unit(v / c, None if uu is None else uu / c, measure, e / c / c, rank_rtol)
+    else:  # instances in different units: one at a time
+        parts = [_greedy_teams(v[q:q + 1], None if uu is None else uu[q:q + 1], measure, e, rank_rtol)
+                 for q in range(v.shape[0])]
+        picks = tuple(np.concatenate([part[z] for part in parts]) for z in (0, 1))
+    n = v.shape[1]
+    if n and not (np.sort(picks[0], axis=1) == np.arange(n)).all():
+        raise RuntimeError("the greedy team assignment used a sensor twice (non-finite gains?)")
+    return picks
+
+
+def _greedy_teams_unit(v, uu, measure, e, rank_rtol):
     k, n, n_targets, _ = v.shape
     vx, vy = v[..., 0], v[..., 1]  # (K, N, L)
     # Per instance and target: tr and det of the team's A = sum r r^T, and for every sensor the
@@ -139,6 +180,8 @@ def _greedy_teams(v, uu, measure, e, rank_rtol):
         return _from_tr_det(measure, tr_, det_, lmax, e, rank_rtol)
 
     g = value(tr[:, None, :] + vx * vx + vy * vy, det[:, None, :] + C) - value(tr, det)[:, None, :]
+    if np.isnan(g).any():
+        raise RuntimeError("a marginal gain of the greedy team assignment is NaN")
     rows = np.arange(k)
     free = np.ones((k, n), dtype=bool)
     picks_i = np.empty((k, n), dtype=np.int64)

@@ -157,7 +157,7 @@ def test_direction_table():
         (lambda: me.measure([[0, 0]], [1, 1], "rank", rank_rtol=2.0), "rank_rtol"),
         (lambda: me.measure_table([[0, 0], [1, 0]], [1, 1], "trace", masks=np.ones((2, 3))), "masks"),
         (lambda: me.measure_from_vectors(np.ones((3, 3)), np.ones((1, 3)), "trace"), "vectors"),
-        (lambda: me.subset_masks(-1), "non-negative"),
+        (lambda: me.subset_masks(-1), "n must be at least 0"),
         (lambda: me.subset_masks(40), "too large"),
     ],
 )
