@@ -228,14 +228,31 @@ def bench_book(profile: str = "paper") -> dict:
     }
 
 
-def main(argv=None) -> int:
+def parse_args(argv=None) -> argparse.Namespace:
+    """Parse and check the command line; a bad profile or path is an argparse error (exit 2)."""
+    from pathlib import Path
+
+    from .profiles import profile_names
+
     ap = argparse.ArgumentParser(prog="python -m obslib.bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("which", choices=["assignment", "book", "scaling"], help="benchmark to run")
     ap.add_argument("--write", help="scaling: also write the JSON to this file")
-    ap.add_argument("--profile", default="paper",
+    ap.add_argument("--profile", default="paper", choices=profile_names(),
                     help="book: parameter profile of the notebooks (default: paper, their defaults)")
     args = ap.parse_args(argv)
+    if args.write is not None:
+        if args.which != "scaling":
+            ap.error("--write applies to the scaling benchmark only")
+        if not args.write or Path(args.write).is_dir():
+            ap.error(f"--write {args.write!r}: give a file name")
+    if args.profile != "paper" and args.which != "book":
+        ap.error("--profile applies to the book benchmark only")
+    return args
+
+
+def main(argv=None) -> int:
+    args = parse_args(argv)
     if args.which == "assignment":
         result = bench_assignment()
     elif args.which == "book":

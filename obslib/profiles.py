@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import copy
 
-__all__ = ["PROFILES", "params", "profile_names"]
+__all__ = ["PROFILES", "RANGES", "params", "profile_names", "check_parameters"]
 
 PROFILES: dict[str, dict[str, dict]] = {
     "paper": {
@@ -159,4 +159,143 @@ def params(notebook: str, profile: str = "paper") -> dict:
         raise ValueError(f"no parameters for notebook {notebook!r}; known: {list(PROFILES['paper'])}")
     out = copy.deepcopy(PROFILES["paper"][notebook])
     out.update(PROFILES[profile].get(notebook, {}))
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# Accepted values of the notebooks' parameters
+# --------------------------------------------------------------------------------------------
+
+#: Range of each parameter beyond its type (the type is that of the notebook's default):
+#: ``(lower, upper, lower_open)`` for numbers and for the entries of lists, a tuple of choices
+#: for strings. Parameters not listed accept any value of their type.
+RANGES: dict[str, tuple] = {
+    "seed": (0, None, False),
+    **{name: (1, None, False) for name in (
+        "n_scenes", "n_controls", "n_trials_thm3", "n_radii", "n_angles", "fine_alpha_per_unit",
+        "fine_theta_quarter", "n_theta_curve", "n_rational_points", "digits", "n_random_points",
+        "n_weyl", "n_instances", "targets_min", "targets_max", "search_sensors", "search_targets",
+        "n_starts", "n_steps", "n_sensors", "n_seeds", "steps", "anim_every", "anim_dpi",
+        "n_seeds_strong", "L_max", "trials", "optimum_max_L", "trials_extended", "n_targets",
+        "N_min", "N_max", "compare_trials", "n_tiny", "L_extended", "compare_N", "greedy_sizes",
+        "literal_sizes", "relaxed_sizes")},
+    "extra_max": (0, None, False),
+    "min_size": (0, None, False),
+    "u_max": (0.0, None, False),
+    "noise_std": (0.0, None, False),
+    "u_over_d_curves": (0.0, None, False),
+    **{name: (0.0, None, True) for name in (
+        "d_io", "alpha_max", "paper_step", "q", "r", "p0", "side", "eps", "eps_values")},
+    "contour_levels": (0.0, 1.0, True),
+    "metric": ("mahalanobis", "euclidean"),
+}
+
+#: Pairs of parameters whose values must be ordered (first <= second).
+ORDERED = (("targets_min", "targets_max"), ("N_min", "N_max"))
+
+
+def _describe(kind: type, rule) -> str:
+    noun = {int: "an integer", float: "a number", str: "a string", bool: "True or False"}[kind]
+    if rule is None:
+        return noun
+    if kind is str:
+        return "one of " + ", ".join(repr(c) for c in rule)
+    lo, hi, lo_open = rule
+    if hi is None:
+        return f"{noun} {'>' if lo_open else '>='} {lo}"
+    return f"{noun} in {'(' if lo_open else '['}{lo}, {hi}]"
+
+
+def _accepts(kind: type, rule, value):
+    """``value`` converted to ``kind`` if it is accepted, else ``None``."""
+    import math
+
+    if kind is bool:
+        return value if isinstance(value, bool) else None
+    if isinstance(value, bool):
+        return None
+    if kind is int:
+        if not isinstance(value, int):
+            return None
+    elif kind is float:
+        if not isinstance(value, (int, float)) or not math.isfinite(value):
+            return None
+        value = float(value)
+    elif kind is str:
+        if not isinstance(value, str) or not value:
+            return None
+        if rule is not None and value not in rule:
+            return None
+        return value
+    if rule is not None:
+        lo, hi, lo_open = rule
+        if value < lo or (lo_open and value == lo) or (hi is not None and value > hi):
+            return None
+    return value
+
+
+def check_parameters(notebook: str, values: dict, defaults: dict) -> dict:
+    """Check parameter ``values`` for ``notebook`` against its declared ``defaults``.
+
+    Parameters
+    ----------
+    notebook : str
+        The notebook's stem, for the messages.
+    values : dict
+        Parameter name -> value to inject.
+    defaults : dict
+        The notebook's declared parameters (its ``parameters`` cell) with their default values;
+        each value's type must be that of its default (an integer where the default is an
+        integer, a number where it is a float, a list of such where it is a list), within
+        :data:`RANGES`.
+
+    Returns
+    -------
+    dict
+        The values, numbers converted to the default's type (``3`` -> ``3.0`` for a float).
+
+    Raises
+    ------
+    ValueError
+        Naming the notebook, the parameter and the accepted values.
+
+    Examples
+    --------
+    >>> check_parameters("05_two_sensors_tracking", {"n_seeds": 5}, {"n_seeds": 200})
+    {'n_seeds': 5}
+    >>> check_parameters("05_two_sensors_tracking", {"n_seeds": -5}, {"n_seeds": 200})
+    Traceback (most recent call last):
+    ...
+    ValueError: notebook 05_two_sensors_tracking: parameter n_seeds = -5 is not accepted; expected an integer >= 1
+    """
+    unknown = sorted(set(values) - set(defaults))
+    if unknown:
+        raise ValueError(f"notebook {notebook} has no parameter(s) {unknown}; "
+                         f"its parameters: {sorted(defaults)}")
+    out = {}
+    for name, value in values.items():
+        default = defaults[name]
+        rule = RANGES.get(name)
+        if isinstance(default, list):
+            kinds = {type(x) for x in default}
+            kind = float if float in kinds else (kinds.pop() if len(kinds) == 1 else float)
+            ok = isinstance(value, list) and value and all(
+                _accepts(kind, rule, x) is not None for x in value)
+            if not ok:
+                raise ValueError(f"notebook {notebook}: parameter {name} = {value!r} is not accepted; "
+                                 f"expected a non-empty list of {_describe(kind, rule)[0:]}"
+                                 .replace("list of an ", "list of ").replace("list of a ", "list of "))
+            out[name] = [_accepts(kind, rule, x) for x in value]
+            continue
+        kind = type(default)
+        got = _accepts(kind, rule, value)
+        if got is None:
+            raise ValueError(f"notebook {notebook}: parameter {name} = {value!r} is not accepted; "
+                             f"expected {_describe(kind, rule)}")
+        out[name] = got
+    merged = {**defaults, **out}
+    for a, b in ORDERED:
+        if a in merged and b in merged and merged[a] > merged[b]:
+            raise ValueError(f"notebook {notebook}: parameters {a} = {merged[a]!r} and {b} = "
+                             f"{merged[b]!r} are not accepted; expected {a} <= {b}")
     return out

@@ -28,7 +28,8 @@ import time
 from pathlib import Path
 
 __all__ = [
-    "ROOT", "NOTEBOOK_DIR", "RUNS_DIR", "notebooks", "resolve", "precompile", "execute", "execution_page", "main",
+    "ROOT", "NOTEBOOK_DIR", "RUNS_DIR", "notebooks", "resolve", "declared_parameters", "plan", "precompile", "execute",
+    "execution_page", "main",
 ]
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -69,6 +70,50 @@ def _literal(text: str):
         return ast.literal_eval(text)
     except (ValueError, SyntaxError):
         return text
+
+
+def declared_parameters(path: Path) -> dict:
+    """The parameters a notebook declares (its tagged ``parameters`` cell) with their defaults."""
+    import papermill as pm
+
+    out = {}
+    for name, info in pm.inspect_notebook(str(path)).items():
+        try:
+            out[name] = ast.literal_eval(info["default"])
+        except (ValueError, SyntaxError):  # not a literal: accept any value of no checked type
+            out[name] = info["default"]
+    return out
+
+
+def plan(paths, profile: str | None, overrides: dict, in_place: bool) -> list:
+    """``(notebook, destination, parameters)`` of every run, all parameters checked first.
+
+    Every notebook's parameters (profile values and ``-p`` overrides) are checked against the
+    parameters it declares (:func:`obslib.profiles.check_parameters`) before anything runs, so
+    a bad value or a name unknown to the second notebook fails before the first starts.
+
+    Raises
+    ------
+    ValueError
+        Naming the notebook, the parameter and the accepted values.
+    """
+    from .profiles import PROFILES, check_parameters, params
+
+    label = profile or "custom"
+    if profile and overrides:
+        label = f"{profile}-custom"
+    runs = []
+    for nb in paths:
+        if in_place:
+            runs.append((nb, nb, {}))
+            continue
+        parameters = {}
+        if profile and nb.stem in PROFILES["paper"]:
+            parameters = params(nb.stem, profile)
+        parameters.update(overrides)
+        parameters = check_parameters(nb.stem, parameters, declared_parameters(nb))
+        runs.append((nb, RUNS_DIR / label / nb.name, parameters))
+    return runs
 
 
 def _merge_streams(outputs: list) -> list:
@@ -192,7 +237,7 @@ def main(argv=None) -> int:
                     help="override one parameter (repeatable)")
     args = ap.parse_args(argv)
 
-    from .profiles import PROFILES, params
+    from .profiles import PROFILES
 
     if args.in_place and (args.profile or args.p):
         ap.error("--in-place runs the defaults; reruns with --profile or -p go to _build/runs/")
@@ -206,20 +251,13 @@ def main(argv=None) -> int:
     if not args.in_place and not args.profile and not overrides:
         ap.error("say --in-place (make book), --profile NAME or -p NAME VALUE")
 
-    label = args.profile or "custom"
-    if args.profile and overrides:
-        label = f"{args.profile}-custom"
+    try:
+        runs = plan(paths, args.profile, overrides, args.in_place)
+    except ValueError as exc:
+        ap.error(str(exc))
     times = {}
     precompile()
-    for nb in paths:
-        if args.in_place:
-            dst, parameters = nb, {}
-        else:
-            dst = RUNS_DIR / label / nb.name
-            parameters = {}
-            if args.profile and nb.stem in PROFILES["paper"]:
-                parameters = params(nb.stem, args.profile)
-            parameters.update(overrides)
+    for nb, dst, parameters in runs:
         try:
             dt = execute(nb, dst, parameters)
         except Exception as exc:  # papermill raises PapermillExecutionError with the traceback

@@ -68,3 +68,83 @@ def test_stream_chunks_are_merged():
     ]
     merged = run._merge_streams(outs)
     assert [o.get("text") for o in merged] == ["a\nb\n", "w\n", None, "c\n"]
+
+
+# --------------------------------------------------------------------------- parameters checked first
+
+
+@pytest.mark.parametrize("value, expected", [
+    ("abc", "an integer >= 1"), ("-5", "an integer >= 1"), ("2.5", "an integer >= 1"),
+    ("True", "an integer >= 1"), ("None", "an integer >= 1"), ("0", "an integer >= 1"),
+])
+def test_bad_parameter_value_fails_before_any_notebook_runs(value, expected, monkeypatch, capsys):
+    ran = []
+    monkeypatch.setattr(run, "execute", lambda *a, **k: ran.append(a))
+    with pytest.raises(SystemExit) as exc:
+        run.main(["-p", "n_seeds", value, "05"])
+    assert exc.value.code == 2 and not ran
+    err = capsys.readouterr().err
+    assert "n_seeds" in err and "05_two_sensors_tracking" in err and expected in err
+
+
+def test_unknown_parameter_of_the_second_notebook_fails_before_the_first(monkeypatch, capsys):
+    ran = []
+    monkeypatch.setattr(run, "execute", lambda *a, **k: ran.append(a))
+    with pytest.raises(SystemExit) as exc:
+        run.main(["-p", "n_seeds", "5", "05", "01"])
+    assert exc.value.code == 2 and not ran
+    assert "01_model_and_bound has no parameter(s) ['n_seeds']" in capsys.readouterr().err
+
+
+def test_parameter_checks_accept_good_values_and_convert_numbers():
+    from obslib.profiles import check_parameters
+
+    d = {"u_max": 3.0, "n_seeds": 200, "metric": "mahalanobis", "eps_values": [1e-6, 1.0]}
+    assert check_parameters("nb", {"u_max": 2, "n_seeds": 3}, d) == {"u_max": 2.0, "n_seeds": 3}
+    assert check_parameters("nb", {"eps_values": [1, 0.5]}, d) == {"eps_values": [1.0, 0.5]}
+    for bad in ({"metric": "no"}, {"u_max": -1.0}, {"u_max": float("nan")}, {"eps_values": [0.0]},
+                {"eps_values": []}, {"eps_values": 1.0}, {"n_seeds": 5.0}):
+        with pytest.raises(ValueError, match=f"parameter {next(iter(bad))}"):
+            check_parameters("nb", bad, d)
+    with pytest.raises(ValueError, match="N_min <= N_max"):
+        check_parameters("nb", {"N_min": 60}, {"N_min": 20, "N_max": 50})
+
+
+@pytest.mark.parametrize("profile", ["paper", "quick"])
+def test_every_profile_passes_the_parameter_checks(profile):
+    # the profiles' values are legal for the notebooks that declare them (the defaults too)
+    from obslib.profiles import PROFILES, check_parameters, params
+
+    for nb in run.notebooks():
+        if nb.stem in PROFILES["paper"]:
+            declared = run.declared_parameters(nb)
+            check_parameters(nb.stem, params(nb.stem, profile), declared)
+            check_parameters(nb.stem, declared, declared)
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--id", "nosuch"], "unknown claim id"),
+    (["--profile", "nosuch"], "invalid choice"),
+    (["--write", "/nonexistent-dir/report.md"], "does not exist"),
+    (["--write", "."], "is a directory"),
+])
+def test_claims_cli_errors_are_argparse_errors(argv, message, capsys):
+    from obslib.claims.__main__ import parse_args
+
+    with pytest.raises(SystemExit) as exc:
+        parse_args(argv)
+    assert exc.value.code == 2 and message in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["book", "--profile", "nosuch"], "invalid choice"),
+    (["nosuch"], "invalid choice"),
+    (["book", "--write", "x.json"], "scaling benchmark only"),
+    (["scaling", "--write", "."], "give a file name"),
+])
+def test_bench_cli_errors_are_argparse_errors(argv, message, capsys):
+    from obslib.bench import parse_args
+
+    with pytest.raises(SystemExit) as exc:
+        parse_args(argv)
+    assert exc.value.code == 2 and message in capsys.readouterr().err

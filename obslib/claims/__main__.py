@@ -8,16 +8,37 @@ import sys
 from dataclasses import asdict
 from pathlib import Path
 
-from . import evaluate, render_report
+from . import evaluate, registry, render_report
+from ..profiles import profile_names
 
 
-def main(argv=None) -> int:
+def parse_args(argv=None) -> argparse.Namespace:
+    """Parse and check the command line; bad ids, profiles and paths are argparse errors (exit 2)."""
     ap = argparse.ArgumentParser(prog="python -m obslib.claims", description=__doc__)
-    ap.add_argument("--profile", default="paper", help="parameter profile (default: paper)")
+    ap.add_argument("--profile", default="paper", choices=profile_names(),
+                    help="parameter profile (default: paper)")
     ap.add_argument("--id", action="append", dest="ids", help="only this claim (repeatable)")
     ap.add_argument("--write", type=Path, help="write the report page (MyST Markdown) here")
     ap.add_argument("--json", action="store_true", help="print the records as JSON")
     args = ap.parse_args(argv)
+    if args.ids:
+        known = list(registry())
+        unknown = [i for i in args.ids if i not in known]
+        if unknown:
+            ap.error(f"unknown claim id(s) {unknown}; known: {', '.join(known)}")
+    if args.write is not None:
+        if args.write.is_dir():
+            ap.error(f"--write {args.write}: is a directory, give a file name")
+        parent = args.write.parent
+        if not parent.is_dir():
+            ap.error(f"--write {args.write}: directory {parent} does not exist")
+    if args.write is not None and args.json:
+        ap.error("give --write or --json, not both")
+    return args
+
+
+def main(argv=None) -> int:
+    args = parse_args(argv)
     records = evaluate(args.profile, args.ids)
     if args.write:
         text = render_report(records, args.profile)
