@@ -42,15 +42,17 @@ SAFE_RANGE = (2.0**-120, 2.0**120)
 
 
 def pow2_scale(maxabs, even: bool = False) -> np.ndarray:
-    """A power of two ``p`` per entry of ``maxabs`` with ``maxabs / p`` in ``[0.5, 1)``.
+    """A power of two ``p`` per entry of ``maxabs`` with ``maxabs / p`` in ``[1, 2)``.
 
     ``p = 1`` where ``maxabs`` is 0 or inside :data:`SAFE_RANGE`, so those scenes are computed
-    exactly as before. With ``even``, ``p`` is a power of four (its square root is exact).
+    exactly as before. With ``even``, ``p`` is a power of four (its square root is exact) and
+    ``maxabs / p`` is in ``[1, 4)``. ``p`` is at most ``2**1023``, always finite.
     """
     m = np.asarray(maxabs, dtype=float)
     _, e = np.frexp(m)
+    e = e - 1  # maxabs = f 2^e with f in [1, 2)
     if even:
-        e = e + (e & 1)
+        e = e - (e & 1)
     inside = (m == 0) | ((m >= SAFE_RANGE[0]) & (m <= SAFE_RANGE[1]))
     return np.where(inside, 1.0, np.ldexp(1.0, np.where(inside, 0, e)))
 
@@ -87,8 +89,9 @@ def pair_kernel(xi, yi, xj, yj, u2):
     cross *= cross  # det = lambda_min * lambda_max
     den = np.add(lmax, u2, out=dot)
     den *= lmax
-    with np.errstate(invalid="ignore"):
-        cross /= den  # 0/0 only for a zero row, which validation excludes
+    # den = 0 only if both rows are 0 in this unit: a sensor 2**-1000 times closer to the target
+    # than another (beyond the float range); its cross product is then 0 too, and stays 0.
+    np.divide(cross, den, out=cross, where=den > 0)
     np.sqrt(cross, out=cross)
     return cross
 
@@ -104,7 +107,8 @@ def normalise(v: np.ndarray, u) -> tuple:
     """
     n, n_targets = v.shape[0], v.shape[1]
     if n == 0:
-        return v, np.broadcast_to(np.asarray(u, dtype=float) ** 2, (n_targets,)).copy()
+        with np.errstate(over="ignore"):
+            return v, np.broadcast_to(np.asarray(u, dtype=float) ** 2, (n_targets,)).copy()
     p = pow2_scale(np.abs(v).max(axis=(0, 2)))  # (L,)
     v = v / p[None, :, None]
     scale = np.sqrt(np.einsum("nlk,nlk->nl", v, v).max(axis=0))
@@ -128,7 +132,8 @@ def mahalanobis_rescale(v: np.ndarray, cov: np.ndarray) -> tuple:
     d_maha2 = np.einsum("nlk,lkm,nlm->nl", vs, prec, vs)
     d_eucl2 = np.einsum("nlk,nlk->nl", vs, vs)
     w = vs * np.sqrt(d_maha2 / d_eucl2)[..., None]
-    return w, pv / np.sqrt(pc)
+    with np.errstate(over="ignore"):  # inf: the true lengths are beyond the float range
+        return w, pv / np.sqrt(pc)
 
 
 def gram_parts(r: np.ndarray):

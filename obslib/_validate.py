@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = [
+    "ArgumentTypeError",
     "as_float_array",
     "as_points",
     "as_point",
@@ -30,6 +31,12 @@ __all__ = [
 ]
 
 
+class ArgumentTypeError(TypeError, ValueError):
+    """An argument of the wrong type (a bool, complex number, string or None where a real number
+    is expected). Both a :class:`TypeError` and, like every other bad input of the library, a
+    :class:`ValueError` (as NumPy's ``AxisError`` is both a ValueError and an IndexError)."""
+
+
 def as_float_array(x, name: str) -> np.ndarray:
     """``x`` as a float array; booleans, complex numbers, strings and ``None`` are refused.
 
@@ -37,19 +44,19 @@ def as_float_array(x, name: str) -> np.ndarray:
     here both are a :class:`TypeError` naming ``name``.
     """
     if x is None:
-        raise TypeError(f"{name} must be numeric, got None")
+        raise ArgumentTypeError(f"{name} must be numeric, got None")
     arr = np.asarray(x)
     if arr.dtype.kind == "O":
         try:
             arr = np.asarray(x, dtype=float)
         except (TypeError, ValueError) as exc:
-            raise TypeError(f"{name} must be numeric: {exc}") from None
+            raise ArgumentTypeError(f"{name} must be numeric: {exc}") from None
     if arr.dtype.kind == "b":
-        raise TypeError(f"{name} must be numeric, got booleans")
+        raise ArgumentTypeError(f"{name} must be numeric, got booleans")
     if arr.dtype.kind == "c":
-        raise TypeError(f"{name} must be real, got complex numbers")
+        raise ArgumentTypeError(f"{name} must be real, got complex numbers")
     if arr.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be numeric, got dtype {arr.dtype}")
+        raise ArgumentTypeError(f"{name} must be numeric, got dtype {arr.dtype}")
     return arr.astype(float, copy=False)
 
 
@@ -193,7 +200,7 @@ def check_differences(diff: np.ndarray, what: str = "target") -> None:
 def as_int(value, name: str, minimum: int | None = None) -> int:
     """An integer argument: ``int`` or NumPy integer (not bool, not ``2.0``), at least ``minimum``."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-        raise TypeError(f"{name} must be an integer, got {value!r}")
+        raise ArgumentTypeError(f"{name} must be an integer, got {value!r}")
     if minimum is not None and value < minimum:
         raise ValueError(f"{name} must be at least {minimum}, got {value}")
     return int(value)
@@ -202,13 +209,13 @@ def as_int(value, name: str, minimum: int | None = None) -> int:
 def as_bool(value, name: str) -> bool:
     """A flag: ``True`` or ``False`` only (a string such as ``"no"`` would be truthy)."""
     if not isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name} must be True or False, got {value!r}")
+        raise ArgumentTypeError(f"{name} must be True or False, got {value!r}")
     return bool(value)
 
 
 def _as_real(value, name: str) -> float:
     if isinstance(value, (bool, np.bool_)) or value is None:
-        raise TypeError(f"{name} must be a real number, got {value!r}")
+        raise ArgumentTypeError(f"{name} must be a real number, got {value!r}")
     arr = as_float_array(value, name)
     if arr.ndim != 0:
         raise ValueError(f"{name} must be a scalar, got shape {arr.shape}")
@@ -254,7 +261,7 @@ def as_weights(W) -> np.ndarray:
         raise ValueError(f"W[{i}, {j}, {l}] is not finite")
     if (arr < 0).any():
         i, j, l = (int(v) for v in np.argwhere(arr < 0)[0])
-        raise ValueError(f"W[{i}, {j}, {l}] = {arr[i, j, l]!r} is negative; pair weights must be >= 0")
+        raise ValueError(f"W[{i}, {j}, {l}] = {float(arr[i, j, l])!r} is negative; pair weights must be >= 0")
     if not np.array_equal(arr, arr.transpose(1, 0, 2)):
         i, j, l = (int(v) for v in np.argwhere(arr != arr.transpose(1, 0, 2))[0])
         raise ValueError(f"W must be symmetric in its first two indices (pair weights): "

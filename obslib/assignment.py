@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._kernels import normalise, pair_kernel
-from ._validate import as_bool, as_float_array, as_int, as_points, as_u_max, as_weights, check_weight_memory
+from ._validate import ArgumentTypeError, as_bool, as_float_array, as_int, as_points, as_u_max, as_weights, check_weight_memory
 from .bounds import _relative_vectors
 
 __all__ = [
@@ -426,6 +426,8 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
 
     v, u2 = _geometry(sensors, targets, u_max, cov)
     n, n_targets = v.shape[0], v.shape[1]
+    if n_targets < 1:
+        raise ValueError("there must be at least one target")
     if n < 2:
         raise ValueError(f"pairs need at least two sensors, got {n}")
     source = _GeometrySource(v, u2)
@@ -496,12 +498,19 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
     _check_sizes(n, n_targets)
     if time_limit is not None:
         if isinstance(time_limit, bool) or not isinstance(time_limit, (int, float, np.integer, np.floating)):
-            raise TypeError(f"time_limit must be a number of seconds or None, got {time_limit!r}")
+            raise ArgumentTypeError(f"time_limit must be a number of seconds or None, got {time_limit!r}")
         if not (np.isfinite(time_limit) and time_limit > 0):
             raise ValueError(f"time_limit must be positive and finite, got {time_limit!r}")
     ii, jj = np.triu_indices(n, 1)
     n_pairs = ii.size
     c = -arr[ii, jj, :].reshape(-1)  # variable index p * L + l
+    top = float(-c.min(initial=0.0))
+    if top == 0.0:  # every weight is 0: assigning nothing is optimal (HiGHS cannot rank zeros)
+        return PairAssignment(triples=[], value=0.0)
+    # HiGHS treats |c| >= 1e20 as infinite and has absolute tolerances near 1e-9: weights far
+    # outside [2**-20, 2**20] are divided by a power of two first (the optimum does not change).
+    if not 2.0**-20 <= top <= 2.0**20:
+        c = c / 2.0 ** (np.frexp(top)[1] - 1)
     var = np.arange(n_pairs * n_targets)
     p_of, l_of = var // n_targets, var % n_targets
     target_rows = coo_matrix((np.ones(var.size), (l_of, var)), shape=(n_targets, var.size))

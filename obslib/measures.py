@@ -53,7 +53,7 @@ from __future__ import annotations
 import numpy as np
 
 from ._kernels import GEMM_BLOCK as _GEMM_BLOCK, matmul_rows, pow2_scale, tr_det
-from ._validate import as_eps, as_float_array, as_int, as_measure_name, as_point, as_rank_rtol
+from ._validate import ArgumentTypeError, as_eps, as_float_array, as_int, as_measure_name, as_point, as_rank_rtol
 from .observability import observability_matrix, relative_rows
 
 # Old private names, still imported by modules outside this one (obslib.submodularity imports
@@ -220,7 +220,7 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
     (it is the same code). Parameters as in :func:`measure_from_vectors`.
     """
     if isinstance(names, str):
-        raise TypeError(f"names must be a sequence of measure names, not the string {names!r}")
+        raise ArgumentTypeError(f"names must be a sequence of measure names, not the string {names!r}")
     for name in names:
         _check_name(name)
     e = _check_eps(eps)
@@ -228,7 +228,7 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
     v = as_float_array(vectors, "vectors")
     m = np.asarray(masks)
     if m.dtype.kind not in "biuf":
-        raise TypeError(f"masks must be booleans (or 0/1), got dtype {m.dtype}")
+        raise ArgumentTypeError(f"masks must be booleans (or 0/1), got dtype {m.dtype}")
     if m.dtype.kind != "b":
         if not np.isin(m, (0, 1)).all():
             raise ValueError("masks must hold only booleans or 0/1")

@@ -24,6 +24,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._validate import ArgumentTypeError, as_float_array, as_int
+
 __all__ = [
     "Scene",
     "random_scene",
@@ -76,6 +78,26 @@ def random_scene(
     return Scene(sensors=sensors, target=target, u_max=u_max, kind=kind)
 
 
+def _check_draw(n_scenes, seed, n_sensors, scale, kinds, min_scenes):
+    """Validated arguments of :func:`random_scenes` and :func:`random_scene_batch`."""
+    n_scenes = as_int(n_scenes, "n_scenes", min_scenes)
+    seed = as_int(seed, "seed", 0)
+    if isinstance(kinds, str) or not all(isinstance(k, str) for k in kinds) or not len(kinds):
+        raise ArgumentTypeError(f"kinds must be a non-empty sequence of names from {SCENE_KINDS}, got {kinds!r}")
+    for kind in kinds:
+        if kind not in SCENE_KINDS:
+            raise ValueError(f"kind must be one of {SCENE_KINDS}, got {kind!r}")
+    if len(n_sensors) != 2:
+        raise ValueError(f"n_sensors must be (lo, hi), got {n_sensors!r}")
+    lo_n, hi_n = as_int(n_sensors[0], "n_sensors[0]", 1), as_int(n_sensors[1], "n_sensors[1]", 1)
+    if hi_n < lo_n:
+        raise ValueError(f"n_sensors must be (lo, hi) with 1 <= lo <= hi, got {n_sensors}")
+    sc = as_float_array(scale, "scale")
+    if sc.shape != (2,) or not np.isfinite(sc).all() or (sc <= 0).any() or sc[1] < sc[0]:
+        raise ValueError(f"scale must be (lo, hi) with 0 < lo <= hi finite, got {scale!r}")
+    return n_scenes, seed, (lo_n, hi_n), (float(sc[0]), float(sc[1])), tuple(kinds)
+
+
 def random_scenes(
     n_scenes: int,
     seed: int,
@@ -88,6 +110,7 @@ def random_scenes(
     The number of sensors is uniform in ``n_sensors`` (inclusive) and the length scale is
     log-uniform in ``scale``.
     """
+    n_scenes, seed, n_sensors, scale, kinds = _check_draw(n_scenes, seed, n_sensors, scale, kinds, 0)
     rng = np.random.default_rng(seed)
     lo, hi = np.log10(scale[0]), np.log10(scale[1])
     out = []
@@ -180,14 +203,8 @@ def random_scene_batch(
     :func:`random_scene`), drawn array by array instead of scene by scene, so the stream (and
     hence the scenes) differ from :func:`random_scenes` with the same seed.
     """
-    if n_scenes < 1:
-        raise ValueError(f"n_scenes must be at least 1, got {n_scenes}")
-    for kind in kinds:
-        if kind not in SCENE_KINDS:
-            raise ValueError(f"kind must be one of {SCENE_KINDS}, got {kind!r}")
-    lo_n, hi_n = int(n_sensors[0]), int(n_sensors[1])
-    if lo_n < 1 or hi_n < lo_n:
-        raise ValueError(f"n_sensors must be (lo, hi) with 1 <= lo <= hi, got {n_sensors}")
+    n_scenes, seed, n_sensors, scale, kinds = _check_draw(n_scenes, seed, n_sensors, scale, kinds, 1)
+    lo_n, hi_n = n_sensors
     rng = np.random.default_rng(seed)
     S, M = int(n_scenes), hi_n
     counts = rng.integers(lo_n, hi_n + 1, size=S)

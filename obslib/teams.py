@@ -249,6 +249,8 @@ def optimal_team_assignment(sensors, targets, measure: str = "logdet", eps: floa
     )  # (L, 2^N), subset k = bitmask k
     labels, team_masks = _labellings(n, n_targets)
     total = _assignment_totals(tables, team_masks)
+    if np.isnan(total).any():
+        raise RuntimeError("an assignment's total is NaN")
     best = int(np.argmax(total))
     teams = [[int(i) for i in np.flatnonzero(labels[best] == l)] for l in range(n_targets)]
     return teams, float(total[best])
@@ -260,7 +262,7 @@ def _labellings(n: int, n_targets: int):
     Returns ``labels`` ``(A, N)`` (the target of each sensor, in lexicographic order) and
     ``team_masks`` ``(L, A)``: the bitmask of target ``l``'s team in each assignment.
     """
-    labels = np.array(list(product(range(n_targets), repeat=n)), dtype=np.int64).reshape(-1, n)
+    labels = np.array(list(product(range(n_targets), repeat=n)), dtype=np.int64).reshape(n_targets**n, n)
     bits = 1 << np.arange(n, dtype=np.int64)
     return labels, np.stack([((labels == l) * bits).sum(axis=1) for l in range(n_targets)])
 
