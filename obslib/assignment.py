@@ -51,6 +51,11 @@ class PairAssignment:
     For the greedy algorithms the triples are in pick order; otherwise sorted by target.
     ``n_evaluations`` counts the pair weights the call computed from geometry (``None`` when it
     was given ``W``): a machine-independent measure of work.
+
+    Examples
+    --------
+    >>> PairAssignment(triples=[(0, 1, 0)], value=0.5)
+    PairAssignment(triples=[(0, 1, 0)], value=0.5, n_evaluations=None)
     """
 
     triples: list
@@ -68,7 +73,14 @@ def _check_sizes(n: int, n_targets: int) -> None:
 
 
 def assignment_value(W, triples) -> float:
-    """Total weight ``sum W[i, j, l]`` of an assignment (no feasibility check)."""
+    """Total weight ``sum W[i, j, l]`` of an assignment (no feasibility check).
+
+    Examples
+    --------
+    >>> W = np.zeros((2, 2, 1)); W[0, 1, 0] = W[1, 0, 0] = 0.25
+    >>> assignment_value(W, [(0, 1, 0)])
+    0.25
+    """
     W = as_float_array(W, "W")
     return float(sum(W[i, j, l] for i, j, l in triples))
 
@@ -275,6 +287,17 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     PairAssignment
         ``triples`` in pick order, ``value`` their total (Algorithm 1's ``omega(GREEDY)``).
         The 1/3 guarantee is Theorem 6.
+
+    Examples
+    --------
+    Two clusters of two sensors, one target above each:
+
+    >>> S, T = [[0, 0], [1, 0], [10, 0], [11, 0.5]], [[0.5, 1], [10.5, 1]]
+    >>> greedy_pair_assignment(sensors=S, targets=T, u_max=1.0).triples
+    [(2, 3, 1), (0, 1, 0)]
+    >>> from obslib.bounds import pair_bounds
+    >>> greedy_pair_assignment(pair_bounds(S, T, 1.0)).triples  # the same from the weights
+    [(2, 3, 1), (0, 1, 0)]
     """
     if k is not None:
         k = as_int(k, "k", 1)
@@ -303,6 +326,13 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
     remaining sensors and targets every round, as the algorithm's "compute all possible omega"
     says (with the kernel of :func:`obslib.pair_bounds`, so the weights are the same). Quadratic
     in the number of rounds; for tests and benchmarks.
+
+    Examples
+    --------
+    >>> from obslib.bounds import pair_bounds
+    >>> S, T = [[0, 0], [1, 0], [10, 0], [11, 0.5]], [[0.5, 1], [10.5, 1]]
+    >>> greedy_pair_assignment_literal(pair_bounds(S, T, 1.0)).triples
+    [(2, 3, 1), (0, 1, 0)]
     """
     if W is not None:
         arr = as_weights(W)
@@ -353,6 +383,12 @@ def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 <
     Yields ``(l0, l1, block)`` with ``block[l - l0, p]`` the weight of pair ``p`` for target
     ``l``, ``l0 <= l < l1``; blocks hold about ``chunk`` weights (at least one target), so the
     whole ``(L, P)`` array never needs to exist. Same kernel as :func:`obslib.pair_bounds`.
+
+    Examples
+    --------
+    >>> S, T = [[0, 0], [1, 0], [10, 0], [11, 0.5]], [[0.5, 1], [10.5, 1]]
+    >>> [(l0, l1, block.shape) for l0, l1, block in upper_pair_weight_blocks(S, T, 1.0, chunk=6)]
+    [(0, 1, (1, 6)), (1, 2, (1, 6))]
     """
     v, u2 = _geometry(sensors, targets, u_max, cov)
     ii, jj = np.triu_indices(v.shape[0], 1)
@@ -370,6 +406,13 @@ def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
     ``C[l, p]`` is ``pair_bounds(...)[ii[p], jj[p], l]`` (one shared kernel, so bitwise equal)
     with pairs in ``numpy.triu_indices(N, 1)`` order; shape ``(L, P)``, filled from
     :func:`upper_pair_weight_blocks`.
+
+    Examples
+    --------
+    >>> S, T = [[0, 0], [1, 0], [10, 0], [11, 0.5]], [[0.5, 1], [10.5, 1]]
+    >>> ii, jj, C = upper_pair_weights(S, T, 1.0)
+    >>> ii.tolist(), jj.tolist(), C.shape
+    ([0, 0, 0, 1, 1, 2], [1, 2, 3, 2, 3, 3], (2, 6))
     """
     n, n_targets = as_points(sensors, "sensors").shape[0], as_points(targets, "targets").shape[0]
     ii, jj = np.triu_indices(n, 1)
@@ -396,6 +439,12 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
         which one unordered pair can serve two targets (as ``(i, j)`` and ``(j, i)``).
     sensors, targets, u_max, cov : optional
         Instead of ``W``: the geometry (only the ``i < j`` weights are computed).
+
+    Examples
+    --------
+    >>> S, T = [[0, 0], [1, 0], [10, 0], [11, 0.5]], [[0.5, 1], [10.5, 1]]
+    >>> relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0).triples
+    [(0, 1, 0), (2, 3, 1)]
     """
     ordered = as_bool(ordered, "ordered")
     if W is not None:
@@ -420,6 +469,12 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
     ``scipy.sparse.csgraph.min_weight_full_bipartite_matching``. Returns one
     :class:`PairAssignment` per entry of ``orders`` (``ordered`` flags), sharing the candidates;
     ``n_evaluations`` counts the weights computed (once, for all of them).
+
+    Examples
+    --------
+    >>> S, T = [[0, 0], [1, 0], [10, 0], [11, 0.5]], [[0.5, 1], [10.5, 1]]
+    >>> [r.triples for r in relaxed_from_geometry(S, T, 1.0)]  # unordered, ordered
+    [[(0, 1, 0), (2, 3, 1)], [(0, 1, 0), (2, 3, 1)]]
     """
     from scipy.sparse import csr_array
     from scipy.sparse.csgraph import min_weight_full_bipartite_matching
@@ -489,6 +544,13 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
     ------
     ValueError
         For bad ``W`` or ``N < 2L``; RuntimeError if the solver stops without a proven optimum.
+
+    Examples
+    --------
+    >>> from obslib.bounds import pair_bounds
+    >>> S, T = [[0, 0], [1, 0], [10, 0], [11, 0.5]], [[0.5, 1], [10.5, 1]]
+    >>> optimal_pair_assignment(pair_bounds(S, T, 1.0)).triples
+    [(0, 1, 0), (2, 3, 1)]
     """
     from scipy.optimize import Bounds, LinearConstraint, milp
     from scipy.sparse import coo_matrix, vstack

@@ -64,6 +64,11 @@ def one_pass(sensors, targets, u_max, chunk: int = 1 << 20) -> float:
 
     The reference cost for the greedy: one vectorised sweep of all ``N (N - 1) / 2 * L``
     weights with the kernel of :func:`obslib.pair_bounds`, without keeping them.
+
+    Examples
+    --------
+    >>> one_pass([[0, 0], [1, 0], [3, 1]], [[1, 1]], 1.0) >= 0  # seconds for one full pass
+    True
     """
     from .assignment import upper_pair_weight_blocks
 
@@ -78,6 +83,11 @@ def evaluation_counts(sizes: dict, seed: int = 0) -> dict:
     ``{name: (N array, count array)}``, plus ``"one pass"``, ``N (N - 1) / 2 * L`` at every size.
     The literal algorithm's work does not depend on the data (every round evaluates all pairs of
     the remaining sensors for the remaining targets), so it is :func:`literal_count`, exactly.
+
+    Examples
+    --------
+    >>> sorted(evaluation_counts({"N=6, L=2": (6, 2)}))  # doctest: +SKIP
+    ['N=6, L=2']
     """
     from . import assignment as a
 
@@ -107,7 +117,13 @@ def evaluation_counts(sizes: dict, seed: int = 0) -> dict:
 
 
 def literal_count(n_sensors: int, n_targets: int) -> int:
-    """Pair weights the literal Algorithm 1 evaluates: ``sum_r C(N - 2r, 2) (L - r)`` over rounds."""
+    """Pair weights the literal Algorithm 1 evaluates: ``sum_r C(N - 2r, 2) (L - r)`` over rounds.
+
+    Examples
+    --------
+    >>> literal_count(4, 2)  # round 1: 6 pairs x 2 targets, round 2: 1 pair x 1 target
+    13
+    """
     return sum((n_sensors - 2 * r) * (n_sensors - 2 * r - 1) // 2 * (n_targets - r) for r in range(n_targets))
 
 
@@ -117,7 +133,12 @@ COUNTED = ("greedy (geometry)", "literal Algorithm 1", "relaxed matching")
 
 def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l_small: int = 200,
                      seed: int = 0) -> dict:
-    """Run the assignment benchmark; returns the JSON-ready dict (see the module docstring)."""
+    """Run the assignment benchmark; returns the JSON-ready dict (see the module docstring).
+
+    Examples
+    --------
+    >>> bench_assignment()  # doctest: +SKIP
+    """
     from .assignment import greedy_pair_assignment, greedy_pair_assignment_literal
 
     rng = np.random.default_rng(seed)
@@ -147,7 +168,12 @@ def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l
 
 
 def bench_scaling(seed: int = 0, repeat: int = 3) -> dict:
-    """Best-of-``repeat`` wall time of each algorithm at the sizes of :data:`SCALING_SIZES`."""
+    """Best-of-``repeat`` wall time of each algorithm at the sizes of :data:`SCALING_SIZES`.
+
+    Examples
+    --------
+    >>> bench_scaling()  # doctest: +SKIP
+    """
     import os
     import platform
 
@@ -189,6 +215,10 @@ def bench_book(profile: str = "paper") -> dict:
     the same machine load (on a shared machine the speed drifts over a minute by tens of
     percent); ``floor_s`` sums the trivial runs, ``exec_s`` the notebooks. ``profile`` names the
     parameters (:data:`obslib.profiles.PROFILES`); ``"paper"`` is the notebooks' defaults.
+
+    Examples
+    --------
+    >>> bench_book("quick")  # doctest: +SKIP
     """
     import tempfile
     from pathlib import Path
@@ -229,7 +259,13 @@ def bench_book(profile: str = "paper") -> dict:
 
 
 def parse_args(argv=None) -> argparse.Namespace:
-    """Parse and check the command line; a bad profile or path is an argparse error (exit 2)."""
+    """Parse and check the command line; a bad profile or path is an argparse error (exit 2).
+
+    Examples
+    --------
+    >>> parse_args(["book", "--profile", "quick"]).profile
+    'quick'
+    """
     from pathlib import Path
 
     from .profiles import profile_names
@@ -252,6 +288,12 @@ def parse_args(argv=None) -> argparse.Namespace:
 
 
 def main(argv=None) -> int:
+    """Command line entry point: run one benchmark and print its JSON; returns the exit status.
+
+    Examples
+    --------
+    >>> main(["assignment"])  # doctest: +SKIP
+    """
     args = parse_args(argv)
     if args.which == "assignment":
         result = bench_assignment()

@@ -62,6 +62,16 @@ def lower_bound(sensors, target, u_max) -> float:
     float
         The bound, in ``[0, 1]``. With fewer than two sensors ``O(o)`` has rank < 2 and the
         bound is 0 (Theorem 2).
+
+    Examples
+    --------
+    Rows ``(1, 1)`` and ``(-1, 1)``: both singular values are ``sqrt(2)``, so the bound is
+    ``sqrt(2) / sqrt(2 + 1)``.
+
+    >>> round(lower_bound([[0, 0], [2, 0]], [1, 1], u_max=1.0), 6)
+    0.816497
+    >>> lower_bound([[0, 0]], [1, 1], u_max=1.0)  # one sensor: rank 1 (Theorem 2)
+    0.0
     """
     return float(lower_bounds(relative_rows(sensors, target), float(as_u_max(u_max))))
 
@@ -74,6 +84,13 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
     vectors to the Theorem 4 eigenvalues gives exactly the tracking experiments' evaluation:
     ``alpha = d_j / d_i`` and ``u_max^2 / d_i^2`` from Mahalanobis distances, ``theta_ji`` the
     Euclidean angle (``../shared/EXPERIMENTS.md``, "Pair bound as evaluated in the experiments").
+
+    Examples
+    --------
+    >>> relative_vectors([[0, 0], [2, 0]], [[1, 1]]).tolist()
+    [[[1.0, 1.0]], [[-1.0, 1.0]]]
+    >>> relative_vectors([[0, 0], [2, 0]], [[1, 1]], cov=4 * np.eye(2)).tolist()  # lengths / 2
+    [[[0.5, 0.5]], [[-0.5, 0.5]]]
     """
     v, unit = _relative_vectors(sensors, targets, cov)
     if cov is None:
@@ -125,6 +142,17 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
     ndarray, shape (N, N, L)
         ``W[i, j, l] = sqrt(lambda_min / (lambda_max + u_max^2))`` for rows
         ``o_l - p_i, o_l - p_j`` (Eq. (9)); symmetric in ``i, j`` and zero on ``i == j``.
+
+    Examples
+    --------
+    >>> pair_bounds([[0, 0], [2, 0]], [[1, 1]], u_max=1.0).round(6)[:, :, 0]
+    array([[0.      , 0.816497],
+           [0.816497, 0.      ]])
+
+    Units do not matter (lengths and ``u_max`` scaled together):
+
+    >>> pair_bounds([[0, 0], [2e-150, 0]], [[1e-150, 1e-150]], u_max=1e-150).round(6)[0, 1, 0]
+    np.float64(0.816497)
     """
     s = as_points(sensors, "sensors")
     t = as_points(targets, "targets")
@@ -157,6 +185,14 @@ def pair_bound_polar(alpha, theta, u_over_d):
     -------
     float or ndarray
         The bound, broadcast over the inputs.
+
+    Examples
+    --------
+    Equal distances, perpendicular directions and ``u_max / d_io = 1 / sqrt(2)`` give the
+    same scene as the :func:`pair_bounds` example:
+
+    >>> round(pair_bound_polar(1.0, np.pi / 2, 1 / np.sqrt(2)), 6)
+    0.816497
     """
     a, th, q = (as_float_array(x, name) for x, name in
                 ((alpha, "alpha"), (theta, "theta"), (u_over_d, "u_over_d")))
@@ -193,6 +229,13 @@ def worst_case_control(sensors, target, u_max) -> np.ndarray:
     Returns
     -------
     ndarray, shape (2,)
+
+    Examples
+    --------
+    Rows ``(2, 1)`` and ``(-2, 1)``: ``O^T O = diag(8, 2)``, principal direction ``(1, 0)``.
+
+    >>> worst_case_control([[0, 0], [4, 0]], [2, 1], u_max=1.0)
+    array([1., 0.])
     """
     return worst_case_controls(relative_rows(sensors, target), float(as_u_max(u_max)))
 
@@ -233,6 +276,11 @@ def lower_bounds(rows, u_max) -> np.ndarray:
     Returns
     -------
     ndarray, shape (...)
+
+    Examples
+    --------
+    >>> lower_bounds([[[1, 1], [-1, 1]]], 1.0).round(6)
+    array([0.816497])
     """
     r = _stacked_rows(rows)
     u = _stacked_u_max(u_max, r.shape[:-2])
@@ -253,6 +301,11 @@ def worst_case_controls(rows, u_max) -> np.ndarray:
     ``v_max`` is the principal eigenvector of ``O(o)^T O(o)`` (``numpy.linalg.eigh`` on the
     stacked 2 x 2 matrices), signed so that its first nonzero component is positive. Zero rows
     (padding) do not change ``O(o)^T O(o)``.
+
+    Examples
+    --------
+    >>> worst_case_controls([[[2, 1], [-2, 1]]], 1.0)
+    array([[1., 0.]])
     """
     r = _stacked_rows(rows)
     u = _stacked_u_max(u_max, r.shape[:-2])

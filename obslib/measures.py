@@ -105,6 +105,14 @@ def subset_masks(n: int) -> np.ndarray:
 
     Row ``k`` is the subset whose elements are the set bits of ``k`` (element ``i`` <-> bit
     ``i``): row 0 is the empty set, row ``2**n - 1`` the whole ground set.
+
+    Examples
+    --------
+    >>> subset_masks(2).astype(int)
+    array([[0, 0],
+           [1, 0],
+           [0, 1],
+           [1, 1]])
     """
     n = as_int(n, "n", 0)
     if n > MAX_GROUND_SET:
@@ -137,6 +145,12 @@ def symmetric_observability_matrix(sensors, target, u=None, eps: float = 0.0) ->
     Returns
     -------
     ndarray, shape (2, 2)
+
+    Examples
+    --------
+    >>> symmetric_observability_matrix([[0, 0], [2, 0]], [1, 1])
+    array([[2., 0.],
+           [0., 2.]])
     """
     e = _check_eps(eps)
     O = observability_matrix(_sensors_or_empty(sensors), target, u)
@@ -206,6 +220,11 @@ def measure_from_vectors(vectors, masks, name: str, eps: float = 0.0, u=None,
     Returns
     -------
     ndarray, shape (..., K)
+
+    Examples
+    --------
+    >>> measure_from_vectors([[1, 1], [-1, 1]], subset_masks(2), "trace")
+    array([0., 2., 2., 4.])
     """
     _check_name(name)
     return measures_from_vectors(vectors, masks, (name,), eps, u, rank_rtol)[name]
@@ -218,6 +237,12 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
     ``tr``, ``det`` and ``lambda_max`` of ``O^T O`` are computed once and shared by all
     ``names``; each table is bitwise the one :func:`measure_from_vectors` returns for that name
     (it is the same code). Parameters as in :func:`measure_from_vectors`.
+
+    Examples
+    --------
+    >>> t = measures_from_vectors([[1, 1], [-1, 1]], [[True, True]], ("trace", "rank"))
+    >>> t["trace"], t["rank"]
+    (array([4.]), array([2.]))
     """
     if isinstance(names, str):
         raise ArgumentTypeError(f"names must be a sequence of measure names, not the string {names!r}")
@@ -289,6 +314,11 @@ def measure_table(sensors, target, name: str, eps: float = 0.0, u=None, masks=No
     Returns
     -------
     ndarray, shape (2**N,) or (K,)
+
+    Examples
+    --------
+    >>> measure_table([[0, 0], [2, 0]], [1, 1], "rank")  # {}, {0}, {1}, {0, 1}
+    array([0., 1., 1., 2.])
     """
     rows = relative_rows(sensors, target)
     if masks is None:

@@ -38,6 +38,12 @@ def relative_rows(sensors, target) -> np.ndarray:
     Returns
     -------
     ndarray, shape (N, 2)
+
+    Examples
+    --------
+    >>> relative_rows([[0, 0], [2, 0]], [1, 1])
+    array([[ 1.,  1.],
+           [-1.,  1.]])
     """
     s = as_points(sensors, "sensors")
     o = as_point(target, "target")
@@ -63,6 +69,13 @@ def observability_matrix(sensors, target, u=None) -> np.ndarray:
     -------
     ndarray, shape (N, 2) or (N + 1, 2)
         Rows ``o - p_i`` followed by ``u_o``.
+
+    Examples
+    --------
+    >>> observability_matrix([[0, 0], [2, 0]], [1, 1], u=[1, 0])
+    array([[ 1.,  1.],
+           [-1.,  1.],
+           [ 1.,  0.]])
     """
     rows = relative_rows(sensors, target)
     if u is None:
@@ -98,6 +111,21 @@ def inverse_condition_number(sensors, target, u=None):
     -------
     float or ndarray, shape (K,)
         ``sigma_min / sigma_max`` in ``[0, 1]``; 0 when the matrix has rank < 2.
+
+    Examples
+    --------
+    Two orthogonal rows of equal length: ``C^{-1} = 1``; the row ``u = (1, 0)`` makes
+    ``O^T O = diag(3, 2)``, so ``C^{-1} = sqrt(2 / 3)``.
+
+    >>> inverse_condition_number([[0, 0], [2, 0]], [1, 1])
+    1.0
+    >>> round(inverse_condition_number([[0, 0], [2, 0]], [1, 1], u=[1, 0]), 6)
+    0.816497
+
+    The answer does not depend on the unit of length:
+
+    >>> round(inverse_condition_number([[0, 0], [2e150, 0]], [1e150, 1e150], u=[1e150, 0]), 6)
+    0.816497
     """
     rows = relative_rows(sensors, target)
     if u is None:
@@ -144,6 +172,11 @@ def inverse_condition_numbers(rows, u=None) -> np.ndarray:
     ndarray, shape (..., K) or (...)
         ``sigma_min / sigma_max`` in ``[0, 1]``; 0 when the matrix has rank < 2. Equal to
         :func:`inverse_condition_number` to rounding (a test compares them scene by scene).
+
+    Examples
+    --------
+    >>> inverse_condition_numbers([[[1, 1], [-1, 1]]], [[[1, 0]]]).round(6)
+    array([[0.816497]])
     """
     r = _as_stack(rows, "rows", 2)
     p = pow2_scale(np.abs(r).max(axis=(-2, -1), initial=0.0))  # per scene, into the safe range
@@ -186,6 +219,12 @@ def inverse_condition_numbers_polar(rows, radii, angles) -> np.ndarray:
     Returns
     -------
     ndarray, shape (S, R, A)
+
+    Examples
+    --------
+    >>> inverse_condition_numbers_polar([[[1, 1], [-1, 1]]], [[0.0, 1.0]], [0.0]).round(6)
+    array([[[1.      ],
+            [0.816497]]])
     """
     r = _as_stack(rows, "rows", 2)
     if r.ndim != 3:

@@ -144,7 +144,13 @@ PROFILES: dict[str, dict[str, dict]] = {
 
 
 def profile_names() -> list[str]:
-    """Names of the known profiles."""
+    """Names of the known profiles.
+
+    Examples
+    --------
+    >>> profile_names()
+    ['paper', 'quick']
+    """
     return list(PROFILES)
 
 
@@ -152,6 +158,11 @@ def params(notebook: str, profile: str = "paper") -> dict:
     """Parameters of ``notebook`` (its stem, e.g. ``"01_model_and_bound"``) under ``profile``.
 
     The ``paper`` values updated by the profile's overrides.
+
+    Examples
+    --------
+    >>> params("05_two_sensors_tracking", "quick")["n_seeds"]
+    20
     """
     if profile not in PROFILES:
         raise ValueError(f"unknown profile {profile!r}; known: {profile_names()}")

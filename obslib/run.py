@@ -42,12 +42,24 @@ KERNEL = "python3"
 
 
 def notebooks() -> list[Path]:
-    """The book's notebooks, in paper order (by file name)."""
+    """The book's notebooks, in paper order (by file name).
+
+    Examples
+    --------
+    >>> notebooks()[0].name
+    '01_model_and_bound.ipynb'
+    """
     return sorted(NOTEBOOK_DIR.glob("[0-9][0-9]_*.ipynb"))
 
 
 def resolve(names) -> list[Path]:
-    """Notebook paths from names: a number prefix (``01``), a stem, or a path."""
+    """Notebook paths from names: a number prefix (``01``), a stem, or a path.
+
+    Examples
+    --------
+    >>> [p.stem for p in resolve(["05"])]
+    ['05_two_sensors_tracking']
+    """
     if not names:
         return notebooks()
     found = []
@@ -73,7 +85,13 @@ def _literal(text: str):
 
 
 def declared_parameters(path: Path) -> dict:
-    """The parameters a notebook declares (its tagged ``parameters`` cell) with their defaults."""
+    """The parameters a notebook declares (its tagged ``parameters`` cell) with their defaults.
+
+    Examples
+    --------
+    >>> declared_parameters(resolve(["05"])[0])["n_seeds"]
+    200
+    """
     import papermill as pm
 
     out = {}
@@ -96,6 +114,15 @@ def plan(paths, profile: str | None, overrides: dict, in_place: bool) -> list:
     ------
     ValueError
         Naming the notebook, the parameter and the accepted values.
+
+    Examples
+    --------
+    >>> [(nb.stem, params) for nb, _, params in plan(resolve(["05"]), None, {"n_seeds": 3}, False)]
+    [('05_two_sensors_tracking', {'n_seeds': 3})]
+    >>> plan(resolve(["05"]), None, {"n_seeds": 2.5}, False)
+    Traceback (most recent call last):
+    ...
+    ValueError: notebook 05_two_sensors_tracking: parameter n_seeds = 2.5 is not accepted; expected an integer >= 1
     """
     from .profiles import PROFILES, check_parameters, params
 
@@ -157,6 +184,10 @@ def precompile() -> None:
     Python normally caches bytecode on first import; with ``PYTHONDONTWRITEBYTECODE`` set (as on
     some CI machines) every kernel would recompile the modules it imports. ``compileall`` writes
     the cache regardless (only for files whose cache is stale).
+
+    Examples
+    --------
+    >>> precompile()  # writes bytecode caches only
     """
     import compileall
 
@@ -167,6 +198,13 @@ def execute(src: Path, dst: Path, parameters: dict | None = None) -> float:
     """Execute ``src`` into ``dst`` with papermill; return the wall time in seconds.
 
     ``parameters`` override the notebook's ``parameters`` cell; every name must exist there.
+
+    Examples
+    --------
+    Executing a notebook starts a kernel (seconds), so the example is not run:
+
+    >>> execute(resolve(["01"])[0], RUNS_DIR / "custom" / "01.ipynb", {"n_scenes": 10})  # doctest: +SKIP
+    3.2
     """
     import papermill as pm
 
@@ -201,7 +239,13 @@ def execute(src: Path, dst: Path, parameters: dict | None = None) -> float:
 
 
 def execution_page(times: dict) -> str:
-    """MyST page listing each notebook's run time in the last in-place execution."""
+    """MyST page listing each notebook's run time in the last in-place execution.
+
+    Examples
+    --------
+    >>> print(execution_page({"01_model_and_bound.ipynb": 1.25}).splitlines()[-1])
+    | **total** | 1.2 |
+    """
     import platform
 
     lines = [
@@ -226,6 +270,12 @@ def execution_page(times: dict) -> str:
 
 
 def main(argv=None) -> int:
+    """Command line entry point (see the module docstring); returns the exit status.
+
+    Examples
+    --------
+    >>> main(["-p", "n_seeds", "-5", "05"])  # doctest: +SKIP
+    """
     ap = argparse.ArgumentParser(
         prog="python -m obslib.run",
         description="Execute notebooks with papermill (see the module docstring).",

@@ -41,7 +41,13 @@ SCENE_KINDS = ("generic", "collinear", "near-parallel", "spread")
 
 @dataclass(frozen=True)
 class Scene:
-    """One random scene: ``sensors`` (N, 2), ``target`` (2,), ``u_max`` and its ``kind``."""
+    """One random scene: ``sensors`` (N, 2), ``target`` (2,), ``u_max`` and its ``kind``.
+
+    Examples
+    --------
+    >>> Scene(sensors=np.zeros((1, 2)), target=np.ones(2), u_max=1.0, kind="generic").kind
+    'generic'
+    """
 
     sensors: np.ndarray
     target: np.ndarray
@@ -52,7 +58,14 @@ class Scene:
 def random_scene(
     rng: np.random.Generator, n_sensors: int, kind: str = "generic", scale: float = 1.0
 ) -> Scene:
-    """Draw one scene of the given ``kind`` at length ``scale`` from ``rng``."""
+    """Draw one scene of the given ``kind`` at length ``scale`` from ``rng``.
+
+    Examples
+    --------
+    >>> s = random_scene(np.random.default_rng(0), 3)
+    >>> s.sensors.shape, s.kind
+    ((3, 2), 'generic')
+    """
     if kind not in SCENE_KINDS:
         raise ValueError(f"kind must be one of {SCENE_KINDS}, got {kind!r}")
     if n_sensors < 1:
@@ -109,6 +122,11 @@ def random_scenes(
 
     The number of sensors is uniform in ``n_sensors`` (inclusive) and the length scale is
     log-uniform in ``scale``.
+
+    Examples
+    --------
+    >>> [s.kind for s in random_scenes(4, seed=0)]
+    ['generic', 'collinear', 'near-parallel', 'spread']
     """
     n_scenes, seed, n_sensors, scale, kinds = _check_draw(n_scenes, seed, n_sensors, scale, kinds, 0)
     rng = np.random.default_rng(seed)
@@ -130,6 +148,12 @@ class SceneBatch:
     nothing to ``O(o)^T O(o)``, to its Cauchy-Binet determinant or to its singular values, so
     the padded :attr:`rows` can go straight into the batched functions
     (:func:`obslib.observability.inverse_condition_numbers`, :func:`obslib.bounds.lower_bounds`).
+
+    Examples
+    --------
+    >>> b = random_scene_batch(4, seed=0, n_sensors=(2, 3))
+    >>> len(b), b.rows.shape
+    (4, (4, 3, 2))
     """
 
     sensors: np.ndarray  #: (S, M, 2), NaN beyond ``counts``
@@ -164,6 +188,13 @@ def check_batch(sensors, targets, counts) -> None:
     Raises ``ValueError`` naming the scene and sensor for a non-finite coordinate, a sensor on
     the target (zero distance) or two coincident sensors (among the first ``counts[k]`` rows of
     scene ``k``; the padding is not checked).
+
+    Examples
+    --------
+    >>> check_batch([[[0.0, 0.0], [1.0, 1.0]]], [[1.0, 1.0]], [2])
+    Traceback (most recent call last):
+    ...
+    ValueError: scene 0: sensor 1 is on the target (zero distance)
     """
     s = np.asarray(sensors, dtype=float)
     t = np.asarray(targets, dtype=float)
@@ -202,6 +233,12 @@ def random_scene_batch(
     of sensors uniform in ``n_sensors``, the scale log-uniform in ``scale``, each kind as in
     :func:`random_scene`), drawn array by array instead of scene by scene, so the stream (and
     hence the scenes) differ from :func:`random_scenes` with the same seed.
+
+    Examples
+    --------
+    >>> b = random_scene_batch(5, seed=0)
+    >>> len(b), int(b.counts.min()) >= 2
+    (5, True)
     """
     n_scenes, seed, n_sensors, scale, kinds = _check_draw(n_scenes, seed, n_sensors, scale, kinds, 1)
     lo_n, hi_n = n_sensors

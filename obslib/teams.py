@@ -90,6 +90,12 @@ def greedy_team_assignment(sensors, targets, measure: str = "logdet", eps: float
     -------
     list of list of int
         The team of each target, sensors in the order they were assigned.
+
+    Examples
+    --------
+    >>> S, T = [[0, 0], [2, 0], [10, 0], [12, 0]], [[1, 1], [11, 1]]
+    >>> greedy_team_assignment(S, T, "rank")
+    [[0, 1], [2, 3]]
     """
     e = _check_eps(eps)
     _check_measure(measure, e)
@@ -111,6 +117,12 @@ def greedy_team_counts(sensors, targets, measure: str = "logdet", eps: float = 1
     ``sensors`` ``(K, N, 2)`` and ``targets`` ``(K, L, 2)``, each instance validated as in
     :func:`greedy_team_assignment`; the instances run together, round by round, with the same
     arithmetic, so each count equals the single-instance call's (the tests compare them).
+
+    Examples
+    --------
+    >>> S, T = [[0, 0], [2, 0], [10, 0], [12, 0]], [[1, 1], [11, 1]]
+    >>> greedy_team_counts([S], [T], "rank")
+    array([[2, 2]])
     """
     e = _check_eps(eps)
     _check_measure(measure, e)
@@ -204,7 +216,14 @@ def _greedy_teams_unit(v, uu, measure, e, rank_rtol):
 
 def team_value(sensors, targets, teams, measure: str = "logdet", eps: float = 1.0, u=None,
                rank_rtol: float = RANK_RTOL) -> float:
-    """Total ``sum_l w_l(S_l)`` of an assignment of teams (each sensor in at most one team)."""
+    """Total ``sum_l w_l(S_l)`` of an assignment of teams (each sensor in at most one team).
+
+    Examples
+    --------
+    >>> S, T = [[0, 0], [2, 0], [10, 0], [12, 0]], [[1, 1], [11, 1]]
+    >>> team_value(S, T, [[0, 1], [2, 3]], "rank")  # both teams have rank 2
+    4.0
+    """
     e = _check_eps(eps)
     _check_name(measure)
     v, uu = _rows(sensors, targets, u)
@@ -233,6 +252,12 @@ def optimal_team_assignment(sensors, targets, measure: str = "logdet", eps: floa
     -------
     (list of list of int, float)
         An optimal assignment (the first in lexicographic order of the label vector) and its value.
+
+    Examples
+    --------
+    >>> S, T = [[0, 0], [2, 0], [10, 0], [12, 0]], [[1, 1], [11, 1]]
+    >>> optimal_team_assignment(S, T, "rank")
+    ([[0, 1], [2, 3]], 4.0)
     """
     e = _check_eps(eps)
     _check_name(measure)

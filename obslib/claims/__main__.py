@@ -13,7 +13,13 @@ from ..profiles import profile_names
 
 
 def parse_args(argv=None) -> argparse.Namespace:
-    """Parse and check the command line; bad ids, profiles and paths are argparse errors (exit 2)."""
+    """Parse and check the command line; bad ids, profiles and paths are argparse errors (exit 2).
+
+    Examples
+    --------
+    >>> parse_args(["--id", "thm1"]).ids
+    ['thm1']
+    """
     ap = argparse.ArgumentParser(prog="python -m obslib.claims", description=__doc__)
     ap.add_argument("--profile", default="paper", choices=profile_names(),
                     help="parameter profile (default: paper)")
@@ -38,6 +44,12 @@ def parse_args(argv=None) -> argparse.Namespace:
 
 
 def main(argv=None) -> int:
+    """Command line entry point: re-check the claims and print or write them; returns 0.
+
+    Examples
+    --------
+    >>> main(["--id", "thm1"])  # doctest: +SKIP
+    """
     args = parse_args(argv)
     records = evaluate(args.profile, args.ids)
     if args.write:
