@@ -1,4 +1,4 @@
-"""Numerical audits of Section III: Theorems 1-3 and Remark 1.
+"""Audits of Section III's Theorems 1-3 and Remark 1 on seeded random scenes (notebook 01, claims of :mod:`obslib.claims.section3`).
 
 Each audit draws seeded random scenes (:mod:`obslib.scenes`), computes the quantity a claim
 is about in two independent ways, and returns the counts and extremes that decide it. The
@@ -12,13 +12,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .bounds import lower_bounds, worst_case_controls
-from .observability import inverse_condition_numbers, inverse_condition_numbers_polar
-from .scenes import check_batch, random_scene_batch
+from ..bounds import lower_bounds, worst_case_controls
+from ..observability import inverse_condition_numbers, inverse_condition_numbers_polar
+from ..scenes import check_batch, random_scene_batch
 
 __all__ = [
-    "disc_controls",
-    "disc_mesh",
     "Theorem1Audit",
     "theorem1_audit",
     "Theorem2Audit",
@@ -32,48 +30,6 @@ __all__ = [
 
 #: Absolute slack allowed when comparing two floating-point evaluations of values in [0, 1].
 ATOL = 1e-12
-
-
-def disc_controls(u_max: float, n_radii: int, n_angles: int) -> np.ndarray:
-    """Polar grid of controls covering the disc ``||u|| <= u_max``, boundary included.
-
-    Returns ``1 + n_radii * n_angles`` controls: ``u = 0`` and ``n_angles`` directions at each
-    of ``n_radii`` radii spaced evenly up to ``u_max``.
-    """
-    radii = u_max * np.arange(1, n_radii + 1) / n_radii
-    phi = 2 * np.pi * np.arange(n_angles) / n_angles
-    ring = np.column_stack([np.cos(phi), np.sin(phi)])
-    grid = (radii[:, None, None] * ring[None, :, :]).reshape(-1, 2)
-    return np.vstack([np.zeros((1, 2)), grid])
-
-
-def disc_mesh(controls, values, n_radii: int, n_angles: int):
-    """Values on the grid of :func:`disc_controls` as a closed polar mesh, for ``contourf``.
-
-    Parameters
-    ----------
-    controls : array_like, shape (1 + n_radii * n_angles, 2)
-        The grid, as returned by :func:`disc_controls` (``u = 0`` first, then ring by ring).
-    values : array_like, shape (1 + n_radii * n_angles,)
-        A value per control (e.g. the exact ``C^{-1}``).
-
-    Returns
-    -------
-    X, Y, Z : ndarray, shape (n_radii + 1, n_angles + 1)
-        Row 0 is the centre ``u = 0``; the last column repeats the first direction, so the
-        quadrilaterals cover the whole disc (the same points a triangulation would use).
-    """
-    c = np.asarray(controls, dtype=float)
-    v = np.asarray(values, dtype=float)
-    k = 1 + n_radii * n_angles
-    if c.shape != (k, 2) or v.shape != (k,):
-        raise ValueError(f"need controls ({k}, 2) and values ({k},), got {c.shape}, {v.shape}")
-    pts = np.concatenate([np.broadcast_to(c[0], (1, n_angles, 2)),
-                          c[1:].reshape(n_radii, n_angles, 2)])
-    z = np.concatenate([np.full((1, n_angles), v[0]), v[1:].reshape(n_radii, n_angles)])
-    pts = np.concatenate([pts, pts[:, :1]], axis=1)
-    z = np.concatenate([z, z[:, :1]], axis=1)
-    return pts[..., 0], pts[..., 1], z
 
 
 @dataclass(frozen=True)
@@ -263,7 +219,7 @@ def remark1_audit(n_scenes: int, seed: int, n_radii: int = 8, n_angles: int = 64
     ``O(o)^T O(o)``; compared as squares, since a tiny ``lambda_min`` is only known to
     ``eps * lambda_max``); the exact ``C^{-1}`` at the worst-case control (norm ``u_max`` along
     the principal eigenvector) against the bound (SVD); and the minimum of the exact value
-    over a polar grid of the disc (:func:`disc_controls`), which can only approach the bound
+    over a polar grid of the disc (:func:`obslib.controls.disc_controls`), which can only approach the bound
     from above. All scenes at once, with the batched functions of :func:`theorem1_audit`.
     """
     batch = random_scene_batch(n_scenes, seed, kinds=("generic", "spread"))
