@@ -9,6 +9,7 @@ Every audit is a pure function of its arguments and is cached.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from fractions import Fraction
 from functools import lru_cache
 
 import numpy as np
@@ -28,6 +29,7 @@ from ..pair_form import (
 
 __all__ = [
     "audit_ratios",
+    "max_difference_at_rational_points",
     "paper_grid",
     "Fig2Grid",
     "fig2_grids",
@@ -56,6 +58,87 @@ def audit_ratios(u_max: float, d_io: float, u_over_d_curves) -> tuple:
     d = positive_float("d_io", d_io)
     curves = [positive_float("u_over_d_curves", c, allow_zero=True) for c in u_over_d_curves]
     return tuple(sorted({0.0, u / d, *curves}))
+
+
+# --- exact comparison at rational points ----------------------------------------------------
+def _rational(rng: np.random.Generator, lo: float, hi: float, den: int = 997):
+    import sympy as sp
+
+    k = int(rng.integers(int(np.ceil(lo * den)), int(np.floor(hi * den)) + 1))
+    f = Fraction(k, den)
+    return sp.Rational(f.numerator, f.denominator)
+
+
+def max_difference_at_rational_points(
+    lhs, rhs, ranges: dict, n_points: int, seed: int = 0, digits: int = 50, point_map=None
+) -> float:
+    """Largest ``|lhs - rhs|`` over random rational points, evaluated at ``digits`` digits.
+
+    Where SymPy cannot simplify ``lhs - rhs`` to zero, equality is decided by evaluation at
+    exact rational points with ``digits`` significant digits (mpmath): differences of order
+    ``10^-digits`` (relative to the size of the terms) mean the two expressions agree, while a
+    wrong expression differs by order one.
+
+    Parameters
+    ----------
+    lhs, rhs : sympy.Expr
+        The two expressions.
+    ranges : dict
+        ``symbol -> (lo, hi)``; each point draws every symbol as a rational ``k / 997`` in
+        ``[lo, hi]``.
+    n_points : int
+        Number of points (positive).
+    seed : int
+        Seed of the draw.
+    digits : int
+        Working precision in decimal digits, at least 15.
+    point_map : callable, optional
+        ``point -> dict`` of extra substitutions computed from the drawn point, e.g.
+        :func:`obslib.symbolic.cartesian_ratio_values`: exact SymPy values, evaluated to ``digits + 10`` digits,
+        or mpmath numbers already evaluated (at ``digits + 10`` digits, say), used as they are.
+
+    Returns
+    -------
+    float
+        The largest absolute difference; a point where the difference is not finite counts
+        as infinity.
+    """
+    import mpmath
+    import sympy as sp
+
+    if int(n_points) != n_points or n_points < 1:
+        raise ValueError(f"n_points must be a positive integer, got {n_points!r}")
+    if digits < 15:
+        raise ValueError(f"digits must be at least 15, got {digits!r}")
+    for s, r in ranges.items():
+        if not isinstance(s, sp.Symbol) or len(r) != 2 or not r[0] < r[1]:
+            raise ValueError(f"bad range for {s}: {r!r}")
+    diff = sp.sympify(lhs) - sp.sympify(rhs)
+    rng = np.random.default_rng(seed)
+    points = []
+    for _ in range(int(n_points)):
+        point = {s: _rational(rng, *r) for s, r in ranges.items()}
+        extra = point_map(point) if point_map is not None else {}
+        points.append((point, extra))
+    known = set(points[0][0]) | set(points[0][1])
+    free = diff.free_symbols - known
+    if free:
+        raise ValueError(f"no range for symbols {sorted(map(str, free))}")
+    syms = sorted(diff.free_symbols, key=str)
+    f = sp.lambdify(syms, diff, modules="mpmath", cse=True)
+    worst = mpmath.mpf(0)
+    with mpmath.workdps(digits):
+        for point, extra in points:
+            vals = {s: mpmath.mpf(r.p) / r.q for s, r in point.items()}
+            vals.update({
+                s: v if isinstance(v, mpmath.mpf) else mpmath.mpf(sp.N(v, digits + 10))
+                for s, v in extra.items()
+            })
+            val = abs(f(*[vals[s] for s in syms]))
+            if not mpmath.isfinite(val):
+                return float("inf")
+            worst = max(worst, val)
+    return float(worst)
 
 
 # --- Fig. 2 grid --------------------------------------------------------------------------------
@@ -187,7 +270,7 @@ def theorem4_audit(
     f_cart = sy.bound_from_eigenvalues(cmin, cmax)
     ranges = {s: (-3.0, 3.0) for s in sy.CARTESIAN_ARGS[:-1]}
     ranges[sy.U] = (0.0, 2.0)
-    cart_diff = sy.max_difference_at_rational_points(
+    cart_diff = max_difference_at_rational_points(
         f_cart, sy.theorem4_bound(), ranges, n_rat, seed, digits,
         point_map=lambda pt: sy.cartesian_ratio_values(pt, digits + 10),
     )
@@ -316,7 +399,7 @@ def theorem5_audit(
         large = max(large, float(pair_bound_polar(1e6, theta, q).max()))
     f = sy.theorem4_bound()
     exact = sy.max_value_exact() == 0
-    printed = sy.max_difference_at_rational_points(
+    printed = max_difference_at_rational_points(
         sy.printed_max_halfpi(), f.subs(sy.THETA, sp.pi / 2),
         {sy.ALPHA: (0.01, 5.0), sy.Q: (0.0, 3.0)}, n_rational_points, 0, 30,
     )
@@ -506,7 +589,7 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
             min_dist = min(min_dist, float((num - 1.0).min()))
         else:
             q0 = max(q0, float(np.abs(num - 1.0).max()))
-    root = sy.max_difference_at_rational_points(
+    root = max_difference_at_rational_points(
         sy.stationarity_alpha().subs(sy.ALPHA, sp.sqrt(sy.alpha_star_squared())), 0,
         {sy.THETA: (0.02, 3.12), sy.Q: (0.0, 3.0)}, n_rational_points, 0, 40,
     )
