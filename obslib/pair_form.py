@@ -30,10 +30,23 @@ __all__ = [
 def fine_grid(
     alpha_max: float = 5.0, alpha_per_unit: int = 100, theta_quarter: int = 180
 ) -> tuple[np.ndarray, np.ndarray]:
-    """A grid that contains ``alpha = 1`` and ``theta = 0, +-pi/2, +-pi`` exactly.
+    r"""A grid of :math:`(\alpha, \theta)` that contains :math:`\alpha = 1` and :math:`\theta = 0, \pm\pi/2, \pm\pi` exactly.
 
-    ``alpha = k / alpha_per_unit`` for ``k = 0 .. alpha_max * alpha_per_unit`` and
-    ``theta = pi (k / (2 m) - 1)`` for ``k = 0 .. 4 m`` with ``m = theta_quarter``.
+    :math:`\alpha = k / a` for :math:`k = 0, \dots, \lfloor \alpha_{\max} a \rfloor` with
+    :math:`a` = ``alpha_per_unit``, and :math:`\theta = \pi (k / (2 m) - 1)` for
+    :math:`k = 0, \dots, 4 m` with :math:`m` = ``theta_quarter``.
+
+    Returns
+    -------
+    alpha, theta : ndarray
+
+    Examples
+    --------
+    >>> alpha, theta = fine_grid(alpha_max=1.0, alpha_per_unit=2, theta_quarter=1)
+    >>> alpha
+    array([0. , 0.5, 1. ])
+    >>> theta / np.pi
+    array([-1. , -0.5,  0. ,  0.5,  1. ])
     """
     amax = positive_float("alpha_max", alpha_max)
     per = positive_int("alpha_per_unit", alpha_per_unit)
@@ -43,20 +56,28 @@ def fine_grid(
 
 
 def bound_surface(alpha, theta, u_max: float = 1.0, d_io: float = 1.0) -> np.ndarray:
-    """Theorem 4's bound on the grid ``theta x alpha``: ``Z[k, l] = C^-1(alpha_l, theta_k)``.
+    r"""Theorem 4's bound (Eq. (9)) on the grid :math:`\theta \times \alpha`: ``Z[k, l]`` is :math:`\underline{C}^{-1}(\alpha_l, \theta_k)`.
 
     Parameters
     ----------
     alpha, theta : array_like, 1-D
-        Grid axes (``alpha >= 0``).
+        Grid axes (:math:`\alpha \ge 0`).
     u_max : float
         Speed bound (non-negative); Fig. 2 uses 1.
     d_io : float
-        Distance of sensor i (positive); Fig. 2 uses 1. Only ``u_max / d_io`` matters.
+        Distance of sensor :math:`i` (positive); Fig. 2 uses 1. Only :math:`u_{\max} / d_{io}`
+        matters.
 
     Returns
     -------
     ndarray, shape (len(theta), len(alpha))
+
+    Examples
+    --------
+    >>> Z = bound_surface([0.0, 1.0, 2.0], [0.0, np.pi / 2], u_max=1.0, d_io=1.0)
+    >>> Z.round(4)
+    array([[0.    , 0.    , 0.    ],
+           [0.    , 0.7071, 0.4472]])
     """
     a = np.asarray(alpha, dtype=float)
     t = np.asarray(theta, dtype=float)
@@ -77,7 +98,15 @@ class GridMax:
 
 
 def grid_maximum(alpha, theta, Z, atol: float = 1e-12) -> GridMax:
-    """Maximum of ``Z`` (shape ``(len(theta), len(alpha))``) and where it is attained."""
+    r"""Maximum of ``Z`` (shape ``(len(theta), len(alpha))``) and every grid point within ``atol`` of it.
+
+    Examples
+    --------
+    >>> alpha, theta = fine_grid(alpha_max=2.0, alpha_per_unit=1, theta_quarter=2)
+    >>> m = grid_maximum(alpha, theta, bound_surface(alpha, theta))
+    >>> round(m.value, 6), [(a, round(t / np.pi, 6)) for a, t in m.points]
+    (0.707107, [(1.0, -0.5), (1.0, 0.5)])
+    """
     Z = np.asarray(Z, dtype=float)
     a = np.asarray(alpha, dtype=float)
     t = np.asarray(theta, dtype=float)
@@ -107,13 +136,27 @@ def _check_theta_q(theta, u_over_d):
 
 
 def stationarity_alpha(alpha, theta, u_over_d):
-    """Eq. (34): ``g = (1 - a^2)(1 - cos 2 theta) + q^2 (S - (a^2 + cos 2 theta))``, evaluated
-    without cancellation.
+    r"""Eq. (34), the numerator of :math:`\partial \underline{C}^{-1} / \partial \alpha`, evaluated without cancellation.
 
-    ``d C^-1 / d alpha`` has the sign of ``g`` (see :func:`obslib.symbolic.dbound_dalpha_closed`).
-    Uses ``1 - cos 2 theta = 2 sin^2 theta`` and, since ``S^2 - (a^2 + c)^2 = sin^2 2 theta``,
-    ``S - (a^2 + c) = sin^2(2 theta) / (S + a^2 + c)`` where ``a^2 + c > 0`` (the direct difference
-    elsewhere).
+    .. math::
+
+       g = (1 - \alpha^2)(1 - \cos 2\theta) + q^2 \bigl(S - (\alpha^2 + \cos 2\theta)\bigr),
+       \qquad S = \sqrt{1 + \alpha^4 + 2 \alpha^2 \cos 2\theta},
+
+    with :math:`q = u_{\max} / d_{io}`; :math:`\partial \underline{C}^{-1} / \partial \alpha` has
+    the sign of :math:`g` (see :func:`obslib.symbolic.dbound_dalpha_closed`). Uses
+    :math:`1 - \cos 2\theta = 2 \sin^2\theta` and, since
+    :math:`S^2 - (\alpha^2 + c)^2 = \sin^2 2\theta` with :math:`c = \cos 2\theta`,
+    :math:`S - (\alpha^2 + c) = \sin^2(2\theta) / (S + \alpha^2 + c)` where
+    :math:`\alpha^2 + c > 0` (the direct difference elsewhere).
+
+    Examples
+    --------
+    The bound still rises at :math:`\alpha = 1` and falls at :math:`\alpha = 2`
+    (:math:`\theta = \pi/4`, :math:`q = 1`):
+
+    >>> print(round(stationarity_alpha(1.0, np.pi / 4, 1.0), 6), round(stationarity_alpha(2.0, np.pi / 4, 1.0), 6))
+    0.414214 -2.876894
     """
     a = np.asarray(alpha, dtype=float)
     th = np.asarray(theta, dtype=float)
@@ -133,29 +176,38 @@ def stationarity_alpha(alpha, theta, u_over_d):
 
 
 def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):
-    """The ``alpha`` maximising Theorem 4's bound for a fixed ``theta``, solved numerically.
+    r"""The :math:`\alpha^*` maximising Theorem 4's bound for a fixed :math:`\theta`, solved numerically.
 
-    Solves Eq. (34) (:func:`stationarity_alpha`) by bisection, for all ``theta`` at once.
-    ``g(1) >= 0`` and ``g < 0`` for large ``alpha``, and ``g > 0`` on ``(0, 1)``, so the root is
-    the unique maximiser and lies in ``[1, inf)`` (the bound is 0 at ``alpha = 0`` and tends to 0
-    as ``alpha -> inf``). The bracket ``[1, 2^k]`` is doubled until ``g < 0`` at its top, then
-    halved until it is narrower than ``xtol + 4 eps alpha`` (or cannot shrink in floating point).
-    Bisection needs no derivative and cannot leave the bracket; it is independent of the closed
-    form :func:`maximising_alpha_closed` it is compared with.
+    Solves Eq. (34) (:func:`stationarity_alpha`) by bisection, for all :math:`\theta` at once.
+    :math:`g(1) \ge 0` and :math:`g < 0` for large :math:`\alpha`, and :math:`g > 0` on
+    :math:`(0, 1)`, so the root is the unique maximiser and lies in :math:`[1, \infty)` (the bound
+    is 0 at :math:`\alpha = 0` and tends to 0 as :math:`\alpha \to \infty`). The bracket
+    :math:`[1, 2^k]` is doubled until :math:`g < 0` at its top, then halved until it is narrower
+    than :math:`x_{tol} + 4 \varepsilon \alpha` (or cannot shrink in floating point). Bisection
+    needs no derivative and cannot leave the bracket; it is independent of the closed form
+    :func:`maximising_alpha_closed` it is compared with.
 
     Parameters
     ----------
     theta : array_like
-        ``theta_ji``, not a multiple of ``pi`` (where the bound is 0 for every ``alpha``).
+        :math:`\theta_{ji}`, not a multiple of :math:`\pi` (where the bound is 0 for every
+        :math:`\alpha`).
     u_over_d : array_like
-        ``u_max / d_io``, non-negative.
+        :math:`u_{\max} / d_{io}`, non-negative.
     xtol : float
-        Absolute tolerance on ``alpha*``.
+        Absolute tolerance on :math:`\alpha^*`.
 
     Returns
     -------
     float or ndarray
-        ``alpha*``; exactly 1 when ``u_over_d = 0`` or ``cos theta = 0``.
+        :math:`\alpha^*`; 1 when :math:`u_{\max} / d_{io} = 0` or :math:`\cos\theta = 0`.
+
+    Examples
+    --------
+    >>> round(maximising_alpha(np.pi / 4, 1.0), 10)
+    1.1547005384
+    >>> maximising_alpha([np.pi / 4, np.pi / 2], 0.0)
+    array([1., 1.])
     """
     th, q = _check_theta_q(theta, u_over_d)
     th, q = np.broadcast_arrays(th, q)
@@ -184,12 +236,19 @@ def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):
 
 
 def maximising_alpha_closed(theta, u_over_d):
-    """Closed form of the maximiser (derived in :func:`obslib.symbolic.alpha_star_squared`)::
+    r"""Closed form of the maximiser :math:`\alpha^*` (derived in :func:`obslib.symbolic.alpha_star_squared`).
 
-        alpha* = sqrt(r (r sin^2 theta + q^2 |cos theta|) / (q^2 + sin^2 theta)),
-        r = sqrt(1 + q^2)
+    .. math::
+
+       \alpha^* = \sqrt{\frac{r (r \sin^2\theta + q^2 |\cos\theta|)}{q^2 + \sin^2\theta}},
+       \qquad r = \sqrt{1 + q^2}, \quad q = u_{\max} / d_{io}.
 
     Same domain as :func:`maximising_alpha`.
+
+    Examples
+    --------
+    >>> round(maximising_alpha_closed(np.pi / 4, 1.0), 10)
+    1.1547005384
     """
     th, q = _check_theta_q(theta, u_over_d)
     r = np.sqrt(1.0 + q * q)
@@ -200,10 +259,18 @@ def maximising_alpha_closed(theta, u_over_d):
 
 # --- Theorem 1: Weyl step for 2x2 symmetric matrices -----------------------------------------
 def random_symmetric_2x2(n: int, seed: int, psd: bool = False) -> np.ndarray:
-    """``n`` random symmetric 2x2 matrices (shape ``(n, 2, 2)``) at scales 1e-3 .. 1e3.
+    r"""``n`` random symmetric 2x2 matrices (shape ``(n, 2, 2)``) at scales :math:`10^{-3}` to :math:`10^3`.
 
-    With ``psd=True`` they are Gram matrices ``R^T R`` (as ``O(o)^T O(o)`` and ``u u^T``); a
-    quarter of those are rank one (a single row, like ``u u^T``).
+    With ``psd=True`` they are Gram matrices :math:`R^T R` (as :math:`O(o)^T O(o)` and
+    :math:`u u^T`); a quarter of those are rank one (a single row, like :math:`u u^T`).
+
+    Examples
+    --------
+    >>> X = random_symmetric_2x2(100, seed=0, psd=True)
+    >>> X.shape, bool(np.allclose(X, X.transpose(0, 2, 1)))
+    ((100, 2, 2), True)
+    >>> bool((np.linalg.eigvalsh(X)[:, 0] >= -1e-9 * np.abs(X).max()).all())
+    True
     """
     n = positive_int("n", n)
     rng = np.random.default_rng(seed)
@@ -217,13 +284,21 @@ def random_symmetric_2x2(n: int, seed: int, psd: bool = False) -> np.ndarray:
 
 
 def weyl_2x2_slacks(X, Y) -> dict[str, np.ndarray]:
-    """Slack of each Weyl inequality of Eq. (18) for batches of symmetric 2x2 ``X``, ``Y``.
+    r"""Slack of each Weyl inequality of Eq. (18) for batches of symmetric 2x2 ``X``, ``Y``.
 
     Eigenvalues ascending (``numpy.linalg.eigvalsh``). Keys as in
-    :func:`obslib.symbolic.weyl_2x2_slacks`; each value is ``rhs - lhs`` oriented so that the
-    inequality holds iff the slack is ``>= 0``. Also ``"ratio"``: the slack of Eq. (19),
-    ``l1(X+Y)/l2(X+Y) - (l1 X + l1 Y)/(l2 X + l2 Y)``, for positive semidefinite inputs with
-    ``l2(X) + l2(Y) > 0`` (NaN elsewhere).
+    :func:`obslib.symbolic.weyl_2x2_slacks`; each value is the right-hand side minus the left-hand
+    side, oriented so that the inequality holds iff the slack is :math:`\ge 0`. Also ``"ratio"``:
+    the slack of Eq. (19),
+    :math:`\lambda_1(X+Y)/\lambda_2(X+Y) - (\lambda_1(X) + \lambda_1(Y))/(\lambda_2(X) + \lambda_2(Y))`,
+    for positive semidefinite inputs with :math:`\lambda_2(X) + \lambda_2(Y) > 0` (NaN elsewhere).
+
+    Examples
+    --------
+    >>> s = weyl_2x2_slacks(np.diag([1.0, 3.0]), np.diag([2.0, 0.0]))
+    >>> {k: round(float(v), 6) for k, v in s.items()}  # doctest: +NORMALIZE_WHITESPACE
+    {'l1 >= l1+l1': 2.0, 'l1 <= l1+l2': 0.0, 'l1 <= l2+l1': 0.0, 'l2 <= l2+l2': 2.0,
+     'l2 >= l1+l2': 0.0, 'l2 >= l2+l1': 0.0, 'ratio': 0.8}
     """
     X = np.asarray(X, dtype=float)
     Y = np.asarray(Y, dtype=float)

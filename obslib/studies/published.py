@@ -5,7 +5,7 @@ THEOREM7_PRINTED = {
     "case1": {(0, 2): 0.5345, (0, 1, 2): 0.1823},
     "case2": {(0, 1, 2): 0.3310, (0, 1): 0.5345, (0, 1, 2, 3): 0.8765, (0, 1, 3): 0.9258},
 }
-#: The comparison each case prints: Case 1 ``omega({s1,s3}) > omega({s1,s2,s3})`` (a
+#: The comparison each case prints. Case 1 ``omega({s1,s3}) > omega({s1,s2,s3})`` (a
 #: monotonicity witness ``A = {s1, s3}``, ``x = s2``); Case 2 ``omega({s1,s2,s3}) -
 #: omega({s1,s2}) < omega({s1,s2,s4,s3}) - omega({s1,s2,s4})`` (a submodularity witness
 #: ``A = {s1, s2}``, ``B = {s1, s2, s4}``, ``x = s3``).
