@@ -317,6 +317,13 @@ def set_function_table(ground, f: Callable[[tuple], float], min_size: int = 0) -
     ------
     ValueError
         If ``f`` returns something that is not a finite real number (the message names the set).
+
+    Examples
+    --------
+    Coverage of two elements (the empty set is worth 0, any other 1):
+
+    >>> set_function_table(2, lambda s: float(len(s) > 0))
+    array([0., 1., 1., 1.])
     """
     n = _ground_size(ground)
     m = _check_min_size(min_size, n)
@@ -381,6 +388,14 @@ def audit_tables(values, n: int, min_size: int = 0, rtol: float = RTOL,
     Returns
     -------
     list of SetFunctionAudit
+
+    Examples
+    --------
+    A modular table (the size of the set) and a coverage table, audited at once:
+
+    >>> modular, coverage = audit_tables([[0, 1, 1, 2], [0, 1, 1, 1]], n=2)
+    >>> modular.modular, coverage.submodular, coverage.supermodular
+    (True, True, False)
     """
     n, m, v, tol = _prepare_tables(values, n, min_size, rtol, atol)
     pa, px = _additions(n, m)
@@ -508,6 +523,14 @@ def audit_flags(values, n: int, min_size: int = 0, rtol: float = RTOL,
     Returns
     -------
     TableFlags
+
+    Examples
+    --------
+    The same verdicts as :func:`audit_tables`, without the witnesses:
+
+    >>> flags = audit_flags([[0, 1, 1, 2], [0, 1, 1, 1]], n=2)
+    >>> flags.not_submodular, flags.not_supermodular
+    (array([False, False]), array([False,  True]))
     """
     n, m, v, tol = _prepare_tables(values, n, min_size, rtol, atol)
     n_i = v.shape[0]
@@ -608,10 +631,11 @@ def _bound_from_tr_det(tr, det, lmax, u2):
 
 
 def lower_bound_tables(vectors, u_max) -> np.ndarray:
-    """Theorem 1's bound for all subsets of many instances at once.
+    r"""Theorem 1's bound for all subsets of many instances at once.
 
-    ``sqrt(lambda_min / (lambda_max + u_max^2))`` with the eigenvalues of ``O(o)^T O(o)`` from
-    ``tr`` and the Cauchy-Binet ``det`` (Eq. (6), (25)); 0 for fewer than two sensors.
+    :math:`\sqrt{\lambda_{\min} / (\lambda_{\max} + u_{\max}^2)}` with the eigenvalues of
+    :math:`O(o)^T O(o)` from its trace and the Cauchy-Binet determinant (Eqs. (6), (25)); 0 for
+    fewer than two sensors.
 
     Parameters
     ----------
@@ -622,6 +646,13 @@ def lower_bound_tables(vectors, u_max) -> np.ndarray:
     Returns
     -------
     ndarray, shape (I, 2**N)
+
+    Examples
+    --------
+    >>> sensors = np.array([[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]])
+    >>> target = np.array([1.0, 1.0])
+    >>> lower_bound_tables((target - sensors)[None], u_max=1.0).round(4)
+    array([[0.    , 0.    , 0.    , 0.8165, 0.    , 0.8165, 0.    , 0.6325]])
     """
     v = np.asarray(vectors, dtype=float)
     if v.ndim != 3 or v.shape[-1] != 2:
@@ -633,16 +664,33 @@ def lower_bound_tables(vectors, u_max) -> np.ndarray:
 
 
 def lower_bound_table(sensors, target, u_max) -> np.ndarray:
-    """Theorem 1's bound ``omega(S)`` for every subset ``S`` of ``sensors``, shape ``(2**N,)``.
+    r"""Theorem 1's bound :math:`\omega(S)` for every subset :math:`S` of ``sensors``, shape ``(2**N,)``.
 
     Vectorised; agrees with :func:`obslib.lower_bound` (SVD) to rounding.
+
+    Examples
+    --------
+    Table entry ``k`` is the bound of the sensors at the bits of ``k``; adding the third sensor
+    lowers it (Theorem 7: the bound is not monotone):
+
+    >>> sensors = np.array([[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]])
+    >>> lower_bound_table(sensors, [1.0, 1.0], u_max=1.0).round(4)
+    array([0.    , 0.    , 0.    , 0.8165, 0.    , 0.8165, 0.    , 0.6325])
     """
     rows = relative_rows(sensors, target)
     return lower_bound_tables(rows[None], float(as_u_max(u_max)))[0]
 
 
 def lower_bound_set_function(sensors, target, u_max) -> Callable[[tuple], float]:
-    """``omega`` as a set function of index tuples, each value by :func:`obslib.lower_bound` (SVD)."""
+    r"""Theorem 1's bound :math:`\omega` as a set function of index tuples, each value by
+    :func:`obslib.lower_bound` (SVD).
+
+    Examples
+    --------
+    >>> omega = lower_bound_set_function([[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]], [1.0, 1.0], 1.0)
+    >>> round(omega((0, 1)), 4), round(omega((0, 1, 2)), 4)
+    (0.8165, 0.6325)
+    """
     s = as_points(sensors, "sensors")
     relative_rows(s, target)
     o = as_point(target, "target")

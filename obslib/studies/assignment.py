@@ -91,6 +91,13 @@ def optimal_values(W) -> np.ndarray:
     over an assignment would be, and rounding is monotone, so the result equals the maximum over
     :func:`pair_assignments` exactly (the tests compare them). Work grows like ``2^N N^2 L`` per
     instance; ``N`` is limited to :data:`MAX_DP_SENSORS`.
+
+    Examples
+    --------
+    On :func:`tight_weights` the optimum is 3:
+
+    >>> optimal_values(tight_weights(eps=1e-3)[None])
+    array([3.])
     """
     W = _as_batch(W)
     k, n, _, n_targets = W.shape
@@ -119,6 +126,13 @@ def greedy_values(W) -> np.ndarray:
     whose sensors and target are unused, the smallest ``(i, j, l)`` among equal weights (the
     first maximum in C order), as :func:`obslib.greedy_pair_assignment` does; the values are
     summed in pick order, so they equal its ``value`` exactly (the tests compare them).
+
+    Examples
+    --------
+    On :func:`tight_weights` the greedy takes the heavy pair and is stuck with :math:`1 + \\varepsilon`:
+
+    >>> greedy_values(tight_weights(eps=1e-3)[None])
+    array([1.001])
     """
     W = _as_batch(W)
     k, n, _, n_targets = W.shape
@@ -211,6 +225,12 @@ def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2),
     ``extra`` (both inclusive), positions uniform in ``[0, side]^2``, weights the pair bounds
     with ``u_max`` (Euclidean). Instances are drawn one after the other from one generator, then
     solved in batches per ``(N, L)`` (:func:`greedy_values`, :func:`optimal_values`).
+
+    Examples
+    --------
+    >>> study = greedy_vs_optimal(n_instances=20, seed=0)
+    >>> study.ratio.shape, bool(study.ratio.min() >= 1 / 3)
+    ((20,), True)
     """
     rng = np.random.default_rng(seed)
     sizes, geoms = [], []
@@ -306,6 +326,12 @@ def tight_weights(eps: float = 1e-3) -> np.ndarray:
     Six sensors and three targets: the triple ``(0, 1, t0)`` weighs ``1 + eps`` and blocks the
     optimal ``(0, 2, t1)``, ``(1, 3, t2)``, ``(4, 5, t0)`` of weight 1 each; every other weight
     is 0. Theorem 6 holds for any ``omega``, and this shows its 1/3 cannot be improved.
+
+    Examples
+    --------
+    >>> W = tight_weights(eps=1e-3)
+    >>> round(float(greedy_values(W[None])[0] / optimal_values(W[None])[0]), 6)
+    0.333667
     """
     W = np.zeros((6, 6, 3))
     for (i, j, l), w in {(0, 1, 0): 1 + eps, (0, 2, 1): 1.0, (1, 3, 2): 1.0, (4, 5, 0): 1.0}.items():

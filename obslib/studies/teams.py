@@ -30,6 +30,12 @@ def fig9_trial(n_sensors: int, trial: int, seed: int, n_targets: int = 5, measur
 
     The draw depends only on ``(seed, N, trial)`` (``default_rng([seed, N, trial])``): sensors
     first, then targets, uniform in ``[0, side]^2``.
+
+    Examples
+    --------
+    >>> counts = fig9_trial(n_sensors=20, trial=0, seed=0)
+    >>> counts.size, int(counts.sum())
+    (5, 20)
     """
     S, T = _fig9_geometry(n_sensors, trial, seed, n_targets, side)
     teams = greedy_team_assignment(S, T, measure=measure, eps=eps)
@@ -92,7 +98,14 @@ class Evenness:
 
 
 def evenness(counts, N_values, n_targets: int) -> Evenness:
-    """Evenness statistics of Fig. 9 sweep counts (see :class:`Evenness`)."""
+    """Evenness statistics of Fig. 9 sweep counts (see :class:`Evenness`).
+
+    Examples
+    --------
+    >>> e = evenness(fig9_sweep([20, 25], trials=3, seed=0), [20, 25], n_targets=5)
+    >>> e.fair, bool((e.relative < 1).all())
+    (array([4., 5.]), True)
+    """
     C = np.asarray(counts)
     fair = np.asarray(N_values, dtype=float) / n_targets
     dev = np.abs(C.mean(axis=1) - fair[:, None])

@@ -16,6 +16,14 @@ def plot_fig1(
 
     The target is at the centre; sensor ``i`` at distance ``d_io`` and angle ``theta_i``, sensor
     ``j`` at ``d_jo`` and ``theta_j``; ``theta_ji = theta_j - theta_i``. Returns the axes.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")  # no window
+    >>> ax = plot_fig1(d_io=1.0, d_jo=1.5, theta_i=0.35, theta_j=2.0)
+    >>> ax.get_aspect()
+    1.0
     """
     import matplotlib.pyplot as plt
 
@@ -90,6 +98,18 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     Returns
     -------
     matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")  # no window
+    >>> from obslib.pair_form import bound_surface, fine_grid, grid_maximum
+    >>> alpha, theta = fine_grid(alpha_max=5.0, alpha_per_unit=10, theta_quarter=8)
+    >>> Z = bound_surface(alpha, theta, u_max=1.0, d_io=1.0)
+    >>> fig = plot_fig2(alpha, theta, Z, [0.1, 0.3, 0.5, 0.7], mark=grid_maximum(alpha, theta, Z),
+    ...                 panels="contour")
+    >>> [ax.get_title() for ax in fig.axes]
+    ['(b) contour', '(d) contour']
     """
     import matplotlib as mpl
     import matplotlib.pyplot as plt
