@@ -83,6 +83,7 @@ def test_case2_would_be_reproduced_with_the_printed_value(monkeypatch):
         return real(sensors, target, u_max)
 
     monkeypatch.setattr(sm, "lower_bound", fake)
+    # private: the ledger caches each case's audit; cleared so that the patched bound is used
     cs._case.cache_clear()
     try:
         f = claims.registry()["thm7-case2"].check("quick")

@@ -33,8 +33,8 @@ def _sweep(L_max, trials, seed, u_max, side, optimum_max_L):
 def _fig8(profile: str) -> Finding:
     p = params(NB, profile)
     r = _sweep(p["L_max"], p["trials"], p["seed"], p["u_max"], p["side"], p["optimum_max_L"])
-    g, rel = r["greedy"].mean(axis=1), r["relaxed"].mean(axis=1)
-    ratio = g / rel
+    summary = st.fig8_summary(r)
+    g, rel, ratio = summary.mean["greedy"], summary.mean["relaxed"], summary.ratio
     last = -1
     se = {k: r[k][last].std(ddof=1) / np.sqrt(r[k].shape[1]) for k in ("greedy", "relaxed")}
     near_published = all(

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from ..assignment import (
@@ -14,7 +16,7 @@ from ..bounds import pair_bounds
 from ..sweep import run_sweep
 from .assignment import MAX_DP_SENSORS, greedy_values, optimal_values
 
-__all__ = ["FIG8_KEYS", "FIG8_DENSE_WEIGHTS", "fig8_trial", "fig8_sweep"]
+__all__ = ["FIG8_KEYS", "FIG8_DENSE_WEIGHTS", "fig8_trial", "fig8_sweep", "Fig8Summary", "fig8_summary"]
 
 #: The values each trial reports.
 FIG8_KEYS = ("greedy", "relaxed", "relaxed_ordered", "optimum")
@@ -79,3 +81,30 @@ def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float
     out = {k: np.array([r[k] for r in results]).reshape(len(L_values), trials) for k in FIG8_KEYS}
     out["L"] = np.array(L_values)
     return out
+
+
+@dataclass(frozen=True)
+class Fig8Summary:
+    """What Fig. 8 plots and the ledger judges, per number of targets ``L``."""
+
+    L: np.ndarray  #: the numbers of targets
+    mean: dict  #: key of :data:`FIG8_KEYS` -> mean over trials, shape ``(len(L),)``
+    std: dict  #: key -> standard deviation over trials (``ddof = 0``)
+    ratio: np.ndarray  #: mean greedy / mean relaxed
+
+
+def fig8_summary(sweep: dict) -> Fig8Summary:
+    """Means, spreads and the greedy / relaxed ratio of a :func:`fig8_sweep` result.
+
+    Examples
+    --------
+    >>> s = fig8_summary(fig8_sweep([1, 2], trials=3, seed=0))
+    >>> s.L.tolist(), bool(s.ratio[0] == 1.0), bool((s.mean["greedy"] <= s.mean["relaxed"]).all())
+    ([1, 2], True, True)
+    """
+    missing = [k for k in (*FIG8_KEYS, "L") if k not in sweep]
+    if missing:
+        raise ValueError(f"sweep lacks {missing}: pass the result of fig8_sweep")
+    mean = {k: np.asarray(sweep[k]).mean(axis=1) for k in FIG8_KEYS}
+    std = {k: np.asarray(sweep[k]).std(axis=1) for k in FIG8_KEYS}
+    return Fig8Summary(np.asarray(sweep["L"]), mean, std, mean["greedy"] / mean["relaxed"])

@@ -45,3 +45,15 @@ def test_fig8_dense_and_pruned_paths_agree():
         assert t["greedy"] == ob.greedy_pair_assignment(sensors=S, targets=T, u_max=1.0).value
         assert t["relaxed"] == pytest.approx(plain.value, rel=1e-12)
         assert t["relaxed_ordered"] == pytest.approx(ordered.value, rel=1e-12)
+
+
+def test_fig8_summary_is_the_mean_over_trials():
+    r = st.fig8_sweep([1, 3], trials=4, seed=1)
+    s = st.fig8_summary(r)
+    for k in ("greedy", "relaxed", "relaxed_ordered"):
+        for a in range(2):
+            assert s.mean[k][a] == pytest.approx(sum(r[k][a].tolist()) / 4, rel=1e-14)
+            assert s.std[k][a] == pytest.approx(np.sqrt(np.mean((r[k][a] - s.mean[k][a]) ** 2)))
+    assert s.ratio.tolist() == pytest.approx([1.0, s.mean["greedy"][1] / s.mean["relaxed"][1]])
+    with pytest.raises(ValueError, match="fig8_sweep"):
+        st.fig8_summary({"greedy": r["greedy"]})
