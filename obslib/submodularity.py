@@ -1,18 +1,19 @@
-"""Monotonicity and submodularity of set functions, exhaustively, with the smallest witness.
+r"""Monotonicity and submodularity of set functions, exhaustively, with the smallest witness.
 
 Section IV-B of the paper needs, for the greedy 1/2-approximation of Problem 2, a sensor-set
-function ``f`` that is
+function :math:`f` that is
 
-* **monotone increasing**: ``f(A) <= f(A + x)`` for every set ``A`` and sensor ``x``;
-* **submodular** (diminishing returns): ``f(A + x) - f(A) >= f(B + x) - f(B)`` for all
-  ``A`` subset of ``B`` and ``x`` not in ``B``.
+* **monotone increasing**: :math:`f(A) \le f(A + x)` for every set :math:`A` and sensor
+  :math:`x`;
+* **submodular** (diminishing returns): :math:`f(A + x) - f(A) \ge f(B + x) - f(B)` for all
+  :math:`A \subseteq B` and :math:`x \notin B`.
 
-Theorem 7 says Theorem 1's lower bound ``omega(S)`` is neither, by two counter-examples
-(Cases 1 and 2, Fig. 3); Theorem 8 says four measures of ``O^T O`` are both
+Theorem 7 says Theorem 1's lower bound :math:`\omega(S)` is neither, by two counter-examples
+(Cases 1 and 2, Fig. 3); Theorem 8 says four measures of :math:`O^T O` are both
 (:mod:`obslib.measures`). This module decides such claims by brute force over a small ground
-set (``N <= 10``): every subset is evaluated **once** into a table of ``2**N`` values, and all
-additions ``(A, x)`` and all nested triples ``(A, B, x)`` are compared at once with NumPy
-(fewer than ``N 3**(N-1)`` triples: 191 710 for ``N = 10``). For thousands of random
+set (:math:`N \le 10`): every subset is evaluated **once** into a table of :math:`2^N` values,
+and all additions :math:`(A, x)` and all nested triples :math:`(A, B, x)` are compared at once
+with NumPy (fewer than :math:`N 3^{N-1}` triples: 191 710 for :math:`N = 10`). For thousands of random
 instances, :func:`audit_flags` reaches the same verdicts (and the size of each smallest
 witness) with a min / max sum-over-subsets transform of the gains instead of every triple; the
 random audits use it and run the full comparison only on the instance whose witness they report.

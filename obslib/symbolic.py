@@ -1,9 +1,11 @@
-"""SymPy derivations for the two-sensor closed form (Theorem 4) and its extremes (Theorem 5).
+r"""SymPy derivations for the two-sensor closed form (Theorem 4) and its extremes (Theorem 5).
 
-The paper states the pair bound in polar form (Theorem 4, Eq. (9))::
+The paper states the pair bound in polar form (Theorem 4, Eq. (9)):
 
-    C^-1(O_ij(o, u_o)) = sqrt((1 + a^2 - S) / (1 + a^2 + S + 2 u^2 / d_io^2)),
-    S = sqrt(1 + a^4 + 2 a^2 cos(2 theta_ji)),   a = alpha = d_jo / d_io,
+.. math::
+
+   C^{-1}(O_{ij}(o, u_o)) = \sqrt{\frac{1 + \alpha^2 - S}{1 + \alpha^2 + S + 2 u^2 / d_{io}^2}},
+   \quad S = \sqrt{1 + \alpha^4 + 2 \alpha^2 \cos 2\theta_{ji}}, \quad \alpha = d_{jo} / d_{io},
 
 and proves it (appendix, proof of Theorem 4) from ``O_ij(o)^T O_ij(o)`` written in Cartesian
 coordinates (Eq. (32)) and in the polar coordinates of Eq. (8). Theorem 5 locates its extremes

@@ -81,15 +81,15 @@ def _as_batch(W) -> np.ndarray:
 
 
 def optimal_values(W) -> np.ndarray:
-    """Problem 1's optimum for a batch of weight arrays ``W`` of shape ``(K, N, N, L)``.
+    r"""Problem 1's optimum for a batch of weight arrays ``W`` of shape ``(K, N, N, L)``.
 
     Dynamic programming over targets in order: after target ``l``, ``best[mask]`` is the largest
     total weight of giving targets ``0..l`` disjoint pairs that use exactly the sensors in the
     bit set ``mask``; target ``l + 1`` extends each set by every pair disjoint from it. With
-    non-negative weights an optimum assigns every target (``N >= 2L``), so the optimum is the
+    non-negative weights an optimum assigns every target (:math:`N \ge 2L`), so the optimum is the
     largest entry after the last target. The sums are formed in target order, as a direct sum
     over an assignment would be, and rounding is monotone, so the result equals the maximum over
-    :func:`pair_assignments` exactly (the tests compare them). Work grows like ``2^N N^2 L`` per
+    :func:`pair_assignments` exactly (the tests compare them). Work grows like :math:`2^N N^2 L` per
     instance; ``N`` is limited to :data:`MAX_DP_SENSORS`.
 
     Examples
@@ -219,10 +219,10 @@ def _ratios(S, T, u_max) -> np.ndarray:
 
 def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2), u_max=1.0,
                       side=100.0) -> GreedyStudy:
-    """Algorithm 1 against the exact optimum on random instances of the Fig. 8 kind.
+    r"""Algorithm 1 against the exact optimum on random instances of the Fig. 8 kind.
 
-    Each instance draws ``L`` uniformly from ``targets`` and ``N = 2L + e`` with ``e`` from
-    ``extra`` (both inclusive), positions uniform in ``[0, side]^2``, weights the pair bounds
+    Each instance draws ``L`` uniformly from ``targets`` and :math:`N = 2L + e` with :math:`e` from
+    ``extra`` (both inclusive), positions uniform in :math:`[0, \mathrm{side}]^2`, weights the pair bounds
     with ``u_max`` (Euclidean). Instances are drawn one after the other from one generator, then
     solved in batches per ``(N, L)`` (:func:`greedy_values`, :func:`optimal_values`).
 
@@ -321,11 +321,11 @@ def charging(W, greedy_triples, optimal_triples) -> list[dict]:
 
 
 def tight_weights(eps: float = 1e-3) -> np.ndarray:
-    """Weights (not from geometry) on which Algorithm 1 gets ``(1 + eps) / 3`` of the optimum.
+    r"""Weights (not from geometry) on which Algorithm 1 gets :math:`(1 + \varepsilon) / 3` of the optimum.
 
-    Six sensors and three targets: the triple ``(0, 1, t0)`` weighs ``1 + eps`` and blocks the
+    Six sensors and three targets: the triple ``(0, 1, t0)`` weighs :math:`1 + \varepsilon` and blocks the
     optimal ``(0, 2, t1)``, ``(1, 3, t2)``, ``(4, 5, t0)`` of weight 1 each; every other weight
-    is 0. Theorem 6 holds for any ``omega``, and this shows its 1/3 cannot be improved.
+    is 0. Theorem 6 holds for any :math:`\omega`, and this shows its 1/3 cannot be improved.
 
     Examples
     --------

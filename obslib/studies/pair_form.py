@@ -52,8 +52,8 @@ __all__ = [
 
 
 def audit_ratios(u_max: float, d_io: float, u_over_d_curves) -> tuple:
-    """The values of ``q = u_max / d_io`` the Theorem 5 audits use, sorted: Fig. 2's
-    ``u_max / d_io``, the ``u_over_d_curves`` of the maximiser plot, and 0 (a stationary target).
+    r"""The values of :math:`q = u_{\max} / d_{io}` the Theorem 5 audits use, sorted: Fig. 2's
+    :math:`u_{\max} / d_{io}`, the ``u_over_d_curves`` of the maximiser plot, and 0 (a stationary target).
 
     Examples
     --------
@@ -149,11 +149,11 @@ def max_difference_at_rational_points(
 
 # --- Fig. 2 grid --------------------------------------------------------------------------------
 def paper_grid(alpha_max: float = 5.0, step: float = 0.1) -> tuple[np.ndarray, np.ndarray]:
-    """The grid of the published Fig. 2: ``alpha = 0:step:alpha_max``, ``theta = -pi:step:pi``.
+    r"""The grid of the published Fig. 2: ``alpha = 0:step:alpha_max``, ``theta = -pi:step:pi`` (MATLAB ranges).
 
-    Values are ``k * step`` and ``-pi + k * step`` (as a MATLAB colon range), so with the
-    default ``step = 0.1`` there are 51 values of ``alpha`` and 63 of ``theta``, and
-    ``theta = +-pi/2`` is **not** on the grid (the experiments' parameters; see the book's
+    Values are :math:`k h` and :math:`-\pi + k h` with :math:`h` = ``step``, so with the
+    default ``step = 0.1`` there are 51 values of :math:`\alpha` and 63 of :math:`\theta`, and
+    :math:`\theta = \pm\pi/2` is **not** on the grid (the experiments' parameters; see the book's
     Experimental setup page).
 
     Returns
@@ -186,8 +186,8 @@ class Fig2Grid:
 @lru_cache(maxsize=4)
 def fig2_grids(u_max: float, d_io: float, alpha_max: float, paper_step: float,
                fine_alpha_per_unit: int, fine_theta_quarter: int) -> dict:
-    """Fig. 2's bound on the published grid (:func:`paper_grid`) and on a fine grid that holds
-    ``alpha = 1``, ``theta = +-pi/2`` (:func:`obslib.pair_form.fine_grid`).
+    r"""Fig. 2's bound on the published grid (:func:`paper_grid`) and on a fine grid that holds
+    :math:`\alpha = 1`, :math:`\theta = \pm\pi/2` (:func:`obslib.pair_form.fine_grid`).
 
     Returns
     -------
@@ -196,8 +196,8 @@ def fig2_grids(u_max: float, d_io: float, alpha_max: float, paper_step: float,
 
     Examples
     --------
-    On the published grid the maximum misses :math:`1/\\sqrt{2}`; on the fine grid it is attained at
-    :math:`\\alpha = 1`, :math:`\\theta = \\pm\\pi/2`:
+    On the published grid the maximum misses :math:`1/\sqrt{2}`; on the fine grid it is attained at
+    :math:`\alpha = 1`, :math:`\theta = \pm\pi/2`:
 
     >>> g = fig2_grids(1.0, 1.0, alpha_max=5.0, paper_step=0.1, fine_alpha_per_unit=20,
     ...                fine_theta_quarter=30)

@@ -45,13 +45,13 @@ class Theorem1Audit:
 
 
 def theorem1_audit(n_scenes: int, n_controls: int, seed: int) -> Theorem1Audit:
-    """Check ``lower_bound <= C^{-1}(O(o, u))`` for random ``||u|| <= u_max`` (Theorem 1).
+    r"""Check Theorem 1, :math:`\underline{C}^{-1} \le C^{-1}(O(o, u))`, for random :math:`\|u\| \le u_{\max}`.
 
     For every scene (:func:`obslib.scenes.random_scene_batch`), ``n_controls`` controls are
-    drawn uniformly in the disc, plus the worst-case control ``u_max v_max``
-    (:func:`obslib.bounds.worst_case_controls`); the bound (SVD of ``O(o)``,
+    drawn uniformly in the disc, plus the worst-case control :math:`u_{\max} v_{\max}`
+    (:func:`obslib.bounds.worst_case_controls`); the bound (SVD of :math:`O(o)`,
     :func:`obslib.bounds.lower_bounds`) is compared with the exact inverse condition number of
-    ``O(o, u)`` (from its Gram matrix, :func:`obslib.observability.inverse_condition_numbers`).
+    :math:`O(o, u)` (from its Gram matrix, :func:`obslib.observability.inverse_condition_numbers`).
     All scenes are evaluated at once; the batched functions equal the per-scene ones
     (:func:`lower_bound`, :func:`worst_case_control`, :func:`inverse_condition_number`) to
     rounding, as the tests check.
@@ -98,12 +98,12 @@ class Theorem2Audit:
 
 
 def theorem2_audit(n_scenes: int, seed: int) -> Theorem2Audit:
-    """Check Theorem 2: with one sensor the bound is 0 wherever the sensor is.
+    r"""Check Theorem 2: with one sensor the bound is 0 wherever the sensor is.
 
     The bound is recomputed from ``numpy.linalg.eigvalsh`` of the 2x2 matrices
-    ``O_i(o)^T O_i(o)`` (stacked over the scenes; not from :func:`lower_bound`, which returns 0
-    for ``N < 2`` by definition). The exact one-sensor ``C^{-1}`` with a random control is
-    reported too: it is not 0, so the sensor's geometry does matter once ``u_o`` is known.
+    :math:`O_i(o)^T O_i(o)` (stacked over the scenes; not from :func:`lower_bound`, which returns 0
+    for :math:`N < 2` by definition). The exact one-sensor :math:`C^{-1}` with a random control is
+    reported too: it is not 0, so the sensor's geometry does matter once :math:`u_o` is known.
 
     Examples
     --------
@@ -152,16 +152,16 @@ class Theorem3Audit:
 
 
 def theorem3_audit(n_trials: int, seed: int) -> Theorem3Audit:
-    """Check Theorem 3 and the condition printed in its proof on random configurations.
+    r"""Check Theorem 3 and the condition printed in its proof on random configurations.
 
     Each trial draws a "before" and an "after" set of 2-4 sensors, uniform in a square of
-    half-side ``10**U(-1, 1)`` around a target at the origin, and a speed ``u ~ U(0, 2)``. The
-    theorem's condition ("stated") is that both ``C^{-1}(O(o))`` and ``sigma_min(O(o))`` do
+    half-side :math:`10^{U(-1, 1)}` around a target at the origin, and a speed :math:`u \sim U(0, 2)`. The
+    theorem's condition ("stated") is that both :math:`C^{-1}(O(o))` and :math:`\sigma_{\min}(O(o))` do
     not decrease; the proof's Eq. (27) ("printed") asks instead for the ratio not to decrease
-    and ``lambda'_min >= lambda_max``. Also counted: each half of the stated condition alone,
-    and the weaker condition of Remark 2 (``T1 + T2 >= 0``), which is necessary and sufficient.
+    and :math:`\lambda'_{\min} \ge \lambda_{\max}`. Also counted: each half of the stated condition alone,
+    and the weaker condition of Remark 2 (:math:`T_1 + T_2 \ge 0`), which is necessary and sufficient.
     All trials are drawn and evaluated at once (``eigvalsh`` of the stacked 2x2 matrices
-    ``O(o)^T O(o)``); a witness is the first trial, in draw order, of its row.
+    :math:`O(o)^T O(o)`); a witness is the first trial, in draw order, of its row.
 
     Examples
     --------
@@ -230,12 +230,12 @@ class Remark1Audit:
 
 
 def remark1_audit(n_scenes: int, seed: int, n_radii: int = 8, n_angles: int = 64) -> Remark1Audit:
-    """Check Remark 1 (the bound is exact for ``u_o = 0``) and its moving-target counterpart.
+    r"""Check Remark 1 (the bound is exact for :math:`u_o = 0`) and its moving-target counterpart.
 
-    For every scene: the exact ``C^{-1}`` of the stationary target (``O(o, 0)``, zero
-    row included) against the bound in eigenvalue form with ``u_max = 0`` (``eigvalsh`` of
-    ``O(o)^T O(o)``; compared as squares, since a tiny ``lambda_min`` is only known to
-    ``eps * lambda_max``); the exact ``C^{-1}`` at the worst-case control (norm ``u_max`` along
+    For every scene: the exact :math:`C^{-1}` of the stationary target (:math:`O(o, 0)`, zero
+    row included) against the bound in eigenvalue form with :math:`u_{\max} = 0` (``eigvalsh`` of
+    :math:`O(o)^T O(o)`; compared as squares, since a tiny :math:`\lambda_{\min}` is only known to
+    :math:`\varepsilon \lambda_{\max}`); the exact :math:`C^{-1}` at the worst-case control (norm :math:`u_{\max}` along
     the principal eigenvector) against the bound (SVD); and the minimum of the exact value
     over a polar grid of the disc (:func:`obslib.controls.disc_controls`), which can only approach the bound
     from above. All scenes at once, with the batched functions of :func:`theorem1_audit`.

@@ -98,16 +98,16 @@ def _printed_sides(case: str, val: dict) -> tuple:
 
 def case_audit(case: str, min_sizes=(0, 2), u_max: float = FIG3_U_MAX, rtol: float = RTOL,
                atol: float = ATOL) -> CaseAudit:
-    """Recompute Case 1 or Case 2 of Theorem 7 with :func:`obslib.lower_bound` (SVD).
+    r"""Recompute Case 1 or Case 2 of Theorem 7 with :func:`obslib.lower_bound` (SVD).
 
-    Case 1 claims ``omega`` is not monotone by ``omega(A) > omega(A + x)`` (left side >
-    right side); Case 2 claims it is not submodular by ``gain_A < gain_B`` (left < right).
+    Case 1 claims :math:`\omega` is not monotone by :math:`\omega(A) > \omega(A + x)`; Case 2 claims
+    it is not submodular by :math:`\omega(A + x) - \omega(A) < \omega(B + x) - \omega(B)`.
     Each claim is re-decided from our values; the whole geometry is also searched for the
     smallest witnesses at each ``min_size`` in ``min_sizes``.
 
     Examples
     --------
-    Case 1 holds as printed; Case 2's printed value of :math:`\\omega(\\{s_1, s_2, s_3\\})` is not
+    Case 1 holds as printed; Case 2's printed value of :math:`\omega(\{s_1, s_2, s_3\})` is not
     what the geometry gives, and with the true value the printed comparison shows nothing:
 
     >>> case_audit("case1").verdict

@@ -26,10 +26,10 @@ def _fig9_geometry(n_sensors, trial, seed, n_targets, side):
 
 def fig9_trial(n_sensors: int, trial: int, seed: int, n_targets: int = 5, measure: str = "logdet",
                eps: float = 1.0, side: float = 100.0) -> np.ndarray:
-    """Sensors per target (shape ``(L,)``) of one greedy team assignment.
+    r"""Sensors per target (shape ``(L,)``) of one greedy team assignment.
 
     The draw depends only on ``(seed, N, trial)`` (``default_rng([seed, N, trial])``): sensors
-    first, then targets, uniform in ``[0, side]^2``.
+    first, then targets, uniform in :math:`[0, \mathrm{side}]^2`.
 
     Examples
     --------

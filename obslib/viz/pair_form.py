@@ -12,10 +12,11 @@ __all__ = ["plot_fig1", "plot_fig2"]
 def plot_fig1(
     ax=None, d_io: float = 1.0, d_jo: float = 1.5, theta_i: float = 0.35, theta_j: float = 2.0
 ):
-    """Fig. 1: sensors ``i, j`` around the target in the polar coordinates of Eq. (8).
+    r"""Fig. 1: sensors :math:`i, j` around the target in the polar coordinates of Eq. (8).
 
-    The target is at the centre; sensor ``i`` at distance ``d_io`` and angle ``theta_i``, sensor
-    ``j`` at ``d_jo`` and ``theta_j``; ``theta_ji = theta_j - theta_i``. Returns the axes.
+    The target is at the centre; sensor :math:`i` at distance :math:`d_{io}` and angle
+    :math:`\theta_i`, sensor :math:`j` at :math:`d_{jo}` and :math:`\theta_j`;
+    :math:`\theta_{ji} = \theta_j - \theta_i`. Returns the axes.
 
     Examples
     --------
@@ -78,13 +79,13 @@ def _even_stride(n: int, most: int = 80) -> int:
 
 
 def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str = "all"):
-    """Fig. 2's four panels: surface (a) and contour (b) over ``(alpha, theta)``, surface (c)
-    and contour (d) over ``(alpha cos theta, alpha sin theta)``.
+    r"""Fig. 2's four panels: surface (a) and contour (b) over :math:`(\alpha, \theta)`, surface (c)
+    and contour (d) over :math:`(\alpha \cos\theta, \alpha \sin\theta)`.
 
     Parameters
     ----------
     alpha, theta : 1-D arrays
-        Grid axes; ``Z`` has shape ``(len(theta), len(alpha))`` (:func:`bound_surface`).
+        Grid axes; ``Z`` has shape ``(len(theta), len(alpha))`` (:func:`obslib.pair_form.bound_surface`).
     levels : sequence of float
         Contour levels (Fig. 2: 0.1 ... 0.7).
     title : str
