@@ -26,6 +26,8 @@ measures
     Theorem 8's measures of the symmetric observability matrix (trace, log det, rank, trace inverse).
 submodularity
     Exhaustive monotonicity/submodularity checks of set functions; smallest witnesses.
+bound_tables
+    Theorem 1's bound for every subset of the sensors, as a table or a set function.
 teams
     Problem 2: greedy teams for a Theorem 8 measure, and the exact optimum for tiny instances.
 tracking
@@ -57,7 +59,8 @@ from .assignment import (
 from .bounds import lower_bound, pair_bound_polar, pair_bounds, relative_vectors, worst_case_control
 from .measures import MEASURES, measure, measure_table, symmetric_observability_matrix
 from .observability import inverse_condition_number, observability_matrix, relative_rows
-from .submodularity import audit_set_function, lower_bound_table
+from .bound_tables import lower_bound_table
+from .submodularity import audit_set_function
 from .teams import greedy_team_assignment, optimal_team_assignment
 from . import tracking  # noqa: E402  (ob.tracking.simulate, PAPER_CIRCLE, PAPER_ADVERSARIAL)
 

@@ -8,7 +8,6 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-import obslib as ob
 import obslib.submodularity as sm
 from obslib.measures import subset_masks
 
@@ -148,30 +147,11 @@ def test_doctests():
         (lambda: sm.audit_set_function([[0, 0], [0, np.nan]], lambda S: 0.0), "sensor 1"),
         (lambda: sm.audit_set_function([[0, 0], [0, 0]], lambda S: 0.0), "coincide"),
         (lambda: sm.audit_tables(np.zeros((2, 8)), 3, rtol=-1.0), "non-negative"),
-        (lambda: sm.lower_bound_table(CASE1, T1, -1.0), "u_max"),
-        (lambda: sm.lower_bound_table(CASE1, CASE1[0], 1.0), "coincides with target"),
     ],
 )
 def test_bad_input_raises(call, match):
     with pytest.raises(ValueError, match=match):
         call()
-
-
-# --------------------------------------------------------------------------- omega as a set function
-
-coord = st.floats(-10.0, 10.0, allow_nan=False, allow_infinity=False)
-
-
-@SETTINGS
-@given(st.lists(st.tuples(coord, coord), min_size=2, max_size=7), st.floats(0.0, 3.0))
-def test_lower_bound_table_matches_svd(points, u_max):
-    pts = np.array(points)
-    d = np.linalg.norm(pts[:, None] - pts[None], axis=-1) + np.eye(len(pts))
-    assume(d.min() > 1e-3)
-    s, o = pts[1:], pts[0]
-    table = sm.lower_bound_table(s, o, u_max)
-    for k, m in enumerate(subset_masks(len(s))):
-        assert abs(table[k] - ob.lower_bound(s[m], o, u_max)) < 1e-9
 
 
 # --------------------------------------------------------------------------- the fast verdicts

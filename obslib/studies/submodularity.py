@@ -13,6 +13,7 @@ from functools import lru_cache
 import numpy as np
 
 from ..measures import MEASURES, measures_from_vectors, subset_masks
+from ..bound_tables import lower_bound_set_function, lower_bound_tables
 from ..submodularity import (
     ATOL,
     MAX_GROUND_SET,
@@ -20,8 +21,6 @@ from ..submodularity import (
     audit_flags,
     audit_set_function,
     audit_tables,
-    lower_bound_set_function,
-    lower_bound_tables,
     set_function_table,
     table_values,
 )

@@ -9,6 +9,7 @@ import pytest
 import obslib as ob
 import obslib.measures as me
 import obslib.submodularity as core
+from obslib.bound_tables import lower_bound_tables
 from obslib.measures import measure_from_vectors, subset_masks
 from obslib.studies import submodularity as sm
 
@@ -144,7 +145,7 @@ def test_random_audits_equal_the_per_instance_audits():
     for u_max, min_size in ((1.0, 2), (0.0, 2), (0.5, 0)):
         a = sm.lower_bound_audit(150, 5, 3, u_max, min_size)
         s, t = sm.random_instances(150, 5, 3, "generic")
-        audits = core.audit_tables(core.lower_bound_tables(t[:, None, :] - s, u_max), 5, min_size)
+        audits = core.audit_tables(lower_bound_tables(t[:, None, :] - s, u_max), 5, min_size)
         assert a.n_not_increasing == sum(not x.monotone_increasing for x in audits)
         assert a.n_not_submodular == sum(not x.submodular for x in audits)
         for key, attr in (("witness", "submodular_witness"), ("monotone_witness", "monotone_witness")):
