@@ -6,36 +6,48 @@ input and raises :class:`ValueError` naming the offending sensor or target.
 
 Modules
 -------
+The core, in the order of the paper:
+
 observability
     The stacked observability matrix of Section III and its exact inverse condition number.
 bounds
     Theorem 1's lower bound, the pair closed form of Theorem 4, the worst-case control.
+controls
+    The polar grid of controls in the disc that exact-versus-bound comparisons sweep.
+pair_form
+    Numerics of the pair closed form: grids of the bound, the maximising alpha, Weyl for 2x2.
+symbolic
+    SymPy derivations of Theorems 4-5 (imported on demand: ``import obslib.symbolic``).
 scenes
     Seeded random scenes, including near-degenerate ones.
 assignment
     Unique pair assignment: greedy Algorithm 1, relaxed matching, exact MILP optimum.
-symbolic
-    SymPy derivations of Theorems 4-5 (imported on demand: ``import obslib.symbolic``).
-pair_form
-    Numerical side of the pair closed form: Fig. 2 grids, the maximising alpha (beyond the paper).
-bound_checks
-    Numerical audits of Theorems 1-3 and Remark 1.
 measures
     Theorem 8's measures of the symmetric observability matrix (trace, log det, rank, trace inverse).
 submodularity
-    Exhaustive monotonicity/submodularity audits of set functions; smallest witnesses.
+    Exhaustive monotonicity/submodularity checks of set functions; smallest witnesses.
+bound_tables
+    Theorem 1's bound for every subset of the sensors, as a table or a set function.
 teams
     Problem 2: greedy teams for a Theorem 8 measure, and the exact optimum for tiny instances.
 tracking
     Section V tracking simulations: EKF (filterpy), strategies, adversarial target, Monte Carlo.
+sweep
+    Runs a study's independent trials serially or in parallel, with the same numbers.
+
+On top of the core, one module per section of the paper in each of:
+
+studies
+    The paper's audits and experiments (``studies.section3``, ``studies.pair_form``,
+    ``studies.assignment``, ``studies.submodularity``, ``studies.greedy_vs_relaxed``,
+    ``studies.teams``, ...) and the published numbers (``studies.published``).
+viz
+    Every matplotlib figure (``viz.pair_form``, ...).
 claims
-    The claims ledger: one record per claim of the paper, re-checked.
-profiles
-    Named parameter sets (``paper``, ``quick``) for notebooks and the ledger.
-run
-    The papermill runner behind ``make book`` and reruns.
-notebook
-    Figure settings every notebook applies in its import cell (``setup_figures``).
+    The claims ledger: one record per claim of the paper, re-checked with ``studies``.
+
+Repository tooling: ``profiles`` (named parameter sets), ``run`` (the papermill runner behind
+``make book``), ``bench`` and ``notebook`` (figure settings every notebook applies).
 """
 
 from .assignment import (
@@ -47,7 +59,8 @@ from .assignment import (
 from .bounds import lower_bound, pair_bound_polar, pair_bounds, relative_vectors, worst_case_control
 from .measures import MEASURES, measure, measure_table, symmetric_observability_matrix
 from .observability import inverse_condition_number, observability_matrix, relative_rows
-from .submodularity import audit_set_function, lower_bound_table
+from .bound_tables import lower_bound_table
+from .submodularity import audit_set_function
 from .teams import greedy_team_assignment, optimal_team_assignment
 from . import tracking  # noqa: E402  (ob.tracking.simulate, PAPER_CIRCLE, PAPER_ADVERSARIAL)
 
@@ -79,8 +92,8 @@ __all__ = [
 
 #: Submodules imported on first attribute access (``obslib.claims.evaluate(...)`` works after a
 #: bare ``import obslib``) rather than at import time, since they pull in SymPy, papermill etc.
-_LAZY = ("claims", "profiles", "run", "bench", "symbolic", "pair_form", "bound_checks", "scenes",
-         "assignment_study", "team_study", "sweep")
+_LAZY = ("claims", "profiles", "run", "bench", "symbolic", "pair_form", "controls", "scenes",
+         "studies", "viz", "sweep")
 
 
 def __getattr__(name):

@@ -1,18 +1,19 @@
-"""Monotonicity and submodularity of set functions, exhaustively, with the smallest witness.
+r"""Monotonicity and submodularity of set functions, exhaustively, with the smallest witness.
 
 Section IV-B of the paper needs, for the greedy 1/2-approximation of Problem 2, a sensor-set
-function ``f`` that is
+function :math:`f` that is
 
-* **monotone increasing**: ``f(A) <= f(A + x)`` for every set ``A`` and sensor ``x``;
-* **submodular** (diminishing returns): ``f(A + x) - f(A) >= f(B + x) - f(B)`` for all
-  ``A`` subset of ``B`` and ``x`` not in ``B``.
+* **monotone increasing**: :math:`f(A) \le f(A + x)` for every set :math:`A` and sensor
+  :math:`x`;
+* **submodular** (diminishing returns): :math:`f(A + x) - f(A) \ge f(B + x) - f(B)` for all
+  :math:`A \subseteq B` and :math:`x \notin B`.
 
-Theorem 7 says Theorem 1's lower bound ``omega(S)`` is neither, by two counter-examples
-(Cases 1 and 2, Fig. 3); Theorem 8 says four measures of ``O^T O`` are both
+Theorem 7 says Theorem 1's lower bound :math:`\omega(S)` is neither, by two counter-examples
+(Cases 1 and 2, Fig. 3); Theorem 8 says four measures of :math:`O^T O` are both
 (:mod:`obslib.measures`). This module decides such claims by brute force over a small ground
-set (``N <= 10``): every subset is evaluated **once** into a table of ``2**N`` values, and all
-additions ``(A, x)`` and all nested triples ``(A, B, x)`` are compared at once with NumPy
-(fewer than ``N 3**(N-1)`` triples: 191 710 for ``N = 10``). For thousands of random
+set (:math:`N \le 10`): every subset is evaluated **once** into a table of :math:`2^N` values,
+and all additions :math:`(A, x)` and all nested triples :math:`(A, B, x)` are compared at once
+with NumPy (fewer than :math:`N 3^{N-1}` triples: 191 710 for :math:`N = 10`). For thousands of random
 instances, :func:`audit_flags` reaches the same verdicts (and the size of each smallest
 witness) with a min / max sum-over-subsets transform of the gains instead of every triple; the
 random audits use it and run the full comparison only on the instance whose witness they report.
@@ -56,10 +57,8 @@ from typing import Callable
 
 import numpy as np
 
-from ._validate import as_point, as_points, as_u_max, check_distinct
-from .bounds import lower_bound
-from .measures import MEASURES, _tr_det, measures_from_vectors, subset_masks
-from .observability import relative_rows
+from ._validate import as_points, check_distinct
+from .measures import subset_masks
 
 __all__ = [
     "MAX_GROUND_SET",
@@ -71,25 +70,7 @@ __all__ = [
     "audit_tables",
     "audit_flags",
     "TableFlags",
-    "lower_bound_table",
-    "lower_bound_tables",
-    "lower_bound_set_function",
-    "FIG3_TARGET",
-    "FIG3_U_MAX",
-    "FIG3_CASES",
-    "PRINTED",
-    "PRINTED_WITNESS",
-    "CaseAudit",
-    "case_audit",
-    "random_instances",
-    "INSTANCE_KINDS",
-    "CONFIGS",
-    "MeasureAudit",
-    "measure_audit",
-    "theorem8_audit",
-    "theorem8_verdicts",
-    "LowerBoundAudit",
-    "lower_bound_audit",
+    "table_values",
 ]
 
 #: Largest ground set the exhaustive check accepts.
@@ -332,6 +313,13 @@ def set_function_table(ground, f: Callable[[tuple], float], min_size: int = 0) -
     ------
     ValueError
         If ``f`` returns something that is not a finite real number (the message names the set).
+
+    Examples
+    --------
+    Coverage of two elements (the empty set is worth 0, any other 1):
+
+    >>> set_function_table(2, lambda s: float(len(s) > 0))
+    array([0., 1., 1., 1.])
     """
     n = _ground_size(ground)
     m = _check_min_size(min_size, n)
@@ -396,6 +384,14 @@ def audit_tables(values, n: int, min_size: int = 0, rtol: float = RTOL,
     Returns
     -------
     list of SetFunctionAudit
+
+    Examples
+    --------
+    A modular table (the size of the set) and a coverage table, audited at once:
+
+    >>> modular, coverage = audit_tables([[0, 1, 1, 2], [0, 1, 1, 1]], n=2)
+    >>> modular.modular, coverage.submodular, coverage.supermodular
+    (True, True, False)
     """
     n, m, v, tol = _prepare_tables(values, n, min_size, rtol, atol)
     pa, px = _additions(n, m)
@@ -523,6 +519,14 @@ def audit_flags(values, n: int, min_size: int = 0, rtol: float = RTOL,
     Returns
     -------
     TableFlags
+
+    Examples
+    --------
+    The same verdicts as :func:`audit_tables`, without the witnesses:
+
+    >>> flags = audit_flags([[0, 1, 1, 2], [0, 1, 1, 1]], n=2)
+    >>> flags.not_submodular, flags.not_supermodular
+    (array([False, False]), array([False,  True]))
     """
     n, m, v, tol = _prepare_tables(values, n, min_size, rtol, atol)
     n_i = v.shape[0]
@@ -611,394 +615,17 @@ def audit_set_function(ground, f: Callable[[tuple], float] | None = None, *, val
     return audit_tables(values, n, min_size, rtol, atol)[0]
 
 
-# ---------------------------------------------------------------------------------------------
-# Theorem 1's bound as a set function
-# ---------------------------------------------------------------------------------------------
+def table_values(table) -> dict:
+    """A table of :func:`set_function_table` as a dict: sorted index tuple -> value, in the
+    table's (bitmask) order.
 
-
-def _bound_from_tr_det(tr, det, lmax, u2):
-    lmin = np.where(lmax > 0, det / np.where(lmax > 0, lmax, 1.0), 0.0)
-    den = lmax + u2
-    return np.where(den > 0, np.sqrt(np.maximum(lmin, 0.0) / np.where(den > 0, den, 1.0)), 0.0)
-
-
-def lower_bound_tables(vectors, u_max) -> np.ndarray:
-    """Theorem 1's bound for all subsets of many instances at once.
-
-    ``sqrt(lambda_min / (lambda_max + u_max^2))`` with the eigenvalues of ``O(o)^T O(o)`` from
-    ``tr`` and the Cauchy-Binet ``det`` (Eq. (6), (25)); 0 for fewer than two sensors.
-
-    Parameters
-    ----------
-    vectors : array_like, shape (I, N, 2)
-        Rows ``o - p_i`` of each instance.
-    u_max : float or array_like, shape (I,)
-
-    Returns
-    -------
-    ndarray, shape (I, 2**N)
+    Examples
+    --------
+    >>> table_values([0.0, 1.0, 2.0, 4.0])
+    {(): 0.0, (0,): 1.0, (1,): 2.0, (0, 1): 4.0}
     """
-    v = np.asarray(vectors, dtype=float)
-    if v.ndim != 3 or v.shape[-1] != 2:
-        raise ValueError(f"vectors must have shape (I, N, 2), got {v.shape}")
-    u = as_u_max(u_max, v.shape[0])
-    tr, det, lmax = _tr_det(v, subset_masks(v.shape[1]))
-    u2 = (u**2)[:, None] if u.ndim == 1 else u**2
-    return _bound_from_tr_det(tr, det, lmax, u2)
-
-
-def lower_bound_table(sensors, target, u_max) -> np.ndarray:
-    """Theorem 1's bound ``omega(S)`` for every subset ``S`` of ``sensors``, shape ``(2**N,)``.
-
-    Vectorised; agrees with :func:`obslib.lower_bound` (SVD) to rounding.
-    """
-    rows = relative_rows(sensors, target)
-    return lower_bound_tables(rows[None], float(as_u_max(u_max)))[0]
-
-
-def lower_bound_set_function(sensors, target, u_max) -> Callable[[tuple], float]:
-    """``omega`` as a set function of index tuples, each value by :func:`obslib.lower_bound` (SVD)."""
-    s = as_points(sensors, "sensors")
-    relative_rows(s, target)
-    o = as_point(target, "target")
-    u = float(as_u_max(u_max))
-
-    def omega(idx: tuple) -> float:
-        return lower_bound(s[list(idx)].reshape(-1, 2), o, u)
-
-    return omega
-
-
-# ---------------------------------------------------------------------------------------------
-# The paper's counter-examples (Theorem 7, Fig. 3)
-# ---------------------------------------------------------------------------------------------
-
-_R3 = float(np.sqrt(3.0))
-#: Target ``t_1`` of both cases of Fig. 3.
-FIG3_TARGET = np.array([_R3, 1.0])
-#: ``u_{o_1, max}`` of both cases.
-FIG3_U_MAX = 1.0
-#: Sensors of Fig. 3 (a) and (b); row ``i`` is ``s_{i+1}``.
-FIG3_CASES = {
-    "case1": np.array([[0.0, 0.0], [2 * _R3, -9.0], [_R3, 3.0]]),
-    "case2": np.array([[0.0, 0.0], [2 * _R3, 0.0], [_R3, 0.1], [_R3, 3.0]]),
-}
-#: Values printed in the proof of Theorem 7 (0-based sensor indices).
-PRINTED = {
-    "case1": {(0, 2): 0.5345, (0, 1, 2): 0.1823},
-    "case2": {(0, 1, 2): 0.3310, (0, 1): 0.5345, (0, 1, 2, 3): 0.8765, (0, 1, 3): 0.9258},
-}
-#: The comparison each case prints: Case 1 ``omega({s1,s3}) > omega({s1,s2,s3})`` (a
-#: monotonicity witness ``A = {s1, s3}``, ``x = s2``); Case 2 ``omega({s1,s2,s3}) -
-#: omega({s1,s2}) < omega({s1,s2,s4,s3}) - omega({s1,s2,s4})`` (a submodularity witness
-#: ``A = {s1, s2}``, ``B = {s1, s2, s4}``, ``x = s3``).
-PRINTED_WITNESS = {
-    "case1": {"A": (0, 2), "x": 1},
-    "case2": {"A": (0, 1), "B": (0, 1, 3), "x": 2},
-}
-
-
-@dataclass(frozen=True)
-class CaseAudit:
-    """One case of Theorem 7 recomputed: printed values against ours and the printed comparison."""
-
-    case: str
-    values: dict  #: ``omega`` of every subset (sorted index tuple -> float), by SVD
-    printed: dict  #: the printed values
-    matches: dict  #: printed value equals ours to the 4 printed decimals
-    printed_sides: tuple  #: the two sides of the printed comparison, from the printed values
-    our_sides: tuple  #: the same two sides from our values
-    shows_with_printed: bool  #: the printed comparison proves the property's failure as printed
-    shows_with_ours: bool  #: ... and with our values
-    audits: dict  #: ``min_size -> SetFunctionAudit`` of the case's whole geometry
-
-    @property
-    def all_match(self) -> bool:
-        return all(self.matches.values())
-
-    @property
-    def verdict(self) -> str:
-        """Ledger status: ``refuted`` if our values do not show the printed comparison,
-        ``reproduced`` if they do and every printed value matches, ``partly`` otherwise."""
-        if not self.shows_with_ours:
-            return "refuted"
-        return "reproduced" if self.all_match else "partly"
-
-
-def _printed_sides(case: str, val: dict) -> tuple:
-    w = PRINTED_WITNESS[case]
-    if case == "case1":
-        A = w["A"]
-        return val[A], val[tuple(sorted(A + (w["x"],)))]
-    A, B, x = w["A"], w["B"], w["x"]
-    ax, bx = tuple(sorted(A + (x,))), tuple(sorted(B + (x,)))
-    return val[ax] - val[A], val[bx] - val[B]
-
-
-def case_audit(case: str, min_sizes=(0, 2), u_max: float = FIG3_U_MAX, rtol: float = RTOL,
-               atol: float = ATOL) -> CaseAudit:
-    """Recompute Case 1 or Case 2 of Theorem 7 with :func:`obslib.lower_bound` (SVD).
-
-    Case 1 claims ``omega`` is not monotone by ``omega(A) > omega(A + x)`` (left side >
-    right side); Case 2 claims it is not submodular by ``gain_A < gain_B`` (left < right).
-    Each claim is re-decided from our values; the whole geometry is also searched for the
-    smallest witnesses at each ``min_size`` in ``min_sizes``.
-    """
-    if case not in FIG3_CASES:
-        raise ValueError(f"unknown case {case!r}; known: {list(FIG3_CASES)}")
-    sensors = FIG3_CASES[case]
-    n = sensors.shape[0]
-    omega = lower_bound_set_function(sensors, FIG3_TARGET, u_max)
-    table = set_function_table(sensors, omega)
-    values = {_members(k, n): float(table[k]) for k in range(2**n)}
-    printed = PRINTED[case]
-    matches = {k: abs(values[k] - p) <= 0.5e-4 + 1e-12 for k, p in printed.items()}
-    p_full = dict(values)
-    p_full.update(printed)
-    ps, os_ = _printed_sides(case, p_full), _printed_sides(case, values)
-    tol = rtol * max(abs(t) for t in values.values()) + atol
-    if case == "case1":
-        shows_p, shows_o = ps[0] > ps[1], os_[0] > os_[1] + tol
-    else:
-        shows_p, shows_o = ps[0] < ps[1], os_[0] < os_[1] - tol
-    audits = {m: audit_set_function(n, values=table, min_size=m, rtol=rtol, atol=atol)
-              for m in min_sizes}
-    return CaseAudit(case, values, dict(printed), matches, tuple(map(float, ps)),
-                     tuple(map(float, os_)), bool(shows_p), bool(shows_o), audits)
-
-
-# ---------------------------------------------------------------------------------------------
-# random instances and the audits of Theorems 7 and 8
-# ---------------------------------------------------------------------------------------------
-
-#: ``generic``: target and sensors uniform in the square ``[0, side]^2``; ``lines``: sensors on
-#: one or two random lines through the target, so that many subsets are rank-deficient.
-INSTANCE_KINDS = ("generic", "lines")
-
-
-def random_instances(n_instances: int, n_sensors: int, seed: int, kind: str = "generic",
-                     side: float = 10.0):
-    """Seeded random instances: sensors ``(I, N, 2)`` and targets ``(I, 2)``.
-
-    Parameters
-    ----------
-    n_instances, n_sensors : int
-    seed : int
-        Seed of :func:`numpy.random.default_rng`.
-    kind : str
-        One of :data:`INSTANCE_KINDS`.
-    side : float
-        Side of the square the points are drawn from (default 10, the scale of Fig. 3).
-    """
-    if kind not in INSTANCE_KINDS:
-        raise ValueError(f"kind must be one of {INSTANCE_KINDS}, got {kind!r}")
-    if n_instances < 1 or not (1 <= n_sensors <= MAX_GROUND_SET):
-        raise ValueError(f"need n_instances >= 1 and 1 <= n_sensors <= {MAX_GROUND_SET}")
-    rng = np.random.default_rng(seed)
-    targets = rng.uniform(0, side, size=(n_instances, 2))
-    if kind == "generic":
-        sensors = rng.uniform(0, side, size=(n_instances, n_sensors, 2))
-    else:
-        n_lines = rng.integers(1, 3, size=n_instances)
-        phi = rng.uniform(0, np.pi, size=(n_instances, 2))
-        which = rng.integers(0, 2, size=(n_instances, n_sensors)) % n_lines[:, None]
-        ang = np.take_along_axis(phi, which, axis=1)
-        dist = rng.uniform(0.05, 1.0, size=(n_instances, n_sensors)) * side
-        sign = rng.choice([-1.0, 1.0], size=(n_instances, n_sensors))
-        d = (sign * dist)[..., None] * np.stack([np.cos(ang), np.sin(ang)], axis=-1)
-        sensors = targets[:, None, :] + d
-    return sensors, targets
-
-
-#: Configurations of the Theorem 8 audit: (name, eps is used, u row, min_size, instance kinds).
-CONFIGS = (
-    ("eps I, no u row", True, False, 0, INSTANCE_KINDS),
-    ("eps I, u row", True, True, 0, INSTANCE_KINDS),
-    ("eps = 0, no u row, |S| >= 2", False, False, 2, ("generic",)),
-)
-
-
-@dataclass(frozen=True)
-class MeasureAudit:
-    """Counts of instances violating each property, for one measure and configuration."""
-
-    measure: str
-    config: str
-    eps: float
-    min_size: int
-    n_instances: int
-    n_sensors: int
-    n_not_increasing: int  #: instances with some ``f(A + x) < f(A)``
-    n_not_decreasing: int  #: instances with some ``f(A + x) > f(A)``
-    n_not_submodular: int
-    n_not_supermodular: int
-    witness: dict | None  #: smallest submodularity witness over instances (with its geometry)
-    monotone_witness: dict | None  #: smallest decrease over instances (with its geometry)
-
-    @property
-    def increasing(self) -> bool:
-        return self.n_not_increasing == 0
-
-    @property
-    def submodular(self) -> bool:
-        return self.n_not_submodular == 0
-
-    def as_dict(self) -> dict:
-        d = asdict(self)
-        d.update(increasing=self.increasing, submodular=self.submodular)
-        return d
-
-
-def _smallest(values, sizes, attr, n, m, sensors, targets, us):
-    """The smallest witness over instances: smallest ``|B|``, then the first instance.
-
-    ``sizes`` are the per-instance witness sizes of :func:`audit_flags`; the witness itself is
-    that of :func:`audit_tables` for the chosen instance (the first in the documented order).
-    """
-    has = sizes >= 0
-    if not has.any():
-        return None
-    best = sizes[has].min()
-    i = int(np.flatnonzero(sizes == best)[0])
-    w = getattr(audit_tables(values[i:i + 1], n, m)[0], attr)
-    d = w.as_dict()
-    d.update(instance=i, sensors=sensors[i].tolist(), target=targets[i].tolist(),
-             u=None if us is None else us[i].tolist())
-    return d
-
-
-def _measure_audits(names, n_instances: int, n_sensors: int, seed: int, eps: float,
-                    u_max: float, config: str) -> dict:
-    """:func:`measure_audit` for several measures of one configuration, instances drawn once."""
-    for name in names:
-        if name not in MEASURES:
-            raise ValueError(f"unknown measure {name!r}; known: {MEASURES}")
-    cfg = {c[0]: c for c in CONFIGS}
-    if config not in cfg:
-        raise ValueError(f"unknown config {config!r}; known: {list(cfg)}")
-    _, use_eps, use_u, min_size, kinds = cfg[config]
-    e = float(eps) if use_eps else 0.0
-    masks = subset_masks(n_sensors)
-    all_s, all_t, all_u = [], [], []
-    tables = {name: [] for name in names}
-    for k, kind in enumerate(kinds):
-        s, t = random_instances(n_instances, n_sensors, seed + 7919 * k, kind)
-        us = None
-        if use_u:
-            phi = np.random.default_rng(seed + 104729 + k).uniform(0, 2 * np.pi, n_instances)
-            us = u_max * np.column_stack([np.cos(phi), np.sin(phi)])
-            all_u.append(us)
-        for name, vals in measures_from_vectors(t[:, None, :] - s, masks, names, e, us).items():
-            tables[name].append(vals)
-        all_s.append(s)
-        all_t.append(t)
-    s, t = np.concatenate(all_s), np.concatenate(all_t)
-    us = np.concatenate(all_u) if use_u else None
-    out = {}
-    for name in names:
-        vals = np.concatenate(tables[name])
-        fl = audit_flags(vals, n_sensors, min_size)
-        out[name] = MeasureAudit(
-            measure=name, config=config, eps=e, min_size=min_size, n_instances=vals.shape[0],
-            n_sensors=n_sensors,
-            n_not_increasing=int(fl.decreases.sum()),
-            n_not_decreasing=int(fl.increases.sum()),
-            n_not_submodular=int(fl.not_submodular.sum()),
-            n_not_supermodular=int(fl.not_supermodular.sum()),
-            witness=_smallest(vals, fl.submodular_witness_size, "submodular_witness",
-                              n_sensors, min_size, s, t, us),
-            monotone_witness=_smallest(vals, fl.monotone_witness_size, "monotone_witness",
-                                       n_sensors, min_size, s, t, us),
-        )
-    return out
-
-
-def measure_audit(name: str, n_instances: int, n_sensors: int, seed: int, eps: float,
-                  u_max: float, config: str) -> MeasureAudit:
-    """Audit one Theorem 8 measure on seeded random instances under one of :data:`CONFIGS`.
-
-    Every instance is checked exhaustively over all nested subsets (:func:`audit_flags`, the
-    verdicts of :func:`audit_tables`); ``n_instances`` are drawn of each instance kind of the
-    configuration. With a ``u`` row, each instance gets a control of norm ``u_max`` in a random
-    direction. The witnesses are the smallest over instances (smallest ``|B|``, then the first
-    instance), each the smallest of its instance in the order of :func:`audit_tables`.
-    """
-    if name not in MEASURES:
-        raise ValueError(f"unknown measure {name!r}; known: {MEASURES}")
-    return _measure_audits((name,), n_instances, n_sensors, seed, eps, u_max, config)[name]
-
-
-@lru_cache(maxsize=8)
-def theorem8_audit(n_instances: int, n_sensors: int, seed: int, eps: float,
-                   u_max: float) -> tuple[MeasureAudit, ...]:
-    """Every measure of :data:`obslib.measures.MEASURES` under every one of :data:`CONFIGS`.
-
-    Rows in measure-major order, each equal to :func:`measure_audit` of its measure and
-    configuration; the instances and ``tr``, ``det`` of ``O^T O`` are computed once per
-    configuration and shared by the measures.
-    """
-    by_config = {c[0]: _measure_audits(MEASURES, n_instances, n_sensors, seed, eps, u_max, c[0])
-                 for c in CONFIGS}
-    return tuple(by_config[c[0]][name] for name in MEASURES for c in CONFIGS)
-
-
-def theorem8_verdicts(rows) -> dict:
-    """Ledger status of Theorem 8 for each printed measure, from :func:`theorem8_audit` rows.
-
-    The claim is "monotone increasing and submodular". ``trace``, ``logdet``, ``rank``:
-    ``reproduced`` when no instance of any configuration violates either property, ``partly``
-    when one of the two holds, ``refuted`` when neither does. ``trace_inverse``: ``reproduced``
-    if the trace of the inverse itself has both properties, ``partly`` if only its negative
-    (the form that can increase) has both, ``refuted`` otherwise.
-    """
-
-    def both(name):
-        sel = [r for r in rows if r.measure == name]
-        if not sel:
-            raise ValueError(f"no audit rows for measure {name!r}")
-        return all(r.increasing for r in sel), all(r.submodular for r in sel)
-
-    out = {}
-    for name in ("trace", "logdet", "rank"):
-        inc, sub = both(name)
-        out[name] = "reproduced" if inc and sub else ("partly" if inc or sub else "refuted")
-    inc, sub = both("trace_inverse")
-    ninc, nsub = both("neg_trace_inverse")
-    out["trace_inverse"] = ("reproduced" if inc and sub else
-                            ("partly" if ninc and nsub else "refuted"))
-    return out
-
-
-@dataclass(frozen=True)
-class LowerBoundAudit:
-    """How often Theorem 1's bound is non-monotone / non-submodular on random instances."""
-
-    n_instances: int
-    n_sensors: int
-    u_max: float
-    min_size: int
-    n_not_increasing: int
-    n_not_submodular: int
-    witness: dict | None
-    monotone_witness: dict | None
-
-    def as_dict(self) -> dict:
-        return asdict(self)
-
-
-@lru_cache(maxsize=8)
-def lower_bound_audit(n_instances: int, n_sensors: int, seed: int, u_max: float,
-                      min_size: int = 2) -> LowerBoundAudit:
-    """Exhaustive monotonicity/submodularity check of ``omega`` on ``generic`` random instances."""
-    s, t = random_instances(n_instances, n_sensors, seed, "generic")
-    vals = lower_bound_tables(t[:, None, :] - s, u_max)
-    fl = audit_flags(vals, n_sensors, min_size)
-    return LowerBoundAudit(
-        n_instances, n_sensors, float(u_max), min_size,
-        n_not_increasing=int(fl.decreases.sum()),
-        n_not_submodular=int(fl.not_submodular.sum()),
-        witness=_smallest(vals, fl.submodular_witness_size, "submodular_witness", n_sensors,
-                          min_size, s, t, None),
-        monotone_witness=_smallest(vals, fl.monotone_witness_size, "monotone_witness", n_sensors,
-                                   min_size, s, t, None),
-    )
+    t = np.asarray(table, dtype=float)
+    n = t.size.bit_length() - 1
+    if t.ndim != 1 or t.size != 1 << n:
+        raise ValueError(f"table must be 1-D of length 2**N, got shape {t.shape}")
+    return {_members(k, n): float(t[k]) for k in range(t.size)}

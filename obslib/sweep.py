@@ -27,6 +27,11 @@ def run_sweep(fn: Callable, tasks: list[dict], backend: str = "serial", n_jobs: 
         ``joblib`` runs ``n_jobs`` local processes (default: all cores); ``dask`` submits to the
         scheduler at ``scheduler`` (an address such as ``"tcp://127.0.0.1:8786"``, or a
         ``distributed.Client``).
+
+    Examples
+    --------
+    >>> run_sweep(pow, [dict(base=2, exp=k) for k in range(4)])
+    [1, 2, 4, 8]
     """
     if backend not in BACKENDS:
         raise ValueError(f"backend must be one of {BACKENDS}, got {backend!r}")

@@ -1,9 +1,11 @@
-"""SymPy derivations for the two-sensor closed form (Theorem 4) and its extremes (Theorem 5).
+r"""SymPy derivations for the two-sensor closed form (Theorem 4) and its extremes (Theorem 5).
 
-The paper states the pair bound in polar form (Theorem 4, Eq. (9))::
+The paper states the pair bound in polar form (Theorem 4, Eq. (9)):
 
-    C^-1(O_ij(o, u_o)) = sqrt((1 + a^2 - S) / (1 + a^2 + S + 2 u^2 / d_io^2)),
-    S = sqrt(1 + a^4 + 2 a^2 cos(2 theta_ji)),   a = alpha = d_jo / d_io,
+.. math::
+
+   C^{-1}(O_{ij}(o, u_o)) = \sqrt{\frac{1 + \alpha^2 - S}{1 + \alpha^2 + S + 2 u^2 / d_{io}^2}},
+   \quad S = \sqrt{1 + \alpha^4 + 2 \alpha^2 \cos 2\theta_{ji}}, \quad \alpha = d_{jo} / d_{io},
 
 and proves it (appendix, proof of Theorem 4) from ``O_ij(o)^T O_ij(o)`` written in Cartesian
 coordinates (Eq. (32)) and in the polar coordinates of Eq. (8). Theorem 5 locates its extremes
@@ -28,9 +30,9 @@ expressions with the derived ones:
   form (not in the paper); :func:`alpha_star_closed` is its simplified form.
 * :func:`weyl_2x2_slacks` writes the Weyl inequalities of the proof of Theorem 1 for 2x2
   symmetric matrices, each next to an equivalent triangle inequality.
-* :func:`lambdify_expr` turns an expression into a NumPy (or mpmath) function and
-  :func:`max_difference_at_rational_points` compares two expressions exactly at random
-  rational points, evaluated at high precision.
+* :func:`lambdify_expr` turns an expression into a NumPy (or mpmath) function
+  (:func:`obslib.studies.pair_form.max_difference_at_rational_points` compares two expressions
+  at random rational points, evaluated at high precision).
 
 All expressions are built on the module's symbols (:data:`OX`, ..., :data:`Q`) and cached.
 Identities are established by polynomial arithmetic (``expand``, ``cancel``, ``sympy.Poly``
@@ -39,7 +41,6 @@ remainders), not by the heuristic ``sympy.simplify``: an expansion that returns 
 
 from __future__ import annotations
 
-from fractions import Fraction
 from functools import lru_cache
 
 import numpy as np
@@ -60,7 +61,7 @@ __all__ = [
     "stationarity_alpha",
     "printed_stationarity_alpha", "printed_dbound_dalpha", "printed_dbound_dalpha_halfpi",
     "printed_max_halfpi", "bound_halfpi_piecewise", "alpha_star_squared", "alpha_star_closed",
-    "weyl_2x2_slacks", "lambdify_expr", "max_difference_at_rational_points", "latex_eq",
+    "weyl_2x2_slacks", "lambdify_expr", "latex_eq",
 ]  # fmt: skip
 
 # --- symbols ---------------------------------------------------------------------------------
@@ -663,83 +664,6 @@ def lambdify_expr(expr, args, modules: str = "numpy", cse: bool = False):
     # the NumPy module itself as namespace: the same printer and functions as "numpy", without
     # lambdify's ``from numpy import *`` (which loads f2py, fft, polynomial, ... on first use)
     return sp.lambdify(args, expr, modules=[np] if modules == "numpy" else modules, cse=cse)
-
-
-def _rational(rng: np.random.Generator, lo: float, hi: float, den: int = 997) -> sp.Rational:
-    k = int(rng.integers(int(np.ceil(lo * den)), int(np.floor(hi * den)) + 1))
-    f = Fraction(k, den)
-    return sp.Rational(f.numerator, f.denominator)
-
-
-def max_difference_at_rational_points(
-    lhs, rhs, ranges: dict, n_points: int, seed: int = 0, digits: int = 50, point_map=None
-) -> float:
-    """Largest ``|lhs - rhs|`` over random rational points, evaluated at ``digits`` digits.
-
-    Where SymPy cannot simplify ``lhs - rhs`` to zero, equality is decided by evaluation at
-    exact rational points with ``digits`` significant digits (mpmath): differences of order
-    ``10^-digits`` (relative to the size of the terms) mean the two expressions agree, while a
-    wrong expression differs by order one.
-
-    Parameters
-    ----------
-    lhs, rhs : sympy.Expr
-        The two expressions.
-    ranges : dict
-        ``symbol -> (lo, hi)``; each point draws every symbol as a rational ``k / 997`` in
-        ``[lo, hi]``.
-    n_points : int
-        Number of points (positive).
-    seed : int
-        Seed of the draw.
-    digits : int
-        Working precision in decimal digits, at least 15.
-    point_map : callable, optional
-        ``point -> dict`` of extra substitutions computed from the drawn point, e.g.
-        :func:`cartesian_ratio_values`: exact SymPy values, evaluated to ``digits + 10`` digits,
-        or mpmath numbers already evaluated (at ``digits + 10`` digits, say), used as they are.
-
-    Returns
-    -------
-    float
-        The largest absolute difference; a point where the difference is not finite counts
-        as infinity.
-    """
-    import mpmath
-
-    if int(n_points) != n_points or n_points < 1:
-        raise ValueError(f"n_points must be a positive integer, got {n_points!r}")
-    if digits < 15:
-        raise ValueError(f"digits must be at least 15, got {digits!r}")
-    for s, r in ranges.items():
-        if not isinstance(s, sp.Symbol) or len(r) != 2 or not r[0] < r[1]:
-            raise ValueError(f"bad range for {s}: {r!r}")
-    diff = sp.sympify(lhs) - sp.sympify(rhs)
-    rng = np.random.default_rng(seed)
-    points = []
-    for _ in range(int(n_points)):
-        point = {s: _rational(rng, *r) for s, r in ranges.items()}
-        extra = point_map(point) if point_map is not None else {}
-        points.append((point, extra))
-    known = set(points[0][0]) | set(points[0][1])
-    free = diff.free_symbols - known
-    if free:
-        raise ValueError(f"no range for symbols {sorted(map(str, free))}")
-    syms = sorted(diff.free_symbols, key=str)
-    f = sp.lambdify(syms, diff, modules="mpmath", cse=True)
-    worst = mpmath.mpf(0)
-    with mpmath.workdps(digits):
-        for point, extra in points:
-            vals = {s: mpmath.mpf(r.p) / r.q for s, r in point.items()}
-            vals.update({
-                s: v if isinstance(v, mpmath.mpf) else mpmath.mpf(sp.N(v, digits + 10))
-                for s, v in extra.items()
-            })
-            val = abs(f(*[vals[s] for s in syms]))
-            if not mpmath.isfinite(val):
-                return float("inf")
-            worst = max(worst, val)
-    return float(worst)
 
 
 def latex_eq(lhs: str, expr) -> str:

@@ -60,7 +60,7 @@ from typing import Iterable
 import numpy as np
 
 from ._validate import as_point, as_points, check_distinct, check_spd2
-from .bound_checks import disc_controls
+from .controls import disc_controls
 from .bounds import _pair_kernel, pair_bounds, relative_vectors
 from .observability import _inverse_condition
 

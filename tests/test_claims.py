@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import obslib as ob
-import obslib.bound_checks as bc
+import obslib.studies.section3 as bc
 from obslib import claims
 from obslib.run import NOTEBOOK_DIR, ROOT
 

@@ -14,7 +14,7 @@ from scipy.optimize import minimize, minimize_scalar
 
 import obslib as ob
 import obslib.claims.pair_form as cp
-from obslib.claims import Record, registry
+from obslib.claims import Record, evaluate, registry
 
 NOTEBOOK = Path(__file__).resolve().parent.parent / "notebooks" / "02_pair_closed_form.ipynb"
 IDS = (
@@ -45,9 +45,11 @@ def test_records_are_registered_with_their_notebook(findings):
 
 
 def test_params_come_from_the_profiles():
-    assert cp._params("quick")["n_random_points"] < cp._params("paper")["n_random_points"]
+    from obslib.profiles import params
+
+    assert params(cp.NB, "quick")["n_random_points"] < params(cp.NB, "paper")["n_random_points"]
     with pytest.raises(ValueError):
-        cp._params("nonsense")
+        evaluate("nonsense", ids=["thm4"])
 
 
 def theorem4(a, t, q):

@@ -1,4 +1,4 @@
-"""Notebook conventions (DESIGN.md): tagged parameters equal to the profile, executed, in the toc."""
+"""Notebook conventions: tagged parameters equal to the profile, executed, in the toc."""
 
 import ast
 import json

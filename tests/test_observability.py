@@ -83,7 +83,7 @@ def test_batched_inverse_condition_numbers_equal_the_per_scene_function():
 
 
 def test_batched_polar_grid_equals_the_per_scene_function():
-    from obslib.bound_checks import disc_controls
+    from obslib.controls import disc_controls
     from obslib.observability import inverse_condition_numbers_polar
     from obslib.scenes import random_scene_batch
 

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from obslib import assignment_study as st
-from obslib import team_study as ts
+from obslib.studies import greedy_vs_relaxed as st
+from obslib.studies import teams as ts
 from obslib.sweep import run_sweep
 
 

@@ -16,6 +16,7 @@ from hypothesis import strategies as st
 import obslib as ob
 from obslib.scenes import random_scenes
 from obslib import symbolic as sy
+from obslib.studies.pair_form import max_difference_at_rational_points
 
 A, TH, Q = sy.ALPHA, sy.THETA, sy.Q
 CART_RANGES = {**{s: (-3.0, 3.0) for s in sy.CARTESIAN_ARGS[:-1]}, sy.U: (0.0, 2.0)}
@@ -99,7 +100,7 @@ def test_eigenvalues_reduce_to_theorem4_in_alpha_theta():
     ratio = (lmin / (lmax + sy.U**2)).subs(sy.ratio_substitution())
     assert sp.simplify(ratio - sy.theorem4_bound(squared=True)) == 0
     # and the square root of both sides: both are non-negative
-    assert sy.max_difference_at_rational_points(
+    assert max_difference_at_rational_points(
         sp.sqrt(ratio.subs(sy.D_IO, sp.Rational(7, 3))), sy.theorem4_bound(), RATIO_RANGES, 30
     ) < 1e-45
 
@@ -110,7 +111,7 @@ def test_cartesian_discriminant_is_eq33_radicand():
 
 
 def test_cartesian_bound_equals_theorem4_at_rational_points():
-    err = sy.max_difference_at_rational_points(
+    err = max_difference_at_rational_points(
         cartesian_bound(), sy.theorem4_bound(), CART_RANGES, 60, seed=3, digits=50,
         point_map=sy.cartesian_ratio_values,
     )
@@ -135,8 +136,8 @@ def test_a_wrong_closed_form_is_detected():
     ratio = (lmin / (lmax + sy.U**2)).subs(sy.ratio_substitution())
     ratio = ratio.subs(sy.D_IO, 2)  # the ratio does not depend on d_io
     for m in mutants:
-        assert sy.max_difference_at_rational_points(ratio, m**2, RATIO_RANGES, 20) > 1e-3
-        assert sy.max_difference_at_rational_points(
+        assert max_difference_at_rational_points(ratio, m**2, RATIO_RANGES, 20) > 1e-3
+        assert max_difference_at_rational_points(
             cartesian_bound(), m, CART_RANGES, 20, point_map=sy.cartesian_ratio_values
         ) > 1e-3
         f = sy.lambdify_expr(m, sy.RATIO_ARGS)
@@ -262,14 +263,14 @@ def test_maximum_value_and_location_exact():
 
 
 def test_printed_max_over_theta_is_correct():
-    err = sy.max_difference_at_rational_points(
+    err = max_difference_at_rational_points(
         sy.printed_max_halfpi(), sy.theorem4_bound().subs(TH, sp.pi / 2),
         {A: (0.01, 5), Q: (0, 3)}, 60,
     )
     assert err < 1e-40
     pw = sy.bound_halfpi_piecewise()
     ranges = {A: (0.01, 5), Q: (0, 3)}
-    assert sy.max_difference_at_rational_points(sy.printed_max_halfpi(), pw, ranges, 60) < 1e-40
+    assert max_difference_at_rational_points(sy.printed_max_halfpi(), pw, ranges, 60) < 1e-40
 
 
 def test_printed_alpha_derivative_at_halfpi_is_wrong():
@@ -305,9 +306,9 @@ def test_alpha_star_closed_form_solves_eq34():
     ranges = {TH: (0.02, 3.12), Q: (0.0, 3.0)}
     root = sp.sqrt(sy.alpha_star_squared())
     g_at_root = sy.stationarity_alpha().subs(A, root)
-    assert sy.max_difference_at_rational_points(g_at_root, 0, ranges, 40) < 1e-35
+    assert max_difference_at_rational_points(g_at_root, 0, ranges, 40) < 1e-35
     closed2 = sy.alpha_star_closed() ** 2
-    err = sy.max_difference_at_rational_points(sy.alpha_star_squared(), closed2, ranges, 40)
+    err = max_difference_at_rational_points(sy.alpha_star_squared(), closed2, ranges, 40)
     assert err < 1e-40
     # the other root of the squared equation is spurious (alpha* >= 1 by the sign argument)
     f = sy.lambdify_expr(sy.alpha_star_closed(), (TH, Q))
@@ -368,13 +369,13 @@ def test_lambdify_expr_validates():
 
 def test_rational_point_comparison_validates():
     with pytest.raises(ValueError, match="n_points"):
-        sy.max_difference_at_rational_points(A, A, {A: (0, 1)}, 0)
+        max_difference_at_rational_points(A, A, {A: (0, 1)}, 0)
     with pytest.raises(ValueError, match="digits"):
-        sy.max_difference_at_rational_points(A, A, {A: (0, 1)}, 3, digits=10)
+        max_difference_at_rational_points(A, A, {A: (0, 1)}, 3, digits=10)
     with pytest.raises(ValueError, match="range"):
-        sy.max_difference_at_rational_points(A, A, {A: (1, 0)}, 3)
+        max_difference_at_rational_points(A, A, {A: (1, 0)}, 3)
     with pytest.raises(ValueError, match="no range"):
-        sy.max_difference_at_rational_points(A + Q, A, {A: (0, 1)}, 3)
+        max_difference_at_rational_points(A + Q, A, {A: (0, 1)}, 3)
 
 
 def test_eigenvalues_validates():

@@ -16,10 +16,10 @@ __all__ = [
     "evaluate",
 ]
 
-#: A status is a finding, not a target (DESIGN.md, "The claims ledger").
+#: A status is a finding, not a target.
 STATUSES = ("reproduced", "partly", "refuted", "untestable")
 
-#: Ids every ledger must carry (DESIGN.md); the report lists those not yet audited.
+#: Ids every ledger must carry; the report lists those not yet audited.
 REQUIRED_IDS = (
     "thm1", "thm2", "thm3", "remark1", "thm4", "thm5", "thm6", "thm7-case1", "thm7-case2",
     "thm8-trace", "thm8-logdet", "thm8-rank", "thm8-trace-inverse", "fig2-max",
@@ -99,6 +99,11 @@ def evaluate(profile: str = "quick", ids=None) -> list[Record]:
         A profile of :mod:`obslib.profiles` (``"paper"`` for the report, ``"quick"`` for tests).
     ids : iterable of str, optional
         Only these claims (default: all, in paper order).
+
+    Examples
+    --------
+    >>> [(r.id, r.status) for r in evaluate("quick", ids=["thm1", "remark1"])]
+    [('thm1', 'reproduced'), ('remark1', 'reproduced')]
     """
     from ..profiles import profile_names
 

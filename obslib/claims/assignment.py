@@ -6,7 +6,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .. import assignment_study as st
+from ..studies import assignment as st
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..profiles import params
 from ._ledger import Finding, claim

@@ -8,7 +8,7 @@ from dataclasses import asdict
 
 import numpy as np
 
-from .. import pair_form as pf
+from ..studies import pair_form as pf
 from .._format import format_small
 from ._ledger import Finding, claim
 
@@ -82,10 +82,10 @@ def _thm4(profile: str) -> Finding:
 def _fig2_max(profile: str) -> Finding:
     p = _params(profile)
     q = p["u_max"] / p["d_io"]
-    a_p, t_p = pf.paper_grid(p["alpha_max"], p["paper_step"])
-    mp = pf.grid_maximum(a_p, t_p, pf.bound_surface(a_p, t_p, p["u_max"], p["d_io"]))
-    a_f, t_f = pf.fine_grid(p["alpha_max"], p["fine_alpha_per_unit"], p["fine_theta_quarter"])
-    mf = pf.grid_maximum(a_f, t_f, pf.bound_surface(a_f, t_f, p["u_max"], p["d_io"]))
+    grids = pf.fig2_grids(p["u_max"], p["d_io"], p["alpha_max"], p["paper_step"],
+                          p["fine_alpha_per_unit"], p["fine_theta_quarter"])
+    a_p, t_p, mp = grids["paper"].alpha, grids["paper"].theta, grids["paper"].maximum
+    a_f, t_f, mf = grids["fine"].alpha, grids["fine"].theta, grids["fine"].maximum
     exact = 1.0 / np.sqrt(1.0 + q * q)
     at = {(round(al, 12), round(abs(th), 12)) for al, th in mf.points}
     fine_ok = abs(mf.value - exact) < TOL_FLOAT and at == {(1.0, round(np.pi / 2, 12))}

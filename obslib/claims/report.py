@@ -67,7 +67,7 @@ def render_report(records: list[Record], profile: str = "paper") -> str:
     lines += ["## Not yet audited", ""]
     if missing:
         lines.append(
-            "These claims are in the plan (DESIGN.md) but their checks are not written yet, so "
+            "These claims are required of the ledger but their checks are not written yet, so "
             "the book makes no statement about them: "
             + ", ".join(f"`{i}`" for i in missing)
             + "."

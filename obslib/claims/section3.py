@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import asdict
 from functools import lru_cache
 
-from .. import bound_checks as bc
+from ..studies import section3 as bc
 from .._format import format_small
 from ..profiles import params
 from ._ledger import Finding, claim

@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from .. import submodularity as sm
+from ..studies import submodularity as sm
+from ..studies.published import THEOREM7_PRINTED_WITNESS
 from ..profiles import params
 from ._ledger import Finding, claim
 
@@ -58,7 +59,7 @@ def _thm7_case1(profile: str) -> Finding:
              else "adding s2 does not lower the bound: no counter-example")
     w = ca.audits[p["min_size"]].monotone_witness
     smallest = ""
-    printed = sm.PRINTED_WITNESS["case1"]
+    printed = THEOREM7_PRINTED_WITNESS["case1"]
     if w is not None and (w.A, w.x) != (printed["A"], printed["x"]):
         smallest = (" The smallest witness of the exhaustive search is a different addition: "
                     f"{w.describe(LABELS)}.")

@@ -1,10 +1,11 @@
-"""The batch optimum against the MILP, the charging argument, the tight weights, the ledger."""
+"""Section IV-A's studies (obslib.studies.assignment): the batch optimum against the MILP, the
+charging argument, the tight weights, the ledger."""
 
 import numpy as np
 import pytest
 
 import obslib as ob
-from obslib import assignment_study as st
+from obslib.studies import assignment as st
 from obslib import claims
 
 
@@ -57,30 +58,6 @@ def test_section_4a_statuses_follow_the_evidence():
     pe = recs["thm6-practice"].evidence
     expected = "refuted" if pe["quantile_05"] < 0.75 else ("reproduced" if pe["worst_search_ratio"] >= 0.5 else "partly")
     assert recs["thm6-practice"].status == expected
-
-
-def test_fig8_trials_do_not_depend_on_sweep_order():
-    a = st.fig8_sweep([3, 1, 2], trials=2, seed=5)
-    b = st.fig8_sweep([1, 2, 3], trials=2, seed=5)
-    for k in ("greedy", "relaxed", "relaxed_ordered"):
-        np.testing.assert_array_equal(a[k][[1, 2, 0]], b[k])
-    t = st.fig8_trial(2, 1, 5)
-    assert t["greedy"] == b["greedy"][1, 1]
-
-
-def test_fig8_values_are_ordered_as_the_theory_says():
-    r = st.fig8_sweep([1, 2, 3, 4, 5], trials=3, seed=0, optimum_max_L=5)
-    assert np.all(r["greedy"] <= r["optimum"] + 1e-12)
-    assert np.all(r["optimum"] <= r["relaxed"] + 1e-12)
-    assert np.all(r["relaxed"] <= r["relaxed_ordered"] + 1e-12)
-    np.testing.assert_allclose(r["greedy"][0], r["relaxed"][0])  # L = 1: both take the best pair
-
-
-def test_fig8_status_follows_the_ratio():
-    rec = claims.evaluate("quick", ids=["fig8-greedy-near-relaxed"])[0]
-    ratio = np.array(rec.evidence["ratio_by_L"])
-    expected = "reproduced" if ratio[1:].min() >= 0.75 and abs(ratio[0] - 1) < 1e-9 else "refuted"
-    assert rec.status == expected
 
 
 def test_dynamic_programming_optimum_equals_enumeration_exactly():
@@ -152,17 +129,3 @@ def test_search_equals_the_sequential_local_search():
     assert r == best[0]
     np.testing.assert_array_equal(S, best[1])
     np.testing.assert_array_equal(T, best[2])
-
-
-def test_fig8_dense_and_pruned_paths_agree():
-    # trials small enough to share all weights, solved again by the pruning algorithms
-    from obslib.assignment import relaxed_from_geometry
-
-    for L in (3, 9, 20):
-        t = st.fig8_trial(L, 0, 3)
-        rng = np.random.default_rng([3, L, 0])
-        S, T = rng.uniform(0, 100, (2 * L, 2)), rng.uniform(0, 100, (L, 2))
-        plain, ordered = relaxed_from_geometry(S, T, 1.0)
-        assert t["greedy"] == ob.greedy_pair_assignment(sensors=S, targets=T, u_max=1.0).value
-        assert t["relaxed"] == pytest.approx(plain.value, rel=1e-12)
-        assert t["relaxed_ordered"] == pytest.approx(ordered.value, rel=1e-12)

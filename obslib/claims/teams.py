@@ -6,7 +6,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .. import team_study as ts
+from ..studies import teams as ts
 from ..profiles import params
 from ._ledger import Finding, claim
 

@@ -1,4 +1,4 @@
-"""Studies of Algorithm 1 against the exact optimum (Section IV-A, Theorem 6).
+"""Studies of Algorithm 1 against the exact optimum of Problem 1 (Section IV-A, Theorem 6; notebook 03, claims of :mod:`obslib.claims.assignment`).
 
 The paper could not compute the optimum of Problem 1; for small instances we can, exactly, by
 dynamic programming over the sets of used sensors, for a whole batch of instances at once with
@@ -17,9 +17,8 @@ from itertools import combinations
 
 import numpy as np
 
-from ._validate import check_distinct, check_not_on_targets
-from .assignment import greedy_pair_assignment
-from .bounds import _pair_kernel, pair_bounds
+from .._validate import check_distinct, check_not_on_targets
+from ..bounds import _pair_kernel
 
 __all__ = [
     "pair_assignments",
@@ -31,10 +30,6 @@ __all__ = [
     "worst_instance_search",
     "charging",
     "tight_weights",
-    "FIG8_KEYS",
-    "FIG8_PUBLISHED_L20",
-    "fig8_trial",
-    "fig8_sweep",
 ]
 
 #: Largest number of assignments :func:`pair_assignments` enumerates.
@@ -86,16 +81,23 @@ def _as_batch(W) -> np.ndarray:
 
 
 def optimal_values(W) -> np.ndarray:
-    """Problem 1's optimum for a batch of weight arrays ``W`` of shape ``(K, N, N, L)``.
+    r"""Problem 1's optimum for a batch of weight arrays ``W`` of shape ``(K, N, N, L)``.
 
     Dynamic programming over targets in order: after target ``l``, ``best[mask]`` is the largest
     total weight of giving targets ``0..l`` disjoint pairs that use exactly the sensors in the
     bit set ``mask``; target ``l + 1`` extends each set by every pair disjoint from it. With
-    non-negative weights an optimum assigns every target (``N >= 2L``), so the optimum is the
+    non-negative weights an optimum assigns every target (:math:`N \ge 2L`), so the optimum is the
     largest entry after the last target. The sums are formed in target order, as a direct sum
     over an assignment would be, and rounding is monotone, so the result equals the maximum over
-    :func:`pair_assignments` exactly (the tests compare them). Work grows like ``2^N N^2 L`` per
+    :func:`pair_assignments` exactly (the tests compare them). Work grows like :math:`2^N N^2 L` per
     instance; ``N`` is limited to :data:`MAX_DP_SENSORS`.
+
+    Examples
+    --------
+    On :func:`tight_weights` the optimum is 3:
+
+    >>> optimal_values(tight_weights(eps=1e-3)[None])
+    array([3.])
     """
     W = _as_batch(W)
     k, n, _, n_targets = W.shape
@@ -124,6 +126,13 @@ def greedy_values(W) -> np.ndarray:
     whose sensors and target are unused, the smallest ``(i, j, l)`` among equal weights (the
     first maximum in C order), as :func:`obslib.greedy_pair_assignment` does; the values are
     summed in pick order, so they equal its ``value`` exactly (the tests compare them).
+
+    Examples
+    --------
+    On :func:`tight_weights` the greedy takes the heavy pair and is stuck with :math:`1 + \\varepsilon`:
+
+    >>> greedy_values(tight_weights(eps=1e-3)[None])
+    array([1.001])
     """
     W = _as_batch(W)
     k, n, _, n_targets = W.shape
@@ -210,12 +219,18 @@ def _ratios(S, T, u_max) -> np.ndarray:
 
 def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2), u_max=1.0,
                       side=100.0) -> GreedyStudy:
-    """Algorithm 1 against the exact optimum on random instances of the Fig. 8 kind.
+    r"""Algorithm 1 against the exact optimum on random instances of the Fig. 8 kind.
 
-    Each instance draws ``L`` uniformly from ``targets`` and ``N = 2L + e`` with ``e`` from
-    ``extra`` (both inclusive), positions uniform in ``[0, side]^2``, weights the pair bounds
+    Each instance draws ``L`` uniformly from ``targets`` and :math:`N = 2L + e` with :math:`e` from
+    ``extra`` (both inclusive), positions uniform in :math:`[0, \mathrm{side}]^2`, weights the pair bounds
     with ``u_max`` (Euclidean). Instances are drawn one after the other from one generator, then
     solved in batches per ``(N, L)`` (:func:`greedy_values`, :func:`optimal_values`).
+
+    Examples
+    --------
+    >>> study = greedy_vs_optimal(n_instances=20, seed=0)
+    >>> study.ratio.shape, bool(study.ratio.min() >= 1 / 3)
+    ((20,), True)
     """
     rng = np.random.default_rng(seed)
     sizes, geoms = [], []
@@ -306,77 +321,19 @@ def charging(W, greedy_triples, optimal_triples) -> list[dict]:
 
 
 def tight_weights(eps: float = 1e-3) -> np.ndarray:
-    """Weights (not from geometry) on which Algorithm 1 gets ``(1 + eps) / 3`` of the optimum.
+    r"""Weights (not from geometry) on which Algorithm 1 gets :math:`(1 + \varepsilon) / 3` of the optimum.
 
-    Six sensors and three targets: the triple ``(0, 1, t0)`` weighs ``1 + eps`` and blocks the
+    Six sensors and three targets: the triple ``(0, 1, t0)`` weighs :math:`1 + \varepsilon` and blocks the
     optimal ``(0, 2, t1)``, ``(1, 3, t2)``, ``(4, 5, t0)`` of weight 1 each; every other weight
-    is 0. Theorem 6 holds for any ``omega``, and this shows its 1/3 cannot be improved.
+    is 0. Theorem 6 holds for any :math:`\omega`, and this shows its 1/3 cannot be improved.
+
+    Examples
+    --------
+    >>> W = tight_weights(eps=1e-3)
+    >>> round(float(greedy_values(W[None])[0] / optimal_values(W[None])[0]), 6)
+    0.333667
     """
     W = np.zeros((6, 6, 3))
     for (i, j, l), w in {(0, 1, 0): 1 + eps, (0, 2, 1): 1.0, (1, 3, 2): 1.0, (4, 5, 0): 1.0}.items():
         W[i, j, l] = W[j, i, l] = w
     return W
-
-
-FIG8_KEYS = ("greedy", "relaxed", "relaxed_ordered", "optimum")
-#: Fig. 8's published means at L = 20 (``../shared/EXPERIMENTS.md``, read off the figure's data).
-FIG8_PUBLISHED_L20 = {"relaxed": 18.95, "greedy": 16.52}
-#: Up to this many pair weights a Fig. 8 trial computes them all and shares them between the
-#: algorithms; beyond, the greedy and the relaxations prune (the values are the same either way).
-FIG8_DENSE_WEIGHTS = 1 << 17
-
-
-def fig8_trial(n_targets: int, trial: int, seed: int, u_max: float = 1.0, side: float = 100.0,
-               with_optimum: bool = False) -> dict:
-    """One trial of Fig. 8: ``N = 2L`` sensors and ``L`` targets uniform in ``[0, side]^2``.
-
-    The draw depends only on ``(seed, L, trial)`` (``numpy.random.default_rng([seed, L, trial])``),
-    so a sweep gives the same numbers in any order, serially or in parallel. Returns the greedy,
-    relaxed (Problem 3), ordered-pair relaxed (the original code's) values, and the exact optimum
-    when ``with_optimum`` (NaN otherwise).
-    """
-    from .assignment import optimal_pair_assignment, relaxed_from_geometry, relaxed_pair_assignment
-
-    rng = np.random.default_rng([seed, n_targets, trial])
-    n = 2 * n_targets
-    S = rng.uniform(0, side, size=(n, 2))
-    T = rng.uniform(0, side, size=(n_targets, 2))
-    W = None
-    if n * (n - 1) // 2 * n_targets <= FIG8_DENSE_WEIGHTS:  # small: every weight, computed once
-        W = pair_bounds(S, T, u_max)
-        greedy = float(greedy_values(W[None])[0])
-        relaxed = [relaxed_pair_assignment(W, ordered) for ordered in (False, True)]
-    else:  # large: each algorithm evaluates only the pairs that can matter
-        greedy = greedy_pair_assignment(sensors=S, targets=T, u_max=u_max).value
-        relaxed = relaxed_from_geometry(S, T, u_max)
-    out = {
-        "greedy": greedy,
-        "relaxed": relaxed[0].value,
-        "relaxed_ordered": relaxed[1].value,
-        "optimum": np.nan,
-    }
-    if with_optimum:
-        W = pair_bounds(S, T, u_max) if W is None else W
-        out["optimum"] = (float(optimal_values(W[None])[0]) if 2 * n_targets <= MAX_DP_SENSORS
-                          else optimal_pair_assignment(W).value)
-    return out
-
-
-def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float = 100.0,
-               optimum_max_L: int = 0, backend: str = "serial", n_jobs=None, scheduler=None) -> dict:
-    """Fig. 8's sweep: arrays of shape ``(len(L_values), trials)`` for each of :data:`FIG8_KEYS`.
-
-    ``backend``, ``n_jobs`` and ``scheduler`` go to :func:`obslib.sweep.run_sweep`; the numbers do
-    not depend on them.
-    """
-    from .sweep import run_sweep
-
-    L_values = [int(L) for L in L_values]
-    tasks = [
-        dict(n_targets=L, trial=t, seed=seed, u_max=u_max, side=side, with_optimum=L <= optimum_max_L)
-        for L in L_values for t in range(trials)
-    ]
-    results = run_sweep(fig8_trial, tasks, backend, n_jobs, scheduler)
-    out = {k: np.array([r[k] for r in results]).reshape(len(L_values), trials) for k in FIG8_KEYS}
-    out["L"] = np.array(L_values)
-    return out

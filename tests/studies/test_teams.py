@@ -1,9 +1,9 @@
-"""Fig. 9 study: order-independent trials, counts consistent with the greedy, the ledger rules."""
+"""Fig. 9 study (obslib.studies.teams): order-independent trials, counts consistent with the greedy, the ledger rules."""
 
 import numpy as np
 
 from obslib import claims
-from obslib import team_study as ts
+from obslib.studies import teams as ts
 
 
 def test_trials_are_order_independent_and_complete():

@@ -1,4 +1,4 @@
-"""Studies of the greedy team assignment (Section V-D, Fig. 9).
+"""Studies of the greedy team assignment of Problem 2: Fig. 9's evenness and the greedy against the exact optimum (Sections IV-B and V-D; notebook 08, claims of :mod:`obslib.claims.teams`).
 
 Fig. 9 of the paper plots, for ``L = 5`` targets and ``N = 20..50`` sensors in ``[0, 100]^2``,
 the mean and spread of the number of sensors the greedy (log det measure) gives to a target.
@@ -13,7 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .teams import greedy_team_assignment, greedy_team_counts, optimal_team_assignment, team_value
+from ..sweep import run_sweep
+from ..teams import greedy_team_assignment, greedy_team_counts
 
 __all__ = ["fig9_trial", "fig9_trials", "fig9_sweep", "random_spread", "Evenness", "evenness", "greedy_vs_optimal_teams"]
 
@@ -25,10 +26,16 @@ def _fig9_geometry(n_sensors, trial, seed, n_targets, side):
 
 def fig9_trial(n_sensors: int, trial: int, seed: int, n_targets: int = 5, measure: str = "logdet",
                eps: float = 1.0, side: float = 100.0) -> np.ndarray:
-    """Sensors per target (shape ``(L,)``) of one greedy team assignment.
+    r"""Sensors per target (shape ``(L,)``) of one greedy team assignment.
 
     The draw depends only on ``(seed, N, trial)`` (``default_rng([seed, N, trial])``): sensors
-    first, then targets, uniform in ``[0, side]^2``.
+    first, then targets, uniform in :math:`[0, \mathrm{side}]^2`.
+
+    Examples
+    --------
+    >>> counts = fig9_trial(n_sensors=20, trial=0, seed=0)
+    >>> counts.size, int(counts.sum())
+    (5, 20)
     """
     S, T = _fig9_geometry(n_sensors, trial, seed, n_targets, side)
     teams = greedy_team_assignment(S, T, measure=measure, eps=eps)
@@ -52,8 +59,6 @@ def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: st
     seed, so ``backend``, ``n_jobs`` and ``scheduler`` (for :func:`obslib.sweep.run_sweep`) do
     not change the counts.
     """
-    from .sweep import run_sweep
-
     N_values = [int(n) for n in N_values]
     tasks = [
         dict(n_sensors=n, trials=list(range(trials)), seed=seed, n_targets=n_targets, measure=measure, eps=eps,
@@ -93,7 +98,14 @@ class Evenness:
 
 
 def evenness(counts, N_values, n_targets: int) -> Evenness:
-    """Evenness statistics of Fig. 9 sweep counts (see :class:`Evenness`)."""
+    """Evenness statistics of Fig. 9 sweep counts (see :class:`Evenness`).
+
+    Examples
+    --------
+    >>> e = evenness(fig9_sweep([20, 25], trials=3, seed=0), [20, 25], n_targets=5)
+    >>> e.fair, bool((e.relative < 1).all())
+    (array([4., 5.]), True)
+    """
     C = np.asarray(counts)
     fair = np.asarray(N_values, dtype=float) / n_targets
     dev = np.abs(C.mean(axis=1) - fair[:, None])
@@ -113,9 +125,9 @@ def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets
     target (:func:`obslib.measures.measure_from_vectors`), the greedy's teams looked up in it and
     the optimum found over all ``L^N`` assignments, as :func:`obslib.optimal_team_assignment` does.
     """
-    from .bounds import relative_vectors
-    from .measures import measure_from_vectors, subset_masks
-    from .teams import RANK_RTOL, _assignment_totals, _check_eps, _check_measure, _greedy_teams, _labellings
+    from ..bounds import relative_vectors
+    from ..measures import measure_from_vectors, subset_masks
+    from ..teams import RANK_RTOL, _assignment_totals, _check_eps, _check_measure, _greedy_teams, _labellings
 
     e = _check_eps(eps)
     _check_measure(measure, e)

@@ -1,0 +1,65 @@
+"""Sphinx extension: resolve the API page's references to obslib objects the way Python would.
+
+Docstrings refer to names relative to the module that defines them (``:func:`subset_masks```
+in :mod:`obslib.measures`), while the API page documents the public functions under the package
+(``obslib.measure_table``), so Sphinx looks for ``obslib.subset_masks`` and finds nothing. This
+handler tries the name in every loaded ``obslib`` module: where the page documents the object,
+the reference becomes a link to it; where the object exists but the page does not list it (a
+private helper, a SymPy derivation), it is set as code. A name that exists nowhere still warns.
+"""
+
+import importlib
+import sys
+
+from docutils import nodes
+from sphinx.util.nodes import make_refnode
+
+
+def _lookup(path: str):
+    """The object at dotted ``path`` (a module or an attribute of one), or None."""
+    parts = path.split(".")
+    for cut in range(len(parts), 0, -1):
+        name = ".".join(parts[:cut])
+        try:
+            obj = importlib.import_module(name)
+        except ImportError:
+            continue
+        for attr in parts[cut:]:
+            if not hasattr(obj, attr):
+                return None
+            obj = getattr(obj, attr)
+        return obj
+    return None
+
+
+def _candidates(target: str, module: str | None):
+    yield target
+    if module:
+        yield f"{module}.{target}"
+    for name in sorted(sys.modules):
+        if name.startswith("obslib.") or name == "obslib":
+            yield f"{name}.{target}"
+
+
+def _resolve(app, env, node, contnode):
+    if node.get("refdomain") != "py":
+        return None
+    target = node["reftarget"].lstrip("~.")
+    module = node.get("py:module")
+    if not (target.startswith("obslib") or (module or "").startswith("obslib")):
+        return None
+    objects = env.get_domain("py").objects
+    for cand in _candidates(target, module):
+        if cand in objects:
+            entry = objects[cand]
+            return make_refnode(app.builder, node["refdoc"], entry.docname, entry.node_id,
+                                contnode, cand)
+    for cand in _candidates(target, module):
+        if cand.startswith("obslib") and _lookup(cand) is not None:
+            return nodes.literal(contnode.astext(), contnode.astext())
+    return None
+
+
+def setup(app):
+    app.connect("missing-reference", _resolve)
+    return {"parallel_read_safe": True, "parallel_write_safe": True}

@@ -1,0 +1,93 @@
+r"""Theorem 1's bound :math:`\omega(S)` for every subset :math:`S` of the sensors, as a table or as a set function."""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+
+from ._validate import as_point, as_points, as_u_max
+from .bounds import lower_bound
+from .measures import _tr_det, subset_masks
+from .observability import relative_rows
+
+__all__ = ["lower_bound_table", "lower_bound_tables", "lower_bound_set_function"]
+
+
+
+def _bound_from_tr_det(tr, det, lmax, u2):
+    lmin = np.where(lmax > 0, det / np.where(lmax > 0, lmax, 1.0), 0.0)
+    den = lmax + u2
+    return np.where(den > 0, np.sqrt(np.maximum(lmin, 0.0) / np.where(den > 0, den, 1.0)), 0.0)
+
+
+def lower_bound_tables(vectors, u_max) -> np.ndarray:
+    r"""Theorem 1's bound for all subsets of many instances at once.
+
+    :math:`\sqrt{\lambda_{\min} / (\lambda_{\max} + u_{\max}^2)}` with the eigenvalues of
+    :math:`O(o)^T O(o)` from its trace and the Cauchy-Binet determinant (Eqs. (6), (25)); 0 for
+    fewer than two sensors.
+
+    Parameters
+    ----------
+    vectors : array_like, shape (I, N, 2)
+        Rows ``o - p_i`` of each instance.
+    u_max : float or array_like, shape (I,)
+
+    Returns
+    -------
+    ndarray, shape (I, 2**N)
+
+    Examples
+    --------
+    >>> sensors = np.array([[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]])
+    >>> target = np.array([1.0, 1.0])
+    >>> lower_bound_tables((target - sensors)[None], u_max=1.0).round(4)
+    array([[0.    , 0.    , 0.    , 0.8165, 0.    , 0.8165, 0.    , 0.6325]])
+    """
+    v = np.asarray(vectors, dtype=float)
+    if v.ndim != 3 or v.shape[-1] != 2:
+        raise ValueError(f"vectors must have shape (I, N, 2), got {v.shape}")
+    u = as_u_max(u_max, v.shape[0])
+    tr, det, lmax = _tr_det(v, subset_masks(v.shape[1]))
+    u2 = (u**2)[:, None] if u.ndim == 1 else u**2
+    return _bound_from_tr_det(tr, det, lmax, u2)
+
+
+def lower_bound_table(sensors, target, u_max) -> np.ndarray:
+    r"""Theorem 1's bound :math:`\omega(S)` for every subset :math:`S` of ``sensors``, shape ``(2**N,)``.
+
+    Vectorised; agrees with :func:`obslib.lower_bound` (SVD) to rounding.
+
+    Examples
+    --------
+    Table entry ``k`` is the bound of the sensors at the bits of ``k``; adding the third sensor
+    lowers it (Theorem 7: the bound is not monotone):
+
+    >>> sensors = np.array([[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]])
+    >>> lower_bound_table(sensors, [1.0, 1.0], u_max=1.0).round(4)
+    array([0.    , 0.    , 0.    , 0.8165, 0.    , 0.8165, 0.    , 0.6325])
+    """
+    rows = relative_rows(sensors, target)
+    return lower_bound_tables(rows[None], float(as_u_max(u_max)))[0]
+
+
+def lower_bound_set_function(sensors, target, u_max) -> Callable[[tuple], float]:
+    r"""Theorem 1's bound :math:`\omega` as a set function of index tuples, each value by
+    :func:`obslib.lower_bound` (SVD).
+
+    Examples
+    --------
+    >>> omega = lower_bound_set_function([[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]], [1.0, 1.0], 1.0)
+    >>> round(omega((0, 1)), 4), round(omega((0, 1, 2)), 4)
+    (0.8165, 0.6325)
+    """
+    s = as_points(sensors, "sensors")
+    relative_rows(s, target)
+    o = as_point(target, "target")
+    u = float(as_u_max(u_max))
+
+    def omega(idx: tuple) -> float:
+        return lower_bound(s[list(idx)].reshape(-1, 2), o, u)
+
+    return omega

@@ -1,0 +1,110 @@
+"""Fig. 8's experiment: greedy unique pairs against the relaxed matching and the exact optimum as the number of targets grows (Section V-C; notebook 07, claims of :mod:`obslib.claims.greedy_vs_relaxed`)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..assignment import (
+    greedy_pair_assignment,
+    optimal_pair_assignment,
+    relaxed_from_geometry,
+    relaxed_pair_assignment,
+)
+from ..bounds import pair_bounds
+from ..sweep import run_sweep
+from .assignment import MAX_DP_SENSORS, greedy_values, optimal_values
+
+__all__ = ["FIG8_KEYS", "FIG8_DENSE_WEIGHTS", "fig8_trial", "fig8_sweep", "Fig8Summary", "fig8_summary"]
+
+#: The values each trial reports.
+FIG8_KEYS = ("greedy", "relaxed", "relaxed_ordered", "optimum")
+#: Up to this many pair weights a Fig. 8 trial computes them all and shares them between the
+#: algorithms; beyond, the greedy and the relaxations prune (the values are the same either way).
+FIG8_DENSE_WEIGHTS = 1 << 17
+
+
+def fig8_trial(n_targets: int, trial: int, seed: int, u_max: float = 1.0, side: float = 100.0,
+               with_optimum: bool = False) -> dict:
+    """One trial of Fig. 8: ``N = 2L`` sensors and ``L`` targets uniform in ``[0, side]^2``.
+
+    The draw depends only on ``(seed, L, trial)`` (``numpy.random.default_rng([seed, L, trial])``),
+    so a sweep gives the same numbers in any order, serially or in parallel. Returns the greedy,
+    relaxed (Problem 3), ordered-pair relaxed (the original code's) values, and the exact optimum
+    when ``with_optimum`` (NaN otherwise).
+
+    Examples
+    --------
+    >>> t = fig8_trial(n_targets=3, trial=0, seed=0, with_optimum=True)
+    >>> t["greedy"] <= t["optimum"] <= t["relaxed"] <= t["relaxed_ordered"]
+    True
+    """
+    rng = np.random.default_rng([seed, n_targets, trial])
+    n = 2 * n_targets
+    S = rng.uniform(0, side, size=(n, 2))
+    T = rng.uniform(0, side, size=(n_targets, 2))
+    W = None
+    if n * (n - 1) // 2 * n_targets <= FIG8_DENSE_WEIGHTS:  # small: every weight, computed once
+        W = pair_bounds(S, T, u_max)
+        greedy = float(greedy_values(W[None])[0])
+        relaxed = [relaxed_pair_assignment(W, ordered) for ordered in (False, True)]
+    else:  # large: each algorithm evaluates only the pairs that can matter
+        greedy = greedy_pair_assignment(sensors=S, targets=T, u_max=u_max).value
+        relaxed = relaxed_from_geometry(S, T, u_max)
+    out = {
+        "greedy": greedy,
+        "relaxed": relaxed[0].value,
+        "relaxed_ordered": relaxed[1].value,
+        "optimum": np.nan,
+    }
+    if with_optimum:
+        W = pair_bounds(S, T, u_max) if W is None else W
+        out["optimum"] = (float(optimal_values(W[None])[0]) if 2 * n_targets <= MAX_DP_SENSORS
+                          else optimal_pair_assignment(W).value)
+    return out
+
+
+def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float = 100.0,
+               optimum_max_L: int = 0, backend: str = "serial", n_jobs=None, scheduler=None) -> dict:
+    """Fig. 8's sweep: arrays of shape ``(len(L_values), trials)`` for each of :data:`FIG8_KEYS`.
+
+    ``backend``, ``n_jobs`` and ``scheduler`` go to :func:`obslib.sweep.run_sweep`; the numbers do
+    not depend on them.
+    """
+    L_values = [int(L) for L in L_values]
+    tasks = [
+        dict(n_targets=L, trial=t, seed=seed, u_max=u_max, side=side, with_optimum=L <= optimum_max_L)
+        for L in L_values for t in range(trials)
+    ]
+    results = run_sweep(fig8_trial, tasks, backend, n_jobs, scheduler)
+    out = {k: np.array([r[k] for r in results]).reshape(len(L_values), trials) for k in FIG8_KEYS}
+    out["L"] = np.array(L_values)
+    return out
+
+
+@dataclass(frozen=True)
+class Fig8Summary:
+    """What Fig. 8 plots and the ledger judges, per number of targets ``L``."""
+
+    L: np.ndarray  #: the numbers of targets
+    mean: dict  #: key of :data:`FIG8_KEYS` -> mean over trials, shape ``(len(L),)``
+    std: dict  #: key -> standard deviation over trials (``ddof = 0``)
+    ratio: np.ndarray  #: mean greedy / mean relaxed
+
+
+def fig8_summary(sweep: dict) -> Fig8Summary:
+    """Means, spreads and the greedy / relaxed ratio of a :func:`fig8_sweep` result.
+
+    Examples
+    --------
+    >>> s = fig8_summary(fig8_sweep([1, 2], trials=3, seed=0))
+    >>> s.L.tolist(), round(float(s.ratio[0]), 12), bool((s.mean["greedy"] <= s.mean["relaxed"]).all())
+    ([1, 2], 1.0, True)
+    """
+    missing = [k for k in (*FIG8_KEYS, "L") if k not in sweep]
+    if missing:
+        raise ValueError(f"sweep lacks {missing}: pass the result of fig8_sweep")
+    mean = {k: np.asarray(sweep[k]).mean(axis=1) for k in FIG8_KEYS}
+    std = {k: np.asarray(sweep[k]).std(axis=1) for k in FIG8_KEYS}
+    return Fig8Summary(np.asarray(sweep["L"]), mean, std, mean["greedy"] / mean["relaxed"])
