@@ -8,7 +8,8 @@ import numpy as np
 
 from ._validate import as_point, as_points, as_u_max
 from .bounds import lower_bound
-from .measures import _tr_det, subset_masks
+from ._kernels import tr_det as _tr_det
+from .measures import subset_masks
 from .observability import relative_rows
 
 __all__ = ["lower_bound_table", "lower_bound_tables", "lower_bound_set_function"]

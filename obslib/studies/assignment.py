@@ -18,7 +18,7 @@ from itertools import combinations
 import numpy as np
 
 from .._validate import check_distinct, check_not_on_targets
-from ..bounds import _pair_kernel
+from .._kernels import pair_kernel as _pair_kernel
 
 __all__ = [
     "pair_assignments",
