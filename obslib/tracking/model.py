@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._kernels import inverse_condition, normalise, pair_kernel
+from .. import _kernels
 from ..bounds import relative_vectors
 
 __all__ = [
@@ -94,17 +94,17 @@ def pair_bound_series(setup, points, pairs, cov=None) -> np.ndarray:
         raise ValueError(f"pairs must be integers of shape ({K}, 2), got {pr.dtype} {pr.shape}")
     if K and (pr.min() < 0 or pr.max() >= n):
         raise ValueError(f"pairs must be sensor indices in 0..{n - 1}")
-    v, u2 = normalise(v, setup.u_max)
+    v, u2 = _kernels.normalise(v, setup.u_max)
     k = np.arange(K)
     vi, vj = v[pr[:, 0], k], v[pr[:, 1], k]
-    return pair_kernel(vi[:, 0], vi[:, 1], vj[:, 0], vj[:, 1], u2)
+    return _kernels.pair_kernel(vi[:, 0], vi[:, 1], vj[:, 0], vj[:, 1], u2)
 
 
 def inverse_condition(rows) -> np.ndarray:
     """Exact :math:`C^{-1} = \\sigma_{\\min} / \\sigma_{\\max}` of each stacked ``(m, 2)`` matrix
     of ``rows`` ``(..., m, 2)`` (the closed form of :func:`obslib.inverse_condition_number`,
     without validation)."""
-    return inverse_condition(np.asarray(rows, dtype=float))
+    return _kernels.inverse_condition(np.asarray(rows, dtype=float))
 
 
 def target_objective(pair_sensors, position, controls) -> np.ndarray:
@@ -131,4 +131,4 @@ def target_objective(pair_sensors, position, controls) -> np.ndarray:
     nxt = o[..., None, :] + u  # (..., K, 2)
     rows = nxt[..., :, None, :] - ps[..., None, :, :]  # (..., K, 2, 2)
     uu = np.broadcast_to(u, nxt.shape)[..., None, :]  # (..., K, 1, 2)
-    return inverse_condition(np.concatenate([rows, uu], axis=-2))
+    return _kernels.inverse_condition(np.concatenate([rows, uu], axis=-2))
