@@ -27,6 +27,10 @@ __all__ = [
     "check_not_on_targets",
     "check_differences",
     "check_weight_memory",
+    "check_pair_sizes",
+    "check_maximisable",
+    "as_stack",
+    "as_u_max_stack",
     "MAX_WEIGHT_BYTES",
 ]
 
@@ -284,4 +288,50 @@ def check_weight_memory(n: int, n_targets: int) -> None:
             f"{MAX_WEIGHT_BYTES / 2**30:.0f} GiB; use the geometry-based path, e.g. "
             "greedy_pair_assignment(sensors=..., targets=..., u_max=...) or "
             "relaxed_pair_assignment(sensors=..., targets=..., u_max=...), which never builds it"
+        )
+
+
+def as_stack(x, name: str, min_ndim: int) -> np.ndarray:
+    """A finite float array of shape ``(..., 2)`` (``min_ndim = 1``) or ``(..., N, 2)`` (``2``)."""
+    arr = as_float_array(x, name)
+    if arr.ndim < min_ndim or arr.shape[-1] != 2:
+        raise ValueError(f"{name} must have shape (..., {'N, ' if min_ndim > 1 else ''}2), "
+                         f"got {arr.shape}")
+    if not np.isfinite(arr).all():
+        raise ValueError(f"{name} has a non-finite coordinate")
+    return arr
+
+
+def as_u_max_stack(u_max, shape) -> np.ndarray:
+    """``u_max`` (finite, non-negative) broadcast to ``shape``, one value per scene."""
+    u = as_float_array(u_max, "u_max")
+    if not np.isfinite(u).all() or (u < 0).any():
+        raise ValueError("u_max must be finite and non-negative")
+    try:
+        return np.broadcast_to(u, shape)
+    except ValueError:
+        raise ValueError(f"u_max must be a scalar or of shape {shape}, got {u.shape}") from None
+
+
+def check_pair_sizes(n: int, n_targets: int) -> None:
+    """Unique pairs need at least one target and ``N >= 2L`` sensors (Problem 1)."""
+    if n_targets < 1:
+        raise ValueError("there must be at least one target")
+    if n < 2 * n_targets:
+        raise ValueError(
+            f"unique pairs need N >= 2L sensors; got N = {n} sensors for L = {n_targets} targets"
+        )
+
+
+def check_maximisable(name: str, eps: float, maximisable) -> None:
+    """A measure the team greedy can maximise: monotone increasing, finite for small teams."""
+    if name not in maximisable:
+        raise ValueError(
+            f"measure {name!r} decreases as sensors are added; maximise one of {tuple(maximisable)} "
+            "(e.g. 'neg_trace_inverse' instead of 'trace_inverse')"
+        )
+    if name in ("logdet", "neg_trace_inverse") and eps <= 0:
+        raise ValueError(
+            f"measure {name!r} is infinite for teams of fewer than two sensors unless eps > 0; "
+            "pass a prior eps > 0"
         )

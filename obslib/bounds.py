@@ -20,7 +20,9 @@ from ._validate import (
     as_cov,
     as_float_array,
     as_points,
+    as_stack,
     as_u_max,
+    as_u_max_stack,
     check_differences,
     check_distinct,
     check_not_on_targets,
@@ -240,25 +242,6 @@ def worst_case_control(sensors, target, u_max) -> np.ndarray:
     return worst_case_controls(relative_rows(sensors, target), float(as_u_max(u_max)))
 
 
-def _stacked_rows(rows) -> np.ndarray:
-    r = as_float_array(rows, "rows")
-    if r.ndim < 2 or r.shape[-1] != 2:
-        raise ValueError(f"rows must have shape (..., N, 2), got {r.shape}")
-    if not np.isfinite(r).all():
-        raise ValueError("rows have a non-finite coordinate")
-    return r
-
-
-def _stacked_u_max(u_max, shape) -> np.ndarray:
-    u = as_float_array(u_max, "u_max")
-    if not np.isfinite(u).all() or (u < 0).any():
-        raise ValueError("u_max must be finite and non-negative")
-    try:
-        return np.broadcast_to(u, shape)
-    except ValueError:
-        raise ValueError(f"u_max must be a scalar or of shape {shape}, got {u.shape}") from None
-
-
 def lower_bounds(rows, u_max) -> np.ndarray:
     """Theorem 1's bound (Eq. (21)) for a stack of scenes, by batched SVD of ``O(o)``.
 
@@ -282,8 +265,8 @@ def lower_bounds(rows, u_max) -> np.ndarray:
     >>> lower_bounds([[[1, 1], [-1, 1]]], 1.0).round(6)
     array([0.816497])
     """
-    r = _stacked_rows(rows)
-    u = _stacked_u_max(u_max, r.shape[:-2])
+    r = as_stack(rows, "rows", 2)
+    u = as_u_max_stack(u_max, r.shape[:-2])
     if r.shape[-2] < 2:
         return np.zeros(r.shape[:-2])
     # the bound does not depend on the unit: bring each scene into the safe range (exact)
@@ -307,8 +290,8 @@ def worst_case_controls(rows, u_max) -> np.ndarray:
     >>> worst_case_controls([[[2, 1], [-2, 1]]], 1.0)
     array([[1., 0.]])
     """
-    r = _stacked_rows(rows)
-    u = _stacked_u_max(u_max, r.shape[:-2])
+    r = as_stack(rows, "rows", 2)
+    u = as_u_max_stack(u_max, r.shape[:-2])
     if r.shape[-2]:  # the direction does not depend on the unit: into the safe range (exact)
         r = r / pow2_scale(np.abs(r).max(axis=(-2, -1)))[..., None, None]
     _, vecs = np.linalg.eigh(np.swapaxes(r, -1, -2) @ r)
