@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._kernels import mahalanobis_rescale, normalise, pair_kernel, pow2_scale
+from ._kernels import mahalanobis_rescale, normalise, pair_kernel, pow2_scale, rescale
 from ._validate import (
     as_cov,
     as_float_array,
@@ -271,7 +271,7 @@ def lower_bounds(rows, u_max) -> np.ndarray:
         return np.zeros(r.shape[:-2])
     # the bound does not depend on the unit: bring each scene into the safe range (exact)
     p = pow2_scale(np.abs(r).max(axis=(-2, -1)))
-    r, u = r / p[..., None, None], u / p
+    r, u = rescale(r, p[..., None, None]), rescale(u, p)
     sv = np.linalg.svd(r, compute_uv=False)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         den = np.sqrt(sv[..., 0] ** 2 + u**2)
@@ -293,7 +293,7 @@ def worst_case_controls(rows, u_max) -> np.ndarray:
     r = as_stack(rows, "rows", 2)
     u = as_u_max_stack(u_max, r.shape[:-2])
     if r.shape[-2]:  # the direction does not depend on the unit: into the safe range (exact)
-        r = r / pow2_scale(np.abs(r).max(axis=(-2, -1)))[..., None, None]
+        r = rescale(r, pow2_scale(np.abs(r).max(axis=(-2, -1)))[..., None, None])
     _, vecs = np.linalg.eigh(np.swapaxes(r, -1, -2) @ r)
     v = vecs[..., :, -1]
     flip = (v[..., 0] < 0) | ((v[..., 0] == 0) & (v[..., 1] < 0))

@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._kernels import gram_parts, inverse_condition, pow2_scale, ratio_from_gram
-from ._validate import as_float_array, as_point, as_points, as_stack, check_distinct, check_not_on_targets
+from ._kernels import gram_parts, inverse_condition, pow2_scale, ratio_from_gram, rescale
+from ._validate import as_float_array, as_point, as_points, as_stack, check_differences, check_distinct, check_not_on_targets
 
 # Old private name, still imported by a module outside this one (obslib.tracking).
 _inverse_condition = inverse_condition
@@ -52,7 +52,9 @@ def relative_rows(sensors, target) -> np.ndarray:
     s = as_points(sensors, "sensors")
     o = as_point(target, "target")
     check_distinct(s)
-    rows = o[None, :] - s
+    with np.errstate(over="ignore", invalid="ignore"):
+        rows = o[None, :] - s
+    check_differences(rows[:, None, :])
     check_not_on_targets(rows[:, None, :])
     return rows
 
@@ -172,8 +174,8 @@ def inverse_condition_numbers(rows, u=None) -> np.ndarray:
         if single:
             uu = uu[..., None, :]
         p = np.maximum(p, pow2_scale(np.abs(uu).max(axis=(-2, -1), initial=0.0)))
-        uu = uu / p[..., None, None]
-    r = r / p[..., None, None]
+        uu = rescale(uu, p[..., None, None])
+    r = rescale(r, p[..., None, None])
     det, tr = gram_parts(r)
     if u is not None:
         ux, uy = uu[..., 0][..., None], uu[..., 1][..., None]  # (..., K, 1)
@@ -224,7 +226,7 @@ def inverse_condition_numbers_polar(rows, radii, angles) -> np.ndarray:
         raise ValueError("radii must be finite and non-negative, angles finite")
     p = np.maximum(pow2_scale(np.abs(r).max(axis=(-2, -1), initial=0.0)),
                    pow2_scale(rho.max(axis=1, initial=0.0)))  # per scene, into the safe range
-    r, rho = r / p[:, None, None], rho / p[:, None]
+    r, rho = rescale(r, p[:, None, None]), rescale(rho, p[:, None])
     det0, tr0 = gram_parts(r)
     c = r[:, None, :, 0] * np.sin(phi)[None, :, None] - r[:, None, :, 1] * np.cos(phi)[None, :, None]
     q = np.einsum("sak,sak->sa", c, c)  # (S, A): sum_k (r_k x e_phi)^2

@@ -455,3 +455,10 @@ def test_unit_invariant_quantities_do_not_depend_on_the_unit(c):
         assert ob.greedy_team_assignment(S * c, T * c, name, e) == ob.greedy_team_assignment(S, T, name, eps)
         assert ob.optimal_team_assignment(small_S * c, T * c, name, e)[0] == \
             ob.optimal_team_assignment(small_S, T, name, eps)[0]
+
+
+def test_coordinates_whose_difference_overflows_are_named():
+    with pytest.raises(ValueError, match="sensor 0 and target 0 are too far apart"):
+        ob.lower_bound([[-1.7e308, 0.0], [0.0, 1.0]], [1.7e308, 0.0], 1.0)
+    with pytest.raises(ValueError, match="sensor 1 and target 0 are too far apart"):
+        ob.pair_bounds([[0.0, 1.0], [-1.7e308, 0.0]], [[1.7e308, 0.0]], 1.0)
