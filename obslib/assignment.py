@@ -265,7 +265,7 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     Parameters
     ----------
     W : array_like, shape (N, N, L), optional
-        Pair weights, symmetric in ``i, j``.
+        Pair weights: finite, non-negative, symmetric in ``i, j`` (the diagonal is ignored).
     sensors, targets, u_max, cov : optional
         Instead of ``W``: the geometry, weighted as :func:`obslib.pair_bounds` does (Theorem 4,
         Mahalanobis with ``cov``), computed on demand so the ``(N, N, L)`` array is never

@@ -144,6 +144,16 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
     ndarray, shape (N, N, L)
         ``W[i, j, l] = sqrt(lambda_min / (lambda_max + u_max^2))`` for rows
         ``o_l - p_i, o_l - p_j`` (Eq. (9)); symmetric in ``i, j`` and zero on ``i == j``.
+        The same for coordinates and ``u_max`` scaled together by any factor (each target's rows
+        are normalised before anything is squared).
+
+    Raises
+    ------
+    ValueError
+        For bad input (naming the sensor, target or argument), and, before allocating, when the
+        ``(N, N, L)`` array would exceed :data:`obslib._validate.MAX_WEIGHT_BYTES` (1 GiB): the
+        message suggests ``greedy_pair_assignment(sensors=..., targets=..., u_max=...)``, which
+        computes weights on demand.
 
     Examples
     --------
