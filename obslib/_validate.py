@@ -53,6 +53,8 @@ def as_float_array(x, name: str) -> np.ndarray:
     if arr.dtype.kind == "O":
         try:
             arr = np.asarray(x, dtype=float)
+        except OverflowError:
+            raise ValueError(f"{name} has an integer beyond the float range") from None
         except (TypeError, ValueError) as exc:
             raise ArgumentTypeError(f"{name} must be numeric: {exc}") from None
     if arr.dtype.kind == "b":

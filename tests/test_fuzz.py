@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import contextlib
 import io
+import tempfile
+from pathlib import Path
 from unittest import mock
 
 import numpy as np
@@ -21,6 +23,8 @@ import obslib as ob
 from obslib import teams as tm
 
 FUZZ = settings(max_examples=40, deadline=2000, suppress_health_check=[HealthCheck.too_slow])
+
+TMP = Path(tempfile.mkdtemp(prefix="obslib-fuzz-"))  # the runner's outputs, outside the repository
 
 SCALES = [1e-300, 1e-170, 1e-150, 1e-20, 1.0, 1e20, 1e150, 1e170, 1e300]
 
@@ -303,8 +307,8 @@ def test_run_cli_parsing(argv):
     ran = []
     with mock.patch.object(run, "execute", lambda *a, **k: ran.append(a) or 0.0), \
             mock.patch.object(run, "precompile", lambda: None), \
-            mock.patch.object(run, "TIMES_FILE", run.ROOT / "_build" / "fuzz_times.json"), \
-            mock.patch.object(run, "EXECUTION_PAGE", run.ROOT / "_build" / "fuzz_execution.md"), \
+            mock.patch.object(run, "TIMES_FILE", TMP / "fuzz_times.json"), \
+            mock.patch.object(run, "EXECUTION_PAGE", TMP / "fuzz_execution.md"), \
             contextlib.redirect_stderr(io.StringIO()), contextlib.redirect_stdout(io.StringIO()):
         try:
             assert run.main(argv) == 0
@@ -462,3 +466,10 @@ def test_coordinates_whose_difference_overflows_are_named():
         ob.lower_bound([[-1.7e308, 0.0], [0.0, 1.0]], [1.7e308, 0.0], 1.0)
     with pytest.raises(ValueError, match="sensor 1 and target 0 are too far apart"):
         ob.pair_bounds([[0.0, 1.0], [-1.7e308, 0.0]], [[1.7e308, 0.0]], 1.0)
+
+
+def test_integers_beyond_the_float_range_are_named():
+    with pytest.raises(ValueError, match="sensors has an integer beyond the float range"):
+        ob.pair_bounds([[0, 10**400], [1, 1]], [[2, 2]], 1.0)
+    with pytest.raises(ValueError, match="u_max has an integer beyond the float range"):
+        ob.lower_bound([[0, 0], [1, 1]], [2, 2], 10**400)
