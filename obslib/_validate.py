@@ -2,7 +2,7 @@
 
 Every public function of :mod:`obslib` checks its input here, at the boundary, so that
 bad input fails with a :class:`ValueError` that names the offending sensor or target
-instead of propagating NaN or failing deep inside NumPy (DESIGN.md, "obslib").
+instead of propagating NaN or failing deep inside NumPy.
 """
 
 from __future__ import annotations

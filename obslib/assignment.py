@@ -394,7 +394,7 @@ def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 <
 def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
     """Weights of the unordered pairs ``i < j`` for every target, as ``(ii, jj, C)``.
 
-    ``C[l, p]`` is ``pair_bounds(...)[ii[p], jj[p], l]`` (one shared kernel, so bitwise equal)
+    ``C[l, p]`` is ``pair_bounds(...)[ii[p], jj[p], l]`` (one shared elementwise kernel on the same rows, so equal)
     with pairs in ``numpy.triu_indices(N, 1)`` order; shape ``(L, P)``, filled from
     :func:`upper_pair_weight_blocks`.
 

@@ -85,7 +85,7 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
     direction and gets the Mahalanobis length ``d_il = sqrt(v^T Sigma_l^{-1} v)``. Feeding these
     vectors to the Theorem 4 eigenvalues gives exactly the tracking experiments' evaluation:
     ``alpha = d_j / d_i`` and ``u_max^2 / d_i^2`` from Mahalanobis distances, ``theta_ji`` the
-    Euclidean angle (``../shared/EXPERIMENTS.md``, "Pair bound as evaluated in the experiments").
+    Euclidean angle, as in the published tracking runs.
 
     Examples
     --------

@@ -154,7 +154,7 @@ def test_mahalanobis_isotropic_covariance_rescales_speed():
 
 
 def test_mahalanobis_matches_experiments_definition():
-    """EXPERIMENTS.md: Theorem 4's form with Mahalanobis d_i, d_j and the Euclidean angle theta."""
+    """The experiments' evaluation: Theorem 4's form with Mahalanobis d_i, d_j and the Euclidean angle theta."""
     rng = np.random.default_rng(6)
     for _ in range(300):
         s = rng.uniform(-5, 5, size=(2, 2))
