@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ._kernels import mahalanobis_rescale
+
 __all__ = [
     "ArgumentTypeError",
     "as_float_array",
@@ -31,6 +33,7 @@ __all__ = [
     "check_maximisable",
     "as_stack",
     "as_u_max_stack",
+    "validated_vectors",
     "MAX_WEIGHT_BYTES",
 ]
 
@@ -337,3 +340,21 @@ def check_maximisable(name: str, eps: float, maximisable) -> None:
             f"measure {name!r} is infinite for teams of fewer than two sensors unless eps > 0; "
             "pass a prior eps > 0"
         )
+
+
+def validated_vectors(sensors, targets, cov=None):
+    """Validated ``o_l - p_i`` ``(N, L, 2)``, Mahalanobis-rescaled with ``cov``, in units ``(L,)``.
+
+    The true vectors are ``v[:, l] * unit[l]``; ``unit`` is 1 except for a covariance or scene
+    outside the safe range (see :func:`obslib._kernels.mahalanobis_rescale`).
+    """
+    s = as_points(sensors, "sensors")
+    t = as_points(targets, "targets")
+    check_distinct(s)
+    with np.errstate(over="ignore", invalid="ignore"):
+        v = t[None, :, :] - s[:, None, :]
+    check_differences(v)
+    check_not_on_targets(v)
+    if cov is None:
+        return v, np.ones(t.shape[0])
+    return mahalanobis_rescale(v, as_cov(cov, t.shape[0]))

@@ -28,8 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._kernels import normalise, pair_kernel
-from ._validate import ArgumentTypeError, as_bool, as_float_array, as_int, as_points, as_u_max, as_weights, check_pair_sizes, check_weight_memory
-from .bounds import _relative_vectors
+from ._validate import ArgumentTypeError, as_bool, as_float_array, as_int, as_points, as_u_max, as_weights, check_pair_sizes, check_weight_memory, validated_vectors
 
 __all__ = [
     "PairAssignment",
@@ -79,7 +78,7 @@ def assignment_value(W, triples) -> float:
 def _geometry(sensors, targets, u_max, cov):
     """Validated rows ``o_l - p_i`` ``(N, L, 2)`` normalised per target, and ``u_max^2`` ``(L,)``
     in the same unit: the input of :func:`obslib._kernels.pair_kernel` (as in ``pair_bounds``)."""
-    v, unit = _relative_vectors(sensors, targets, cov)
+    v, unit = validated_vectors(sensors, targets, cov)
     with np.errstate(over="ignore"):
         u = as_u_max(u_max, v.shape[1]) / unit
     return normalise(v, u)

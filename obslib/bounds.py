@@ -15,18 +15,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._kernels import mahalanobis_rescale, normalise, pair_kernel, pow2_scale, rescale
+from ._kernels import normalise, pair_kernel, pow2_scale, rescale
 from ._validate import (
-    as_cov,
     as_float_array,
     as_points,
     as_stack,
     as_u_max,
     as_u_max_stack,
-    check_differences,
-    check_distinct,
-    check_not_on_targets,
     check_weight_memory,
+    validated_vectors,
 )
 from .observability import relative_rows
 
@@ -94,7 +91,7 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
     >>> relative_vectors([[0, 0], [2, 0]], [[1, 1]], cov=4 * np.eye(2)).tolist()  # lengths / 2
     [[[0.5, 0.5]], [[-0.5, 0.5]]]
     """
-    v, unit = _relative_vectors(sensors, targets, cov)
+    v, unit = validated_vectors(sensors, targets, cov)
     if cov is None:
         return v
     with np.errstate(over="ignore"):
@@ -104,24 +101,6 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
         raise ValueError(f"the Mahalanobis lengths to target {l} overflow (cov of target {l} is "
                          "tiny relative to the distances); pair_bounds handles such scales")
     return out
-
-
-def _relative_vectors(sensors, targets, cov=None):
-    """Validated ``o_l - p_i`` ``(N, L, 2)``, Mahalanobis-rescaled with ``cov``, in units ``(L,)``.
-
-    The true vectors are ``v[:, l] * unit[l]``; ``unit`` is 1 except for a covariance or scene
-    outside the safe range (see :func:`obslib._kernels.mahalanobis_rescale`).
-    """
-    s = as_points(sensors, "sensors")
-    t = as_points(targets, "targets")
-    check_distinct(s)
-    with np.errstate(over="ignore", invalid="ignore"):
-        v = t[None, :, :] - s[:, None, :]
-    check_differences(v)
-    check_not_on_targets(v)
-    if cov is None:
-        return v, np.ones(t.shape[0])
-    return mahalanobis_rescale(v, as_cov(cov, t.shape[0]))
 
 
 def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
@@ -169,7 +148,7 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
     s = as_points(sensors, "sensors")
     t = as_points(targets, "targets")
     check_weight_memory(s.shape[0], t.shape[0])
-    v, unit = _relative_vectors(s, t, cov)
+    v, unit = validated_vectors(s, t, cov)
     v, u2 = normalise(v, as_u_max(u_max, v.shape[1]) / unit)
     x, y = v[..., 0], v[..., 1]  # (N, L)
     return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2)

@@ -22,7 +22,8 @@ from hypothesis import strategies as st
 import obslib as ob
 from obslib import teams as tm
 
-FUZZ = settings(max_examples=40, deadline=2000, suppress_health_check=[HealthCheck.too_slow])
+# deadline: far above any example's time (milliseconds) even on a loaded machine, far below a hang
+FUZZ = settings(max_examples=40, deadline=10_000, suppress_health_check=[HealthCheck.too_slow])
 
 TMP = Path(tempfile.mkdtemp(prefix="obslib-fuzz-"))  # the runner's outputs, outside the repository
 
@@ -299,7 +300,7 @@ argv_words = st.sampled_from(["--profile", "paper", "quick", "nosuch", "--id", "
                               "05", "01", "99", "--in-place", "book", "scaling", "assignment", "[1]", ""])
 
 
-@settings(max_examples=60, deadline=2000)
+@settings(max_examples=60, deadline=10_000)
 @given(st.lists(argv_words, max_size=6))
 def test_run_cli_parsing(argv):
     from obslib import run
@@ -316,7 +317,7 @@ def test_run_cli_parsing(argv):
             assert exc.code == 2 and not ran  # argparse error, before anything ran
 
 
-@settings(max_examples=60, deadline=2000)
+@settings(max_examples=60, deadline=10_000)
 @given(st.lists(argv_words, max_size=6))
 def test_claims_and_bench_cli_parsing(argv):
     from obslib.bench import parse_args as bench_args
