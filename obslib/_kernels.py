@@ -25,6 +25,7 @@ import numpy as np
 __all__ = [
     "SAFE_RANGE",
     "pow2_scale",
+    "rescale",
     "pair_kernel",
     "normalise",
     "mahalanobis_rescale",
@@ -55,6 +56,12 @@ def pow2_scale(maxabs, even: bool = False) -> np.ndarray:
         e = e - (e & 1)
     inside = (m == 0) | ((m >= SAFE_RANGE[0]) & (m <= SAFE_RANGE[1]))
     return np.where(inside, 1.0, np.ldexp(1.0, np.where(inside, 0, e)))
+
+
+def rescale(x: np.ndarray, p: np.ndarray) -> np.ndarray:
+    """``x / p`` (``p`` from :func:`pow2_scale`, already shaped to broadcast); ``x`` itself when
+    every ``p`` is 1, the common case, so ordinary scenes cost no copy."""
+    return x if (p == 1.0).all() else x / p
 
 
 def pair_kernel(xi, yi, xj, yj, u2):
@@ -110,7 +117,7 @@ def normalise(v: np.ndarray, u) -> tuple:
         with np.errstate(over="ignore"):
             return v, np.broadcast_to(np.asarray(u, dtype=float) ** 2, (n_targets,)).copy()
     p = pow2_scale(np.abs(v).max(axis=(0, 2)))  # (L,)
-    v = v / p[None, :, None]
+    v = rescale(v, p[None, :, None])
     scale = np.sqrt(np.einsum("nlk,nlk->nl", v, v).max(axis=0))
     with np.errstate(over="ignore"):
         u = np.broadcast_to(np.asarray(u, dtype=float), (n_targets,)) / p
@@ -127,8 +134,8 @@ def mahalanobis_rescale(v: np.ndarray, cov: np.ndarray) -> tuple:
     """
     pv = pow2_scale(np.abs(v).max(axis=(0, 2)) if v.shape[0] else np.zeros(v.shape[1]))
     pc = pow2_scale(np.abs(cov).max(axis=(1, 2)), even=True)  # sqrt(pc) exact
-    vs = v / pv[None, :, None]
-    prec = np.linalg.inv(cov / pc[:, None, None])
+    vs = rescale(v, pv[None, :, None])
+    prec = np.linalg.inv(rescale(cov, pc[:, None, None]))
     d_maha2 = np.einsum("nlk,lkm,nlm->nl", vs, prec, vs)
     d_eucl2 = np.einsum("nlk,nlk->nl", vs, vs)
     w = vs * np.sqrt(d_maha2 / d_eucl2)[..., None]
@@ -181,7 +188,7 @@ def inverse_condition(stack: np.ndarray) -> np.ndarray:
     if m < 2:
         return np.zeros(stack.shape[:-2])
     p = pow2_scale(np.abs(stack).max(axis=(-2, -1)))
-    stack = stack / p[..., None, None]
+    stack = rescale(stack, p[..., None, None])
     if m > CLOSED_FORM_MAX_ROWS:
         sv = np.linalg.svd(stack, compute_uv=False)
         top = sv[..., 0]

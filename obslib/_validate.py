@@ -2,12 +2,14 @@
 
 Every public function of :mod:`obslib` checks its input here, at the boundary, so that
 bad input fails with a :class:`ValueError` that names the offending sensor or target
-instead of propagating NaN or failing deep inside NumPy (DESIGN.md, "obslib").
+instead of propagating NaN or failing deep inside NumPy.
 """
 
 from __future__ import annotations
 
 import numpy as np
+
+from ._kernels import mahalanobis_rescale
 
 __all__ = [
     "ArgumentTypeError",
@@ -27,6 +29,11 @@ __all__ = [
     "check_not_on_targets",
     "check_differences",
     "check_weight_memory",
+    "check_pair_sizes",
+    "check_maximisable",
+    "as_stack",
+    "as_u_max_stack",
+    "validated_vectors",
     "MAX_WEIGHT_BYTES",
 ]
 
@@ -49,6 +56,8 @@ def as_float_array(x, name: str) -> np.ndarray:
     if arr.dtype.kind == "O":
         try:
             arr = np.asarray(x, dtype=float)
+        except OverflowError:
+            raise ValueError(f"{name} has an integer beyond the float range") from None
         except (TypeError, ValueError) as exc:
             raise ArgumentTypeError(f"{name} must be numeric: {exc}") from None
     if arr.dtype.kind == "b":
@@ -285,3 +294,67 @@ def check_weight_memory(n: int, n_targets: int) -> None:
             "greedy_pair_assignment(sensors=..., targets=..., u_max=...) or "
             "relaxed_pair_assignment(sensors=..., targets=..., u_max=...), which never builds it"
         )
+
+
+def as_stack(x, name: str, min_ndim: int) -> np.ndarray:
+    """A finite float array of shape ``(..., 2)`` (``min_ndim = 1``) or ``(..., N, 2)`` (``2``)."""
+    arr = as_float_array(x, name)
+    if arr.ndim < min_ndim or arr.shape[-1] != 2:
+        raise ValueError(f"{name} must have shape (..., {'N, ' if min_ndim > 1 else ''}2), "
+                         f"got {arr.shape}")
+    if not np.isfinite(arr).all():
+        raise ValueError(f"{name} has a non-finite coordinate")
+    return arr
+
+
+def as_u_max_stack(u_max, shape) -> np.ndarray:
+    """``u_max`` (finite, non-negative) broadcast to ``shape``, one value per scene."""
+    u = as_float_array(u_max, "u_max")
+    if not np.isfinite(u).all() or (u < 0).any():
+        raise ValueError("u_max must be finite and non-negative")
+    try:
+        return np.broadcast_to(u, shape)
+    except ValueError:
+        raise ValueError(f"u_max must be a scalar or of shape {shape}, got {u.shape}") from None
+
+
+def check_pair_sizes(n: int, n_targets: int) -> None:
+    """Unique pairs need at least one target and ``N >= 2L`` sensors (Problem 1)."""
+    if n_targets < 1:
+        raise ValueError("there must be at least one target")
+    if n < 2 * n_targets:
+        raise ValueError(
+            f"unique pairs need N >= 2L sensors; got N = {n} sensors for L = {n_targets} targets"
+        )
+
+
+def check_maximisable(name: str, eps: float, maximisable) -> None:
+    """A measure the team greedy can maximise: monotone increasing, finite for small teams."""
+    if name not in maximisable:
+        raise ValueError(
+            f"measure {name!r} decreases as sensors are added; maximise one of {tuple(maximisable)} "
+            "(e.g. 'neg_trace_inverse' instead of 'trace_inverse')"
+        )
+    if name in ("logdet", "neg_trace_inverse") and eps <= 0:
+        raise ValueError(
+            f"measure {name!r} is infinite for teams of fewer than two sensors unless eps > 0; "
+            "pass a prior eps > 0"
+        )
+
+
+def validated_vectors(sensors, targets, cov=None):
+    """Validated ``o_l - p_i`` ``(N, L, 2)``, Mahalanobis-rescaled with ``cov``, in units ``(L,)``.
+
+    The true vectors are ``v[:, l] * unit[l]``; ``unit`` is 1 except for a covariance or scene
+    outside the safe range (see :func:`obslib._kernels.mahalanobis_rescale`).
+    """
+    s = as_points(sensors, "sensors")
+    t = as_points(targets, "targets")
+    check_distinct(s)
+    with np.errstate(over="ignore", invalid="ignore"):
+        v = t[None, :, :] - s[:, None, :]
+    check_differences(v)
+    check_not_on_targets(v)
+    if cov is None:
+        return v, np.ones(t.shape[0])
+    return mahalanobis_rescale(v, as_cov(cov, t.shape[0]))

@@ -28,8 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._kernels import normalise, pair_kernel
-from ._validate import ArgumentTypeError, as_bool, as_float_array, as_int, as_points, as_u_max, as_weights, check_weight_memory
-from .bounds import _relative_vectors
+from ._validate import ArgumentTypeError, as_bool, as_float_array, as_int, as_points, as_u_max, as_weights, check_pair_sizes, check_weight_memory, validated_vectors
 
 __all__ = [
     "PairAssignment",
@@ -63,15 +62,6 @@ class PairAssignment:
     n_evaluations: int | None = None
 
 
-def _check_sizes(n: int, n_targets: int) -> None:
-    if n_targets < 1:
-        raise ValueError("there must be at least one target")
-    if n < 2 * n_targets:
-        raise ValueError(
-            f"unique pairs need N >= 2L sensors; got N = {n} sensors for L = {n_targets} targets"
-        )
-
-
 def assignment_value(W, triples) -> float:
     """Total weight ``sum W[i, j, l]`` of an assignment (no feasibility check).
 
@@ -88,7 +78,7 @@ def assignment_value(W, triples) -> float:
 def _geometry(sensors, targets, u_max, cov):
     """Validated rows ``o_l - p_i`` ``(N, L, 2)`` normalised per target, and ``u_max^2`` ``(L,)``
     in the same unit: the input of :func:`obslib._kernels.pair_kernel` (as in ``pair_bounds``)."""
-    v, unit = _relative_vectors(sensors, targets, cov)
+    v, unit = validated_vectors(sensors, targets, cov)
     with np.errstate(over="ignore"):
         u = as_u_max(u_max, v.shape[1]) / unit
     return normalise(v, u)
@@ -274,7 +264,7 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     Parameters
     ----------
     W : array_like, shape (N, N, L), optional
-        Pair weights, symmetric in ``i, j``.
+        Pair weights: finite, non-negative, symmetric in ``i, j`` (the diagonal is ignored).
     sensors, targets, u_max, cov : optional
         Instead of ``W``: the geometry, weighted as :func:`obslib.pair_bounds` does (Theorem 4,
         Mahalanobis with ``cov``), computed on demand so the ``(N, N, L)`` array is never
@@ -306,13 +296,13 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
             raise ValueError("give either W or sensors/targets, not both")
         arr = as_weights(W)
         n, n_targets = arr.shape[0], arr.shape[2]
-        _check_sizes(n, n_targets)
+        check_pair_sizes(n, n_targets)
         return _greedy(_WeightSource(arr), n, n_targets, k)
     if sensors is None or targets is None or u_max is None:
         raise ValueError("give W, or sensors=, targets= and u_max=")
     v, u2 = _geometry(sensors, targets, u_max, cov)  # (N, L, 2) validated and normalised
     n, n_targets = v.shape[0], v.shape[1]
-    _check_sizes(n, n_targets)
+    check_pair_sizes(n, n_targets)
     source = _GeometrySource(v, u2)
     result = _greedy(source, n, n_targets, k)
     return PairAssignment(result.triples, result.value, source.n_evaluations)
@@ -352,7 +342,7 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
         counted = 0
     else:
         raise ValueError("give W, or sensors=, targets= and u_max=")
-    _check_sizes(n, n_targets)
+    check_pair_sizes(n, n_targets)
     s_free = np.arange(n)
     t_free = np.arange(n_targets)
     triples, value = [], 0.0
@@ -403,7 +393,7 @@ def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 <
 def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
     """Weights of the unordered pairs ``i < j`` for every target, as ``(ii, jj, C)``.
 
-    ``C[l, p]`` is ``pair_bounds(...)[ii[p], jj[p], l]`` (one shared kernel, so bitwise equal)
+    ``C[l, p]`` is ``pair_bounds(...)[ii[p], jj[p], l]`` (one shared elementwise kernel on the same rows, so equal)
     with pairs in ``numpy.triu_indices(N, 1)`` order; shape ``(L, P)``, filled from
     :func:`upper_pair_weight_blocks`.
 
@@ -557,7 +547,7 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
 
     arr = as_weights(W)
     n, n_targets = arr.shape[0], arr.shape[2]
-    _check_sizes(n, n_targets)
+    check_pair_sizes(n, n_targets)
     if time_limit is not None:
         if isinstance(time_limit, bool) or not isinstance(time_limit, (int, float, np.integer, np.floating)):
             raise ArgumentTypeError(f"time_limit must be a number of seconds or None, got {time_limit!r}")

@@ -15,16 +15,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._kernels import mahalanobis_rescale, normalise, pair_kernel, pow2_scale
+from ._kernels import normalise, pair_kernel, pow2_scale, rescale
 from ._validate import (
-    as_cov,
     as_float_array,
     as_points,
+    as_stack,
     as_u_max,
-    check_differences,
-    check_distinct,
-    check_not_on_targets,
+    as_u_max_stack,
     check_weight_memory,
+    validated_vectors,
 )
 from .observability import relative_rows
 
@@ -83,7 +82,7 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
     direction and gets the Mahalanobis length ``d_il = sqrt(v^T Sigma_l^{-1} v)``. Feeding these
     vectors to the Theorem 4 eigenvalues gives exactly the tracking experiments' evaluation:
     ``alpha = d_j / d_i`` and ``u_max^2 / d_i^2`` from Mahalanobis distances, ``theta_ji`` the
-    Euclidean angle (``../shared/EXPERIMENTS.md``, "Pair bound as evaluated in the experiments").
+    Euclidean angle, as in the published tracking runs.
 
     Examples
     --------
@@ -92,7 +91,7 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
     >>> relative_vectors([[0, 0], [2, 0]], [[1, 1]], cov=4 * np.eye(2)).tolist()  # lengths / 2
     [[[0.5, 0.5]], [[-0.5, 0.5]]]
     """
-    v, unit = _relative_vectors(sensors, targets, cov)
+    v, unit = validated_vectors(sensors, targets, cov)
     if cov is None:
         return v
     with np.errstate(over="ignore"):
@@ -102,24 +101,6 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
         raise ValueError(f"the Mahalanobis lengths to target {l} overflow (cov of target {l} is "
                          "tiny relative to the distances); pair_bounds handles such scales")
     return out
-
-
-def _relative_vectors(sensors, targets, cov=None):
-    """Validated ``o_l - p_i`` ``(N, L, 2)``, Mahalanobis-rescaled with ``cov``, in units ``(L,)``.
-
-    The true vectors are ``v[:, l] * unit[l]``; ``unit`` is 1 except for a covariance or scene
-    outside the safe range (see :func:`obslib._kernels.mahalanobis_rescale`).
-    """
-    s = as_points(sensors, "sensors")
-    t = as_points(targets, "targets")
-    check_distinct(s)
-    with np.errstate(over="ignore", invalid="ignore"):
-        v = t[None, :, :] - s[:, None, :]
-    check_differences(v)
-    check_not_on_targets(v)
-    if cov is None:
-        return v, np.ones(t.shape[0])
-    return mahalanobis_rescale(v, as_cov(cov, t.shape[0]))
 
 
 def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
@@ -142,6 +123,16 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
     ndarray, shape (N, N, L)
         ``W[i, j, l] = sqrt(lambda_min / (lambda_max + u_max^2))`` for rows
         ``o_l - p_i, o_l - p_j`` (Eq. (9)); symmetric in ``i, j`` and zero on ``i == j``.
+        The same for coordinates and ``u_max`` scaled together by any factor (each target's rows
+        are normalised before anything is squared).
+
+    Raises
+    ------
+    ValueError
+        For bad input (naming the sensor, target or argument), and, before allocating, when the
+        ``(N, N, L)`` array would exceed :data:`obslib._validate.MAX_WEIGHT_BYTES` (1 GiB): the
+        message suggests ``greedy_pair_assignment(sensors=..., targets=..., u_max=...)``, which
+        computes weights on demand.
 
     Examples
     --------
@@ -157,7 +148,7 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
     s = as_points(sensors, "sensors")
     t = as_points(targets, "targets")
     check_weight_memory(s.shape[0], t.shape[0])
-    v, unit = _relative_vectors(s, t, cov)
+    v, unit = validated_vectors(s, t, cov)
     v, u2 = normalise(v, as_u_max(u_max, v.shape[1]) / unit)
     x, y = v[..., 0], v[..., 1]  # (N, L)
     return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2)
@@ -240,25 +231,6 @@ def worst_case_control(sensors, target, u_max) -> np.ndarray:
     return worst_case_controls(relative_rows(sensors, target), float(as_u_max(u_max)))
 
 
-def _stacked_rows(rows) -> np.ndarray:
-    r = as_float_array(rows, "rows")
-    if r.ndim < 2 or r.shape[-1] != 2:
-        raise ValueError(f"rows must have shape (..., N, 2), got {r.shape}")
-    if not np.isfinite(r).all():
-        raise ValueError("rows have a non-finite coordinate")
-    return r
-
-
-def _stacked_u_max(u_max, shape) -> np.ndarray:
-    u = as_float_array(u_max, "u_max")
-    if not np.isfinite(u).all() or (u < 0).any():
-        raise ValueError("u_max must be finite and non-negative")
-    try:
-        return np.broadcast_to(u, shape)
-    except ValueError:
-        raise ValueError(f"u_max must be a scalar or of shape {shape}, got {u.shape}") from None
-
-
 def lower_bounds(rows, u_max) -> np.ndarray:
     """Theorem 1's bound (Eq. (21)) for a stack of scenes, by batched SVD of ``O(o)``.
 
@@ -282,13 +254,13 @@ def lower_bounds(rows, u_max) -> np.ndarray:
     >>> lower_bounds([[[1, 1], [-1, 1]]], 1.0).round(6)
     array([0.816497])
     """
-    r = _stacked_rows(rows)
-    u = _stacked_u_max(u_max, r.shape[:-2])
+    r = as_stack(rows, "rows", 2)
+    u = as_u_max_stack(u_max, r.shape[:-2])
     if r.shape[-2] < 2:
         return np.zeros(r.shape[:-2])
     # the bound does not depend on the unit: bring each scene into the safe range (exact)
     p = pow2_scale(np.abs(r).max(axis=(-2, -1)))
-    r, u = r / p[..., None, None], u / p
+    r, u = rescale(r, p[..., None, None]), rescale(u, p)
     sv = np.linalg.svd(r, compute_uv=False)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         den = np.sqrt(sv[..., 0] ** 2 + u**2)
@@ -307,10 +279,10 @@ def worst_case_controls(rows, u_max) -> np.ndarray:
     >>> worst_case_controls([[[2, 1], [-2, 1]]], 1.0)
     array([[1., 0.]])
     """
-    r = _stacked_rows(rows)
-    u = _stacked_u_max(u_max, r.shape[:-2])
+    r = as_stack(rows, "rows", 2)
+    u = as_u_max_stack(u_max, r.shape[:-2])
     if r.shape[-2]:  # the direction does not depend on the unit: into the safe range (exact)
-        r = r / pow2_scale(np.abs(r).max(axis=(-2, -1)))[..., None, None]
+        r = rescale(r, pow2_scale(np.abs(r).max(axis=(-2, -1)))[..., None, None])
     _, vecs = np.linalg.eigh(np.swapaxes(r, -1, -2) @ r)
     v = vecs[..., :, -1]
     flip = (v[..., 0] < 0) | ((v[..., 0] == 0) & (v[..., 1] < 0))

@@ -52,14 +52,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._kernels import GEMM_BLOCK as _GEMM_BLOCK, matmul_rows, pow2_scale, tr_det
+from ._kernels import pow2_scale, tr_det
 from ._validate import ArgumentTypeError, as_eps, as_float_array, as_int, as_measure_name, as_point, as_rank_rtol
 from .observability import observability_matrix, relative_rows
 
-# Old private names, still imported by modules outside this one (obslib.submodularity imports
-# _tr_det; obslib.teams, and through it obslib.team_study, the checks).
+# Old private name, still imported by a module outside this one (obslib.submodularity).
 _tr_det = tr_det
-_matmul_rows = matmul_rows
 
 __all__ = [
     "MEASURES",
@@ -96,7 +94,7 @@ def _check_name(name: str) -> str:
     return as_measure_name(name, MEASURES)
 
 
-_check_eps = as_eps
+_check_eps = as_eps  # short local names of the shared checks
 _check_rtol = as_rank_rtol
 
 

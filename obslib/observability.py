@@ -14,7 +14,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validate import as_float_array, as_point, as_points, check_distinct, check_not_on_targets
+from ._kernels import gram_parts, inverse_condition, pow2_scale, ratio_from_gram, rescale
+from ._validate import as_float_array, as_point, as_points, as_stack, check_differences, check_distinct, check_not_on_targets
+
+# Old private name, still imported by a module outside this one (obslib.tracking).
+_inverse_condition = inverse_condition
 
 __all__ = [
     "observability_matrix",
@@ -48,7 +52,9 @@ def relative_rows(sensors, target) -> np.ndarray:
     s = as_points(sensors, "sensors")
     o = as_point(target, "target")
     check_distinct(s)
-    rows = o[None, :] - s
+    with np.errstate(over="ignore", invalid="ignore"):
+        rows = o[None, :] - s
+    check_differences(rows[:, None, :])
     check_not_on_targets(rows[:, None, :])
     return rows
 
@@ -83,18 +89,10 @@ def observability_matrix(sensors, target, u=None) -> np.ndarray:
     return np.vstack([rows, as_point(u, "u")])
 
 
-from ._kernels import CLOSED_FORM_MAX_ROWS, gram_parts, inverse_condition, pow2_scale, ratio_from_gram  # noqa: E402
-
-# Old private names, still imported by modules outside this one (obslib.tracking).
-_inverse_condition = inverse_condition
-_gram_parts = gram_parts
-_ratio_from_gram = ratio_from_gram
-
-
 def inverse_condition_number(sensors, target, u=None):
     """Exact inverse condition number ``C^{-1}(O(o, u_o))`` of Eq. (6).
 
-    Computed from the Gram matrix ``O^T O`` in closed form (see ``_inverse_condition``; by SVD
+    Computed from the Gram matrix ``O^T O`` in closed form (see :func:`obslib._kernels.inverse_condition`; by SVD
     for more than eight rows); tests hold both paths to ``numpy.linalg.svd``.
 
     Parameters
@@ -129,25 +127,15 @@ def inverse_condition_number(sensors, target, u=None):
     """
     rows = relative_rows(sensors, target)
     if u is None:
-        return float(_inverse_condition(rows))
+        return float(inverse_condition(rows))
     uu = as_float_array(u, "u")
     if uu.ndim == 1:
-        return float(_inverse_condition(np.vstack([rows, as_point(uu, "u")])))
+        return float(inverse_condition(np.vstack([rows, as_point(uu, "u")])))
     uu = as_points(uu, "u")
     stack = np.concatenate(
         [np.broadcast_to(rows, (uu.shape[0],) + rows.shape), uu[:, None, :]], axis=1
     )
-    return _inverse_condition(stack)
-
-
-def _as_stack(x, name: str, min_ndim: int) -> np.ndarray:
-    arr = as_float_array(x, name)
-    if arr.ndim < min_ndim or arr.shape[-1] != 2:
-        raise ValueError(f"{name} must have shape (..., {'N, ' if min_ndim > 1 else ''}2), "
-                         f"got {arr.shape}")
-    if not np.isfinite(arr).all():
-        raise ValueError(f"{name} has a non-finite coordinate")
-    return arr
+    return inverse_condition(stack)
 
 
 def inverse_condition_numbers(rows, u=None) -> np.ndarray:
@@ -178,16 +166,16 @@ def inverse_condition_numbers(rows, u=None) -> np.ndarray:
     >>> inverse_condition_numbers([[[1, 1], [-1, 1]]], [[[1, 0]]]).round(6)
     array([[0.816497]])
     """
-    r = _as_stack(rows, "rows", 2)
+    r = as_stack(rows, "rows", 2)
     p = pow2_scale(np.abs(r).max(axis=(-2, -1), initial=0.0))  # per scene, into the safe range
     if u is not None:
-        uu = _as_stack(u, "u", 1)
+        uu = as_stack(u, "u", 1)
         single = uu.ndim == r.ndim - 1
         if single:
             uu = uu[..., None, :]
         p = np.maximum(p, pow2_scale(np.abs(uu).max(axis=(-2, -1), initial=0.0)))
-        uu = uu / p[..., None, None]
-    r = r / p[..., None, None]
+        uu = rescale(uu, p[..., None, None])
+    r = rescale(r, p[..., None, None])
     det, tr = gram_parts(r)
     if u is not None:
         ux, uy = uu[..., 0][..., None], uu[..., 1][..., None]  # (..., K, 1)
@@ -226,7 +214,7 @@ def inverse_condition_numbers_polar(rows, radii, angles) -> np.ndarray:
     array([[[1.      ],
             [0.816497]]])
     """
-    r = _as_stack(rows, "rows", 2)
+    r = as_stack(rows, "rows", 2)
     if r.ndim != 3:
         raise ValueError(f"rows must have shape (S, N, 2), got {r.shape}")
     rho = as_float_array(radii, "radii")
@@ -238,7 +226,7 @@ def inverse_condition_numbers_polar(rows, radii, angles) -> np.ndarray:
         raise ValueError("radii must be finite and non-negative, angles finite")
     p = np.maximum(pow2_scale(np.abs(r).max(axis=(-2, -1), initial=0.0)),
                    pow2_scale(rho.max(axis=1, initial=0.0)))  # per scene, into the safe range
-    r, rho = r / p[:, None, None], rho / p[:, None]
+    r, rho = rescale(r, p[:, None, None]), rescale(rho, p[:, None])
     det0, tr0 = gram_parts(r)
     c = r[:, None, :, 0] * np.sin(phi)[None, :, None] - r[:, None, :, 1] * np.cos(phi)[None, :, None]
     q = np.einsum("sak,sak->sa", c, c)  # (S, A): sum_k (r_k x e_phi)^2

@@ -1,6 +1,6 @@
 """Named parameter sets for the notebooks and the claims ledger.
 
-``paper`` holds each notebook's defaults: the paper's parameters (``../shared/EXPERIMENTS.md``)
+``paper`` holds each notebook's defaults: the paper's parameters (Sec. V)
 and, for audits the paper does not have, our chosen sizes. It must equal the notebook's tagged
 ``parameters`` cell (a test checks this). ``quick`` shrinks the sizes for fast previews and for
 the ledger in tests. A profile lists only the parameters it changes; the rest are the defaults.

@@ -18,9 +18,17 @@ from itertools import product
 import numpy as np
 
 from ._kernels import pow2_scale
-from ._validate import as_float_array, as_points
+from ._validate import as_eps, as_float_array, as_measure_name, as_points, as_rank_rtol, check_maximisable
 from .bounds import relative_vectors
-from .measures import RANK_RTOL, _check_eps, _check_name, _check_rtol, _from_tr_det, measure_from_vectors, subset_masks
+from .measures import MEASURES, RANK_RTOL, _from_tr_det, measure_from_vectors, subset_masks
+
+# Old private names of the checks, still imported by obslib.team_study.
+_check_eps = as_eps
+_check_rtol = as_rank_rtol
+
+
+def _check_name(name):
+    return as_measure_name(name, MEASURES)
 
 __all__ = ["greedy_team_assignment", "greedy_team_counts", "optimal_team_assignment", "team_value", "MAXIMISABLE"]
 
@@ -32,17 +40,9 @@ MAX_ASSIGNMENTS = 2_000_000
 
 
 def _check_measure(name: str, eps: float) -> None:
-    _check_name(name)
-    if name not in MAXIMISABLE:
-        raise ValueError(
-            f"measure {name!r} decreases as sensors are added; maximise one of {MAXIMISABLE} "
-            "(e.g. 'neg_trace_inverse' instead of 'trace_inverse')"
-        )
-    if name in ("logdet", "neg_trace_inverse") and eps <= 0:
-        raise ValueError(
-            f"measure {name!r} is infinite for teams of fewer than two sensors unless eps > 0; "
-            "pass a prior eps > 0"
-        )
+    """The measure name is known and maximisable (kept here: obslib.team_study imports it)."""
+    as_measure_name(name, MEASURES)
+    check_maximisable(name, eps, MAXIMISABLE)
 
 
 def _rows(sensors, targets, u):

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import contextlib
 import io
+import tempfile
+from pathlib import Path
 from unittest import mock
 
 import numpy as np
@@ -20,7 +22,10 @@ from hypothesis import strategies as st
 import obslib as ob
 from obslib import teams as tm
 
-FUZZ = settings(max_examples=40, deadline=2000, suppress_health_check=[HealthCheck.too_slow])
+# deadline: far above any example's time (milliseconds) even on a loaded machine, far below a hang
+FUZZ = settings(max_examples=40, deadline=10_000, suppress_health_check=[HealthCheck.too_slow])
+
+TMP = Path(tempfile.mkdtemp(prefix="obslib-fuzz-"))  # the runner's outputs, outside the repository
 
 SCALES = [1e-300, 1e-170, 1e-150, 1e-20, 1.0, 1e20, 1e150, 1e170, 1e300]
 
@@ -295,7 +300,7 @@ argv_words = st.sampled_from(["--profile", "paper", "quick", "nosuch", "--id", "
                               "05", "01", "99", "--in-place", "book", "scaling", "assignment", "[1]", ""])
 
 
-@settings(max_examples=60, deadline=2000)
+@settings(max_examples=60, deadline=10_000)
 @given(st.lists(argv_words, max_size=6))
 def test_run_cli_parsing(argv):
     from obslib import run
@@ -303,8 +308,8 @@ def test_run_cli_parsing(argv):
     ran = []
     with mock.patch.object(run, "execute", lambda *a, **k: ran.append(a) or 0.0), \
             mock.patch.object(run, "precompile", lambda: None), \
-            mock.patch.object(run, "TIMES_FILE", run.ROOT / "_build" / "fuzz_times.json"), \
-            mock.patch.object(run, "EXECUTION_PAGE", run.ROOT / "_build" / "fuzz_execution.md"), \
+            mock.patch.object(run, "TIMES_FILE", TMP / "fuzz_times.json"), \
+            mock.patch.object(run, "EXECUTION_PAGE", TMP / "fuzz_execution.md"), \
             contextlib.redirect_stderr(io.StringIO()), contextlib.redirect_stdout(io.StringIO()):
         try:
             assert run.main(argv) == 0
@@ -312,7 +317,7 @@ def test_run_cli_parsing(argv):
             assert exc.code == 2 and not ran  # argparse error, before anything ran
 
 
-@settings(max_examples=60, deadline=2000)
+@settings(max_examples=60, deadline=10_000)
 @given(st.lists(argv_words, max_size=6))
 def test_claims_and_bench_cli_parsing(argv):
     from obslib.bench import parse_args as bench_args
@@ -455,3 +460,17 @@ def test_unit_invariant_quantities_do_not_depend_on_the_unit(c):
         assert ob.greedy_team_assignment(S * c, T * c, name, e) == ob.greedy_team_assignment(S, T, name, eps)
         assert ob.optimal_team_assignment(small_S * c, T * c, name, e)[0] == \
             ob.optimal_team_assignment(small_S, T, name, eps)[0]
+
+
+def test_coordinates_whose_difference_overflows_are_named():
+    with pytest.raises(ValueError, match="sensor 0 and target 0 are too far apart"):
+        ob.lower_bound([[-1.7e308, 0.0], [0.0, 1.0]], [1.7e308, 0.0], 1.0)
+    with pytest.raises(ValueError, match="sensor 1 and target 0 are too far apart"):
+        ob.pair_bounds([[0.0, 1.0], [-1.7e308, 0.0]], [[1.7e308, 0.0]], 1.0)
+
+
+def test_integers_beyond_the_float_range_are_named():
+    with pytest.raises(ValueError, match="sensors has an integer beyond the float range"):
+        ob.pair_bounds([[0, 10**400], [1, 1]], [[2, 2]], 1.0)
+    with pytest.raises(ValueError, match="u_max has an integer beyond the float range"):
+        ob.lower_bound([[0, 0], [1, 1]], [2, 2], 10**400)

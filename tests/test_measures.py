@@ -317,6 +317,8 @@ def test_measures_from_vectors_is_bitwise_measure_from_vectors(with_u):
 
 
 def test_blocked_matrix_product_equals_the_product_to_rounding():
+    from obslib._kernels import matmul_rows
+
     # _matmul_rows multiplies non-negative data (squared lengths, squared cross products) by 0/1
     # masks, as its callers do. Each entry is then a sum of `inner` non-negative terms; any order
     # of summation (BLAS picks it by CPU, thread count and block shape) is within
@@ -329,7 +331,7 @@ def test_blocked_matrix_product_equals_the_product_to_rounding():
         exact = np.einsum("rk,kc->rc", x.astype(np.longdouble), w.astype(np.longdouble))
         rtol = inner * np.finfo(float).eps
         for ww in (w, w.T.copy().T):
-            got = me._matmul_rows(x, ww)
+            got = matmul_rows(x, ww)
             assert got.shape == (rows, cols)
             assert (np.abs(got - exact) <= rtol * exact).all()
 

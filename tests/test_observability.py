@@ -47,7 +47,7 @@ def test_control_perpendicular_and_equal_length_is_perfectly_conditioned():
 @pytest.mark.parametrize("m", [2, 3, 5, 8, 9, 12])
 def test_closed_form_inverse_condition_equals_svd(m):
     """The Cauchy-Binet closed form (m <= 8 rows) and the SVD path agree with numpy's SVD."""
-    from obslib.observability import _inverse_condition
+    from obslib._kernels import inverse_condition as _inverse_condition
 
     rng = np.random.default_rng(m)
     stack = rng.normal(size=(500, m, 2)) * 10.0 ** rng.uniform(-3, 4, size=(500, 1, 1))

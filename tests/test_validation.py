@@ -1,4 +1,4 @@
-"""Bad input raises ValueError naming what is wrong (DESIGN.md); legal edge cases do not."""
+"""Bad input raises ValueError naming what is wrong; legal edge cases do not."""
 
 import numpy as np
 import pytest
