@@ -10,9 +10,8 @@ from obslib.bound_tables import lower_bound_set_function, lower_bound_table, low
 from obslib.measures import subset_masks
 
 SETTINGS = settings(derandomize=True, deadline=None, max_examples=60, database=None)
-R3 = np.sqrt(3.0)
-T1 = np.array([R3, 1.0])
-CASE1 = np.array([[0, 0], [2 * R3, -9], [R3, 3]], dtype=float)
+SENSORS = np.array([[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]])
+TARGET = np.array([1.0, 1.0])
 
 coord = st.floats(-10.0, 10.0, allow_nan=False, allow_infinity=False)
 
@@ -42,8 +41,8 @@ def test_tables_and_set_function_agree():
 @pytest.mark.parametrize(
     "call, match",
     [
-        (lambda: lower_bound_table(CASE1, T1, -1.0), "u_max"),
-        (lambda: lower_bound_table(CASE1, CASE1[0], 1.0), "coincides with target"),
+        (lambda: lower_bound_table(SENSORS, TARGET, -1.0), "u_max"),
+        (lambda: lower_bound_table(SENSORS, SENSORS[0], 1.0), "coincides with target"),
     ],
 )
 def test_bad_input_raises(call, match):

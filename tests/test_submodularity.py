@@ -12,10 +12,6 @@ import obslib.submodularity as sm
 from obslib.measures import subset_masks
 
 SETTINGS = settings(derandomize=True, deadline=None, max_examples=60, database=None)
-R3 = np.sqrt(3.0)
-T1 = np.array([R3, 1.0])
-CASE1 = np.array([[0, 0], [2 * R3, -9], [R3, 3]], dtype=float)
-CASE2 = np.array([[0, 0], [2 * R3, 0], [R3, 0.1], [R3, 3]], dtype=float)
 
 
 def subsets(n, min_size=0):

@@ -44,6 +44,7 @@ __all__ = [
     "theta_derivative_audit",
     "AlphaDerivativeAudit",
     "alpha_derivative_audit",
+    "alpha_star_thetas",
     "AlphaStarAudit",
     "alpha_star_audit",
     "WeylAudit",
@@ -563,6 +564,20 @@ def alpha_derivative_audit(n_rational_points: int, seed: int) -> AlphaDerivative
     )
 
 
+def alpha_star_thetas(n_theta: int) -> np.ndarray:
+    r"""The angles on which :math:`\alpha^*` is audited and plotted: ``n_theta`` interior points of
+    :math:`(0, \pi)`, without those within :math:`10^{-3}` of :math:`\cos\theta = 0`.
+
+    Examples
+    --------
+    >>> (alpha_star_thetas(7) / np.pi).round(4)
+    array([0.125, 0.25 , 0.375, 0.625, 0.75 , 0.875])
+    """
+    n = positive_int("n_theta", n_theta)
+    theta = np.pi * (np.arange(1, n + 1) / (n + 1))
+    return theta[np.abs(np.cos(theta)) > 1e-3]
+
+
 @dataclass(frozen=True)
 class AlphaStarAudit:
     """The maximising ``alpha`` for fixed ``theta``: numeric, closed form, brute force."""
@@ -591,9 +606,7 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
     from .. import symbolic as sy
 
     qs = tuple(float(positive_float("u_over_d", q, allow_zero=True)) for q in u_over_d)
-    n = positive_int("n_theta", n_theta)
-    theta = np.pi * (np.arange(1, n + 1) / (n + 1))
-    theta = theta[np.abs(np.cos(theta)) > 1e-3]
+    theta = alpha_star_thetas(n_theta)
     coarse = np.linspace(0.0, 10.0, 1001)
     local = 1e-4 * np.arange(-50, 51)
     closed_vs_num = gap = 0.0
