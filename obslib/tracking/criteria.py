@@ -344,8 +344,9 @@ def icn_scores(hx, hy, control, ii, jj) -> np.ndarray:
 
 
 def choose_pairs(setup, strategy: str, xhat, cov):
-    """The pair a strategy picks at estimates ``xhat`` ``(B, 2)`` with covariances ``cov``
-    ``(B, 2, 2)``, validated (:class:`PairChooser` with one run per estimate).
+    """The pair one of the paper's :data:`STRATEGIES` picks at estimates ``xhat`` ``(B, 2)``
+    with covariances ``cov`` ``(B, 2, 2)``, validated (:class:`PairChooser` with one run per
+    estimate).
 
     Returns
     -------
@@ -354,11 +355,13 @@ def choose_pairs(setup, strategy: str, xhat, cov):
     bound : ndarray, shape (B,)
         The chosen pair's bound (the setup's metric).
     """
-    from .._validate import as_cov, as_points
+    from .._validate import as_points
+    from .setup import check_covariances, check_setup
 
-    check_strategy(strategy)
+    check_setup(setup)
+    check_strategy(strategy, STRATEGIES)
     x = as_points(np.atleast_2d(np.asarray(xhat, dtype=float)), "xhat")
-    c = as_cov(cov, x.shape[0]) if setup.metric == "mahalanobis" else np.broadcast_to(
+    c = check_covariances(cov, x.shape[0]) if setup.metric == "mahalanobis" else np.broadcast_to(
         np.eye(2), (x.shape[0], 2, 2))
     b = x.shape[0]
     cand = np.broadcast_to(candidates(setup, strategy), (b, len(pair_index(setup.n_sensors)[0])))

@@ -31,6 +31,7 @@ __all__ = [
     "check_setup",
     "check_noise",
     "check_seed",
+    "check_covariances",
 ]
 
 METRICS = ("mahalanobis", "euclidean")
@@ -121,7 +122,10 @@ def _check_spd_any_scale(m: np.ndarray, name: str) -> None:
     top = float(np.abs(m).max())
     if top == 0:
         raise ValueError(f"{name} is not positive definite: {m.tolist()}")
-    check_spd2(m / top, name)  # scaled: a determinant of any scale stays representable
+    try:
+        check_spd2(m / top, name)  # scaled: a determinant of any scale stays representable
+    except ValueError as exc:
+        raise ValueError(f"{str(exc).split(': [')[0]}: {m.tolist()}") from None
     if top > MAX_COV_SCALE:
         raise ValueError(
             f"{name} has entries of scale {top:.3g}; the filter's innovation covariance "
@@ -359,6 +363,27 @@ def check_seed(seed, name: str = "seed") -> int:
     if seed < 0:
         raise ValueError(f"{name} must be a non-negative integer, got {seed}")
     return int(seed)
+
+
+def check_covariances(cov, n: int, name: str = "cov") -> np.ndarray:
+    """Covariances as an ``(n, 2, 2)`` array (one ``(2, 2)`` is shared), each finite, symmetric
+    and positive definite at any scale (checked divided by its largest entry, so that a
+    determinant that underflows does not reject it), or a named ValueError."""
+    c = _real_array(cov, name, "real 2x2 matrices")
+    if c.shape == (2, 2):
+        c = np.broadcast_to(c, (n, 2, 2))
+    if c.shape != (n, 2, 2):
+        raise ValueError(f"{name} must have shape (2, 2) or ({n}, 2, 2), got {c.shape}")
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        top = np.abs(c).max(axis=(1, 2))
+        m = c / top[:, None, None]
+        ok = (np.isfinite(c).all(axis=(1, 2)) & (top > 0)
+              & (np.abs(m[:, 0, 1] - m[:, 1, 0]) <= 1e-12)
+              & (m[:, 0, 0] > 0) & (m[:, 0, 0] * m[:, 1, 1] - m[:, 0, 1] * m[:, 1, 0] > 0))
+    if not ok.all():
+        k = int(np.flatnonzero(~ok)[0])
+        _check_spd_any_scale(c[k], f"{name} {k}")
+    return c
 
 
 def noise_table(setup: TrackingSetup, seed: int = 0) -> np.ndarray:
