@@ -332,6 +332,16 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
     -------
     dict
         ``{name: BatchResult}`` in the order of ``arms``.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=30)
+    >>> eu = setup.replace(metric="euclidean")
+    >>> arms = {"bound": (setup, "best-pair"), "eu": (eu, "best-pair"), "d": (setup, "d-optimal")}
+    >>> runs = tracking.simulate_many(arms, seeds=[0, 1, 2])
+    >>> runs["eu"].pairs.shape, runs["eu"].seeds
+    ((3, 30, 2), (0, 1, 2))
     """
     arms = _check_arms(arms)
     seeds, given = _check_seeds(seeds, noise)
@@ -400,6 +410,14 @@ def simulate_batch(setup: TrackingSetup, strategy: str, seeds=None, noise=None) 
         One run per seed with ``noise_table(setup, seed)``.
     noise : array_like, shape (B, steps, N), optional
         Explicit noise tables instead of seeds.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> b = tracking.simulate_batch(setup, "best-pair", seeds=[0, 1])
+    >>> b.n_runs, b.run(0).pairs[:2].tolist()
+    (2, [[3, 5], [3, 5]])
     """
     check_strategy(strategy)
     return simulate_many({strategy: (setup, strategy)}, seeds=seeds, noise=noise)[strategy]
@@ -432,6 +450,16 @@ def monte_carlo(
     -------
     dict
         ``{strategy: BatchResult}`` with arrays of leading size ``n_seeds``.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> mc = tracking.monte_carlo(tracking.PAPER_CIRCLE.replace(steps=30), 4,
+    ...                           ["best-pair", "d-optimal", "random"])
+    >>> {name: r.pairs.shape for name, r in mc.items()}
+    {'best-pair': (4, 30, 2), 'd-optimal': (4, 30, 2), 'random': (4, 30, 2)}
+    >>> bool((mc["random"].noise == mc["best-pair"].noise).all())  # common random numbers
+    True
     """
     n_seeds = _count(n_seeds, "n_seeds")
     batch = _count(batch, "batch")

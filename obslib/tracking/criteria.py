@@ -297,7 +297,14 @@ def pair_draws(seed: int, steps: int, n_pairs: int) -> np.ndarray:
     """The ``"random"`` chooser's picks for the ``steps + 1`` choices of a run (the last is the
     pair after the last step): pair indices uniform on ``0 .. n_pairs - 1``, drawn from
     ``numpy.random.default_rng([1, seed])``, a stream apart from the run's noise table
-    (``default_rng(seed)``), so the noise stays common to all strategies."""
+    (``default_rng(seed)``), so the noise stays common to all strategies.
+
+    Examples
+    --------
+    >>> d = pair_draws(0, 314, 15)
+    >>> d.shape, bool(d.min() >= 0 and d.max() < 15)
+    ((315,), True)
+    """
     return np.random.default_rng([1, int(seed)]).integers(0, n_pairs, size=steps + 1)
 
 
@@ -354,6 +361,14 @@ def choose_pairs(setup, strategy: str, xhat, cov):
         0-based sensor indices, ``pairs[:, 0] < pairs[:, 1]``.
     bound : ndarray, shape (B,)
         The chosen pair's bound (the setup's metric).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.tracking import PAPER_CIRCLE
+    >>> pairs, bound = choose_pairs(PAPER_CIRCLE, "best-pair", [[5.5, 3.5]], [0.5 * np.eye(2)])
+    >>> pairs.tolist(), bound.round(4).tolist()
+    ([[3, 5]], [0.8736])
     """
     from .._validate import as_points
     from .setup import check_covariances, check_setup

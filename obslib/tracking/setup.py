@@ -55,6 +55,11 @@ def paper_controls(u_max: float, n_angles: int = 63, dphi: float = 0.1) -> np.nd
     Returns
     -------
     ndarray, shape (n_angles + 1, 2)
+
+    Examples
+    --------
+    >>> paper_controls(0.1).shape
+    (64, 2)
     """
     phi = dphi * np.arange(n_angles)
     ring = float(u_max) * np.column_stack([np.cos(phi), np.sin(phi)])
@@ -338,6 +343,11 @@ def setup_from_params(base: TrackingSetup, params: dict) -> TrackingSetup:
 
     The notebooks and the claims ledger build their setups with this, so both run the same
     experiment for the same parameters (``q``, ``r``, ``p0`` are multiples of :math:`I`).
+
+    Examples
+    --------
+    >>> setup_from_params(PAPER_CIRCLE, {"q": 0.2, "n_seeds": 5}).Q
+    ((0.2, 0.0), (0.0, 0.2))
     """
     check_setup(base)
     changes = {PARAM_FIELDS[k]: v for k, v in params.items() if k in PARAM_FIELDS}
@@ -357,7 +367,13 @@ def check_setup(setup, what: str = "setup") -> "TrackingSetup":
 
 
 def check_seed(seed, name: str = "seed") -> int:
-    """A seed as an ``int`` (a non-negative integer, not a bool), or a named error."""
+    """A seed as an ``int`` (a non-negative integer, not a bool), or a named error.
+
+    Examples
+    --------
+    >>> check_seed(3)
+    3
+    """
     if isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (int, np.integer)):
         raise TypeError(f"{name} must be a non-negative integer, got {seed!r}")
     if seed < 0:
@@ -391,6 +407,11 @@ def noise_table(setup: TrackingSetup, seed: int = 0) -> np.ndarray:
 
     Drawn once from ``numpy.random.default_rng(seed)`` as ``normal(0, noise_std)``, so every
     strategy sees the same realisation (noise common to all strategies).
+
+    Examples
+    --------
+    >>> noise_table(PAPER_CIRCLE, 0).shape
+    (315, 6)
     """
     check_setup(setup)
     rng = np.random.default_rng(check_seed(seed))
