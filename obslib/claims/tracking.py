@@ -67,7 +67,7 @@ def _r(x, n=3):
     statement="The published run: pair changes 148 (strategy 1) and 102 (partner of s2, strategy "
     "2) of 314; mean bound 0.73/0.49/0.27, mean error 0.16/0.19/0.22, mean trace(Sigma) "
     "0.073/0.140/0.217 for strategies 1/2/3.",
-    paper="Figure data of the published run (EXPERIMENTS.md).",
+    paper="Figure data of the published run (the authors' saved figure data).",
     notebook=NB5,
 )
 def _fig6_data(profile: str) -> Finding:
@@ -420,7 +420,7 @@ def _fig7_switch(profile: str) -> Finding:
     where="Sec. V-B, Fig. 7 (published run)",
     statement="The published adversarial run: the sensors' bound averages about 0.79 and the "
     "pair switches at 306 of 314 transitions.",
-    paper="Figure data of the published run (EXPERIMENTS.md).",
+    paper="Figure data of the published run (the authors' saved figure data).",
     notebook=NB6,
 )
 def _fig7_data(profile: str) -> Finding:

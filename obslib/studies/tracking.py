@@ -101,7 +101,13 @@ def best_partners(ps: dict) -> dict:
 def stretches(mask, first: int = 1, min_length: int = 1) -> list:
     """The maximal runs of consecutive ``True`` in ``mask``, as ``(start, end)`` labels
     (inclusive; entry ``m`` of ``mask`` has the label ``first + m``), at least ``min_length``
-    long."""
+    long.
+
+    Examples
+    --------
+    >>> stretches([True, True, False, True], first=1)
+    [(1, 2), (4, 4)]
+    """
     m = np.asarray(mask, dtype=bool).ravel()
     edge = np.diff(np.concatenate([[0], m.astype(np.int8), [0]]))
     starts, ends = np.flatnonzero(edge == 1), np.flatnonzero(edge == -1) - 1
@@ -119,7 +125,16 @@ def _window_mask(size: int, window) -> np.ndarray:
 def window_rates(switched, window=K50_WINDOW) -> tuple:
     """Mean of a per-transition series (a switch rate, or one run's ``switched``) over the
     transitions ``k -> k + 1`` with ``lo <= k < hi`` of ``window = (lo, hi)``, and over the
-    others: ``(inside, outside)``."""
+    others: ``(inside, outside)``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> switched = np.zeros(100)
+    >>> switched[29:69] = 1  # the transitions k -> k + 1 for k = 30 .. 69
+    >>> window_rates(switched, (30, 70))
+    (1.0, 0.0)
+    """
     r = np.asarray(switched, dtype=float)
     win = _window_mask(r.size, window)
     return float(r[win].mean()), float(r[~win].mean())
