@@ -439,3 +439,26 @@ def test_dead_links_finds_missing_files_and_anchors(tmp_path):
     )
     _ids.cache_clear()
     assert dead_links(tmp_path, "sub/a.html") == ["#here", "../b.html#nowhere", "../c.html"]
+
+
+def test_ledger_ids_on_pages_link_to_their_report_entries(book):
+    """Inline code naming a claim of the ledger links to the claim's entry in the report."""
+    from obslib.claims import registry
+    from obslib.claims._ledger import ALIASES
+
+    ids = set(registry()) | set(ALIASES)
+    code = re.compile(r'(<a [^>]*href="([^"]*)"[^>]*>)?<code class="docutils literal notranslate">'
+                      r'<span class="pre">([a-z0-9-]+)</span></code>')
+    unlinked, n = [], 0
+    for page in pages(book):
+        rel = page.relative_to(book).as_posix()
+        if rel == "book/report.html" or "/_" in rel:
+            continue
+        for m in code.finditer(page.read_text(errors="replace")):
+            if m.group(3) not in ids:
+                continue
+            n += 1
+            if not (m.group(2) or "").endswith(f"report.html#claim-{m.group(3)}"):
+                unlinked.append(f"{rel}: {m.group(3)}")
+    assert n > 20, "no ledger id found on the pages: the check checks nothing"
+    assert not unlinked, "\n".join(unlinked)
