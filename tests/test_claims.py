@@ -156,6 +156,17 @@ def test_typeset_numbers_sets_and_long_formulas():
     frac = r"$\dfrac{a = b}{c}$"
     assert rep.typeset(frac) == frac
     assert rep.typeset(r"$|x|$ and a | b") == r"$\vert x\vert $ and a \| b"
+    assert rep.typeset("`s1 < 1e-12` and s1") == "`s1 < 1e-12` and $s_1$"  # code stays code
+
+
+def test_committed_report_links_to_every_label_the_notebooks_define(records):
+    committed = (ROOT / "book" / "report.md").read_text()
+    defined = rep.notebook_labels()
+    for r in records.values():
+        if r.label in defined:
+            assert f"](#{r.label})" in committed, f"book/report.md is stale for {r.label}"
+        else:
+            assert f"](../notebooks/{r.notebook}.ipynb)" in committed
 
 
 def test_report_anchors_links_and_markers(records):
@@ -196,3 +207,15 @@ def test_committed_report_is_the_paper_profile_and_the_intro_includes_it():
     for start, end in rep.MARKERS.values():
         assert start in committed and end in committed
         assert f':start-after: "{start}"' in intro and f':end-before: "{end}"' in intro
+
+
+def test_notebook_labels_reads_myst_targets_of_markdown_cells(tmp_path):
+    import json
+
+    nb = {"cells": [
+        {"cell_type": "markdown", "source": ["(thm1-evidence)=\n", "## Audit\n", "text (not)= here\n"]},
+        {"cell_type": "code", "source": ["(code-label)=\n"]},
+        {"cell_type": "markdown", "source": "(a-b)=\n(c)=\n### H"},
+    ]}
+    (tmp_path / "x.ipynb").write_text(json.dumps(nb))
+    assert rep.notebook_labels(tmp_path) == {"thm1-evidence", "a-b", "c"}

@@ -46,7 +46,7 @@ the printed formula is wrong. The parameters of every experiment are on the
 `python -m obslib.claims --id thm1`.
 """
 
-_MATH = re.compile(r"(\$\$.*?\$\$|\$[^$]+\$)", re.S)
+_MATH = re.compile(r"(\$\$.*?\$\$|\$[^$]+\$|`[^`]*`)", re.S)
 _SCI = re.compile(r"(?<![\w.$])(<\s*)?(\d+(?:\.\d+)?)e([+-]?)0*(\d+)\b")
 _SET = re.compile(r"\{(s\d(?:\s*,\s*s\d)*)\}")
 _SENSOR = re.compile(r"(?<![\w$\\{])s(\d)\b")
@@ -124,7 +124,9 @@ def typeset(text: str) -> str:
     parts = _MATH.split(" ".join(str(text).split()))
     out = []
     for i, part in enumerate(parts):
-        if i % 2:  # math
+        if i % 2 and part.startswith("`"):  # inline code, verbatim
+            out.append(part.replace("|", r"\|"))
+        elif i % 2:  # math
             part = part.replace("|", r"\vert ")
             out.append(part if part.startswith("$$") else _split_math(part))
         else:
