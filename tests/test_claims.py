@@ -1,5 +1,7 @@
 """The claims ledger: structure, and each Section III status against recomputed evidence."""
 
+import re
+
 import numpy as np
 import pytest
 
@@ -100,3 +102,120 @@ def test_report_lists_every_claim(records):
         assert f"`{cid}`" in committed, f"book/report.md is stale: no {cid} (run make book)"
     for cid in claims.REQUIRED_IDS:
         assert f"`{cid}`" in committed, f"required id {cid} neither in the table nor listed as missing"
+
+
+# ------------------------------------------------------------------ the report as a reader sees it
+
+from obslib.claims import report as rep  # noqa: E402
+from obslib.claims._ledger import ALIASES  # noqa: E402
+
+#: ASCII stand-ins for mathematics that the ledger's texts must not contain outside ``$...$``.
+ASCII_MATH = re.compile(
+    r"\*\*|\bsqrt\(|\bsigma_|\blambda_|\balpha\b|\btheta\b|C\^-1|>=|<=|\+-|-\+|\|\||\bu_max\b|"
+    r"\bd_io\b|\bO\^T\b|\btrace\(|\blog det\b|\beps\b|\bomega\("
+)
+
+
+def _outside_math(text):
+    return "".join(re.split(r"\$[^$]+\$", text))
+
+
+def test_ledger_texts_are_myst_with_math_in_dollars(records):
+    for r in records.values():
+        for field in ("title", "where", "statement", "paper", "ours"):
+            text = getattr(r, field)
+            assert text.count("$") % 2 == 0, f"{r.id}.{field}: unbalanced $ in {text!r}"
+            plain = _outside_math(text)
+            bad = ASCII_MATH.search(plain)
+            assert not bad, f"{r.id}.{field}: ASCII math {bad.group(0)!r} in {plain!r}"
+            assert "|" not in plain, f"{r.id}.{field}: a bare | would split a table row"
+            # no file outside the book (an upper-case notes file such as NOTES.md) is cited
+            assert not re.search(r"\b[A-Z_]+\.md\b", text), f"{r.id}.{field}: {text!r}"
+
+
+def test_every_claim_has_a_one_line_title_and_an_evidence_label(records):
+    labels = [r.label for r in records.values()]
+    assert len(set(labels)) == len(labels)
+    for r in records.values():
+        assert r.title and "\n" not in r.title and len(_outside_math(r.title)) < 120, r.id
+        assert re.fullmatch(r"[a-z0-9-]+", r.label), r.label
+
+
+def test_typeset_numbers_sets_and_long_formulas():
+    assert rep.typeset("difference < 1e-12.") == "difference $< 10^{-12}$."
+    assert rep.typeset("ranges over [4.5e-07, 0.99]") == r"ranges over [$4.5 \times 10^{-7}$, 0.99]"
+    assert rep.typeset("adding s2 to {s1, s3}") == r"adding $s_2$ to $\{s_1, s_3\}$"
+    long = r"$\omega(\{s_1,s_2,s_3\}) - \omega(\{s_1,s_2\}) = 0.3310 - 0.5345 = -0.2035$"
+    pieces = re.findall(r"\$[^$]+\$", rep.typeset(long))
+    assert len(pieces) > 2 and pieces[-2:] == ["$= 0.3310 - 0.5345$", "$= -0.2035$"]
+    assert all(len(p) < 45 for p in pieces)
+    # the pieces put back together are the formula
+    joined = " ".join(p[1:-1].replace("{} ", "") for p in pieces)
+    assert joined.split() == long[1:-1].split()
+    # never split inside braces or an environment
+    frac = r"$\dfrac{a = b}{c}$"
+    assert rep.typeset(frac) == frac
+    assert rep.typeset(r"$|x|$ and a | b") == r"$\vert x\vert $ and a \| b"
+    assert rep.typeset("`s1 < 1e-12` and s1") == "`s1 < 1e-12` and $s_1$"  # code stays code
+
+
+def test_committed_report_links_to_every_label_the_notebooks_define(records):
+    committed = (ROOT / "book" / "report.md").read_text()
+    defined = rep.notebook_labels()
+    for r in records.values():
+        if r.label in defined:
+            assert f"](#{r.label})" in committed, f"book/report.md is stale for {r.label}"
+        else:
+            assert f"](../notebooks/{r.notebook}.ipynb)" in committed
+
+
+def test_report_anchors_links_and_markers(records):
+    recs = list(records.values())
+    some = recs[0]
+    text = claims.render_report(recs, "quick", labels={some.label})
+    for r in recs:
+        assert f"\n(claim-{r.id})=\n" in text
+        assert f"](#claim-{r.id})" in text  # the table links to the entry
+    for old in ALIASES:
+        assert f"\n(claim-{old})=\n" in text, "a renamed id keeps its anchor"
+    # the evidence goes to the label when the notebook defines it, else to the notebook
+    assert f"](#{some.label})" in text
+    other = recs[1]
+    assert f"](#{other.label})" not in text
+    assert f"](../notebooks/{other.notebook}.ipynb)" in text
+    for start, end in rep.MARKERS.values():
+        assert text.count(start) == 1 and text.count(end) == 1
+        assert text.index(start) < text.index(end)
+    # no paragraph line that Markdown would read as a list item, a heading or bold by accident
+    body = text.split("## Claims in detail", 1)[1]
+    for line in body.splitlines():
+        assert not re.match(r"^\s*([+*]|-(?!\s\*))\s", line), line
+        assert "**" not in _outside_math(line).replace("**Claim.**", "").replace(
+            "**The paper.**", "").replace("**Ours.**", "").replace(f"**{'partly'}**", "").replace(
+            "**refuted**", "").replace("**untestable**", ""), line
+
+
+def test_aliases_resolve_to_the_renamed_claims():
+    for old, new in ALIASES.items():
+        assert [r.id for r in claims.evaluate("quick", ids=[old])] == [new]
+
+
+def test_committed_report_is_the_paper_profile_and_the_intro_includes_it():
+    committed = (ROOT / "book" / "report.md").read_text()
+    assert "(profile `paper`)" in committed
+    intro = (ROOT / "book" / "intro.md").read_text()
+    for start, end in rep.MARKERS.values():
+        assert start in committed and end in committed
+        assert f':start-after: "{start}"' in intro and f':end-before: "{end}"' in intro
+
+
+def test_notebook_labels_reads_myst_targets_of_markdown_cells(tmp_path):
+    import json
+
+    nb = {"cells": [
+        {"cell_type": "markdown", "source": ["(thm1-evidence)=\n", "## Audit\n", "text (not)= here\n"]},
+        {"cell_type": "code", "source": ["(code-label)=\n"]},
+        {"cell_type": "markdown", "source": "(a-b)=\n(c)=\n### H"},
+    ]}
+    (tmp_path / "x.ipynb").write_text(json.dumps(nb))
+    assert rep.notebook_labels(tmp_path) == {"thm1-evidence", "a-b", "c"}

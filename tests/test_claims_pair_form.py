@@ -19,8 +19,8 @@ from obslib.claims import Record, evaluate, registry
 NOTEBOOK = Path(__file__).resolve().parent.parent / "notebooks" / "02_pair_closed_form.ipynb"
 IDS = (
     "thm4", "fig2-max", "thm5", "thm5-alpha-not-1", "thm1-weyl-step",
-    "erratum-thm1-dual-weyl-range", "erratum-thm4-matrix", "erratum-thm5-dtheta",
-    "erratum-thm5-dalpha-halfpi", "erratum-thm5-dalpha",
+    "thm1-proof-dual-weyl-range", "thm4-proof-matrix", "thm5-proof-dtheta",
+    "thm5-proof-dalpha-halfpi", "thm5-proof-dalpha",
 )  # fmt: skip
 
 
@@ -130,7 +130,7 @@ def test_weyl_status(findings):
     assert findings["thm1-weyl-step"].status == "reproduced"
     # printed range i + j - r <= r with r = 2 admits i = j = 1, index 0
     assert any(i + j - 2 < 1 for i in (1, 2) for j in (1, 2) if i + j - 2 <= 2)
-    assert findings["erratum-thm1-dual-weyl-range"].status == "partly"
+    assert findings["thm1-proof-dual-weyl-range"].status == "partly"
 
 
 def test_erratum_thm4_matrix_status(findings):
@@ -142,7 +142,7 @@ def test_erratum_thm4_matrix_status(findings):
     ])
     assert not np.allclose(printed, O.T @ O)
     assert (printed != O.T @ O).all()
-    assert findings["erratum-thm4-matrix"].status == "refuted"
+    assert findings["thm4-proof-matrix"].status == "refuted"
 
 
 def test_erratum_thm5_dtheta_status(findings):
@@ -152,7 +152,7 @@ def test_erratum_thm5_dtheta_status(findings):
         left = (ob.pair_bound_polar(a, 0.0, q) - ob.pair_bound_polar(a, -h, q)) / h
         assert right > 0.1 and left < -0.1  # a corner: no zero derivative at theta = 0
         assert right == pytest.approx(a / np.sqrt((1 + a * a) * (1 + a * a + q * q)), rel=1e-5)
-    assert findings["erratum-thm5-dtheta"].status == "partly"
+    assert findings["thm5-proof-dtheta"].status == "partly"
 
 
 def test_erratum_thm5_dalpha_halfpi_status(findings):
@@ -169,7 +169,7 @@ def test_erratum_thm5_dalpha_halfpi_status(findings):
     for a in (0.2, 0.5, 0.9, 1.5, 3.0):
         assert abs(d(a)) > 0.01  # never zero
         assert abs(d(a) - printed(a)) > 0.01
-    assert findings["erratum-thm5-dalpha-halfpi"].status == "refuted"
+    assert findings["thm5-proof-dalpha-halfpi"].status == "refuted"
 
 
 def test_erratum_thm5_dalpha_status(findings):
@@ -193,4 +193,4 @@ def test_erratum_thm5_dalpha_status(findings):
     star = minimize_scalar(lambda x: -ob.pair_bound_polar(x, theta, q), bounds=(0, 20),
                            method="bounded", options={"xatol": 1e-12}).x
     assert abs(printed(star)) < 1e-7
-    assert findings["erratum-thm5-dalpha"].status == "partly"
+    assert findings["thm5-proof-dalpha"].status == "partly"

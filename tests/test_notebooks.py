@@ -83,7 +83,8 @@ def report_statuses():
 
     out = {}
     for line in (ROOT / "book" / "report.md").read_text().splitlines():
-        m = re.match(r"\| \{ref\}`(\S+) <claim-[^`]+>` \|.*\| \**(reproduced|partly|refuted|untestable)\** \| \{doc\}", line)
+        # a row of the verdict table: | [title](#claim-<id>) (where) | paper | ours | verdict |
+        m = re.match(r"\| \[.*?\]\(#claim-([a-z0-9-]+)\).*\| \**(reproduced|partly|refuted|untestable)\** \|$", line)
         if m:
             out[m.group(1)] = m.group(2)
     return out

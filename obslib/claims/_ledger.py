@@ -8,6 +8,7 @@ from typing import Callable
 __all__ = [
     "STATUSES",
     "REQUIRED_IDS",
+    "ALIASES",
     "Finding",
     "Claim",
     "Record",
@@ -27,6 +28,17 @@ REQUIRED_IDS = (
 )  # fmt: skip
 
 
+#: Former ids of renamed claims -> current id. The report keeps an anchor under each former id
+#: and :func:`evaluate` accepts it, so links and commands written with it keep working.
+ALIASES = {
+    "erratum-thm1-dual-weyl-range": "thm1-proof-dual-weyl-range",
+    "erratum-thm4-matrix": "thm4-proof-matrix",
+    "erratum-thm5-dtheta": "thm5-proof-dtheta",
+    "erratum-thm5-dalpha-halfpi": "thm5-proof-dalpha-halfpi",
+    "erratum-thm5-dalpha": "thm5-proof-dalpha",
+}
+
+
 @dataclass(frozen=True)
 class Finding:
     """What a check returns: the ``status``, a one-sentence ``ours`` and the raw ``evidence``."""
@@ -42,7 +54,12 @@ class Finding:
 
 @dataclass(frozen=True)
 class Claim:
-    """A claim of the paper and the function that re-checks it under a profile."""
+    """A claim of the paper and the function that re-checks it under a profile.
+
+    ``title`` is the claim in one line (MyST, math in ``$...$``) for the tables; ``statement``,
+    ``paper`` and the finding's ``ours`` are full sentences in MyST. ``label`` is the MyST target
+    (``(label)=``) that the claim's notebook puts before the section showing the evidence.
+    """
 
     id: str
     where: str
@@ -50,6 +67,8 @@ class Claim:
     paper: str
     notebook: str
     check: Callable[[str], Finding]
+    title: str = ""
+    label: str = ""
 
 
 @dataclass(frozen=True)
@@ -64,22 +83,29 @@ class Record:
     status: str
     notebook: str
     evidence: dict
+    title: str = ""
+    label: str = ""
 
 
 _REGISTRY: dict[str, Claim] = {}
 
 
-def claim(*, id: str, where: str, statement: str, paper: str, notebook: str):
+def claim(*, id: str, where: str, statement: str, paper: str, notebook: str, title: str = "",
+          label: str = ""):
     """Decorator registering ``check(profile) -> Finding`` as the check of one claim.
 
     Claims are kept in registration order, which follows the paper (the submodules of
-    :mod:`obslib.claims` are imported in section order).
+    :mod:`obslib.claims` are imported in section order). ``title`` defaults to ``statement``,
+    ``label`` to ``"<id>-evidence"``.
     """
 
     def register(check: Callable[[str], Finding]) -> Callable[[str], Finding]:
         if id in _REGISTRY:
             raise ValueError(f"claim id {id!r} registered twice")
-        _REGISTRY[id] = Claim(id, where, statement, paper, notebook, check)
+        if id in ALIASES:
+            raise ValueError(f"claim id {id!r} is the former id of {ALIASES[id]!r}")
+        _REGISTRY[id] = Claim(id, where, statement, paper, notebook, check,
+                              title or statement, label or f"{id}-evidence")
         return check
 
     return register
@@ -98,7 +124,8 @@ def evaluate(profile: str = "quick", ids=None) -> list[Record]:
     profile : str
         A profile of :mod:`obslib.profiles` (``"paper"`` for the report, ``"quick"`` for tests).
     ids : iterable of str, optional
-        Only these claims (default: all, in paper order).
+        Only these claims (default: all, in paper order). A former id (:data:`ALIASES`) stands
+        for the current one.
 
     Examples
     --------
@@ -111,7 +138,7 @@ def evaluate(profile: str = "quick", ids=None) -> list[Record]:
         raise ValueError(f"unknown profile {profile!r}; known: {profile_names()}")
     claims = registry()
     if ids is not None:
-        ids = list(ids)
+        ids = [ALIASES.get(i, i) for i in ids]
         unknown = [i for i in ids if i not in claims]
         if unknown:
             raise ValueError(f"unknown claim id(s): {unknown}")
@@ -119,5 +146,6 @@ def evaluate(profile: str = "quick", ids=None) -> list[Record]:
     out = []
     for c in claims.values():
         f = c.check(profile)
-        out.append(Record(c.id, c.where, c.statement, c.paper, f.ours, f.status, c.notebook, f.evidence))
+        out.append(Record(c.id, c.where, c.statement, c.paper, f.ours, f.status, c.notebook,
+                          f.evidence, c.title, c.label))
     return out

@@ -34,8 +34,10 @@ def _run(profile):
 @claim(
     id="thm6",
     where="Theorem 6 (Sec. IV-A)",
-    statement="Algorithm 1 (greedy unique pairs) collects at least 1/3 of the optimum of Problem 1.",
-    paper="omega(GREEDY) >= OPT / 3, for any omega (charging proof).",
+    title="Greedy unique pairs (Algorithm 1) is a $1/3$-approximation.",
+    statement="Algorithm 1 (greedy unique pairs) collects at least $1/3$ of the optimum of "
+    "Problem 1.",
+    paper=r"$\omega(\mathrm{GREEDY}) \ge \mathrm{OPT}/3$ for any $\omega$ (charging proof).",
     notebook=NB,
 )
 def _thm6(profile: str) -> Finding:
@@ -46,11 +48,11 @@ def _thm6(profile: str) -> Finding:
     ok = ratios.min() >= 1 / 3 - 1e-12 and worst_ratio >= 1 / 3 - 1e-12
     return Finding(
         "reproduced" if ok else "refuted",
-        f"Greedy / exact optimum over {ratios.size} random instances (L = {p['targets_min']}-"
-        f"{p['targets_max']}, N = 2L to 2L + {p['extra_max']}): min {ratios.min():.3f}, median "
-        f"{np.median(ratios):.3f}; the worst geometry found by local search reaches "
-        f"{worst_ratio:.3f}; on hand-made weights the greedy gets {tight:.4f}, so 1/3 is the best "
-        "constant for general omega.",
+        f"Greedy over exact optimum on {ratios.size} random instances ($L$ = {p['targets_min']} "
+        f"to {p['targets_max']} targets, $N = 2L$ to $2L + {p['extra_max']}$ sensors): minimum "
+        f"{ratios.min():.3f}, median {np.median(ratios):.3f}; the worst geometry found by local "
+        f"search reaches {worst_ratio:.3f}; on hand-made weights the greedy gets {tight:.4f}, so "
+        r"$1/3$ is the best constant for a general $\omega$.",
         {
             "n_instances": int(ratios.size),
             "min_ratio": float(ratios.min()),
@@ -65,7 +67,8 @@ def _thm6(profile: str) -> Finding:
 @claim(
     id="thm6-practice",
     where="Sec. I and V-C",
-    statement="The greedy performs much better than 1/3 in practice.",
+    title="In practice the greedy does much better than $1/3$.",
+    statement="The greedy performs much better than $1/3$ in practice.",
     paper="Greedy close to the relaxed matching, much higher than a third of it (Fig. 8).",
     notebook=NB,
 )
@@ -82,8 +85,8 @@ def _thm6_practice(profile: str) -> Finding:
     return Finding(
         status,
         f"On random instances yes: the greedy is optimal in {np.mean(r >= 1 - 1e-12):.0%} of "
-        f"{r.size} small instances and above {q05:.2f} of the optimum in 95 %. Not for every "
-        f"geometry: local search finds sensor-target layouts where it gets {worst_ratio:.3f}, "
-        "close to the 1/3 guarantee.",
+        f"{r.size} small instances and above {q05:.2f} of the optimum in 95 % of them. Not for "
+        f"every geometry: local search finds sensor-target layouts where it gets "
+        f"{worst_ratio:.3f}, close to the $1/3$ guarantee.",
         {"quantile_05": q05, "worst_search_ratio": float(worst_ratio)},
     )

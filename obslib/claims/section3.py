@@ -20,8 +20,10 @@ _remark1_audit = lru_cache(maxsize=4)(bc.remark1_audit)
 @claim(
     id="thm1",
     where="Theorem 1 (Sec. III)",
-    statement="For N >= 2, C^-1(O(o,u)) >= sigma_min(O(o)) / sqrt(sigma_max(O(o))^2 + u_max^2) "
-    "for every control with ||u|| <= u_max.",
+    title=r"Theorem 1's lower bound on $C^{-1}(O(o,u_o))$ holds for every "
+    r"$\lVert u_o\rVert \le u_{\max}$.",
+    statement=r"For $N \ge 2$ sensors and every control with $\lVert u_o\rVert \le u_{\max}$, "
+    r"$C^{-1}(O(o,u_o)) \ge \dfrac{\sigma_{\min}(O(o))}{\sqrt{\sigma_{\max}^2(O(o)) + u_{\max}^2}}$.",
     paper="Holds (proof by the Weyl and dual Weyl inequalities).",
     notebook=NB,
 )
@@ -31,10 +33,10 @@ def _thm1(profile: str) -> Finding:
     ok = a.n_violations == 0
     return Finding(
         "reproduced" if ok else "refuted",
-        f"{a.n_violations} violations in {a.n_evaluations} evaluations (bound by SVD of O(o) vs "
-        f"exact C^-1 of O(o,u) from its Gram matrix) over {a.n_scenes} random scenes, generic and "
-        f"near-degenerate, scales 1e-3 to 1e4; largest excess of bound over exact "
-        f"{format_small(a.worst_excess)}.",
+        f"{a.n_violations} violations in {a.n_evaluations} evaluations over {a.n_scenes} random "
+        r"scenes, generic and near-degenerate, at scales $10^{-3}$ to $10^{4}$ (the bound from the "
+        r"SVD of $O(o)$ against the exact $C^{-1}(O(o,u_o))$ from its Gram matrix). Largest "
+        f"excess of the bound over the exact value: {format_small(a.worst_excess)}.",
         asdict(a),
     )
 
@@ -42,6 +44,7 @@ def _thm1(profile: str) -> Finding:
 @claim(
     id="thm1-tight",
     where="Sec. III (introduction of the bound), Remark 1",
+    title="The lower bound is tight.",
     statement="The lower bound is tight.",
     paper="Tight when the target is stationary (Remark 1).",
     notebook=NB,
@@ -52,10 +55,11 @@ def _thm1_tight(profile: str) -> Finding:
     ok = a.max_moving_error < 1e-12 and a.min_over_disc_gap >= -1e-12
     return Finding(
         "reproduced" if ok else "refuted",
-        "Tight for moving targets too: at u = u_max v_max (v_max the principal eigenvector of "
-        f"O(o)^T O(o)) the exact C^-1 equals the bound to {format_small(a.max_moving_error)} in "
-        f"{a.n_scenes} scenes, so the bound is the exact minimum of C^-1 over the disc "
-        "||u|| <= u_max, not only a lower bound.",
+        r"Tight for moving targets too: at $u_o = u_{\max} v_{\max}$ ($v_{\max}$ the principal "
+        r"eigenvector of $O(o)^T O(o)$) the exact $C^{-1}$ equals the bound to "
+        f"{format_small(a.max_moving_error)} in {a.n_scenes} scenes, so the bound is the exact "
+        r"minimum of $C^{-1}$ over the disc $\lVert u_o\rVert \le u_{\max}$, not only a lower "
+        "bound.",
         asdict(a),
     )
 
@@ -63,9 +67,10 @@ def _thm1_tight(profile: str) -> Finding:
 @claim(
     id="thm2",
     where="Theorem 2 (Sec. III)",
-    statement="With one sensor the lower bound is 0 wherever the sensor is: it cannot be "
+    title="One sensor: the lower bound is $0$ wherever the sensor is.",
+    statement="With one sensor the lower bound is $0$ wherever the sensor is: it cannot be "
     "controlled by the sensor.",
-    paper="sigma_min(O_i(o)) = 0, hence the bound is 0.",
+    paper=r"$\sigma_{\min}(O_i(o)) = 0$, hence the bound is $0$.",
     notebook=NB,
 )
 def _thm2(profile: str) -> Finding:
@@ -75,9 +80,10 @@ def _thm2(profile: str) -> Finding:
     lo, hi = a.exact_range
     return Finding(
         "reproduced" if ok else "refuted",
-        f"From eigvalsh of O_i(o)^T O_i(o) in {a.n_scenes} scenes: lambda_min / lambda_max "
+        r"From the eigenvalues of $O_i(o)^T O_i(o)$ in "
+        rf"{a.n_scenes} scenes: $\lambda_{{\min}} / \lambda_{{\max}}$ "
         f"{format_small(a.max_relative_lambda_min, 1e-14, '.2g')} (rounding), bound {format_small(a.max_bound, 1e-7, '.2g')}. The exact "
-        f"one-sensor C^-1 with a known control ranges over [{lo:.2g}, {hi:.2g}]: only u decides it.",
+        rf"one-sensor $C^{{-1}}$ with a known control ranges over [{lo:.2g}, {hi:.2g}]: only $u_o$ decides it.",
         asdict(a),
     )
 
@@ -85,9 +91,10 @@ def _thm2(profile: str) -> Finding:
 @claim(
     id="thm3",
     where="Theorem 3 (Sec. III)",
-    statement="If the sensors increase both C^-1(O(o)) and sigma_min(O(o)), the lower bound of "
-    "C^-1(O(o,u)) increases.",
-    paper="Holds for any u (proof in the appendix).",
+    title=r"Raising both $C^{-1}(O(o))$ and $\sigma_{\min}(O(o))$ raises the lower bound.",
+    statement=r"If the sensors increase both $C^{-1}(O(o))$ and $\sigma_{\min}(O(o))$, the lower "
+    r"bound of $C^{-1}(O(o,u_o))$ increases.",
+    paper="Holds for any $u_o$ (proof in the appendix).",
     notebook=NB,
 )
 def _thm3(profile: str) -> Finding:
@@ -100,7 +107,7 @@ def _thm3(profile: str) -> Finding:
         "reproduced" if bad == 0 else "refuted",
         f"Both conditions met in {n} of {a.n_trials} random before/after configurations; the "
         f"bound decreased in {bad}. Neither condition suffices alone: with only the ratio up it "
-        f"decreased in {rbad} of {rn}, with only sigma_min up in {sbad} of {sn}.",
+        rf"decreased in {rbad} of {rn}, with only $\sigma_{{\min}}$ up in {sbad} of {sn}.",
         {"counts": a.counts, "witnesses": a.witnesses, "n_trials": a.n_trials},
     )
 
@@ -108,9 +115,11 @@ def _thm3(profile: str) -> Finding:
 @claim(
     id="thm3-proof-condition",
     where="Proof of Theorem 3, Eq. (27)",
-    statement="The proof assumes lambda'_min/lambda'_max >= lambda_min/lambda_max and "
-    "lambda'_min >= lambda_max.",
-    paper="lambda'_min >= lambda_max (second line of Eq. (27)).",
+    title=r"The proof of Theorem 3 assumes $\lambda'_{\min} \ge \lambda_{\max}$.",
+    statement=r"The proof of Theorem 3 assumes $\lambda'_{\min}/\lambda'_{\max} \ge "
+    r"\lambda_{\min}/\lambda_{\max}$ and $\lambda'_{\min} \ge \lambda_{\max}$ (eigenvalues of "
+    r"$O(o)^T O(o)$ before and, primed, after the change).",
+    paper=r"$\lambda'_{\min} \ge \lambda_{\max}$ (second line of Eq. (27)).",
     notebook=NB,
 )
 def _thm3_proof(profile: str) -> Finding:
@@ -124,8 +133,9 @@ def _thm3_proof(profile: str) -> Finding:
         "The printed condition is sufficient (0 decreases in "
         f"{n_printed} trials) but is not the theorem's: it is strictly stronger (met in "
         f"{n_printed} of the {n_stated} trials meeting the stated one), so the proof as printed "
-        "covers fewer cases than the theorem claims. Corrected: lambda'_min >= lambda_min "
-        "(sigma_min does not decrease), which makes both terms of Eq. (29) non-negative.",
+        r"covers fewer cases than the theorem claims. Corrected: $\lambda'_{\min} \ge "
+        r"\lambda_{\min}$ ($\sigma_{\min}$ does not decrease), which makes both terms of Eq. (29) "
+        "non-negative.",
         {"counts": a.counts, "printed_implies_stated": a.printed_implies_stated},
     )
 
@@ -133,8 +143,9 @@ def _thm3_proof(profile: str) -> Finding:
 @claim(
     id="remark1",
     where="Remark 1 (Sec. III)",
-    statement="The lower bound is tight when the target is known to be stationary (u = 0).",
-    paper="Lower bound = C^-1(O(o,u)) for u = 0.",
+    title="The lower bound is exact for a stationary target ($u_o = 0$).",
+    statement="The lower bound is tight when the target is known to be stationary ($u_o = 0$).",
+    paper=r"The lower bound equals $C^{-1}(O(o,u_o))$ for $u_o = 0$.",
     notebook=NB,
 )
 def _remark1(profile: str) -> Finding:
@@ -143,8 +154,8 @@ def _remark1(profile: str) -> Finding:
     ok = a.max_stationary_error < 1e-12
     return Finding(
         "reproduced" if ok else "refuted",
-        f"Exact C^-1(O(o,0))^2 (zero row included) vs lambda_min/lambda_max (eigvalsh) in "
-        f"{a.n_scenes} scenes: largest difference {format_small(a.max_stationary_error)}.",
+        r"Exact $C^{-1}(O(o,0))^2$ (zero row included) against $\lambda_{\min}/\lambda_{\max}$ "
+        f"in {a.n_scenes} scenes: largest difference {format_small(a.max_stationary_error)}.",
         asdict(a),
     )
 
@@ -152,9 +163,11 @@ def _remark1(profile: str) -> Finding:
 @claim(
     id="remark2",
     where="Remark 2 (appendix)",
+    title="Remark 2's weaker condition also guarantees that the bound increases.",
     statement="Eq. (27) is sufficient but not necessary; the weaker condition "
-    "T1 + T2 >= 0 of Remark 2 also guarantees the increase.",
-    paper="lambda'_min lambda_max - lambda'_max lambda_min + u^2 (lambda'_min - lambda_min) >= 0.",
+    r"$T_1 + T_2 \ge 0$ of Remark 2 also guarantees the increase.",
+    paper=r"$\lambda'_{\min} \lambda_{\max} - \lambda'_{\max} \lambda_{\min} + u_o^2 "
+    r"(\lambda'_{\min} - \lambda_{\min}) \ge 0$.",
     notebook=NB,
 )
 def _remark2(profile: str) -> Finding:

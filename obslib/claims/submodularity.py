@@ -45,9 +45,11 @@ def _case(case: str, u_max: float, min_size: int) -> sm.CaseAudit:
 @claim(
     id="thm7-case1",
     where="Theorem 7, Case 1 (Sec. IV-B, Fig. 3(a))",
-    statement="With s1(0,0), s2(2sqrt3,-9), s3(sqrt3,3), target t1(sqrt3,1) and u_max = 1, "
-    "omega({s1,s3}) > omega({s1,s2,s3}): the lower bound is not monotone increasing.",
-    paper="omega({s1,s3}) = 0.5345 > omega({s1,s2,s3}) = 0.1823.",
+    title=r"Fig. 3(a): adding $s_2$ to $\{s_1, s_3\}$ lowers the bound (not monotone).",
+    statement=r"With $s_1 = (0,0)$, $s_2 = (2\sqrt3,-9)$, $s_3 = (\sqrt3,3)$, target "
+    r"$t_1 = (\sqrt3,1)$ and $u_{\max} = 1$, $\omega(\{s_1,s_3\}) > \omega(\{s_1,s_2,s_3\})$: "
+    "the lower bound is not monotone increasing.",
+    paper=r"$\omega(\{s_1,s_3\}) = 0.5345 > \omega(\{s_1,s_2,s_3\}) = 0.1823$.",
     notebook=NB,
 )
 def _thm7_case1(profile: str) -> Finding:
@@ -65,8 +67,8 @@ def _thm7_case1(profile: str) -> Finding:
                     f"{w.describe(LABELS)}.")
     return Finding(
         ca.verdict,
-        f"omega({{s1,s3}}) = {a:.4f} and omega({{s1,s2,s3}}) = {b:.4f} (SVD); {match} to 4 "
-        f"decimals; {shows} (change {b - a:+.4f}).{smallest}",
+        rf"$\omega(\{{s_1,s_3\}})$ = {a:.4f} and $\omega(\{{s_1,s_2,s_3\}})$ = {b:.4f} (SVD); "
+        f"{match} to 4 decimals; {shows} (change {b - a:+.4f}).{smallest}",
         _case_evidence(ca),
     )
 
@@ -74,25 +76,28 @@ def _thm7_case1(profile: str) -> Finding:
 @claim(
     id="thm7-case2",
     where="Theorem 7, Case 2 (Sec. IV-B, Fig. 3(b))",
-    statement="With s1(0,0), s2(2sqrt3,0), s3(sqrt3,0.1), s4(sqrt3,3), t1(sqrt3,1), u_max = 1, "
-    "the gain of s3 at {s1,s2} is smaller than at {s1,s2,s4}: the lower bound is not submodular.",
-    paper="omega({s1,s2,s3}) - omega({s1,s2}) = 0.3310 - 0.5345 = -0.2035 < "
-    "omega({s1,s2,s4,s3}) - omega({s1,s2,s4}) = 0.8765 - 0.9258 = -0.0493.",
+    title=r"Fig. 3(b): the gain of $s_3$ is smaller at $\{s_1,s_2\}$ than at "
+    r"$\{s_1,s_2,s_4\}$ (not submodular).",
+    statement=r"With $s_1 = (0,0)$, $s_2 = (2\sqrt3,0)$, $s_3 = (\sqrt3,0.1)$, "
+    r"$s_4 = (\sqrt3,3)$, $t_1 = (\sqrt3,1)$ and $u_{\max} = 1$, the gain of $s_3$ at "
+    r"$\{s_1,s_2\}$ is smaller than at $\{s_1,s_2,s_4\}$: the lower bound is not submodular.",
+    paper=r"$\omega(\{s_1,s_2,s_3\}) - \omega(\{s_1,s_2\}) = 0.3310 - 0.5345 = -0.2035 < "
+    r"\omega(\{s_1,s_2,s_4,s_3\}) - \omega(\{s_1,s_2,s_4\}) = 0.8765 - 0.9258 = -0.0493$.",
     notebook=NB,
 )
 def _thm7_case2(profile: str) -> Finding:
     p = params(NB, profile)
     ca = _case("case2", p["u_max"], p["min_size"])
     gA, gB = ca.our_sides
-    wrong = [f"{_set(k)} = {ca.values[k]:.4f} (printed {v:.4f})"
+    wrong = [rf"$\omega$({_set(k)}) = {ca.values[k]:.4f} (printed {v:.4f})"
              for k, v in ca.printed.items() if not ca.matches[k]]
     right = [_set(k) for k, v in ca.printed.items() if ca.matches[k]]
     same = [_set(k) for k, v in ca.values.items()
             if any(not ca.matches[q] and abs(v - ca.printed[q]) <= 0.5e-4 for q in ca.printed)]
-    text = f"Reproduced to 4 decimals: {', '.join(right) or 'none'}. "
-    text += f"Wrong: {'; '.join(wrong) or 'none'}"
+    text = f"Wrong: {'; '.join(wrong) or 'none'}"
     text += f" (the printed value is that of {', '.join(same)}). " if same else ". "
-    text += f"With our values the printed comparison reads {gA:+.4f} vs {gB:+.4f}: "
+    text += f"Reproduced to 4 decimals: {', '.join(right) or 'none'}. "
+    text += f"With our values the printed comparison reads {gA:+.4f} against {gB:+.4f}: "
     if ca.shows_with_ours:
         text += "the gain at the smaller set is still the smaller one, a counter-example."
     else:
@@ -100,18 +105,19 @@ def _thm7_case2(profile: str) -> Finding:
                  "the printed triple is not a counter-example.")
     w = ca.audits[p["min_size"]].submodular_witness
     if w is not None:
-        text += (f" Smallest witness in the same geometry (sets of >= {p['min_size']} sensors): "
-                 f"{w.describe(LABELS)}.")
+        text += (f" Smallest witness in the same geometry (sets of at least {p['min_size']} "
+                 f"sensors): {w.describe(LABELS)}.")
     else:
-        text += f" The geometry has no witness among sets of >= {p['min_size']} sensors."
+        text += f" The geometry has no witness among sets of at least {p['min_size']} sensors."
     return Finding(ca.verdict, text, _case_evidence(ca))
 
 
 @claim(
     id="thm7",
     where="Theorem 7 (Sec. IV-B)",
-    statement="The lower bound omega(.) of the inverse condition number is neither monotone "
-    "increasing nor submodular.",
+    title=r"The lower bound $\omega$ is neither monotone nor submodular.",
+    statement=r"The lower bound $\omega(\cdot)$ of the inverse condition number is neither "
+    "monotone increasing nor submodular.",
     paper="Proved by the two counter-examples of Cases 1 and 2.",
     notebook=NB,
 )
@@ -131,19 +137,19 @@ def _thm7(profile: str) -> Finding:
     parts = []
     for c, w in mono.items():
         if w is not None:
-            parts.append(f"not monotone in {c}: {w.describe(LABELS)}")
+            parts.append(f"not monotone in {c.replace('case', 'Case ')}: {w.describe(LABELS)}")
             break
     for c, w in sub.items():
         if w is not None:
-            parts.append(f"not submodular in {c}: {w.describe(LABELS)}")
+            parts.append(f"not submodular in {c.replace('case', 'Case ')}: {w.describe(LABELS)}")
             break
     found = "; ".join(parts) if parts else "no witness in either geometry"
     return Finding(
         status,
-        f"Checked exhaustively among sets of >= {m} sensors (where Theorem 1 applies). Fig. 3 "
-        f"geometries: {found}. On {lb.n_instances} random instances of {lb.n_sensors} sensors the "
-        f"bound is non-monotone in {lb.n_not_increasing} and non-submodular in "
-        f"{lb.n_not_submodular}.",
+        f"On {lb.n_instances} random instances of {lb.n_sensors} sensors, checked exhaustively "
+        f"among sets of at least {m} sensors (where Theorem 1 applies), the bound is non-monotone "
+        f"in {lb.n_not_increasing} and non-submodular in {lb.n_not_submodular}. Fig. 3 "
+        f"geometries: {found}.",
         {
             "min_size": m,
             "case_monotone_witness": {c: (w.as_dict() if w else None) for c, w in mono.items()},
@@ -156,8 +162,9 @@ def _thm7(profile: str) -> Finding:
 @claim(
     id="thm7-exact",
     where="Abstract and Sec. I",
-    statement="The inverse of the condition number itself (stationary target, u = 0) is neither "
-    "monotone nor submodular.",
+    title=r"The exact $C^{-1}$ itself is neither monotone nor submodular.",
+    statement=r"The inverse of the condition number itself (stationary target, $u_o = 0$) is "
+    "neither monotone nor submodular.",
     paper="'we show that the inverse of the condition number is neither monotone nor "
     "submodular' (the proof treats only the lower bound).",
     notebook=NB,
@@ -169,13 +176,16 @@ def _thm7_exact(profile: str) -> Finding:
     ok_m, ok_s = lb.n_not_increasing > 0, lb.n_not_submodular > 0
     status = "reproduced" if (ok_m and ok_s) else ("partly" if (ok_m or ok_s) else "refuted")
     w = lb.witness
-    wtxt = (f" Smallest witness of non-submodularity (instance {w['instance']}): gain "
-            f"{w['gain_A']:.4f} at A = {w['A']} < {w['gain_B']:.4f} at B = {w['B']}, x = {w['x']}."
+    wtxt = (f" Smallest witness of non-submodularity (instance {w['instance']}): the gain of "
+            f"$s_{w['x'] + 1}$ is {w['gain_A']:.4f} at "
+            f"$\\{{{', '.join(f's_{i + 1}' for i in w['A'])}\\}}$ but {w['gain_B']:.4f} at "
+            f"$\\{{{', '.join(f's_{i + 1}' for i in w['B'])}\\}}$."
             if w else "")
     return Finding(
         status,
-        f"C^-1(O(o)) = sigma_min/sigma_max (Theorem 1's bound at u_max = 0, Remark 1), checked over "
-        f"all subsets of >= {m} sensors of {lb.n_instances} random instances of {lb.n_sensors}: "
+        r"$C^{-1}(O(o)) = \sigma_{\min}/\sigma_{\max}$ (Theorem 1's bound at $u_{\max} = 0$, "
+        f"Remark 1), checked over all subsets of at least {m} sensors of {lb.n_instances} random "
+        f"instances of {lb.n_sensors}: "
         f"non-monotone in {lb.n_not_increasing}, non-submodular in {lb.n_not_submodular}.{wtxt}",
         lb.as_dict(),
     )
@@ -213,8 +223,9 @@ def _simple_thm8(name: str, profile: str, extra: str) -> Finding:
     return Finding(
         status,
         f"{n} exhaustive checks of random instances of {p['n_sensors']} sensors ({p['n_instances']} "
-        f"per instance kind and configuration; configurations: eps I with eps = {p['eps']:g} with "
-        f"and without a u row of norm {p['u_max']:g}, and eps = 0 on sets of >= 2 sensors), every "
+        rf"per instance kind and configuration; configurations: a prior $\varepsilon I$ with "
+        rf"$\varepsilon$ = {p['eps']:g} with and without a row for $u_o$ of norm {p['u_max']:g}, "
+        r"and $\varepsilon = 0$ on sets of at least 2 sensors), every "
         f"nested pair of subsets compared: {dec} instances with a decrease, {nsub} with a "
         f"violation of submodularity. {extra}",
         ev,
@@ -229,7 +240,9 @@ _TH8_PAPER = ("'its trace, log determinant, rank and the trace of its inverse ar
 @claim(
     id="thm8-trace",
     where=_TH8,
-    statement="trace(O^T O) is monotone increasing and submodular in the set of sensors.",
+    title=r"$\operatorname{tr}(O^T O)$ is monotone and submodular.",
+    statement=r"$\operatorname{tr}(O^T O)$ is monotone increasing and submodular in the set of "
+    "sensors.",
     paper=_TH8_PAPER,
     notebook=NB,
 )
@@ -239,38 +252,44 @@ def _thm8_trace(profile: str) -> Finding:
     modular = all(r.n_not_supermodular == 0 for r in sel)
     return _simple_thm8("trace", profile, "It is in fact modular (no violation of supermodularity "
                         "either: " + ("none found" if modular else "SOME FOUND") + "): each sensor "
-                        "adds ||o - p_i||^2 whatever the set.")
+                        r"adds $\lVert o - p_i\rVert^2$ whatever the set.")
 
 
 @claim(
     id="thm8-logdet",
     where=_TH8,
-    statement="log det(O^T O) is monotone increasing and submodular in the set of sensors.",
+    title=r"$\log\det(O^T O)$ is monotone and submodular.",
+    statement=r"$\log\det(O^T O)$ is monotone increasing and submodular in the set of sensors.",
     paper=_TH8_PAPER,
     notebook=NB,
 )
 def _thm8_logdet(profile: str) -> Finding:
-    return _simple_thm8("logdet", profile, "It is -inf for fewer than two independent rows, so it "
-                        "needs a prior eps I (or sets of >= 2 sensors in general position).")
+    return _simple_thm8("logdet", profile, r"It is $-\infty$ for fewer than two independent rows, "
+                        r"so it needs a prior $\varepsilon I$ (or sets of at least 2 sensors in "
+                        "general position).")
 
 
 @claim(
     id="thm8-rank",
     where=_TH8,
-    statement="rank(O^T O) is monotone increasing and submodular in the set of sensors.",
+    title=r"$\operatorname{rank}(O^T O)$ is monotone and submodular.",
+    statement=r"$\operatorname{rank}(O^T O)$ is monotone increasing and submodular in the set of "
+    "sensors.",
     paper=_TH8_PAPER,
     notebook=NB,
 )
 def _thm8_rank(profile: str) -> Finding:
     return _simple_thm8("rank", profile, "It is the rank function of the linear matroid of the rows "
                         "(instances with sensors on lines through the target included); with 2 "
-                        "columns it takes only the values 0, 1, 2.")
+                        "columns it takes only the values $0, 1, 2$.")
 
 
 @claim(
     id="thm8-trace-inverse",
     where=_TH8,
-    statement="trace((O^T O)^-1) is monotone increasing and submodular in the set of sensors.",
+    title=r"$\operatorname{tr}((O^T O)^{-1})$ is monotone and submodular.",
+    statement=r"$\operatorname{tr}((O^T O)^{-1})$ is monotone increasing and submodular in the "
+    "set of sensors.",
     paper=_TH8_PAPER,
     notebook=NB,
 )
@@ -288,16 +307,20 @@ def _thm8_trace_inverse(profile: str) -> Finding:
     wtxt = ""
     if hit is not None:
         w = hit.witness
-        wtxt = (f" Smallest witness (configuration '{hit.config}', instance {w['instance']}): the "
-                f"gain of -trace(G^-1) from adding x = {w['x']} is {w['gain_A']:.4f} at A = {w['A']} "
-                f"but {w['gain_B']:.4f} at the larger B = {w['B']}.")
+        conf = (hit.config.replace("eps I", r"$\varepsilon I$").replace("eps = 0", r"$\varepsilon = 0$")
+                .replace("u row", "row for $u_o$").replace("|S| >= 2", r"$\lvert S\rvert \ge 2$"))
+        wtxt = (f" Smallest witness (configuration “{conf}”, instance {w['instance']}): the "
+                rf"gain of $-\operatorname{{tr}}(G^{{-1}})$ from adding $s_{w['x'] + 1}$ is "
+                f"{w['gain_A']:.4f} at $\\{{{', '.join(f's_{i + 1}' for i in w['A'])}\\}}$ but "
+                f"{w['gain_B']:.4f} at the larger "
+                f"$\\{{{', '.join(f's_{i + 1}' for i in w['B'])}\\}}$.")
     return Finding(
         status,
-        f"As printed it fails: trace(G^-1), G = O^T O + eps I, can only decrease when a sensor is "
-        f"added (a strict decrease in {n_dec} of {n} instances, an increase in {n_not_dec}). Its "
-        f"negative -trace(G^-1) is monotone increasing ({sum(r.n_not_increasing for r in nsel)} "
-        f"instances with a decrease) but NOT submodular: violated in {n_neg_sub} of {n} "
-        f"instances.{wtxt}",
+        r"As printed it fails: $\operatorname{tr}(G^{-1})$, $G = O^T O + \varepsilon I$, can only "
+        f"decrease when a sensor is added (a strict decrease in {n_dec} of {n} instances, an "
+        rf"increase in {n_not_dec}). Its negative $-\operatorname{{tr}}(G^{{-1}})$ is monotone "
+        f"increasing ({sum(r.n_not_increasing for r in nsel)} instances with a decrease) but "
+        f"*not* submodular: violated in {n_neg_sub} of {n} instances.{wtxt}",
         {"trace_inverse": ev, "neg_trace_inverse": nev, "n_instances": n,
          "n_decreasing_instances": n_dec},
     )

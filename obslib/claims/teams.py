@@ -21,9 +21,12 @@ def _sweep(N_min, N_max, trials, seed, n_targets, eps, side):
 @claim(
     id="greedy-half",
     where="Sec. I and IV-B",
-    statement="For monotone submodular measures the greedy team assignment is a 1/2-approximation "
-    "of Problem 2.",
-    paper="Cited result (Nemhauser et al.); used with log det in Sec. V-D.",
+    title="Greedy teams are a $1/2$-approximation for monotone submodular measures.",
+    statement="For monotone submodular measures the greedy team assignment is a "
+    "$1/2$-approximation of Problem 2.",
+    paper=r"Cited result (the paper cites Nemhauser, Wolsey and Fisher 1978, part I; the "
+    "guarantee for a partition matroid is in Fisher, Nemhauser and Wolsey 1978, part II); used "
+    r"with $\log\det$ in Sec. V-D.",
     notebook=NB,
 )
 def _half(profile: str) -> Finding:
@@ -32,8 +35,9 @@ def _half(profile: str) -> Finding:
     ok = r.min() >= 0.5 - 1e-12
     return Finding(
         "reproduced" if ok else "refuted",
-        f"log det(O^T O + {p['eps']:g} I), greedy / exhaustive optimum on {r.size} instances of 3-7 "
-        f"sensors and 1-3 targets: min {r.min():.3f}, median {np.median(r):.3f}.",
+        rf"$\log\det(O^T O + \varepsilon I)$, $\varepsilon$ = {p['eps']:g}: greedy over "
+        f"exhaustive optimum on {r.size} instances of 3 to 7 sensors and 1 to 3 targets: minimum "
+        f"{r.min():.3f}, median {np.median(r):.3f}.",
         {"n": int(r.size), "min_ratio": float(r.min()), "median_ratio": float(np.median(r))},
     )
 
@@ -41,8 +45,10 @@ def _half(profile: str) -> Finding:
 @claim(
     id="fig9-even",
     where="Fig. 9 (Sec. V-D)",
-    statement="The greedy (log det) assigns sensors to the targets almost evenly.",
-    paper="Mean count on target 1 within about 0.8 of N/L, std 1.1-3.0, for N = 20..50, L = 5.",
+    title=r"Fig. 9: greedy teams ($\log\det$) spread the sensors almost evenly.",
+    statement=r"The greedy ($\log\det$) assigns sensors to the targets almost evenly.",
+    paper="Mean count on target 1 within about 0.8 of $N/L$, standard deviation 1.1 to 3.0, for "
+    "$N = 20, \\dots, 50$ and $L = 5$.",
     notebook=NB,
 )
 def _fig9(profile: str) -> Finding:
@@ -55,9 +61,10 @@ def _fig9(profile: str) -> Finding:
     ok = bool((rel < 1).all())
     return Finding(
         "reproduced" if ok else "partly",
-        f"Mean counts are within {mean_dev:.2f} of N/L (largest |z| {z.max():.1f}; symmetry "
-        f"alone guarantees this). Within a trial the counts spread {within.min():.2f}-{within.max():.2f} "
-        f"(std across targets), {rel.min():.2f}-{rel.max():.2f} of a uniformly random "
+        f"Mean counts are within {mean_dev:.2f} of $N/L$ (largest $\\lvert z\\rvert$ "
+        f"{z.max():.1f}; symmetry alone guarantees this). Within a trial the counts spread "
+        f"{within.min():.2f} to {within.max():.2f} (standard deviation across targets), "
+        f"{rel.min():.2f} to {rel.max():.2f} of a uniformly random "
         f"assignment's: more even than chance, though single trials range from "
         f"{C.min()} to {C.max()} sensors on a target.",
         {

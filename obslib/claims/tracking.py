@@ -64,10 +64,11 @@ def _r(x, n=3):
 @claim(
     id="fig6-figure-data",
     where="Sec. V-A, Figs. 5-6 (published run)",
-    statement="The published run: pair changes 148 (strategy 1) and 102 (partner of s2, strategy "
-    "2) of 314; mean bound 0.73/0.49/0.27, mean error 0.16/0.19/0.22, mean trace(Sigma) "
-    "0.073/0.140/0.217 for strategies 1/2/3.",
-    paper="Figure data of the published run (the authors' saved figure data).",
+    title="Figs. 5-6: the numbers of the published run (pair changes, bound, error, trace).",
+    statement="The published run: pair changes 148 (strategy 1) and 102 (partner of $s_2$, "
+    "strategy 2) of 314; mean bound 0.73, 0.49, 0.27, mean error 0.16, 0.19, 0.22 and mean "
+    r"$\operatorname{tr}\Sigma$ 0.073, 0.140, 0.217 for strategies 1, 2, 3.",
+    paper="Figure data of the published run (the data saved with the authors' figures).",
     notebook=NB5,
 )
 def _fig6_data(profile: str) -> Finding:
@@ -103,12 +104,12 @@ def _fig6_data(profile: str) -> Finding:
     s1, s2, s3 = (rows[k] for k in tr.STRATEGIES)
     ours = (
         f"Seed {p['seed']}: {n_ok} of {n_all} numbers within {FIGURE_TOLERANCE:.0%}: switches "
-        f"{s1['switches']['ours']:.0f}/{s2['switches']['ours']:.0f}, mean bound "
-        f"{s1['mean_bound']['ours']:.2f}/{s2['mean_bound']['ours']:.2f}/"
+        f"{s1['switches']['ours']:.0f} and {s2['switches']['ours']:.0f}, mean bound "
+        f"{s1['mean_bound']['ours']:.2f}, {s2['mean_bound']['ours']:.2f}, "
         f"{s3['mean_bound']['ours']:.2f}, "
-        f"error {s1['mean_error']['ours']:.3f}/{s2['mean_error']['ours']:.3f}/"
-        f"{s3['mean_error']['ours']:.3f}, trace {s1['mean_trace']['ours']:.4f}/"
-        f"{s2['mean_trace']['ours']:.4f}/{s3['mean_trace']['ours']:.4f}. Over {p['n_seeds']} "
+        f"error {s1['mean_error']['ours']:.3f}, {s2['mean_error']['ours']:.3f}, "
+        f"{s3['mean_error']['ours']:.3f}, trace {s1['mean_trace']['ours']:.4f}, "
+        f"{s2['mean_trace']['ours']:.4f}, {s3['mean_trace']['ours']:.4f}. Over {p['n_seeds']} "
         f"seeds strategy 3's mean error is {s3['mc_mean']['mean_error']:.2f} (median run "
         f"{s3['mc_mean']['median_run_error']:.2f}): it loses the target in some runs."
     )
@@ -118,9 +119,11 @@ def _fig6_data(profile: str) -> Finding:
 @claim(
     id="fig6-best-pair",
     where="Sec. V-A, Fig. 6",
+    title=r"Fig. 6: the best pair has lower error and $\operatorname{tr}\Sigma$ almost all the "
+    "time.",
     statement="The first strategy (flexible best pair) has lower estimation error and "
-    "trace(Sigma) than strategies (2) and (3) almost all times.",
-    paper="\"has lower epsilon and trace of covariance almost all times\" (one run).",
+    r"$\operatorname{tr}\Sigma$ than strategies (2) and (3) almost all times.",
+    paper=r"“has lower $\epsilon$ and trace of covariance almost all times” (one run).",
     notebook=NB5,
 )
 def _fig6_best_pair(profile: str) -> Finding:
@@ -143,16 +146,16 @@ def _fig6_best_pair(profile: str) -> Finding:
     ours = (
         f"Over {p['n_seeds']} noise seeds strategy 1 has the lower run-mean error and trace in "
         + ("every run" if least == 1 else f"at least {least:.0%} of runs")
-        + f" against both (mean error {st['best-pair']['mean_error']:.3f} vs "
-        f"{st['best-partner']['mean_error']:.3f} / {st['fixed-pair']['mean_error']:.3f}, trace "
-        f"{st['best-pair']['mean_trace']:.4f} vs {st['best-partner']['mean_trace']:.4f} / "
+        + f" against both (mean error {st['best-pair']['mean_error']:.3f} against "
+        f"{st['best-partner']['mean_error']:.3f} and {st['fixed-pair']['mean_error']:.3f}, trace "
+        f"{st['best-pair']['mean_trace']:.4f} against {st['best-partner']['mean_trace']:.4f} and "
         f"{st['fixed-pair']['mean_trace']:.4f}); "
         + ("and almost all times" if times_ok else "but not almost all times")
         + f": its mean is lower at {m2['error_stepmean']:.0%} (error) and "
         f"{m2['trace_stepmean']:.0%} (trace) of steps against strategy 2, "
-        f"{m3['error_stepmean']:.0%} / {m3['trace_stepmean']:.0%} against strategy 3; step by "
-        f"step in single runs {m2['error_pointwise']:.0%} / {m2['trace_pointwise']:.0%} and "
-        f"{m3['error_pointwise']:.0%} / {m3['trace_pointwise']:.0%}."
+        f"{m3['error_stepmean']:.0%} and {m3['trace_stepmean']:.0%} against strategy 3; step by "
+        f"step in single runs {m2['error_pointwise']:.0%} and {m2['trace_pointwise']:.0%}, and "
+        f"{m3['error_pointwise']:.0%} and {m3['trace_pointwise']:.0%}."
     )
     ev = {
         "n_seeds": p["n_seeds"],
@@ -168,8 +171,10 @@ def _fig6_best_pair(profile: str) -> Finding:
 @claim(
     id="fig6-higher-bound",
     where="Sec. V-A, Fig. 6",
-    statement="The first strategy maintains a higher lower bound C^-1 than strategies (2) and (3).",
-    paper="\"the first strategy maintains a higher C^-1 lower bound\".",
+    title="Fig. 6: the best pair keeps a higher bound.",
+    statement=r"The first strategy maintains a higher lower bound of $C^{-1}$ than strategies (2) "
+    "and (3).",
+    paper=r"“the first strategy maintains a higher $C^{-1}$ lower bound”.",
     notebook=NB5,
 )
 def _fig6_higher_bound(profile: str) -> Finding:
@@ -189,7 +194,7 @@ def _fig6_higher_bound(profile: str) -> Finding:
     ours = (
         f"Strategy 1's mean bound is higher at {frac['best-partner']:.0%} of steps than strategy "
         f"2's and at {frac['fixed-pair']:.0%} than strategy 3's ({p['n_seeds']} seeds); run by run "
-        f"at {point['best-partner']:.0%} / {point['fixed-pair']:.0%} of steps. (At a common "
+        f"at {point['best-partner']:.0%} and {point['fixed-pair']:.0%} of steps. (At a common "
         "estimate it is higher by construction; the runs' estimates differ.)"
     )
     return Finding(status, ours, {"stepmean": frac, "pointwise": point, "n_seeds": p["n_seeds"]})
@@ -198,9 +203,12 @@ def _fig6_higher_bound(profile: str) -> Finding:
 @claim(
     id="fig6-bound-correlation",
     where="Sec. V-A, Fig. 6",
+    title=r"Fig. 6: a higher bound goes with lower error and $\operatorname{tr}\Sigma$ in every "
+    "strategy.",
     statement="In all three strategies a higher bound correlates with lower error and "
-    "trace(Sigma), suggesting that improving the bound improves tracking.",
-    paper="\"in all three cases, higher C^-1 correlates with lower epsilon and trace(Sigma)\".",
+    r"$\operatorname{tr}\Sigma$, suggesting that improving the bound improves tracking.",
+    paper=r"“in all three cases, higher $C^{-1}$ correlates with lower $\epsilon$ and "
+    r"$\operatorname{tr}(\Sigma)$”.",
     notebook=NB5,
 )
 def _fig6_correlation(profile: str) -> Finding:
@@ -218,7 +226,7 @@ def _fig6_correlation(profile: str) -> Finding:
     n = sum(holds.values())
     status = "reproduced" if n == 3 else ("partly" if n else "refuted")
     ours = (
-        "Median within-run Spearman correlation of the bound with (error, trace): "
+        r"Median within-run Spearman correlation of the bound with (error, $\operatorname{tr}\Sigma$): "
         + "; ".join(
             f"strategy {i + 1} ({med[s]['error']:+.2f}, {med[s]['trace']:+.2f})"
             for i, s in enumerate(tr.STRATEGIES)
@@ -233,8 +241,9 @@ def _fig6_correlation(profile: str) -> Finding:
 @claim(
     id="fig5-switching-k50",
     where="Sec. V-A, Fig. 5(a)",
-    statement="Around k = 50 the best pair changes frequently.",
-    paper="\"Around k=50, the best pair changes frequently\".",
+    title="Fig. 5(a): around $k = 50$ the best pair changes frequently.",
+    statement="Around $k = 50$ the best pair changes frequently.",
+    paper="“Around $k=50$, the best pair changes frequently”.",
     notebook=NB5,
 )
 def _fig5_k50(profile: str) -> Finding:
@@ -254,10 +263,10 @@ def _fig5_k50(profile: str) -> Finding:
     hot = ", ".join(f"{a}" if a == b else f"{a}-{b}" for a, b in spans)
     status = "reproduced" if ok_mc and ok_one else ("partly" if ok_mc or ok_one else "refuted")
     ours = (
-        f"Strategy 1 changes pair at {mw:.0%} of the transitions in k = {lo}..{hi} against "
-        f"{mr:.0%} elsewhere ({p['n_seeds']} seeds; seed {p['seed']}: {sw_:.0%} vs {sr:.0%}). "
+        f"Strategy 1 changes pair at {mw:.0%} of the transitions in $k$ = {lo} to {hi} against "
+        f"{mr:.0%} elsewhere ({p['n_seeds']} seeds; seed {p['seed']}: {sw_:.0%} against {sr:.0%}). "
         + (
-            f"Not special to k = 50: windows of the same width starting at k = {hot} switch "
+            f"Not special to $k = 50$: windows of the same width starting at $k$ = {hot} switch "
             "at least as often."
             if spans
             else "No other window of that width switches as often."
@@ -271,10 +280,11 @@ def _fig5_k50(profile: str) -> Finding:
 @claim(
     id="sec5a-s1-best-partner",
     where="Sec. V-A, strategy (3)",
-    statement="s1 gives the best performance amongst all other sensors, on average, as the fixed "
-    "partner of s2 on the circular trajectory.",
-    paper="\"We chose s1 since it gives the best performance amongst all other sensors, on an "
-    "average\".",
+    title="Strategy (3): $s_1$ is the best fixed partner of $s_2$.",
+    statement="$s_1$ gives the best performance amongst all other sensors, on average, as the "
+    "fixed partner of $s_2$ on the circular trajectory.",
+    paper="“We chose $s_1$ since it gives the best performance amongst all other sensors, on an "
+    "average”.",
     notebook=NB5,
 )
 def _s1_partner(profile: str) -> Finding:
@@ -292,14 +302,15 @@ def _s1_partner(profile: str) -> Finding:
     else:
         status = "partly" if wins else "refuted"
     ours = (
-        f"Over {p['n_seeds']} seeds, partners of s2: "
+        f"Over {p['n_seeds']} seeds $s_1$ is the best partner of $s_2$ on "
+        f"{', '.join({'mean_trace': 'mean trace', 'mean_error': 'mean error', 'median_error': 'median run error', 'lost': 'fraction of lost runs'}[w] for w in wins) if wins else 'nothing'}; the highest bound "
+        f"is $s_{best['mean_bound'] + 1}$'s. Partners of $s_2$: "
         + "; ".join(
-            f"s{j + 1} trace {d['mean_trace']:.3f}, error {d['mean_error']:.2f} (median "
+            f"$s_{j + 1}$ trace {d['mean_trace']:.3f}, error {d['mean_error']:.2f} (median "
             f"{d['median_error']:.2f}), lost {d['lost']:.0%}, bound {d['mean_bound']:.3f}"
             for j, d in ps.items()
         )
-        + f". s1 is best on {', '.join(wins) if wins else 'nothing'}; the highest bound is "
-        f"s{best['mean_bound'] + 1}'s."
+        + "."
     )
     ev = {"partners": {f"s{j + 1}": {k: _r(v) for k, v in d.items()} for j, d in ps.items()},
           "best": {k: f"s{v + 1}" for k, v in best.items()}}
@@ -338,7 +349,8 @@ def strong_adversaries(p: dict) -> dict:
 @claim(
     id="fig7-entrapment",
     where="Sec. V-B, Fig. 7",
-    statement="An adversarial target that minimises C^-1 is entrapped by sensors using the "
+    title="Fig. 7: the best pair entraps an adversarial target.",
+    statement=r"An adversarial target that minimises $C^{-1}$ is entrapped by sensors using the "
     "best-pair strategy: the inverse condition number remains at a high value.",
     paper="\"An adversarial target is entrapped by sensors using best pairing strategy. The "
     "inverse of the condition number remains at a high value.\"",
@@ -367,11 +379,12 @@ def _fig7_entrapment(profile: str) -> Finding:
         f"Entrapped in {frac:.0%} of {p['n_seeds']} runs: the target stays within "
         f"{main['max_from_start']:.2f} of its start (reach {main['reach']:.1f}), the bound "
         "averages "
-        f"{lo:.2f}-{hi:.2f} per run (published run 0.79) and the exact C^-1 never drops below "
-        f"{main['icn_min']:.3f}; against the fixed pair (s2, s1) the same target drives it to "
+        f"{lo:.2f} to {hi:.2f} per run (published run 0.79) and the exact $C^{{-1}}$ never drops "
+        f"below {main['icn_min']:.3f}; against the fixed pair $(s_2, s_1)$ the same target drives "
+        "it to "
         f"{control['icn_min']:.4f}. Stronger targets: "
         + "; ".join(
-            f"{n}: entrapped {d['entrapped']:.0%}, C^-1 min {d['icn_min']:.3f}, bound "
+            f"{n}: entrapped {d['entrapped']:.0%}, smallest $C^{{-1}}$ {d['icn_min']:.3f}, bound "
             f"{d['bound_mean']:.2f}"
             for n, d in strong.items()
         )
@@ -385,8 +398,9 @@ def _fig7_entrapment(profile: str) -> Finding:
 @claim(
     id="fig7-switch-mechanism",
     where="Sec. V-B, Fig. 7 caption",
-    statement="Even if the target moves closer to a sensor to reduce C^-1, the sensor pair "
-    "switches, thereby increasing C^-1.",
+    title="Fig. 7: when the target nears a sensor, switching the pair restores the bound.",
+    statement=r"Even if the target moves closer to a sensor to reduce $C^{-1}$, the sensor pair "
+    r"switches, thereby increasing $C^{-1}$.",
     paper="\"the sensor pair switches whenever the target gets closer to a sensor\" (Sec. V-B).",
     notebook=NB6,
 )
@@ -406,8 +420,8 @@ def _fig7_switch(profile: str) -> Finding:
     ours = (
         f"The target moves closer to a sensor of the current pair at {m['closer_fraction']:.0%} of "
         f"the transitions; the pair then switches {sw_closer:.0%} of the time (switches overall "
-        f"{m['switch_fraction']:.0%}). A switch leaves the sensors a higher C^-1 than the target "
-        "aimed "
+        f"{m['switch_fraction']:.0%}). A switch leaves the sensors a higher $C^{{-1}}$ than the "
+        "target aimed "
         f"at in only {raised:.0%} of switches (mean gain {gain:+.3f})."
     )
     ev = {"n_seeds": p["n_seeds"], "closer_fraction": _r(m["closer_fraction"]),
@@ -418,9 +432,10 @@ def _fig7_switch(profile: str) -> Finding:
 @claim(
     id="fig7-figure-data",
     where="Sec. V-B, Fig. 7 (published run)",
+    title="Fig. 7: the numbers of the published run (mean bound 0.79, 306 switches).",
     statement="The published adversarial run: the sensors' bound averages about 0.79 and the "
     "pair switches at 306 of 314 transitions.",
-    paper="Figure data of the published run (the authors' saved figure data).",
+    paper="Figure data of the published run (the data saved with the authors' figures).",
     notebook=NB6,
 )
 def _fig7_data(profile: str) -> Finding:
@@ -440,9 +455,9 @@ def _fig7_data(profile: str) -> Finding:
     near = float(near.mean())
     ours = (
         f"Seed {p['seed']}: mean bound {mb:.3f}, {sw} switches of {r.steps - 1}. Over "
-        f"{p['n_seeds']} seeds the mean bound ranges {per_run.min():.2f}-{per_run.max():.2f} "
+        f"{p['n_seeds']} seeds the mean bound ranges from {per_run.min():.2f} to {per_run.max():.2f} "
         f"(median {np.median(per_run):.2f}; within 15 % of 0.79 in {near:.0%} of runs), switches "
-        f"{b.switches.min()}-{b.switches.max()}."
+        f"{b.switches.min()} to {b.switches.max()}."
     )
     ev = {"seed": p["seed"], "mean_bound": _r(mb), "switches": int(sw),
           "per_run_bound": (_r(per_run.min()), _r(np.median(per_run)), _r(per_run.max())),
