@@ -22,8 +22,10 @@ from . import pair_form  # noqa: E402,F401  Sec. III (pair): Theorems 4-5, Fig. 
 from . import assignment  # noqa: E402,F401  Sec. IV-A: Algorithm 1, Theorem 6
 from . import submodularity  # noqa: E402,F401  Sec. IV-B: Theorems 7-8
 from . import tracking  # noqa: E402,F401  Sec. V-A/B: Figs. 4-7
+from . import replay  # noqa: E402,F401  Sec. V-A/B: the published runs replayed
 from . import fig8  # noqa: E402,F401  Sec. V-C: Fig. 8
 from . import fig9  # noqa: E402,F401  Sec. V-D: Fig. 9, greedy teams
+from . import unchecked  # noqa: E402,F401  statements the paper does not check
 
 __all__ = [
     "STATUSES",

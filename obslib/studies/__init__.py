@@ -1,0 +1,1 @@
+"""Paper-specific studies and audits, one module per topic."""
