@@ -24,6 +24,8 @@ from . import submodularity  # noqa: E402,F401  Sec. IV-B: Theorems 7-8
 from . import tracking  # noqa: E402,F401  Sec. V-A/B: Figs. 4-7
 from . import greedy_vs_relaxed  # noqa: E402,F401  Sec. V-C: Fig. 8
 from . import teams  # noqa: E402,F401  Sec. V-D: Fig. 9, greedy teams
+from . import replay  # noqa: E402,F401  Sec. V-A/B: the published runs replayed
+from . import unchecked  # noqa: E402,F401  statements the paper does not check
 
 __all__ = [
     "STATUSES",

@@ -76,17 +76,68 @@ def _thm6_practice(profile: str) -> Finding:
     p, study, (worst_ratio, _, _) = _run(profile)
     r = study.ratio
     q05 = float(np.quantile(r, 0.05))
-    # "much better than 1/3": random instances well above it (5 % quantile >= 0.75), and no
-    # geometry found near it (>= 0.5); partly when only the first holds
-    if q05 < 0.75:
-        status = "refuted"
-    else:
-        status = "reproduced" if worst_ratio >= 0.5 else "partly"
+    # "much better than 1/3 in practice" is about random instances (Fig. 8's kind): reproduced
+    # when the 5 % quantile is >= 0.75, refuted otherwise. Geometries built to be hard are a
+    # separate question (thm6-tight).
+    status = "reproduced" if q05 >= 0.75 else "refuted"
     return Finding(
         status,
         f"On random instances yes: the greedy is optimal in {np.mean(r >= 1 - 1e-12):.0%} of "
-        f"{r.size} small instances and above {q05:.2f} of the optimum in 95 % of them. Not for "
-        f"every geometry: local search finds sensor-target layouts where it gets "
-        f"{worst_ratio:.3f}, close to the $1/3$ guarantee.",
-        {"quantile_05": q05, "worst_search_ratio": float(worst_ratio)},
+        f"{r.size} small instances, median {np.median(r):.3f} of the optimum and above "
+        f"{q05:.2f} in 95 %. (Geometries built by local search get down to {worst_ratio:.3f}: "
+        "see thm6-tight.)",
+        {"quantile_05": q05, "median": float(np.median(r)), "worst_search_ratio": float(worst_ratio)},
     )
+
+
+# ---------------------------------------------------------------------------------------------
+# Theorem 6 on geometric weights: how close to 1/3, and how fragile (notebook 11)
+# ---------------------------------------------------------------------------------------------
+
+#: The worst geometry counts as near 1/3 when its ratio is below this.
+NEAR_THIRD = 0.35
+
+
+@claim(
+    id="thm6-tight",
+    where="Theorem 6 (Sec. IV-A)",
+    statement="The 1/3 of Theorem 6 is nearly attained also by the pair bound's own weights: "
+    "sensor-target geometries exist where Algorithm 1 collects about a third of the optimum.",
+    paper="A 1/3-approximation \"for any omega\"; tightness is not discussed.",
+    notebook="11_unchecked_statements",
+)
+def _thm6_tight(profile: str) -> Finding:
+    """reproduced: the local search of notebook 03 finds a geometry with greedy / optimum below
+    :data:`NEAR_THIRD`; partly: below 1/2; refuted otherwise. The fragility (jitter of every
+    point by a fraction of the spread) is reported, not judged: a tight example may be fragile."""
+    from ..studies import greedy_tightness as gt
+    from ..studies.unchecked import notebook_params
+
+    p = params(NB, profile)
+    q = notebook_params(profile)
+    ratio, S, T = gt.tight_geometry(p["search_sensors"], p["search_targets"], p["seed"],
+                                    p["n_starts"], p["n_steps"], p["u_max"])
+    margin = gt.first_pick_margin(S, T, p["u_max"])
+    fr = q["jitter_fractions"]
+    rows = gt.jitter_summary(gt.jitter_ratios(S, T, fr, q["n_jitter"], q["seed"], p["u_max"]), fr)
+    status = "reproduced" if ratio < NEAR_THIRD else ("partly" if ratio < 0.5 else "refuted")
+    by = {r["fraction"]: r for r in rows}
+    small, big = by[min(by)], by[max(by)]
+    flip = next((r for r in rows if r["median"] > 0.5), None)
+    ours = (
+        f"Local search finds a geometry where the greedy gets {ratio:.3f} of the optimum: its "
+        f"first pick outweighs the heaviest of the three optimal triples it blocks by only "
+        f"{margin['relative_margin']:.1e} (relative). The example is a knife edge: jittering "
+        f"every point by {small['fraction']:.0e} of the spread keeps the ratio at "
+        f"{small['median']:.3f} (median of {q['n_jitter']} draws), "
+        + (
+            f"but at {flip['fraction']:.0e} the median ratio is {flip['median']:.2f} and only "
+            f"{flip['below_half']:.0%} of draws stay below 1/2; "
+            if flip
+            else ""
+        )
+        + f"at {big['fraction']:.0e}, {big['below_half']:.0%} of draws stay below 1/2."
+    )
+    ev = {"worst_ratio": ratio, "relative_margin": margin["relative_margin"],
+          "first_pick_w": margin["w"], "blocked_w": margin["blocked_w"], "jitter": rows}
+    return Finding(status, ours, ev)

@@ -1,0 +1,142 @@
+"""Section III's observability matrix as derived, against its rewriting as Eq. (4).
+
+Section III computes the local nonlinear observability matrix with the Lie derivatives of every
+measurement ``h_i``: each sensor contributes its gradient row ``o - p_i``, a row ``u_o`` (the
+first Lie derivative's gradient) and zero rows. It then "rewrites" the matrix as Eq. (4),
+``[o - p_1; ...; o - p_N; u_o]``, keeping a single ``u_o`` row. The two have the same rank, but
+not the same singular values: the derived matrix has ``O_d^T O_d = O(o)^T O(o) + N u u^T``, so
+``u`` weighs ``sqrt(N)`` times as much. Theorem 1 bounds ``C^{-1}`` of Eq. (4); for the derived
+matrix the same argument gives the bound with ``u_max`` replaced by ``sqrt(N) u_max``:
+
+.. math::
+
+    \\min_{\\|u\\| \\le u_{\\max}} C^{-1}(O_d) = \\sqrt{\\frac{\\lambda_{\\min}}{\\lambda_{\\max}
+    + N u_{\\max}^2}} < \\sqrt{\\frac{\\lambda_{\\min}}{\\lambda_{\\max} + u_{\\max}^2}}
+    \\quad (N \\ge 2,\\ u_{\\max} > 0),
+
+with ``lambda`` the eigenvalues of ``O(o)^T O(o)``, attained at ``u = u_max v_max``. The ratio of
+the two is ``sqrt((lambda_max + u_max^2) / (lambda_max + N u_max^2))``, which tends to
+``1 / sqrt(N)`` as ``lambda_max / u_max^2 -> 0``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..bounds import lower_bound, pair_bounds
+from ..observability import relative_rows
+
+__all__ = [
+    "derived_matrix",
+    "derived_inverse_condition",
+    "derived_bound",
+    "worst_derived_on_disc",
+    "bound_ratio",
+    "pair_choice_changes",
+]
+
+
+def _u_max(u_max) -> float:
+    try:
+        v = float(u_max)
+    except (TypeError, ValueError):
+        raise ValueError(f"u_max must be a non-negative number, got {u_max!r}") from None
+    if not np.isfinite(v) or v < 0:
+        raise ValueError(f"u_max must be a non-negative finite number, got {u_max!r}")
+    return v
+
+
+def _control(u) -> np.ndarray:
+    try:
+        a = np.asarray(u, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"u must be a 2-vector, got {u!r}") from None
+    if a.shape != (2,) or not np.isfinite(a).all():
+        raise ValueError(f"u must be a finite 2-vector, got {u!r}")
+    return a
+
+
+def derived_matrix(sensors, target, u) -> np.ndarray:
+    """The observability matrix as Section III derives it (before Eq. (4)), zero rows dropped.
+
+    Rows ``o - p_1, u, o - p_2, u, ..., o - p_N, u``: each sensor's zeroth and first Lie
+    derivative gradients (the higher ones are zero). Shape ``(2N, 2)``.
+    """
+    rows = relative_rows(sensors, target)
+    uu = _control(u)
+    out = np.empty((2 * rows.shape[0], 2))
+    out[0::2], out[1::2] = rows, uu
+    return out
+
+
+def derived_inverse_condition(sensors, target, u) -> float:
+    """``sigma_min / sigma_max`` of :func:`derived_matrix` (by SVD)."""
+    sv = np.linalg.svd(derived_matrix(sensors, target, u), compute_uv=False)
+    return float(sv[-1] / sv[0]) if sv[0] > 0 else 0.0
+
+
+def derived_bound(sensors, target, u_max) -> float:
+    """The worst case of :func:`derived_inverse_condition` over ``||u|| <= u_max``.
+
+    Theorem 1's argument applied to ``O(o)^T O(o) + N u u^T``: ``sqrt(lambda_min / (lambda_max +
+    N u_max^2))`` (attained along the principal eigenvector, at full norm).
+    """
+    rows = relative_rows(sensors, target)
+    lam = np.linalg.eigvalsh(rows.T @ rows)
+    return float(np.sqrt(max(lam[0], 0.0) / (lam[1] + rows.shape[0] * _u_max(u_max) ** 2)))
+
+
+def worst_derived_on_disc(sensors, target, u_max, n_radii: int = 20, n_angles: int = 360):
+    """Numerical minimum of :func:`derived_inverse_condition` over a polar grid of the disc.
+
+    Returns
+    -------
+    (float, ndarray)
+        The smallest value found and the control reaching it.
+    """
+    um = _u_max(u_max)
+    for name, v in (("n_radii", n_radii), ("n_angles", n_angles)):
+        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
+            raise ValueError(f"{name} must be a positive integer, got {v!r}")
+    rows = relative_rows(sensors, target)
+    r = um * np.arange(1, n_radii + 1) / n_radii
+    phi = 2 * np.pi * np.arange(n_angles) / n_angles
+    U = (r[:, None, None] * np.stack([np.cos(phi), np.sin(phi)], -1)[None]).reshape(-1, 2)
+    U = np.vstack([np.zeros((1, 2)), U])
+    G = rows.T @ rows
+    n = rows.shape[0]
+    M = G[None] + n * U[:, :, None] * U[:, None, :]
+    lam = np.linalg.eigvalsh(M)
+    vals = np.sqrt(np.maximum(lam[:, 0], 0) / lam[:, 1])
+    k = int(np.argmin(vals))
+    return float(vals[k]), U[k]
+
+
+def bound_ratio(sensors, target, u_max) -> float:
+    """Worst ``C^{-1}`` of the derived matrix over Theorem 1's bound (Eq. (4)); ``<= 1``."""
+    tb = lower_bound(sensors, target, u_max)
+    return derived_bound(sensors, target, u_max) / tb if tb > 0 else 1.0
+
+
+def pair_choice_changes(n_scenes: int, n_sensors: int, u_max: float, seed: int = 0,
+                        side: float = 10.0) -> float:
+    """Share of random scenes where the best pair by Theorem 4 differs between Eq. (4)
+    (``u_max``) and the derived matrix (``sqrt(2) u_max``: two sensors, two ``u`` rows).
+
+    Sensors and one target uniform in ``[0, side]^2``, Euclidean distances.
+    """
+    if isinstance(n_scenes, bool) or not isinstance(n_scenes, (int, np.integer)) or n_scenes < 1:
+        raise ValueError(f"n_scenes must be a positive integer, got {n_scenes!r}")
+    if isinstance(n_sensors, bool) or not isinstance(n_sensors, (int, np.integer)) or n_sensors < 2:
+        raise ValueError(f"n_sensors must be an integer >= 2, got {n_sensors!r}")
+    um = _u_max(u_max)
+    rng = np.random.default_rng(seed)
+    ii, jj = np.triu_indices(int(n_sensors), 1)
+    changed = 0
+    for _ in range(int(n_scenes)):
+        S = rng.uniform(0, side, size=(int(n_sensors), 2))
+        o = rng.uniform(0, side, size=(1, 2))
+        a = pair_bounds(S, o, um)[ii, jj, 0]
+        b = pair_bounds(S, o, np.sqrt(2) * um)[ii, jj, 0]
+        changed += int(np.argmax(a) != np.argmax(b))
+    return changed / int(n_scenes)

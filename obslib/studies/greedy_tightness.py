@@ -1,0 +1,142 @@
+"""How tight Theorem 6's 1/3 is on geometric instances, and how fragile the tight geometry is.
+
+On random instances Algorithm 1 is near-optimal (notebook 03), but a local search over sensor
+and target positions (:func:`obslib.assignment_study.worst_instance_search`) finds geometries
+where it collects only about 0.34 of the optimum, close to the 1/3 guarantee. There the greedy's
+first pick outweighs each of the three optimal triples it blocks by a small relative margin
+(:func:`first_pick_margin`). :func:`jitter_ratios` measures how fragile this is: it moves every
+point by Gaussian noise of standard deviation ``fraction * spread`` (``spread``: the root mean
+square distance of the points from their centroid) and recomputes greedy / optimum.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+
+from .. import assignment_study as st
+from ..assignment import greedy_pair_assignment, optimal_pair_assignment
+from ..bounds import pair_bounds
+
+__all__ = ["tight_geometry", "spread", "first_pick_margin", "jitter_ratios", "jitter_summary"]
+
+
+@lru_cache(maxsize=4)
+def _search(n_sensors, n_targets, seed, n_starts, n_steps, u_max):
+    return st.worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
+
+
+def tight_geometry(n_sensors: int = 6, n_targets: int = 3, seed: int = 0, n_starts: int = 20,
+                   n_steps: int = 300, u_max: float = 1.0):
+    """The worst geometry the local search of notebook 03 finds (Theorem 6, Sec. IV-A).
+
+    Returns
+    -------
+    (float, ndarray, ndarray)
+        Greedy / optimum there, the sensors ``(N, 2)`` and the targets ``(L, 2)``.
+    """
+    for name, v in (("n_sensors", n_sensors), ("n_targets", n_targets), ("n_starts", n_starts)):
+        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
+            raise ValueError(f"{name} must be a positive integer, got {v!r}")
+    if n_sensors < 2 * n_targets:
+        raise ValueError(f"need n_sensors >= 2 n_targets, got {n_sensors} and {n_targets}")
+    r, S, T = _search(int(n_sensors), int(n_targets), int(seed), int(n_starts), int(n_steps), float(u_max))
+    return r, S.copy(), T.copy()
+
+
+def spread(sensors, targets) -> float:
+    """Root mean square distance of all points (sensors and targets) from their centroid."""
+    P = np.vstack([np.asarray(sensors, float), np.asarray(targets, float)])
+    return float(np.sqrt(((P - P.mean(axis=0)) ** 2).sum(axis=1).mean()))
+
+
+def first_pick_margin(sensors, targets, u_max: float = 1.0) -> dict:
+    """The greedy's first pick against the optimal triples it blocks (Theorem 6's charging).
+
+    Returns
+    -------
+    dict
+        ``pick`` and ``w`` (the greedy's first triple and weight), ``blocked`` (the optimal
+        triples sharing a sensor or the target with it) and their weights ``blocked_w``,
+        ``relative_margin`` ``(w - max(blocked_w)) / w``, ``ratio`` greedy / optimum.
+    """
+    W = pair_bounds(sensors, targets, u_max)
+    g, o = greedy_pair_assignment(W), optimal_pair_assignment(W)
+    rounds = st.charging(W, g.triples, o.triples)
+    first = rounds[0]
+    top = max(first["charged_w"]) if first["charged_w"] else 0.0
+    return {
+        "pick": first["pick"],
+        "w": first["w"],
+        "blocked": first["charged"],
+        "blocked_w": first["charged_w"],
+        "relative_margin": (first["w"] - top) / first["w"],
+        "ratio": g.value / o.value,
+    }
+
+
+def _ratio_batch(S, T, u_max):
+    W, valid = st.batch_pair_bounds(S, T, u_max)
+    W[~valid] = 0.0
+    opt = st.optimal_values(W)
+    g = st.greedy_values(W)
+    ok = valid & (opt > 0)
+    return np.where(ok, g / np.where(ok, opt, 1.0), np.nan)
+
+
+def jitter_ratios(sensors, targets, fractions, n_draws: int, seed: int = 0, u_max: float = 1.0):
+    """Greedy / optimum after jittering every point by ``N(0, (fraction * spread)^2)``.
+
+    Parameters
+    ----------
+    sensors, targets : array_like, shapes (N, 2), (L, 2)
+    fractions : sequence of float
+        Jitter sizes as fractions of :func:`spread`.
+    n_draws : int
+        Draws per fraction (one generator of ``seed``, fraction after fraction).
+
+    Returns
+    -------
+    ndarray, shape (len(fractions), n_draws)
+        The ratio per draw (NaN for the zero-probability draws where points coincide).
+    """
+    S = np.asarray(sensors, dtype=float)
+    T = np.asarray(targets, dtype=float)
+    if S.ndim != 2 or S.shape[1] != 2 or T.ndim != 2 or T.shape[1] != 2:
+        raise ValueError(f"need sensors (N, 2) and targets (L, 2), got {S.shape} and {T.shape}")
+    if S.shape[0] < 2 * T.shape[0] or T.shape[0] < 1:
+        raise ValueError(f"need at least one target and N >= 2 L, got N = {S.shape[0]}, L = {T.shape[0]}")
+    if not (np.isfinite(S).all() and np.isfinite(T).all()):
+        raise ValueError("sensor and target positions must be finite")
+    f = np.asarray(fractions, dtype=float).reshape(-1)
+    if f.size == 0 or not np.isfinite(f).all() or (f < 0).any():
+        raise ValueError(f"fractions must be non-negative finite numbers, got {fractions!r}")
+    if isinstance(n_draws, bool) or not isinstance(n_draws, (int, np.integer)) or n_draws < 1:
+        raise ValueError(f"n_draws must be a positive integer, got {n_draws!r}")
+    rng = np.random.default_rng(seed)
+    sd = spread(S, T)
+    n, m = S.shape[0], S.shape[0] + T.shape[0]
+    P = np.vstack([S, T])
+    out = np.empty((f.size, int(n_draws)))
+    for a, frac in enumerate(f):
+        Q = P[None] + rng.normal(0.0, frac * sd, size=(int(n_draws), m, 2))
+        out[a] = _ratio_batch(Q[:, :n], Q[:, n:], u_max)
+    return out
+
+
+def jitter_summary(ratios, fractions) -> list[dict]:
+    """Per fraction: median, 5 % and 95 % quantiles, min, and the share of draws below 1/2."""
+    r = np.asarray(ratios, dtype=float)
+    rows = []
+    for frac, row in zip(fractions, r):
+        v = row[np.isfinite(row)]
+        rows.append({
+            "fraction": float(frac),
+            "median": float(np.median(v)),
+            "q05": float(np.quantile(v, 0.05)),
+            "q95": float(np.quantile(v, 0.95)),
+            "min": float(v.min()),
+            "below_half": float(np.mean(v < 0.5)),
+        })
+    return rows

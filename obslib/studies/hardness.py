@@ -1,0 +1,151 @@
+"""Is Unique Pair Assignment (Problem 1) NP-complete, and how far does the exact optimum get?
+
+Sec. V-C states "The Unique Pair Assignment problem is NP-Complete" and Sec. I that "the optimal
+solution cannot be computed", both without proof. For *arbitrary* weights the statement holds,
+by a reduction from 3-dimensional matching (3DM, NP-complete; Karp 1972):
+
+    A 3DM instance has disjoint sets ``X, Y, Z`` of ``q`` elements each and triples
+    ``T`` subset of ``X x Y x Z``; it asks whether ``q`` pairwise disjoint triples of ``T``
+    exist (a perfect matching). Build ``N = 2q`` sensors ``X u Y`` and ``L = q`` targets ``Z``
+    with ``omega(x, y, z) = 1`` for ``(x, y, z)`` in ``T`` and 0 for every other triple
+    (pairs inside ``X`` or inside ``Y`` included). An assignment reaches value ``q`` iff its
+    ``q`` triples all weigh 1, i.e. lie in ``T``, use every target once and no sensor twice,
+    i.e. form a perfect matching.
+
+So deciding "is there an assignment of value ``>= K``" is NP-hard, and it is in NP (check a
+given assignment), hence NP-complete. For the *geometric* weights of the paper (Theorem 4's
+bound of points in the plane) this reduction does not apply: those weights are not free to take
+the values 0 and 1 at will, and we know of no hardness proof for them (nor does the paper give
+one). Either way NP-hardness is about the worst case as instances grow; it does not mean the
+optimum "cannot be computed" at the sizes of the paper: :func:`exact_solver_reach` times the
+exact 0-1 program (:func:`obslib.optimal_pair_assignment`) at growing sizes.
+"""
+
+from __future__ import annotations
+
+import itertools
+import time
+
+import numpy as np
+
+from ..assignment import greedy_pair_assignment, optimal_pair_assignment, relaxed_pair_assignment
+from ..bounds import pair_bounds
+
+__all__ = [
+    "three_dm_weights",
+    "has_perfect_matching",
+    "random_3dm",
+    "reduction_check",
+    "exact_solver_reach",
+]
+
+
+def _check_3dm(q, triples) -> tuple[int, list]:
+    if isinstance(q, bool) or not isinstance(q, (int, np.integer)) or q < 1:
+        raise ValueError(f"q must be a positive integer, got {q!r}")
+    out = []
+    for t in triples:
+        if len(t) != 3 or not all(isinstance(a, (int, np.integer)) and 0 <= a < q for a in t):
+            raise ValueError(f"each triple must be (x, y, z) with elements in 0..{q - 1}, got {t!r}")
+        out.append(tuple(int(a) for a in t))
+    return int(q), out
+
+
+def three_dm_weights(q: int, triples) -> np.ndarray:
+    """Problem 1 weights ``W`` of shape ``(2q, 2q, q)`` built from a 3DM instance.
+
+    Sensors ``0..q-1`` are ``X``, sensors ``q..2q-1`` are ``Y``, targets are ``Z``;
+    ``W[x, q + y, z] = W[q + y, x, z] = 1`` for each triple ``(x, y, z)``, 0 elsewhere.
+    """
+    q, ts = _check_3dm(q, triples)
+    W = np.zeros((2 * q, 2 * q, q))
+    for x, y, z in ts:
+        W[x, q + y, z] = W[q + y, x, z] = 1.0
+    return W
+
+
+def has_perfect_matching(q: int, triples) -> bool:
+    """Whether ``q`` pairwise disjoint triples exist (brute force over ``q``-subsets)."""
+    q, ts = _check_3dm(q, triples)
+    ts = sorted(set(ts))
+    for combo in itertools.combinations(ts, q):
+        if all(len({t[k] for t in combo}) == q for k in range(3)):
+            return True
+    return False
+
+
+def random_3dm(q: int, n_triples: int, rng) -> list:
+    """``n_triples`` distinct random triples over ``q``-element sets (a random 3DM instance)."""
+    q, _ = _check_3dm(q, [])
+    total = q**3
+    if isinstance(n_triples, bool) or not isinstance(n_triples, (int, np.integer)) or not 0 <= n_triples <= total:
+        raise ValueError(f"n_triples must be an integer in 0..{total}, got {n_triples!r}")
+    idx = rng.choice(total, size=int(n_triples), replace=False)
+    return [(int(i // (q * q)), int(i // q % q), int(i % q)) for i in idx]
+
+
+def reduction_check(n_instances: int, seed: int = 0, q_values=(2, 3, 4)) -> dict:
+    """The reduction on random 3DM instances: matching exists iff the optimum equals ``q``.
+
+    Each instance draws ``q`` from ``q_values`` and between ``q`` and ``3 q`` triples (so both
+    answers occur). The optimum is the exact 0-1 program of :func:`obslib.optimal_pair_assignment`.
+
+    Returns
+    -------
+    dict
+        ``n``, ``agree`` (instances where both sides agree), ``with_matching``.
+    """
+    if isinstance(n_instances, bool) or not isinstance(n_instances, (int, np.integer)) or n_instances < 1:
+        raise ValueError(f"n_instances must be a positive integer, got {n_instances!r}")
+    rng = np.random.default_rng(seed)
+    agree = with_m = 0
+    for _ in range(int(n_instances)):
+        q = int(rng.choice(list(q_values)))
+        ts = random_3dm(q, int(rng.integers(q, 3 * q + 1)), rng)
+        m = has_perfect_matching(q, ts)
+        opt = optimal_pair_assignment(three_dm_weights(q, ts)).value
+        agree += int(m == (opt >= q - 1e-9))
+        with_m += int(m)
+    return {"n": int(n_instances), "agree": agree, "with_matching": with_m}
+
+
+def exact_solver_reach(L_values, time_budget: float, seed: int = 0, u_max: float = 1.0,
+                       side: float = 100.0) -> list[dict]:
+    """Time the exact optimum of Problem 1 on random Fig. 8 instances (``N = 2L``).
+
+    Sizes are tried in the given order until one does not finish within ``time_budget``
+    seconds (HiGHS's time limit); that size is reported as not solved and larger ones skipped.
+
+    Returns
+    -------
+    list of dict
+        Per size tried: ``L``, ``N``, ``solved``, ``seconds``, and when solved ``optimum``,
+        ``greedy`` and ``relaxed`` (Problem 3) values.
+    """
+    try:
+        budget = float(time_budget)
+    except (TypeError, ValueError):
+        raise ValueError(f"time_budget must be a positive number, got {time_budget!r}") from None
+    if not np.isfinite(budget) or budget <= 0:
+        raise ValueError(f"time_budget must be a positive number, got {time_budget!r}")
+    Ls = [int(v) for v in L_values]
+    if not Ls or min(Ls) < 1:
+        raise ValueError(f"L_values must be positive integers, got {L_values!r}")
+    rows = []
+    for L in Ls:
+        rng = np.random.default_rng([seed, L])
+        S, T = rng.uniform(0, side, (2 * L, 2)), rng.uniform(0, side, (L, 2))
+        W = pair_bounds(S, T, u_max)
+        t0 = time.perf_counter()
+        try:
+            opt = optimal_pair_assignment(W, time_limit=budget)
+        except RuntimeError:
+            rows.append({"L": L, "N": 2 * L, "solved": False, "seconds": time.perf_counter() - t0})
+            break
+        rows.append({
+            "L": L, "N": 2 * L, "solved": True, "seconds": time.perf_counter() - t0,
+            "optimum": opt.value,
+            "greedy": greedy_pair_assignment(W).value,
+            "relaxed": relaxed_pair_assignment(W).value,
+        })
+    return rows

@@ -1,0 +1,233 @@
+"""The published tracking runs of Figs. 4-7 replayed with their own measurement noise.
+
+The saved runs (:mod:`obslib.published_runs`) let us recover the noise each measurement carried;
+fed to :func:`obslib.tracking.simulate` with the experiments' parameters
+(:data:`obslib.tracking.PAPER_CIRCLE`, :data:`obslib.tracking.PAPER_ADVERSARIAL`), it should
+reproduce every logged number of a run. :func:`compare_replay` measures how closely, and checks
+that the table's unknown entries (NaN, sensors no run measured at that step) were never used:
+the replay is run with two different fills of those entries and must give identical results,
+and every entry the replay's pairs read must be known.
+
+:func:`seed_typicality` places the published adversarial run among runs with random noise.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import tracking as tr
+from ..published_runs import RUN_NAMES, published_noise, published_run  # noqa: F401
+
+__all__ = [
+    "REPLAY_FILLS",
+    "ReplayComparison",
+    "replay_setup",
+    "replay",
+    "compare_replay",
+    "seed_typicality",
+]
+
+#: Two fills of the unknown noise entries; a replay that never reads them gives the same run.
+REPLAY_FILLS = (0.0, 10.0)
+
+
+def _check_name(name) -> str:
+    if not isinstance(name, str) or name not in RUN_NAMES:
+        raise ValueError(f"unknown published run {name!r}; accepted names: {', '.join(RUN_NAMES)}")
+    return name
+
+
+def replay_setup(name: str) -> tr.TrackingSetup:
+    """The experiments' setup of a published run (Sec. V-A: the circle; Sec. V-B: the adversary)."""
+    name = _check_name(name)
+    return tr.PAPER_ADVERSARIAL if name == "adversarial" else tr.PAPER_CIRCLE
+
+
+def _strategy(name: str) -> str:
+    return "best-pair" if name == "adversarial" else name
+
+
+def _table(steps: int, fill: float) -> np.ndarray:
+    """The published noise, unknown entries set to ``fill``, cut or padded to ``steps`` rows."""
+    t = np.nan_to_num(published_noise(), nan=fill)
+    if steps > t.shape[0]:
+        t = np.vstack([t, np.full((steps - t.shape[0], t.shape[1]), fill)])
+    return t[:steps]
+
+
+def _replayable_steps(name: str) -> int:
+    """Steps whose logged values the table determines.
+
+    Values logged at step ``k`` come before that step's update, so they need the noise of steps
+    ``1..k-1`` on the run's pairs. Strategy (3) always measures s1 and s2; the table lacks s1 at
+    step 1, so only step 1 of that run can be replayed. The other runs: all 315 steps.
+    """
+    if name != "fixed-pair":
+        return published_run(name).steps
+    known = np.isfinite(published_noise()[:, list(tr.PAPER_CIRCLE.fixed_pair)]).all(axis=1)
+    missing = np.flatnonzero(~known)
+    return int(missing[0]) + 1 if missing.size else known.size
+
+
+def _replay(name: str, fill: float, steps: int) -> tr.TrackingResult:
+    setup = replay_setup(name).replace(steps=steps)
+    return tr.simulate(setup, _strategy(name), noise=_table(steps, fill))
+
+
+def replay(name: str, fill: float = REPLAY_FILLS[0]) -> tr.TrackingResult:
+    """A published run re-simulated with the published noise (Sec. V, Figs. 4-7).
+
+    Parameters
+    ----------
+    name : {"best-pair", "best-partner", "fixed-pair", "adversarial"}
+        See :func:`obslib.published_runs.published_run`.
+    fill : float
+        Value given to the noise entries no published run measured (they should not matter:
+        :func:`compare_replay` checks it).
+
+    Returns
+    -------
+    TrackingResult
+        315 steps; for ``"fixed-pair"`` only the first steps are determined by the table
+        (``compare_replay(name).steps`` of them).
+    """
+    name = _check_name(name)
+    try:
+        fill = float(fill)
+    except (TypeError, ValueError):
+        raise ValueError(f"fill must be a finite number, got {fill!r}") from None
+    if not np.isfinite(fill):
+        raise ValueError(f"fill must be a finite number, got {fill!r}")
+    return _replay(name, fill, published_run(name).steps)
+
+
+@dataclass(frozen=True)
+class ReplayComparison:
+    """How a replay compares with the logged run (:func:`compare_replay`).
+
+    Attributes
+    ----------
+    name : str
+    steps : int
+        Logged steps compared (all 315, or the replayable prefix of strategy (3)).
+    max_abs_diff : dict
+        Per logged quantity, the largest absolute difference replay minus log.
+    n_values : dict
+        Per logged quantity, how many numbers were compared.
+    pair_mismatches : int
+        Steps whose chosen pair differs from the log.
+    fills_agree : bool
+        The replays with the two :data:`REPLAY_FILLS` of the unknown entries are identical.
+    unknown_reads : int
+        Noise entries the replay read (its pairs at the compared steps but the last) that the
+        table does not know.
+    """
+
+    name: str
+    steps: int
+    max_abs_diff: dict
+    n_values: dict
+    pair_mismatches: int
+    fills_agree: bool
+    unknown_reads: int
+
+    @property
+    def largest(self) -> float:
+        """The largest difference over every compared number."""
+        return max(self.max_abs_diff.values())
+
+    @property
+    def total_values(self) -> int:
+        return int(sum(self.n_values.values()))
+
+    @property
+    def exact(self) -> bool:
+        """Same pairs, never an unknown entry, fills agree (numbers are compared separately)."""
+        return self.pair_mismatches == 0 and self.fills_agree and self.unknown_reads == 0
+
+
+_FIELDS = ("bound", "error", "trace_cov", "truth", "estimate", "cov", "control", "objective")
+
+
+def compare_replay(name: str) -> ReplayComparison:
+    """Replay a published run and compare it with every number it logged.
+
+    The circle runs of strategies (1) and (2) also logged the filter after the last update; the
+    replay gets it by running one step more (the extra step's noise is never read for it).
+
+    Parameters
+    ----------
+    name : {"best-pair", "best-partner", "fixed-pair", "adversarial"}
+
+    Returns
+    -------
+    ReplayComparison
+    """
+    name = _check_name(name)
+    pub = published_run(name)
+    n = _replayable_steps(name)
+    extra = pub.estimate_end is not None
+    runs = [_replay(name, f, n + extra) for f in REPLAY_FILLS]
+    r = runs[0]
+    fields = ("pairs", "bound", "error", "trace_cov", "truth", "estimate", "cov", "control")
+    agree = all(np.array_equal(getattr(runs[0], f), getattr(runs[1], f)) for f in fields)
+    diff, count = {}, {}
+    for f in _FIELDS:
+        logged = getattr(pub, f)
+        if logged is None:
+            continue
+        ours = getattr(r, f)[:n]
+        d = np.abs(ours - logged[:n])
+        diff[f], count[f] = float(d.max()), int(d.size)
+    if extra:
+        for f, g in (("estimate_end", "estimate"), ("cov_end", "cov")):
+            d = np.abs(getattr(r, g)[n] - getattr(pub, f))
+            diff[f], count[f] = float(d.max()), int(d.size)
+    mism = int((r.pairs[:n] != pub.pairs[:n]).any(axis=1).sum())
+    noise = published_noise()
+    used = noise[np.arange(n - 1)[:, None], r.pairs[: n - 1]]
+    diff = {k: float(v) for k, v in diff.items()}
+    return ReplayComparison(
+        name=name,
+        steps=n,
+        max_abs_diff=diff,
+        n_values=count,
+        pair_mismatches=mism,
+        fills_agree=bool(agree),
+        unknown_reads=int((~np.isfinite(used)).sum()),
+    )
+
+
+def seed_typicality(n_seeds: int, first_seed: int = 0) -> dict:
+    """Where the published adversarial run's mean bound falls among runs with random noise.
+
+    Runs the adversarial experiment (Sec. V-B) with ``n_seeds`` noise seeds
+    (:func:`obslib.tracking.simulate_batch`) and compares each run's mean bound with the
+    published run's (0.788).
+
+    Returns
+    -------
+    dict
+        ``published`` (the logged mean bound), ``per_run`` (the seeds' mean bounds),
+        ``percentile`` (share of seeds below the published value, in percent),
+        ``at_least`` (share of seeds at or above it), ``quantiles`` (5, 25, 50, 75, 95 %).
+    """
+    if isinstance(n_seeds, bool) or not isinstance(n_seeds, (int, np.integer)) or n_seeds < 1:
+        raise ValueError(f"n_seeds must be a positive integer, got {n_seeds!r}")
+    if isinstance(first_seed, bool) or not isinstance(first_seed, (int, np.integer)) or first_seed < 0:
+        raise ValueError(f"first_seed must be a non-negative integer, got {first_seed!r}")
+    pub = float(published_run("adversarial").bound.mean())
+    b = tr.simulate_batch(
+        tr.PAPER_ADVERSARIAL, "best-pair", seeds=range(int(first_seed), int(first_seed) + int(n_seeds))
+    )
+    m = b.bound.mean(axis=1)
+    return {
+        "published": pub,
+        "per_run": m,
+        "percentile": float(100 * np.mean(m < pub)),
+        "at_least": float(np.mean(m >= pub)),
+        "quantiles": {q: float(np.quantile(m, q / 100)) for q in (5, 25, 50, 75, 95)},
+        "switches": b.switches,
+    }

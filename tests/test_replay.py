@@ -1,0 +1,82 @@
+"""Replaying the published runs (obslib.studies.replay) and the published-replay claim."""
+
+import numpy as np
+import pytest
+
+import obslib.tracking as tr
+from obslib import claims
+from obslib.published_runs import published_noise, published_run
+from obslib.studies import replay as rp
+
+
+@pytest.fixture(scope="module")
+def comparisons():
+    return {n: rp.compare_replay(n) for n in ("best-pair", "best-partner", "fixed-pair", "adversarial")}
+
+
+@pytest.mark.parametrize("name", ["best-pair", "best-partner", "adversarial"])
+def test_replay_gives_every_logged_number(comparisons, name):
+    c = comparisons[name]
+    assert c.steps == 315 and c.exact
+    # the log is printed to 12 significant digits; the numbers are at most about 10
+    assert c.largest < 1e-10
+    assert {"bound", "error", "trace_cov", "truth", "estimate"} <= set(c.max_abs_diff)
+
+
+def test_replay_against_the_log_directly():
+    r = rp.replay("adversarial")
+    pub = published_run("adversarial")
+    assert np.array_equal(r.pairs, pub.pairs)
+    np.testing.assert_allclose(r.bound, pub.bound, atol=1e-10)
+    np.testing.assert_allclose(r.objective, pub.objective, atol=1e-10)
+    assert r.switches == 306
+
+
+def test_unknown_entries_do_not_matter():
+    # two fills of the unknown entries give the same run, and a third, wild one too
+    a = rp.replay("best-partner", fill=0.0)
+    b = rp.replay("best-partner", fill=-1e3)
+    assert np.array_equal(a.estimate, b.estimate) and np.array_equal(a.pairs, b.pairs)
+
+
+def test_the_unknown_entries_would_matter_if_read():
+    # the check has teeth: a random noise table in place of the published one changes the run
+    t = np.nan_to_num(published_noise(), nan=0.0)
+    t[5:, :] = tr.noise_table(tr.PAPER_ADVERSARIAL, 1)[5:]
+    r = tr.simulate(tr.PAPER_ADVERSARIAL, "best-pair", noise=t)
+    assert np.abs(r.bound - published_run("adversarial").bound).max() > 1e-3
+
+
+def test_fixed_pair_is_replayable_only_where_the_table_knows_s1_and_s2(comparisons):
+    c = comparisons["fixed-pair"]
+    t = published_noise()
+    first_unknown = np.flatnonzero(~np.isfinite(t[:, :2]).all(axis=1))[0]
+    assert c.steps == first_unknown + 1 and c.exact and c.largest < 1e-10
+
+
+def test_seed_typicality_is_consistent():
+    t = rp.seed_typicality(30, 0)
+    m = t["per_run"]
+    assert m.shape == (30,)
+    assert t["percentile"] == pytest.approx(100 * np.mean(m < t["published"]))
+    assert t["quantiles"][5] <= t["quantiles"][50] <= t["quantiles"][95]
+    # seed 0 is the run the batch engine and filterpy agree on
+    one = tr.simulate(tr.PAPER_ADVERSARIAL, "best-pair", seed=0)
+    assert m[0] == pytest.approx(one.bound.mean(), abs=1e-9)
+
+
+@pytest.mark.parametrize("bad", [dict(name="nope"), dict(name="best-pair", fill=np.nan),
+                                 dict(name="best-pair", fill="x")])
+def test_bad_input(bad):
+    with pytest.raises(ValueError):
+        rp.replay(**bad)
+    with pytest.raises(ValueError, match="accepted names"):
+        rp.compare_replay("nope")
+    with pytest.raises(ValueError, match="n_seeds"):
+        rp.seed_typicality(0)
+
+
+def test_published_replay_claim():
+    (r,) = claims.evaluate("quick", ids=["published-replay"])
+    assert r.status == "reproduced"
+    assert r.evidence["runs"]["fixed-pair"]["steps"] == 1
