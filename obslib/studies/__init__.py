@@ -1,0 +1,1 @@
+"""Studies beyond the paper: the computations behind the later notebooks and their claims."""
