@@ -1,0 +1,115 @@
+"""The criteria study: each criterion's score against a direct evaluation of its formula, the
+paired test against scipy, the summaries against the runs they summarise."""
+
+import numpy as np
+import pytest
+from scipy import stats
+
+import obslib as ob
+from obslib import tracking as tr
+from obslib.studies import criteria as cs
+
+RNG = np.random.default_rng(7)
+S = RNG.uniform(-3, 5, size=(5, 2))
+X = RNG.uniform(-1, 4, size=(4, 2))
+A = RNG.normal(size=(4, 2, 2))
+C = A @ np.swapaxes(A, 1, 2) + 0.3 * np.eye(2)
+Q = np.array([[0.5, 0.1], [0.1, 0.4]])
+R = np.array([[0.5, 0.0], [0.0, 0.3]])
+U = RNG.uniform(-1, 1, size=(4, 2))
+
+
+def _direct(name, b, i, j, metric="mahalanobis"):
+    H = np.array([X[b] - S[i], X[b] - S[j]])
+    J = np.linalg.inv(C[b] + Q) + H.T @ np.linalg.inv(R) @ H
+    if name == "d-optimal":
+        return np.linalg.det(J)
+    if name == "a-optimal":
+        return -np.trace(np.linalg.inv(J))
+    if name == "e-optimal":
+        return np.linalg.eigvalsh(J)[0]
+    if name == "exact-icn":
+        s = np.linalg.svd(np.vstack([H, U[b]]), compute_uv=False)
+        return s[-1] / s[0]
+    cov = C[b] if metric == "mahalanobis" else None
+    return ob.pair_bounds(S, X[b][None], 1.3, cov=None if cov is None else cov[None])[i, j, 0]
+
+
+@pytest.mark.parametrize("name", cs.SCORES)
+def test_scores_equal_direct_formulas(name):
+    got = cs.criterion_scores(name, S, X, C, Q, R, 1.3, control=U)
+    ii, jj = np.triu_indices(5, 1)
+    want = np.array([[_direct(name, b, i, j) for i, j in zip(ii, jj)] for b in range(4)])
+    np.testing.assert_allclose(got, want, rtol=1e-9, atol=1e-12)
+
+
+def test_euclidean_bound_score():
+    got = cs.criterion_scores("bound", S, X, C, Q, R, 1.3, metric="euclidean")
+    ii, jj = np.triu_indices(5, 1)
+    want = np.array([[_direct("bound", b, i, j, "euclidean") for i, j in zip(ii, jj)] for b in range(4)])
+    np.testing.assert_allclose(got, want, rtol=1e-12)
+
+
+def test_bad_score_input():
+    with pytest.raises(ValueError, match="criterion"):
+        cs.criterion_scores("c-optimal", S, X, C, Q, R, 1.0)
+    with pytest.raises(ValueError, match="control"):
+        cs.criterion_scores("exact-icn", S, X, C, Q, R, 1.0)
+    with pytest.raises(ValueError, match="sensors"):
+        cs.criterion_scores("bound", S[:1], X, C, Q, R, 1.0)
+    with pytest.raises(ValueError, match="metric"):
+        cs.criterion_scores("bound", S, X, C, Q, R, 1.0, metric="l1")
+
+
+def test_paired_test_against_scipy():
+    a = np.array([1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0])
+    b = a + np.array([0.5, -0.2, 0.3, 0.0, 0.9, 0.4, -0.1, 0.7])
+    t = cs.paired_test(a, b)
+    assert (t["n"], t["reference_better"], t["other_better"], t["ties"]) == (8, 5, 2, 1)
+    assert t["p_sign"] == pytest.approx(stats.binomtest(5, 7).pvalue)
+    d = (b - a)[b != a]
+    assert t["p_wilcoxon"] == pytest.approx(stats.wilcoxon(d).pvalue)
+    assert t["mean_diff"] == pytest.approx(np.mean(b - a))
+    with pytest.raises(ValueError):
+        cs.paired_test(a, b[:-1])
+
+
+def test_summary_rows_match_runs():
+    setup = tr.PAPER_CIRCLE.replace(steps=30)
+    mc = tr.monte_carlo(setup, 4, ("best-pair", "fixed-pair"))
+    rows = {r["strategy"]: r for r in cs.summary_rows(mc)}
+    e = mc["fixed-pair"].error[:, 1:].mean(axis=1)
+    assert rows["fixed-pair"]["mean_error"] == pytest.approx(e.mean())
+    assert rows["fixed-pair"]["sd_error"] == pytest.approx(e.std(ddof=1))
+    assert rows["fixed-pair"]["switches"] == 0
+    assert rows["fixed-pair"]["lost"] == int((e > 0.5).sum())
+    ref = mc["best-pair"].error[:, 1:].mean(axis=1)
+    assert rows["fixed-pair"]["vs_mean_diff"] == pytest.approx((e - ref).mean())
+    assert "vs_n" not in rows["best-pair"]
+
+
+def test_available_and_missing_partition():
+    names = cs.PAPER_STRATEGIES + cs.CRITERIA
+    assert sorted(cs.available_strategies() + cs.missing_strategies()) == sorted(names)
+    assert set(cs.PAPER_STRATEGIES) <= set(cs.available_strategies())
+
+
+def test_tracking_study_validates():
+    with pytest.raises(ValueError, match="n_seeds"):
+        cs.tracking_study(1)
+    with pytest.raises(ValueError, match="metrics"):
+        cs.tracking_study(5, metrics=["l1"])
+    with pytest.raises(ValueError, match="unknown"):
+        cs.tracking_study(5, strategies=["best-pair", "nope"])
+
+
+def test_markdown_table():
+    t = cs.markdown_table([{"a": 1.23456, "b": "x"}], {"A": ("a", ".2f"), "B": ("b", "s")})
+    assert t.splitlines() == ["| A | B |", "|---|---|", "| 1.23 | x |"]
+
+
+def test_params_profiles():
+    p, q = cs.params("paper"), cs.params("quick")
+    assert q["n_seeds"] < p["n_seeds"] and p["n_seeds"] >= 200 and p["assign_seeds"] >= 100
+    with pytest.raises(ValueError, match="profile"):
+        cs.params("nonsense")
