@@ -24,6 +24,7 @@ from . import submodularity  # noqa: E402,F401  Sec. IV-B: Theorems 7-8
 from . import tracking  # noqa: E402,F401  Sec. V-A/B: Figs. 4-7
 from . import fig8  # noqa: E402,F401  Sec. V-C: Fig. 8
 from . import fig9  # noqa: E402,F401  Sec. V-D: Fig. 9, greedy teams
+from . import criteria  # noqa: E402,F401  beyond the paper: the bound against classical criteria
 
 __all__ = [
     "STATUSES",

@@ -54,6 +54,8 @@ __all__ = [
     "tracking_study",
     "adversary_rows",
     "assignment_study",
+    "assignment_rows",
+    "significance",
     "markdown_table",
 ]
 
@@ -82,6 +84,7 @@ DEFAULTS = {
     "assign_u_max": 1.0,
     "assign_noise_std": 0.5,
     "assign_p0": 1.0,
+    "assign_loss": 0.5,
 }
 QUICK = {"n_seeds": 20, "n_timing": 100, "assign_targets": [2, 3], "assign_seeds": 20, "assign_steps": 20}
 
@@ -182,7 +185,7 @@ def _scores(name, S, x, C, Q, R, u_max, u, metric):
 def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
     """Paired comparison of per-run values (lower is better), run ``b`` against run ``b``.
 
-    Returns ``n``, the mean and standard deviation of ``other - reference``, the counts of runs
+    Returns ``n``, the mean, median and standard deviation of ``other - reference``, the counts of runs
     where each is clearly lower (:func:`obslib.tracking.clearly_lower`) and of ties, the two-sided
     sign-test p-value (ties dropped) and the Wilcoxon signed-rank p-value (``scipy.stats``).
     """
@@ -201,6 +204,7 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
     return {
         "n": int(a.size),
         "mean_diff": float(d.mean()),
+        "median_diff": float(np.median(d)),
         "sd_diff": float(d.std(ddof=1)),
         "reference_better": ref_better,
         "other_better": other_better,
@@ -208,6 +212,15 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
         "p_sign": p_sign,
         "p_wilcoxon": p_wil,
     }
+
+
+def significance(row: dict, alpha: float = 0.01) -> str:
+    """Verdict of a row's paired test against the reference: ``"better"`` or ``"worse"`` (the
+    other strategy, by the sign of the median paired difference, when the Wilcoxon test rejects
+    at ``alpha``) or ``"same"``."""
+    if row.get("vs_p_wilcoxon", 1.0) >= alpha:
+        return "same"
+    return "better" if row["vs_median_diff"] < 0 else "worse"
 
 
 def _run_means(batch, skip_first=True):
@@ -324,10 +337,12 @@ def assignment_study(p: dict, metric: str = "mahalanobis") -> dict:
                              float(p["assign_noise_std"]), float(p["assign_p0"]), metric)
 
 
-def assignment_rows(runs: dict, reference: str = "bound") -> list:
-    """One row per ``(L, rule)``: mean and spread over runs of the per-run mean error summed
-    over targets (after the update), the chosen pairs' bound and information gain summed over
-    targets, and the paired test against ``reference``."""
+def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float = 0.5) -> list:
+    """One row per ``(L, rule)``: mean, spread and median over runs of the per-run mean error
+    summed over targets (after the update), ``lost`` (targets, over all runs, whose mean error
+    exceeds ``loss_threshold``), ``switch_rate`` (fraction of steps where a target's pair
+    changes), the chosen pairs' bound and information gain summed over targets, and the paired
+    test against ``reference``."""
     rows = []
     for L, by_rule in runs.items():
         ref = by_rule[reference].run_mean_error()
@@ -339,6 +354,8 @@ def assignment_rows(runs: dict, reference: str = "bound") -> list:
                 "mean_error": float(e.mean()),
                 "sd_error": float(e.std(ddof=1)),
                 "median_error": float(np.median(e)),
+                "lost": int((r.post_error[:, 1:].mean(axis=1) > loss_threshold).sum()),
+                "switch_rate": float((r.pairs[:, 1:] != r.pairs[:, :-1]).any(-1).mean()),
                 "bound_sum": float(r.bound[:, 1:].sum(-1).mean()),
                 "gain_sum": float(r.gain[:, 1:].sum(-1).mean()),
             }
