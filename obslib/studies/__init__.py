@@ -1,1 +1,1 @@
-"""Studies beyond the paper: the computations behind the later notebooks and their claims."""
+"""Paper-specific studies: what a notebook and the claims ledger both compute, once."""

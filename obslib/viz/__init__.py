@@ -1,1 +1,0 @@
-"""Figures of the studies beyond the paper (matplotlib); the computations live in :mod:`obslib.studies`."""
