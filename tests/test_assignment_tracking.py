@@ -168,3 +168,28 @@ def test_bad_rule_and_seeds_raise():
         at.run(SMALL, "bound", [])
     with pytest.raises(ValueError, match="rule"):
         at.run_all(SMALL, [0], rules=["bound", "x"])
+
+
+def test_logged_values_are_the_chosen_weights():
+    """The logged bound and gain equal the full weight tensors at the chosen pairs."""
+    sc = at.scenario(SMALL, [0, 1])
+    runs = at._run(sc, list(at.RULES))
+    for rule in at.RULES:
+        r = runs[rule]
+        # replay step 1, whose estimate and covariance are the scenario's
+        x0 = sc.estimate0
+        P0 = np.broadcast_to(SMALL.p0 * np.eye(2), x0.shape[:2] + (2, 2))
+        Wb = at.bound_weights(sc.sensors, x0, P0, SMALL.u_max)
+        Wd = at.info_gain_weights(sc.sensors, x0, P0 + SMALL.Q * np.eye(2), SMALL.R)
+        p = r.pairs[:, 0]
+        b, l = np.arange(2)[:, None], np.arange(3)[None, :]
+        np.testing.assert_allclose(r.bound[:, 0], Wb[b, p[..., 0], p[..., 1], l], rtol=1e-12)
+        np.testing.assert_allclose(r.gain[:, 0], Wd[b, p[..., 0], p[..., 1], l], rtol=1e-10)
+
+
+def test_rules_together_equal_rules_alone():
+    together = at.run_all(SMALL, [2, 3])
+    for rule in at.RULES:
+        alone = at.run(SMALL, rule, [2, 3])
+        assert np.array_equal(alone.pairs, together[rule].pairs)
+        np.testing.assert_allclose(alone.post_error, together[rule].post_error, rtol=1e-12, atol=1e-14)

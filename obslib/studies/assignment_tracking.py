@@ -363,45 +363,67 @@ class AssignmentRuns:
         return (e[:, 1:] if skip_first and e.shape[1] > 1 else e).mean(axis=1)
 
 
-def _run(sc: Scenario, rule: str) -> AssignmentRuns:
+def _chosen_values(S, x, P, pr, u_max, metric, q, r):
+    """The bound and the information gain of the chosen pairs ``pr`` (B, L, 2), each (B, L):
+    the entries of :func:`bound_weights` and :func:`info_gain_weights` at the chosen pairs, up
+    to rounding, without scoring the other pairs."""
+    bb = np.arange(S.shape[0])[:, None]
+    ps = S[bb[..., None], pr]  # (B, L, 2, 2)
+    h = x[..., None, :] - ps  # rows x - p_i, x - p_j
+    v = h
+    if metric == "mahalanobis":
+        prec = np.linalg.inv(P)
+        m2 = np.einsum("blpk,blkm,blpm->blp", h, prec, h)
+        v = h * np.sqrt(m2 / np.einsum("blpk,blpk->blp", h, h))[..., None]
+    scale = np.sqrt(np.einsum("blpk,blpk->blp", v, v).max(axis=-1))
+    v = v / scale[..., None, None]
+    bound = _pair_kernel(v[..., 0, 0], v[..., 0, 1], v[..., 1, 0], v[..., 1, 1], u_max**2 / scale**2)
+    G = h @ (P + q * np.eye(2)) @ np.swapaxes(h, -1, -2) / r  # H Sigma^- H^T / r
+    gain = np.log((1 + G[..., 0, 0]) * (1 + G[..., 1, 1]) - G[..., 0, 1] * G[..., 1, 0])
+    return bound, gain
+
+
+def _run(sc: Scenario, rules) -> dict:
+    """All ``rules`` on the scenario ``sc`` in one batch (rule-major rows), step by step."""
     st = sc.setup
-    B, L, T = len(sc.seeds), st.n_targets, st.steps
+    nb, L, T = len(sc.seeds), st.n_targets, st.steps
+    nr = len(rules)
+    B = nr * nb
     q, r = st.Q, st.R
-    S = sc.sensors
-    truth = sc.truth
-    x = sc.estimate0.copy()
+    S = np.tile(sc.sensors, (nr, 1, 1))
+    truth = np.tile(sc.truth, (nr, 1, 1, 1))
+    noise = np.tile(sc.noise, (nr, 1, 1))
+    rows = {rule: slice(a * nb, (a + 1) * nb) for a, rule in enumerate(rules)}
+    x = np.tile(sc.estimate0, (nr, 1, 1))
     P = np.broadcast_to(st.p0 * np.eye(2), (B, L, 2, 2)).copy()
     pairs = np.empty((B, T, L, 2), dtype=np.int64)
-    err = np.empty((B, T, L))
-    post = np.empty((B, T, L))
-    tr = np.empty((B, T, L))
-    bnd = np.empty((B, T, L))
-    gain = np.empty((B, T, L))
-    bb, ll = np.arange(B)[:, None], np.arange(L)[None, :]
+    err, post, tr, bnd, gain = (np.empty((B, T, L)) for _ in range(5))
+    bb = np.arange(B)[:, None]
+    pr = np.empty((B, L, 2), dtype=np.int64)
     for k in range(T):
-        Wb = bound_weights(S, x, P, st.u_max, st.metric)
-        Wd = info_gain_weights(S, x, P + q * np.eye(2), r)
-        if rule == "bound":
-            pr = batch_greedy(Wb)
-        elif rule == "d-optimal":
-            pr = batch_greedy(Wd)
-        else:
-            pr = random_assignments(sc.perm[:, k], L)
-        i, j = pr[..., 0], pr[..., 1]
+        for rule, sl in rows.items():
+            if rule == "bound":
+                pr[sl] = batch_greedy(bound_weights(S[sl], x[sl], P[sl], st.u_max, st.metric))
+            elif rule == "d-optimal":
+                pr[sl] = batch_greedy(info_gain_weights(S[sl], x[sl], P[sl] + q * np.eye(2), r))
+            else:
+                pr[sl] = random_assignments(sc.perm[:, k], L)
         pairs[:, k] = pr
-        bnd[:, k] = Wb[bb, i, j, ll]
-        gain[:, k] = Wd[bb, i, j, ll]
+        bnd[:, k], gain[:, k] = _chosen_values(S, x, P, pr, st.u_max, st.metric, q, r)
         o = truth[:, k]
         dx = x - o
         err[:, k] = np.hypot(dx[..., 0], dx[..., 1])
         tr[:, k] = P[..., 0, 0] + P[..., 1, 1]
         ps = S[bb[..., None], pr]  # (B, L, 2, 2)
         d = ps - o[..., None, :]
-        z = 0.5 * (d[..., 0] ** 2 + d[..., 1] ** 2) + sc.noise[:, k][bb[..., None], pr]
+        z = 0.5 * (d[..., 0] ** 2 + d[..., 1] ** 2) + noise[:, k][bb[..., None], pr]
         x, P = ekf_step(x, P, ps, z, q, r)
         dx = x - o
         post[:, k] = np.hypot(dx[..., 0], dx[..., 1])
-    return AssignmentRuns(st, rule, sc.seeds, pairs, err, post, tr, bnd, gain)
+    return {
+        rule: AssignmentRuns(st, rule, sc.seeds, pairs[sl], err[sl], post[sl], tr[sl], bnd[sl], gain[sl])
+        for rule, sl in rows.items()
+    }
 
 
 def run(setup: AssignmentTrackingSetup, rule: str, seeds) -> AssignmentRuns:
@@ -412,7 +434,7 @@ def run(setup: AssignmentTrackingSetup, rule: str, seeds) -> AssignmentRuns:
     """
     if rule not in RULES:
         raise ValueError(f"unknown rule {rule!r}; known: {RULES}")
-    return _run(scenario(setup, seeds), rule)
+    return _run(scenario(setup, seeds), [rule])[rule]
 
 
 def run_all(setup: AssignmentTrackingSetup, seeds, rules=RULES) -> dict:
@@ -421,5 +443,4 @@ def run_all(setup: AssignmentTrackingSetup, seeds, rules=RULES) -> dict:
     bad = [r for r in rules if r not in RULES]
     if bad:
         raise ValueError(f"unknown rule(s) {bad}; known: {RULES}")
-    sc = scenario(setup, seeds)
-    return {r: _run(sc, r) for r in rules}
+    return _run(scenario(setup, seeds), rules)
