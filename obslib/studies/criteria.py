@@ -165,16 +165,22 @@ def _scores(name, S, x, C, Q, R, u_max, u, metric):
     if name == "exact-icn":
         rows = np.stack([v[:, ii], v[:, jj], np.broadcast_to(u[:, None], v[:, ii].shape)], axis=-2)
         return _inverse_condition(rows)  # (B, P)
-    H = np.stack([v[:, ii], v[:, jj]], axis=-2)  # (B, P, 2, 2)
-    prior = np.linalg.inv(C + Q)  # (B, 2, 2)
-    J = prior[:, None] + np.swapaxes(H, -1, -2) @ np.linalg.solve(R, H)
-    a, b, d = J[..., 0, 0], J[..., 0, 1], J[..., 1, 1]
+    # J = (Sigma + Q)^{-1} + H^T R^{-1} H entry by entry (2x2 closed forms, no LAPACK calls)
+    M = C + Q
+    mdet = M[:, 0, 0] * M[:, 1, 1] - M[:, 0, 1] * M[:, 1, 0]
+    p00, p01, p11 = (M[:, 1, 1] / mdet)[:, None], (-M[:, 0, 1] / mdet)[:, None], (M[:, 0, 0] / mdet)[:, None]
+    rdet = R[0, 0] * R[1, 1] - R[0, 1] * R[1, 0]
+    r00, r01, r11 = R[1, 1] / rdet, -R[0, 1] / rdet, R[0, 0] / rdet
+    xi, yi, xj, yj = v[:, ii, 0], v[:, ii, 1], v[:, jj, 0], v[:, jj, 1]  # (B, P)
+    a = p00 + r00 * xi * xi + 2 * r01 * xi * xj + r11 * xj * xj
+    b = p01 + r00 * xi * yi + r01 * (xi * yj + xj * yi) + r11 * xj * yj
+    d = p11 + r00 * yi * yi + 2 * r01 * yi * yj + r11 * yj * yj
     det = a * d - b * b
     if name == "d-optimal":
         return det
     if name == "a-optimal":
         return -(a + d) / det
-    return 0.5 * (a + d) - np.sqrt((0.5 * (a - d)) ** 2 + b * b)  # lambda_min of [[a, b], [b, d]]
+    return 0.5 * (a + d) - np.hypot(0.5 * (a - d), b)  # lambda_min of [[a, b], [b, d]]
 
 
 # --------------------------------------------------------------------------------------------
