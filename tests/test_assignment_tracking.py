@@ -193,3 +193,17 @@ def test_rules_together_equal_rules_alone():
         alone = at.run(SMALL, rule, [2, 3])
         assert np.array_equal(alone.pairs, together[rule].pairs)
         np.testing.assert_allclose(alone.post_error, together[rule].post_error, rtol=1e-12, atol=1e-14)
+
+
+def test_mirrored_uses_the_reflection_across_the_last_pair():
+    r = at.run(SMALL, "bound", [0, 1])
+    got = r.mirrored()
+    S = r.extras["sensors"]
+    for b in range(2):
+        for l in range(3):
+            i, j = r.pairs[b, -1, l]
+            m = ob.tracking.mirror_point(r.truth[b, -1, l], S[b, i], S[b, j])
+            x, o = r.estimate[b, -1, l], r.truth[b, -1, l]
+            assert got[b, l] == (np.hypot(*(x - m)) < np.hypot(*(x - o)))
+    assert np.array_equal(r.lost(0.5), r.post_error[:, 1:].mean(axis=1) > 0.5)
+    np.testing.assert_allclose(np.hypot(*(r.estimate - r.truth).transpose(3, 0, 1, 2)), r.post_error)

@@ -342,6 +342,8 @@ class AssignmentRuns:
     pairs: np.ndarray
     error: np.ndarray
     post_error: np.ndarray
+    estimate: np.ndarray
+    truth: np.ndarray
     trace: np.ndarray
     bound: np.ndarray
     gain: np.ndarray
@@ -353,6 +355,23 @@ class AssignmentRuns:
         if which not in ("post", "prior"):
             raise ValueError(f"which must be 'post' or 'prior', got {which!r}")
         return (self.post_error if which == "post" else self.error).sum(axis=-1)
+
+    def lost(self, threshold: float, skip_first: bool = True) -> np.ndarray:
+        """(B, L) bool: targets whose mean error after the update exceeds ``threshold``."""
+        e = self.post_error[:, 1:] if skip_first and self.post_error.shape[1] > 1 else self.post_error
+        return e.mean(axis=1) > threshold
+
+    def mirrored(self) -> np.ndarray:
+        """(B, L) bool: the last estimate is closer to the target's mirror image across the
+        baseline of its last pair than to the target (the two-range ambiguity)."""
+        S = self.extras["sensors"]
+        b = np.arange(S.shape[0])[:, None]
+        a, c = S[b, self.pairs[:, -1, :, 0]], S[b, self.pairs[:, -1, :, 1]]  # (B, L, 2)
+        o, x = self.truth[:, -1], self.estimate[:, -1]
+        d = (c - a) / np.hypot(*(c - a).transpose(2, 0, 1))[..., None]
+        v = o - a
+        m = a + 2 * (v * d).sum(-1)[..., None] * d - v  # o reflected across the baseline
+        return np.hypot(*(x - m).transpose(2, 0, 1)) < np.hypot(*(x - o).transpose(2, 0, 1))
 
     def run_mean_error(self, which: str = "post", skip_first: bool = True) -> np.ndarray:
         """Per-run mean over steps of the error summed over targets, (B,).
@@ -398,6 +417,7 @@ def _run(sc: Scenario, rules) -> dict:
     P = np.broadcast_to(st.p0 * np.eye(2), (B, L, 2, 2)).copy()
     pairs = np.empty((B, T, L, 2), dtype=np.int64)
     err, post, tr, bnd, gain = (np.empty((B, T, L)) for _ in range(5))
+    est = np.empty((B, T, L, 2))
     bb = np.arange(B)[:, None]
     pr = np.empty((B, L, 2), dtype=np.int64)
     for k in range(T):
@@ -420,8 +440,10 @@ def _run(sc: Scenario, rules) -> dict:
         x, P = ekf_step(x, P, ps, z, q, r)
         dx = x - o
         post[:, k] = np.hypot(dx[..., 0], dx[..., 1])
+        est[:, k] = x
     return {
-        rule: AssignmentRuns(st, rule, sc.seeds, pairs[sl], err[sl], post[sl], tr[sl], bnd[sl], gain[sl])
+        rule: AssignmentRuns(st, rule, sc.seeds, pairs[sl], err[sl], post[sl], est[sl],
+                             sc.truth[:, :T], tr[sl], bnd[sl], gain[sl], {"sensors": sc.sensors})
         for rule, sl in rows.items()
     }
 

@@ -355,7 +355,8 @@ def assignment_study(p: dict, metric: str = "mahalanobis") -> dict:
 def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float = 0.5) -> list:
     """One row per ``(L, rule)``: mean, spread and median over runs of the per-run mean error
     summed over targets (after the update), ``lost`` (targets, over all runs, whose mean error
-    exceeds ``loss_threshold``), ``switch_rate`` (fraction of steps where a target's pair
+    exceeds ``loss_threshold``), ``lost_mirrored`` (those whose last estimate is nearer the
+    target's mirror image across its last pair's baseline than the target), ``switch_rate`` (fraction of steps where a target's pair
     changes), the chosen pairs' bound and information gain summed over targets, and the paired
     test against ``reference``."""
     rows = []
@@ -369,7 +370,8 @@ def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float 
                 "mean_error": float(e.mean()),
                 "sd_error": float(e.std(ddof=1)),
                 "median_error": float(np.median(e)),
-                "lost": int((r.post_error[:, 1:].mean(axis=1) > loss_threshold).sum()),
+                "lost": int(r.lost(loss_threshold).sum()),
+                "lost_mirrored": int((r.lost(loss_threshold) & r.mirrored()).sum()),
                 "switch_rate": float((r.pairs[:, 1:] != r.pairs[:, :-1]).any(-1).mean()),
                 "bound_sum": float(r.bound[:, 1:].sum(-1).mean()),
                 "gain_sum": float(r.gain[:, 1:].sum(-1).mean()),
