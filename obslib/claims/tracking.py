@@ -2,7 +2,8 @@
 Section V-B (the adversarial target, Fig. 7; notebook 06).
 
 Every check re-runs the experiments of :mod:`obslib.tracking` with the parameters of its notebook
-under the profile of :mod:`obslib.profiles` (Monte Carlo sizes shrink in ``quick``).
+under the profile of :mod:`obslib.profiles` (Monte Carlo sizes shrink in ``quick``); whatever the
+notebook also shows is computed by :mod:`obslib.studies.tracking`.
 
 The verdict rules are fixed in the code before the evidence: see each check's docstring.
 """
@@ -15,6 +16,8 @@ import numpy as np
 
 from .. import tracking as tr
 from ..profiles import params
+from ..studies import tracking as study
+from ..studies.published import PUBLISHED_ADVERSARIAL, PUBLISHED_CIRCLE
 from ._ledger import Finding, claim
 
 NB5 = "05_two_sensors_tracking"
@@ -24,7 +27,7 @@ NB6 = "06_adversarial_target"
 FIGURE_TOLERANCE = 0.15
 
 #: Transitions around k = 50 where the paper says the best pair "changes frequently".
-K50_WINDOW = (30, 70)
+K50_WINDOW = study.K50_WINDOW
 
 def circle_setup(p: dict) -> tr.TrackingSetup:
     return tr.setup_from_params(tr.PAPER_CIRCLE, p)
@@ -46,7 +49,7 @@ def _single(setup: tr.TrackingSetup, strategy: str, seed: int):
 
 @lru_cache(maxsize=4)
 def _partners(setup: tr.TrackingSetup, n_seeds: int, first_seed: int):
-    return tr.partner_study(setup, n_seeds, first_seed)
+    return study.partner_study(setup, n_seeds, first_seed)
 
 
 def _r(x, n=3):
@@ -78,7 +81,7 @@ def _fig6_data(profile: str) -> Finding:
     setup = circle_setup(p)
     rows, n_ok, n_all = {}, 0, 0
     mc = _mc(setup, p["n_seeds"], p["seed"])
-    for name, pub in tr.PUBLISHED_CIRCLE.items():
+    for name, pub in PUBLISHED_CIRCLE.items():
         ours = _single(setup, name, p["seed"]).summary()
         row = {}
         for key, val in pub.items():
@@ -136,7 +139,7 @@ def _fig6_best_pair(profile: str) -> Finding:
     status = "reproduced" if runs_ok and times_ok else ("partly" if runs_ok else "refuted")
     st = cmp["strategies"]
     m2, m3 = w["best-partner"], w["fixed-pair"]
-    least = min(m2["run_error"], m2["run_trace"], m3["run_error"], m3["run_trace"])
+    least = study.least_run_wins(cmp)
     ours = (
         f"Over {p['n_seeds']} noise seeds strategy 1 has the lower run-mean error and trace in "
         + ("every run" if least == 1 else f"at least {least:.0%} of runs")
@@ -206,22 +209,11 @@ def _fig6_correlation(profile: str) -> Finding:
     strategies, and the same with the Euclidean (geometry-only) bound, are in the evidence."""
     p = params(NB5, profile)
     mc = _mc(circle_setup(p), p["n_seeds"], p["seed"])
-    med, med_e, holds = {}, {}, {}
-    for name, r in mc.items():
-        c = tr.bound_correlation(r, "own")
-        ce = tr.bound_correlation(r, "euclidean")
-        med[name] = {k: _r(np.median(v)) for k, v in c.items()}
-        med_e[name] = {k: _r(np.median(v)) for k, v in ce.items()}
-        holds[name] = med[name]["error"] <= -0.1 and med[name]["trace"] <= -0.1
-    pool = {
-        k: _r(
-            tr.spearman(
-                np.concatenate([r.bound[:, 1:].mean(0) for r in mc.values()]),
-                np.concatenate([getattr(r, a)[:, 1:].mean(0) for r in mc.values()]),
-            )
-        )
-        for k, a in (("error", "error"), ("trace", "trace_cov"))
-    }
+    corr = study.correlations(mc)
+    med = {s: {k: _r(v) for k, v in d.items()} for s, d in corr["own"].items()}
+    med_e = {s: {k: _r(v) for k, v in d.items()} for s, d in corr["euclidean"].items()}
+    holds = {s: d["error"] <= -0.1 and d["trace"] <= -0.1 for s, d in med.items()}
+    pool = {k: _r(v) for k, v in corr["pooled"].items()}
     n = sum(holds.values())
     status = "reproduced" if n == 3 else ("partly" if n else "refuted")
     ours = (
@@ -253,25 +245,11 @@ def _fig5_k50(profile: str) -> Finding:
     mc = _mc(setup, p["n_seeds"], p["seed"])
     lo, hi = K50_WINDOW
     rate = tr.switch_rate(mc["best-pair"])
-    one = _single(setup, "best-pair", p["seed"]).switched.astype(float)
-    win = np.zeros(rate.size, bool)
-    win[lo - 1 : hi - 1] = True  # transition k -> k+1 sits at index k-1
-
-    def judge(r):
-        return float(r[win].mean()), float(r[~win].mean())
-
-    (mw, mr), (sw_, sr) = judge(rate), judge(one)
+    one = _single(setup, "best-pair", p["seed"]).switched
+    (mw, mr), (sw_, sr) = study.window_rates(rate, K50_WINDOW), study.window_rates(one, K50_WINDOW)
     ok_mc, ok_one = mw >= 0.5 and mw > mr, sw_ >= 0.5 and sw_ > sr
     # other windows of the same width (not overlapping this one) switching as often
-    width = hi - lo
-    roll = np.convolve(rate, np.ones(width) / width, mode="valid")  # roll[m]: k = m+1 .. m+width
-    starts = [m + 1 for m in np.flatnonzero(roll >= mw) if m + 1 > hi or m + 1 + width < lo]
-    spans = []
-    for k in starts:
-        if spans and k == spans[-1][1] + 1:
-            spans[-1][1] = k
-        else:
-            spans.append([k, k])
+    spans = [list(ab) for ab in study.hot_windows(rate, K50_WINDOW, mw)]
     hot = ", ".join(f"{a}" if a == b else f"{a}-{b}" for a, b in spans)
     status = "reproduced" if ok_mc and ok_one else ("partly" if ok_mc or ok_one else "refuted")
     ours = (
@@ -305,9 +283,7 @@ def _s1_partner(profile: str) -> Finding:
     p = params(NB5, profile)
     setup = circle_setup(p)
     ps = _partners(setup, p["n_seeds"], p["seed"])
-    lower_is_better = ("mean_trace", "mean_error", "median_error", "lost")
-    best = {key: min(ps, key=lambda j: ps[j][key]) for key in lower_is_better}
-    best["mean_bound"] = max(ps, key=lambda j: ps[j]["mean_bound"])
+    best = study.best_partners(ps)
     s1 = 0
     wins = [k for k in ("mean_trace", "mean_error", "median_error", "lost") if best[k] == s1]
     if best["mean_trace"] == s1 and best["mean_error"] == s1:
@@ -339,7 +315,7 @@ def _adv_batch(setup: tr.TrackingSetup, strategy: str, n_seeds: int, first_seed:
 
 
 def _adv_stats(batch: tr.BatchResult) -> dict:
-    d = tr.entrapment_summary(batch)
+    d = study.entrapment_summary(batch)
     return {
         "entrapped": d["entrapped"],
         "max_from_start": _r(d["max_from_start"]),
@@ -355,7 +331,7 @@ def _adv_stats(batch: tr.BatchResult) -> dict:
 
 def strong_adversaries(p: dict) -> dict:
     """The adversary variants of notebook 06: name -> setup."""
-    return tr.adversary_variants(adversarial_setup(p), p["n_radii"], p["n_angles"])
+    return study.adversary_variants(adversarial_setup(p), p["n_radii"], p["n_angles"])
 
 
 @claim(
@@ -414,30 +390,25 @@ def _fig7_entrapment(profile: str) -> Finding:
     notebook=NB6,
 )
 def _fig7_switch(profile: str) -> Finding:
-    """Pooled over ``n_seeds`` runs (:func:`obslib.tracking.switch_mechanism`). reproduced: the
-    pair switches after >= 90 % of the moves that bring the target closer to a sensor of the
-    pair AND >= 90 % of switches give the sensors a higher C^-1 than the target aimed at;
+    """Pooled over ``n_seeds`` runs (:func:`obslib.studies.tracking.pooled_switch_mechanism`).
+    reproduced: the pair switches after >= 90 % of the moves that bring the target closer to a
+    sensor of the pair AND >= 90 % of switches give the sensors a higher C^-1 than the target aimed at;
     partly: only the first; refuted: not the first."""
     p = params(NB6, profile)
     b = _adv_batch(adversarial_setup(p), "best-pair", p["n_seeds"], p["seed"])
-    ms = [tr.switch_mechanism(b.run(i)) for i in range(b.n_runs)]
-    closer = sum(m["closer"] for m in ms)
-    sw_closer = sum(m["switch_if_closer"] * m["closer"] for m in ms) / max(closer, 1)
-    n_sw = sum(m["switches"] for m in ms)
-    raised = sum(m["raised"] * m["switches"] for m in ms) / max(n_sw, 1)
-    gain = sum(m["mean_gain"] * m["switches"] for m in ms) / max(n_sw, 1)
-    trans = sum(m["transitions"] for m in ms)
+    m = study.pooled_switch_mechanism(b)
+    sw_closer, raised, gain = m["switch_if_closer"], m["raised"], m["mean_gain"]
     if sw_closer >= 0.9 and raised >= 0.9:
         status = "reproduced"
     else:
         status = "partly" if sw_closer >= 0.9 else "refuted"
     ours = (
-        f"The target moves closer to a sensor of the current pair at {closer / trans:.0%} of the "
-        f"transitions; the pair then switches {sw_closer:.0%} of the time (switches overall "
-        f"{n_sw / trans:.0%}). A switch leaves the sensors a higher C^-1 than the target aimed "
+        f"The target moves closer to a sensor of the current pair at {m['closer_fraction']:.0%} of "
+        f"the transitions; the pair then switches {sw_closer:.0%} of the time (switches overall "
+        f"{m['switch_fraction']:.0%}). A switch leaves the sensors a higher C^-1 than the target aimed "
         f"at in only {raised:.0%} of switches (mean gain {gain:+.3f})."
     )
-    ev = {"n_seeds": p["n_seeds"], "closer_fraction": _r(closer / trans),
+    ev = {"n_seeds": p["n_seeds"], "closer_fraction": _r(m["closer_fraction"]),
           "switch_if_closer": _r(sw_closer), "raised": _r(raised), "mean_gain": _r(gain, 4)}
     return Finding(status, ours, ev)
 
@@ -457,7 +428,7 @@ def _fig7_data(profile: str) -> Finding:
     setup = adversarial_setup(p)
     r = _single(setup, "best-pair", p["seed"])
     b = _adv_batch(setup, "best-pair", p["n_seeds"], p["seed"])
-    pub = tr.PUBLISHED_ADVERSARIAL
+    pub = PUBLISHED_ADVERSARIAL
     mb, sw = float(r.bound.mean()), r.switches
     ok_b = abs(mb - pub["mean_bound"]) <= FIGURE_TOLERANCE * pub["mean_bound"]
     ok_s = abs(sw - pub["switches"]) <= FIGURE_TOLERANCE * pub["switches"]

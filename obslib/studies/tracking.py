@@ -1,0 +1,275 @@
+"""The studies of Sections V-A and V-B that notebooks 05/06 and the claims ledger share: the
+partners of s2, the switching window around k = 50, stretches of a condition over steps, the
+correlations of the bound, and how the adversarial target is entrapped.
+
+Each function computes one thing that both a notebook prints and a claim judges, so the two
+cannot drift apart.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import tracking as tr
+from ..bound_checks import disc_controls
+from ..tracking import BatchResult, TrackingResult, TrackingSetup
+
+__all__ = [
+    "K50_WINDOW",
+    "partner_arms",
+    "partner_summary",
+    "partner_study",
+    "best_partners",
+    "stretches",
+    "window_rates",
+    "hot_windows",
+    "correlations",
+    "least_run_wins",
+    "adversary_variants",
+    "entrapment_summary",
+    "switch_mechanism",
+    "pooled_switch_mechanism",
+]
+
+#: Transitions around k = 50 where the paper says the best pair "changes frequently" (Fig. 5(a)).
+K50_WINDOW = (30, 70)
+
+
+# --------------------------------------------------------------------------------------------
+# Section V-A
+# --------------------------------------------------------------------------------------------
+
+
+def partner_arms(setup: TrackingSetup) -> dict:
+    """Strategy (3) with each partner ``j`` of the anchor: ``{j: (setup, "fixed-pair")}``, for
+    :func:`~obslib.tracking.simulate_many` (the arms of :func:`partner_study`)."""
+    return {
+        j: (setup.replace(fixed_pair=(setup.anchor, j)), "fixed-pair")
+        for j in range(setup.n_sensors)
+        if j != setup.anchor
+    }
+
+
+def partner_summary(runs: dict) -> dict:
+    """Monte Carlo means per partner from the runs of :func:`partner_arms` (see
+    :func:`partner_study`)."""
+    out = {}
+    for j, r in runs.items():
+        run_err = r.error[:, 1:].mean(axis=1)
+        out[j] = {
+            "mean_bound": float(r.bound[:, 1:].mean()),
+            "mean_error": float(run_err.mean()),
+            "median_error": float(np.median(run_err)),
+            "mean_trace": float(r.trace_cov[:, 1:].mean()),
+            "lost": float(tr.track_loss(r)["lost"].mean()),
+        }
+    return out
+
+
+def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> dict:
+    """Strategy (3) with every partner of the anchor: Monte Carlo means per partner.
+
+    Checks the paper's choice of ``s_1`` as ``s_2``'s fixed partner ("it gives the best
+    performance amongst all other sensors, on an average, for the circular trajectory"). All
+    partners run over the same seeds in one batched pass (:func:`partner_arms`,
+    :func:`~obslib.tracking.simulate_many`); partner ``j`` equals ``tr.monte_carlo(setup.replace(fixed_pair=(anchor,
+    j)), n_seeds, ["fixed-pair"], first_seed)``.
+
+    Returns
+    -------
+    dict
+        ``{partner: {"mean_bound", "mean_error", "median_error", "mean_trace", "lost"}}`` with
+        ``partner`` 0-based and ``lost`` the fraction of runs of :func:`~obslib.tracking.track_loss`.
+    """
+    if int(n_seeds) < 1:
+        raise ValueError(f"n_seeds must be at least 1, got {n_seeds}")
+    seeds = range(int(first_seed), int(first_seed) + int(n_seeds))
+    return partner_summary(tr.simulate_many(partner_arms(setup), seeds=seeds))
+
+
+def best_partners(ps: dict) -> dict:
+    """Which partner of :func:`partner_study` is best by each measure: the lowest
+    ``mean_trace``, ``mean_error``, ``median_error`` and ``lost``, and the highest
+    ``mean_bound``; ``{measure: partner}`` (0-based; the first in index order on a tie)."""
+    best = {key: min(ps, key=lambda j: ps[j][key])
+            for key in ("mean_trace", "mean_error", "median_error", "lost")}
+    best["mean_bound"] = max(ps, key=lambda j: ps[j]["mean_bound"])
+    return best
+
+
+def stretches(mask, first: int = 1, min_length: int = 1) -> list:
+    """The maximal runs of consecutive ``True`` in ``mask``, as ``(start, end)`` labels
+    (inclusive; entry ``m`` of ``mask`` has the label ``first + m``), at least ``min_length``
+    long."""
+    m = np.asarray(mask, dtype=bool).ravel()
+    edge = np.diff(np.concatenate([[0], m.astype(np.int8), [0]]))
+    starts, ends = np.flatnonzero(edge == 1), np.flatnonzero(edge == -1) - 1
+    return [(int(a) + first, int(b) + first) for a, b in zip(starts, ends)
+            if b - a + 1 >= min_length]
+
+
+def _window_mask(size: int, window) -> np.ndarray:
+    lo, hi = window
+    win = np.zeros(size, bool)
+    win[lo - 1 : hi - 1] = True  # transition k -> k+1 sits at index k-1
+    return win
+
+
+def window_rates(switched, window=K50_WINDOW) -> tuple:
+    """Mean of a per-transition series (a switch rate, or one run's ``switched``) over the
+    transitions ``k -> k + 1`` with ``lo <= k < hi`` of ``window = (lo, hi)``, and over the
+    others: ``(inside, outside)``."""
+    r = np.asarray(switched, dtype=float)
+    win = _window_mask(r.size, window)
+    return float(r[win].mean()), float(r[~win].mean())
+
+
+def hot_windows(rate, window=K50_WINDOW, level=None) -> list:
+    """Other windows of the width of ``window`` whose mean ``rate`` reaches ``level`` (default:
+    the rate inside ``window``), not overlapping it: :func:`stretches` of their first
+    transitions ``k``."""
+    lo, hi = window
+    width = hi - lo
+    rate = np.asarray(rate, dtype=float)
+    if level is None:
+        level = window_rates(rate, window)[0]
+    roll = np.convolve(rate, np.ones(width) / width, mode="valid")  # roll[m]: k = m+1 .. m+width
+    k = np.arange(roll.size) + 1
+    return stretches((roll >= level) & ((k > hi) | (k + width < lo)), first=1)
+
+
+def correlations(mc: dict) -> dict:
+    """Spearman correlation of the bound with error and trace (:func:`~obslib.tracking.
+    bound_correlation`): the median over runs per strategy, with the logged bound (``own``) and
+    the Euclidean bound of the same pairs (``euclidean``), and ``pooled``: the correlation of
+    the per-step Monte Carlo means pooled over the strategies (steps 2..)."""
+    own, eu = {}, {}
+    for name, r in mc.items():
+        own[name] = {k: float(np.median(v)) for k, v in tr.bound_correlation(r, "own").items()}
+        eu[name] = {k: float(np.median(v))
+                    for k, v in tr.bound_correlation(r, "euclidean").items()}
+    pooled = {
+        k: float(tr.spearman(
+            np.concatenate([r.bound[:, 1:].mean(0) for r in mc.values()]),
+            np.concatenate([getattr(r, a)[:, 1:].mean(0) for r in mc.values()]),
+        ))
+        for k, a in (("error", "error"), ("trace", "trace_cov"))
+    }
+    return {"own": own, "euclidean": eu, "pooled": pooled}
+
+
+def least_run_wins(cmp: dict) -> float:
+    """The smallest fraction of runs in which the reference of
+    :func:`~obslib.tracking.compare_strategies` has the lower run-mean error or trace, over
+    the other strategies."""
+    return min(w[k] for w in cmp["wins"].values() for k in ("run_error", "run_trace"))
+
+
+# --------------------------------------------------------------------------------------------
+# Section V-B
+# --------------------------------------------------------------------------------------------
+
+
+def adversary_variants(setup: TrackingSetup, n_radii: int, n_angles: int) -> dict:
+    """The paper's adversary and stronger ones (Section V-B), as setups.
+
+    ``"paper"``: the setup as given; ``"next-pair"``: the target knows the pair the sensors
+    will use next; ``"disc"``: controls on a polar grid of the whole disc ``||u|| <= u_max``
+    (``1 + n_radii * n_angles`` controls, :func:`disc_controls`); ``"disc, next-pair"``: both.
+    """
+    disc = disc_controls(setup.u_max, n_radii, n_angles)
+    return {
+        "paper": setup,
+        "next-pair": setup.replace(adversary="next-pair"),
+        "disc": setup.replace(controls=disc),
+        "disc, next-pair": setup.replace(controls=disc, adversary="next-pair"),
+    }
+
+
+def entrapment_summary(batch: BatchResult) -> dict:
+    """:func:`~obslib.tracking.entrapment` of every run of a batch, summarised.
+
+    Returns
+    -------
+    dict
+        ``entrapped`` (fraction of runs meeting :data:`~obslib.tracking.ENTRAPMENT_CRITERIA`), the largest
+        ``max_from_start``, ``reach``, the mean and range of the per-run mean bound, the
+        smallest ``icn_min``, the mean ``icn_mean``, mean ``switches`` and ``mean_error``, and
+        ``runs`` (the list of :class:`~obslib.tracking.Entrapment`).
+    """
+    batch.true_icn, batch.objective  # computed once for all runs
+    es = [tr.entrapment(batch.run(b)) for b in range(batch.n_runs)]
+    return {
+        "entrapped": float(np.mean([tr.is_entrapped(e) for e in es])),
+        "max_from_start": max(e.max_from_start for e in es),
+        "reach": es[0].reach,
+        "bound_mean": float(np.mean([e.bound_mean for e in es])),
+        "bound_mean_range": (min(e.bound_mean for e in es), max(e.bound_mean for e in es)),
+        "icn_min": min(e.icn_min for e in es),
+        "icn_mean": float(np.mean([e.icn_mean for e in es])),
+        "switches": float(np.mean([e.switches for e in es])),
+        "mean_error": float(np.mean([e.mean_error for e in es])),
+        "runs": es,
+    }
+
+
+def switch_mechanism(result: TrackingResult) -> dict:
+    """How the pair reacts when the adversary closes in on a sensor (Fig. 7 caption).
+
+    For each transition ``k -> k + 1``: did the target move closer to one of the two sensors of
+    step ``k``'s pair, did the pair switch, and did the switch give the sensors a larger exact
+    ``C^{-1}`` (``true_icn[k+1]``) than the value the target aimed at with the old pair
+    (``objective[k]``)?
+
+    Returns
+    -------
+    dict
+        ``closer`` (transitions where the target got closer to a sensor of the pair),
+        ``switch_if_closer`` and ``switch_if_not`` (switch rates), ``switches``,
+        ``raised`` (fraction of switches with ``true_icn[k+1] > objective[k]``) and
+        ``mean_gain`` (mean of ``true_icn[k+1] - objective[k]`` over switches).
+    """
+    s = result.setup.sensor_array
+    ps = s[result.pairs]
+    before = np.hypot(*(result.truth[:, None, :] - ps).transpose(2, 0, 1)).min(axis=1)
+    after_pos = result.truth + result.control
+    after = np.hypot(*(after_pos[:, None, :] - ps).transpose(2, 0, 1)).min(axis=1)
+    closer = (after < before)[:-1]
+    sw = result.switched
+    gain = result.true_icn[1:] - result.objective[:-1]
+    return {
+        "transitions": int(sw.size),
+        "closer": int(closer.sum()),
+        "switch_if_closer": float(sw[closer].mean()) if closer.any() else float("nan"),
+        "switch_if_not": float(sw[~closer].mean()) if (~closer).any() else float("nan"),
+        "switches": int(sw.sum()),
+        "raised": float((gain[sw] > 0).mean()) if sw.any() else float("nan"),
+        "mean_gain": float(gain[sw].mean()) if sw.any() else float("nan"),
+    }
+
+
+def pooled_switch_mechanism(batch: BatchResult) -> dict:
+    """:func:`switch_mechanism` pooled over the runs of ``batch``.
+
+    Returns
+    -------
+    dict
+        ``transitions``, ``closer_fraction`` (transitions where the target got closer to a
+        sensor of the pair), ``switch_if_closer`` (switch rate after such a move),
+        ``switch_fraction`` (all switches over all transitions), ``switches``, ``raised``
+        (fraction of switches that leave a higher exact C^-1 than the target aimed at) and
+        ``mean_gain``.
+    """
+    ms = [switch_mechanism(batch.run(b)) for b in range(batch.n_runs)]
+    trans = sum(m["transitions"] for m in ms)
+    closer = sum(m["closer"] for m in ms)
+    n_sw = sum(m["switches"] for m in ms)
+    return {
+        "transitions": trans,
+        "closer_fraction": closer / trans,
+        "switch_if_closer": sum(m["switch_if_closer"] * m["closer"] for m in ms) / max(closer, 1),
+        "switch_fraction": n_sw / trans,
+        "switches": n_sw,
+        "raised": sum(m["raised"] * m["switches"] for m in ms) / max(n_sw, 1),
+        "mean_gain": sum(m["mean_gain"] * m["switches"] for m in ms) / max(n_sw, 1),
+    }

@@ -1,0 +1,139 @@
+"""Tracking simulations of Section V: sensor pairs chosen step by step track a circling target
+(Figs. 4-6) or an adversary (Fig. 7) with an extended Kalman filter.
+
+Six stationary range sensors; at each step a *strategy* picks two of them, which measure the
+half squared range :math:`z_i = \\tfrac12 \\lVert p_i - o \\rVert^2 + n_i` to the target
+(:mod:`~obslib.tracking.model`), and an extended Kalman filter on the target's 2-D position fuses
+the two measurements. The parts:
+
+:mod:`~obslib.tracking.setup`
+    the parameter record :class:`TrackingSetup`, the paper's :data:`PAPER_CIRCLE` and
+    :data:`PAPER_ADVERSARIAL`, the common noise tables;
+:mod:`~obslib.tracking.model`
+    measurement function and Jacobian, the circle, the pair bound along a run;
+:mod:`~obslib.tracking.criteria`
+    the pair choosers (:data:`STRATEGIES`);
+:mod:`~obslib.tracking.adversary`
+    the adversarial target's moves (Section V-B);
+:mod:`~obslib.tracking.ekf`
+    :func:`simulate`, the reference engine (filterpy's EKF, one run);
+:mod:`~obslib.tracking.batch`
+    :func:`simulate_many`, :func:`simulate_batch`, :func:`monte_carlo`: the same runs
+    vectorised over seeds, strategies and setup variants (the tests hold the two engines to the
+    same picks and to rounding);
+:mod:`~obslib.tracking.results`
+    :class:`TrackingResult` and :class:`BatchResult`;
+:mod:`~obslib.tracking.stats`
+    comparisons, correlations, switches, track loss, entrapment.
+
+Noise is common to all strategies: entry ``[k-1, i]`` of a ``(steps, N)`` table is sensor
+``i``'s noise at step ``k``, whichever strategy asks for it (:func:`noise_table`).
+
+The drawings are in :mod:`obslib.viz.tracking` and the studies of the paper's claims in
+:mod:`obslib.studies.tracking`; their names are still reachable here (``tracking.animate``,
+``tracking.partner_study``, ...), imported on first use.
+"""
+
+from __future__ import annotations
+
+from .batch import monte_carlo, simulate_batch, simulate_many
+from .criteria import STRATEGIES, choose_pairs
+from .ekf import simulate
+from .model import (
+    circle_truth,
+    half_squared_range,
+    pair_bound_series,
+    range_jacobian,
+    target_objective,
+)
+from .results import BatchResult, TrackingResult
+from .setup import (
+    ADVERSARIES,
+    METRICS,
+    MOTIONS,
+    PAPER_ADVERSARIAL,
+    PAPER_CIRCLE,
+    PAPER_SENSORS,
+    PARAM_FIELDS,
+    TrackingSetup,
+    noise_table,
+    paper_controls,
+    setup_from_params,
+)
+from .stats import (
+    ENTRAPMENT_CRITERIA,
+    TIE_RTOL,
+    Entrapment,
+    bound_correlation,
+    clearly_lower,
+    compare_strategies,
+    entrapment,
+    is_entrapped,
+    mirror_point,
+    spearman,
+    switch_back_fraction,
+    switch_rate,
+    track_loss,
+)
+
+__all__ = [
+    "STRATEGIES",
+    "METRICS",
+    "ADVERSARIES",
+    "MOTIONS",
+    "PARAM_FIELDS",
+    "PAPER_SENSORS",
+    "TrackingSetup",
+    "PAPER_CIRCLE",
+    "PAPER_ADVERSARIAL",
+    "TIE_RTOL",
+    "clearly_lower",
+    "TrackingResult",
+    "BatchResult",
+    "paper_controls",
+    "noise_table",
+    "setup_from_params",
+    "circle_truth",
+    "half_squared_range",
+    "range_jacobian",
+    "choose_pairs",
+    "pair_bound_series",
+    "target_objective",
+    "simulate",
+    "simulate_batch",
+    "simulate_many",
+    "monte_carlo",
+    "compare_strategies",
+    "spearman",
+    "Entrapment",
+    "entrapment",
+    "ENTRAPMENT_CRITERIA",
+    "is_entrapped",
+    "switch_rate",
+    "switch_back_fraction",
+    "bound_correlation",
+    "mirror_point",
+    "track_loss",
+]
+
+#: Names that moved out of this package, reachable here for existing code (imported on first
+#: access, so that importing :mod:`obslib.tracking` pulls in neither matplotlib nor the studies).
+_MOVED = {
+    **{name: "obslib.viz.tracking" for name in (
+        "cov_ellipse", "CHI2_2DOF_9973", "sensor_label", "draw_sensors", "draw_snapshot",
+        "RunAnimation", "animate", "animation_html")},
+    **{name: "obslib.studies.tracking" for name in (
+        "partner_study", "partner_arms", "partner_summary", "entrapment_summary",
+        "switch_mechanism", "adversary_variants")},
+    "PUBLISHED_CIRCLE": "obslib.studies.published",
+    "PUBLISHED_ADVERSARIAL": "obslib.studies.published",
+    "disc_controls": "obslib.bound_checks",
+}
+
+
+def __getattr__(name):
+    if name in _MOVED:
+        import importlib
+
+        return getattr(importlib.import_module(_MOVED[name]), name)
+    raise AttributeError(f"module 'obslib.tracking' has no attribute {name!r}")

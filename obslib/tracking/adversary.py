@@ -1,0 +1,97 @@
+r"""The adversarial target of Section V-B: which control it takes against a sensor pair.
+
+Knowing its position :math:`o` and the pair :math:`(p_i, p_j)`, the target takes the control of
+its set that minimises the exact inverse condition number
+
+.. math::
+
+    u^\star = \operatorname*{arg\,min}_{u \in U} C^{-1}\!\left(
+    \begin{bmatrix} (o + u - p_i)^T \\ (o + u - p_j)^T \\ u^T \end{bmatrix}\right),
+
+the first minimiser in the order of :math:`U` (both engines use :func:`adversary_moves`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .model import inverse_condition
+
+__all__ = ["control_basis", "adversary_moves"]
+
+
+def control_basis(controls) -> np.ndarray:
+    """Monomials ``1, ux, uy, ux^2, ux uy, uy^2`` of each control, ``(6, K)``."""
+    ux, uy = controls[:, 0], controls[:, 1]
+    return np.stack([np.ones_like(ux), ux, uy, ux * ux, ux * uy, uy * uy])
+
+
+def adversary_moves(eval_ps, o, controls, basis=None, barred=None) -> np.ndarray:
+    """Index of the control each run's adversary takes: the first minimiser of
+    :func:`~obslib.tracking.model.target_objective` (its exact values), ``(R,)``.
+
+    ``eval_ps`` ``(R, 2, 2)`` holds the pair each run's target evaluates, ``o`` ``(R, 2)`` the
+    targets' positions, ``controls`` ``(K, 2)`` the control set.
+
+    With ``a = o - p_i``, ``b = o - p_j`` and the rows ``a + u``, ``b + u``, ``u`` of the matrix
+    ``M``, the three 2 x 2 minors of ``M`` are affine in ``u`` (``a x b + (a - b) x u``,
+    ``a x u``, ``b x u``), so ``det(M^T M)`` (their sum of squares, Cauchy-Binet) and
+    ``tr(M^T M)`` are quadratics in ``u``: one matrix product with the monomials of the controls
+    (:func:`control_basis`) gives both for all runs and controls. ``C^{-1}(M)`` is an
+    increasing function of ``t = 4 det / tr^2`` (``C^{-2} = l_min / l_max`` and
+    ``t = 4 l_min l_max / (l_min + l_max)^2``), so the controls whose ``det / tr^2`` is within
+    ``1e-11`` of the run's minimum contain the exact minimiser (the screen's rounding error is
+    some 1e-15). Those few candidates (usually one) are evaluated with
+    :func:`target_objective`'s own arithmetic and the first exact minimiser is taken, so the
+    pick equals ``argmin`` of :func:`target_objective` over the whole set (tests check it).
+
+    ``barred`` (``(R, K)``, 0 or inf, optional) removes controls from a run's set: runs with
+    different control sets share one call with the union of the sets, each run's own set a
+    contiguous block of it in its own order.
+    """
+    if basis is None:
+        basis = control_basis(controls)
+    R_ = o.shape[0]
+    ax, ay = o[:, 0] - eval_ps[:, 0, 0], o[:, 1] - eval_ps[:, 0, 1]
+    bx, by = o[:, 0] - eval_ps[:, 1, 0], o[:, 1] - eval_ps[:, 1, 1]
+    # minors as w0 + wx ux + wy uy: (a x b + (a - b) x u), (a x u), (b x u)
+    w0 = np.stack([ax * by - ay * bx, np.zeros(R_), np.zeros(R_)])
+    wx = np.stack([by - ay, -ay, -by])
+    wy = np.stack([ax - bx, ax, bx])
+    coef = np.empty((2 * R_, 6))
+    coef[:R_, 0] = (w0 * w0).sum(axis=0)
+    coef[:R_, 1] = 2 * (w0 * wx).sum(axis=0)
+    coef[:R_, 2] = 2 * (w0 * wy).sum(axis=0)
+    coef[:R_, 3] = (wx * wx).sum(axis=0)
+    coef[:R_, 4] = 2 * (wx * wy).sum(axis=0)
+    coef[:R_, 5] = (wy * wy).sum(axis=0)
+    coef[R_:, 0] = ax * ax + ay * ay + bx * bx + by * by
+    coef[R_:, 1] = 2 * (ax + bx)
+    coef[R_:, 2] = 2 * (ay + by)
+    coef[R_:, 3] = 3.0
+    coef[R_:, 4] = 0.0
+    coef[R_:, 5] = 3.0
+    dt = coef @ basis  # (2R, K): det and trace
+    q = dt[:R_]
+    q /= dt[R_:] * dt[R_:]
+    if barred is not None:
+        q += barred  # 0 or inf
+    ar = np.arange(R_)
+    ks = q.argmin(axis=1)  # the first screened minimum
+    m = q[ar, ks]
+    q[ar, ks] = np.inf
+    near = q.min(axis=1) <= m + 1e-11  # another control within the screen's margin
+    if not near.any():
+        return ks
+    q[ar, ks] = m
+    amb = np.flatnonzero(near)
+    rows, kk = np.nonzero(q[amb] <= m[amb, None] + 1e-11)
+    rows = amb[rows]
+    nxt = o[rows] + controls[kk]
+    stack = np.concatenate([nxt[:, None, :] - eval_ps[rows], controls[kk][:, None, :]], axis=1)
+    exact = inverse_condition(stack)
+    order = np.lexsort((kk, exact, rows))  # by run, then value, then control index
+    first = np.ones(order.size, dtype=bool)
+    first[1:] = rows[order][1:] != rows[order][:-1]
+    ks[rows[order[first]]] = kk[order[first]]
+    return ks

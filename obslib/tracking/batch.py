@@ -1,0 +1,434 @@
+"""The batch engine: many tracking runs at once (noise seeds, strategies, setup variants), with
+the equations of :func:`~obslib.tracking.simulate` written as NumPy operations over runs.
+
+Per step, in the order of :func:`~obslib.tracking.simulate`: choose and log, predict
+:math:`P^- = P + Q`, measure the true position with the chosen pair, update with the EKF's gain
+:math:`K = P^- H^T (H P^- H^T + R)^{-1}` and the Joseph form
+
+.. math::
+
+    P \\leftarrow (I - K H) P^- (I - K H)^T + K R K^T
+
+(filterpy's equations, written out for 2 x 2 matrices), choose the next pair, move the target.
+A run does not depend on the other runs of its pass; the tests hold every run to the filterpy
+engine's run of the same seed.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import Iterable
+
+import numpy as np
+
+from .adversary import adversary_moves, control_basis
+from .criteria import PairChooser, candidates, check_strategy, fixed_pair_bound
+from .model import circle_truth, pair_index
+from .results import BatchResult, TrackingResult, derived_arrays
+from .setup import TrackingSetup, check_noise, check_seed, noise_table
+
+__all__ = ["simulate_many", "simulate_batch", "monte_carlo"]
+
+#: Setup fields that may differ between the rows of one batched pass (see :func:`simulate_many`).
+_ROW_FIELDS = ("metric", "anchor", "fixed_pair", "adversary", "controls")
+
+
+class _Filters:
+    """The states of ``R`` extended Kalman filters (estimate ``xx, xy``, covariance entries
+    ``p00, p01, p10, p11``) and their predict-update step, written out for 2 x 2 matrices."""
+
+    def __init__(self, setup: TrackingSetup, R_: int):
+        self.xx = np.full(R_, float(setup.estimate0[0]))
+        self.xy = np.full(R_, float(setup.estimate0[1]))
+        (c00, c01), (c10, c11) = setup.cov0
+        self.p00, self.p01, self.p10, self.p11 = (np.full(R_, float(c)) for c in
+                                                  (c00, c01, c10, c11))
+        self.Q, self.R = setup.Q, setup.R
+        # adding a zero entry is skipped (x + 0 = x; the zero products of K R are exact zeros)
+        self.q_diag = setup.Q[0][1] == 0 and setup.Q[1][0] == 0
+        self.r_diag = setup.R[0][1] == 0 and setup.R[1][0] == 0
+
+    def covariance(self):
+        return self.p00, self.p01, self.p10, self.p11
+
+    def step(self, s0x, s0y, s1x, s1y, z0, z1, k: int) -> None:
+        """Predict, then update with the measurements ``z0, z1`` of the sensors
+        ``(s0x, s0y)``, ``(s1x, s1y)`` (one per run) at step ``k`` (0-based)."""
+        (q00, q01), (q10, q11) = self.Q
+        (r00, r01), (r10, r11) = self.R
+        xx, xy = self.xx, self.xy
+        # predict: F = I
+        pp00, pp11 = self.p00 + q00, self.p11 + q11
+        pp01, pp10 = (self.p01, self.p10) if self.q_diag else (self.p01 + q01, self.p10 + q10)
+        # Jacobian rows H_m = (xhat - p_m)^T and the innovation
+        h0x, h0y, h1x, h1y = xx - s0x, xy - s0y, xx - s1x, xy - s1y
+        y0 = z0 - 0.5 * (h0x * h0x + h0y * h0y)
+        y1 = z1 - 0.5 * (h1x * h1x + h1y * h1y)
+        # P H^T, S = H P H^T + R, K = P H^T S^-1
+        a00, a10 = pp00 * h0x + pp01 * h0y, pp10 * h0x + pp11 * h0y
+        a01, a11 = pp00 * h1x + pp01 * h1y, pp10 * h1x + pp11 * h1y
+        s00 = h0x * a00 + h0y * a10 + r00
+        s01 = h0x * a01 + h0y * a11
+        s10 = h1x * a00 + h1y * a10
+        s11 = h1x * a01 + h1y * a11 + r11
+        if not self.r_diag:
+            s01, s10 = s01 + r01, s10 + r10
+        det = s00 * s11 - s01 * s10
+        if not (det > 0).all() or not np.isfinite(det).all():
+            self._singular(det, k, s0x, s0y, s1x, s1y)
+        i00, i01, i10, i11 = s11 / det, -s01 / det, -s10 / det, s00 / det
+        k00, k01 = a00 * i00 + a01 * i10, a00 * i01 + a01 * i11
+        k10, k11 = a10 * i00 + a11 * i10, a10 * i01 + a11 * i11
+        self.xx = xx + (k00 * y0 + k01 * y1)
+        self.xy = xy + (k10 * y0 + k11 * y1)
+        # Joseph form with A = I - K H
+        A00 = 1.0 - (k00 * h0x + k01 * h1x)
+        A01 = -(k00 * h0y + k01 * h1y)
+        A10 = -(k10 * h0x + k11 * h1x)
+        A11 = 1.0 - (k10 * h0y + k11 * h1y)
+        b00, b01 = A00 * pp00 + A01 * pp10, A00 * pp01 + A01 * pp11
+        b10, b11 = A10 * pp00 + A11 * pp10, A10 * pp01 + A11 * pp11
+        if self.r_diag:
+            e00, e01, e10, e11 = k00 * r00, k01 * r11, k10 * r00, k11 * r11
+        else:
+            e00, e01 = k00 * r00 + k01 * r10, k00 * r01 + k01 * r11
+            e10, e11 = k10 * r00 + k11 * r10, k10 * r01 + k11 * r11
+        self.p00 = (b00 * A00 + b01 * A01) + (e00 * k00 + e01 * k01)
+        self.p01 = (b00 * A10 + b01 * A11) + (e00 * k10 + e01 * k11)
+        self.p10 = (b10 * A00 + b11 * A01) + (e10 * k00 + e11 * k01)
+        self.p11 = (b10 * A10 + b11 * A11) + (e10 * k10 + e11 * k11)
+
+    def _singular(self, det, k, s0x, s0y, s1x, s1y):
+        r = int(np.flatnonzero(~(det > 0) | ~np.isfinite(det))[0])
+        pick = lambda a: a[r] if np.ndim(a) else a  # noqa: E731
+        x = [float(self.xx[r]), float(self.xy[r])]
+        ps = [[float(pick(s0x)), float(pick(s0y))], [float(pick(s1x)), float(pick(s1y))]]
+        raise ValueError(
+            f"the filter's update at step {k + 1} of run {r} failed: the innovation covariance "
+            f"H P H^T + R is singular in floating point (estimate {np.round(x, 6).tolist()}, "
+            f"pair sensors {ps}); the estimate is so far from the sensors, or the covariance so "
+            "large, that the two Jacobian rows are parallel to rounding. Start the estimate "
+            "nearer the target or with a smaller cov0."
+        )
+
+
+def _measure(sx, sy, i0, i1, ox, oy, noise_k, cols):
+    """Half squared ranges of the true positions from the chosen sensors plus the noise entries
+    ``noise_k[cols + i]`` (run ``r``'s table row at offset ``cols[r]``)."""
+    d0x, d0y, d1x, d1y = sx[i0] - ox, sy[i0] - oy, sx[i1] - ox, sy[i1] - oy
+    z0 = 0.5 * (d0x * d0x + d0y * d0y) + noise_k.take(cols + i0)
+    z1 = 0.5 * (d1x * d1x + d1y * d1y) + noise_k.take(cols + i1)
+    return z0, z1
+
+
+class _Adversaries:
+    """The adversarial targets of ``R`` runs: positions over time and their moves."""
+
+    def __init__(self, setup, R_, nextpair, controls, barred):
+        self.truth = np.empty((setup.steps + 1, R_, 2))
+        self.truth[0] = setup.start
+        self.controls = setup.control_array if controls is None else controls
+        self.basis = control_basis(self.controls)
+        self.nextpair = nextpair
+        self.anynext = bool(nextpair.any())
+        self.barred = barred
+
+    def move(self, k, s, pair, next_pair):
+        """Move every target after step ``k`` against its pair (or the sensors' next pair)."""
+        eval_ps = s[pair]
+        if self.anynext:
+            eval_ps = np.where(self.nextpair[:, None, None], s[next_pair], eval_ps)
+        o = self.truth[k]
+        self.truth[k + 1] = o + self.controls[
+            adversary_moves(eval_ps, o, self.controls, self.basis, self.barred)
+        ]
+
+
+def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
+              barred=None) -> dict:
+    """``R`` runs of one shared setup, each with its own pair candidates (``cand``, ``(R, P)``),
+    metric (``maha``) and adversary (``nextpair``), and noise table: run ``r`` uses
+    ``tables[r % B]``. An adversary's controls are ``controls`` (default: the setup's) less each
+    run's ``barred`` ones (see :func:`~obslib.tracking.adversary.adversary_moves`)."""
+    R_ = cand.shape[0]
+    B, steps, n = tables.shape
+    s = setup.sensor_array
+    sx, sy = s[:, 0].copy(), s[:, 1].copy()
+    ii, jj = pair_index(n)
+    # the logs are kept step-major ((steps, R) rows written contiguously), transposed at the end
+    noise = np.ascontiguousarray(tables.transpose(1, 0, 2)).reshape(steps, B * n)
+    cols = (np.arange(R_) % B) * n
+    filters = _Filters(setup, R_)
+    circle = setup.motion == "circle"
+    if circle:
+        path = circle_truth(setup)  # (steps + 1, 2), the same for every run
+    else:
+        adv = _Adversaries(setup, R_, nextpair, controls, barred)
+
+    best_log = np.empty((steps, R_), dtype=int)
+    bound = np.empty((steps, R_))
+    est = np.empty((steps, 2, R_))
+    cov = np.empty((steps, 4, R_))
+    chooser = PairChooser(s, cand, maha, setup.u_max**2)
+    best, b = chooser(filters.xx, filters.xy, *filters.covariance())
+    for k in range(steps):
+        best_log[k], bound[k] = best, b
+        est[k] = filters.xx, filters.xy
+        cov[k] = filters.covariance()
+        i0, i1 = ii[best], jj[best]
+        ox, oy = path[k] if circle else (adv.truth[k, :, 0], adv.truth[k, :, 1])
+        z0, z1 = _measure(sx, sy, i0, i1, ox, oy, noise[k], cols)
+        filters.step(sx[i0], sy[i0], sx[i1], sy[i1], z0, z1, k)
+        # the next choice depends only on the posterior (a "next-pair" adversary may know it)
+        best, b = chooser(filters.xx, filters.xy, *filters.covariance())
+        if not circle:
+            adv.move(k, s, np.stack([i0, i1], axis=1), np.stack([ii[best], jj[best]], axis=1))
+    truth = path[None] if circle else np.ascontiguousarray(adv.truth.transpose(1, 0, 2))
+    return _collect(chooser, best_log, bound, est, cov, best, truth)
+
+
+def _collect(chooser, best_log, bound, est, cov, best, truth) -> dict:
+    """The logs of :func:`_run_rows` as run-major arrays, the fixed pairs' bounds filled in."""
+    ii, jj = chooser.ii, chooser.jj
+    steps, R_ = best_log.shape
+    pairs = np.stack([ii, jj], axis=1)[best_log.T]  # (R, steps, 2)
+    est = np.ascontiguousarray(est.transpose(2, 0, 1))
+    cov = np.ascontiguousarray(cov.transpose(2, 0, 1)).reshape(R_, steps, 2, 2)
+    bound = np.ascontiguousarray(bound.T)
+    if chooser.single.size:
+        bound[chooser.single] = chooser.fixed_bounds(est, cov)
+    next_pair = np.stack([ii[best], jj[best]], axis=1)
+    d = derived_arrays(est, cov, truth)
+    if truth.shape[0] == 1 < R_:  # one path for every run (the circle): read-only views
+        for name in ("truth", "control", "truth_end"):
+            d[name] = np.broadcast_to(d[name], (R_,) + d[name].shape[1:])
+    return dict(pairs=pairs, bound=bound, estimate=est, cov=cov, next_pair=next_pair, **d)
+
+
+# --------------------------------------------------------------------------------------------
+# Arms: validation, grouping into passes, common noise
+# --------------------------------------------------------------------------------------------
+
+
+def _check_arms(arms) -> dict:
+    try:
+        arms = dict(arms)
+    except (TypeError, ValueError):
+        raise ValueError("arms must be a mapping {name: (setup, strategy)}") from None
+    if not arms:
+        raise ValueError("no arms to run")
+    for name, arm in arms.items():
+        try:
+            setup, strategy = arm
+        except (TypeError, ValueError):
+            raise ValueError(f"arm {name!r} must be a (setup, strategy) pair") from None
+        if not isinstance(setup, TrackingSetup):
+            raise ValueError(
+                f"arm {name!r}: setup must be a TrackingSetup, got {type(setup).__name__}"
+            )
+        check_strategy(strategy)
+    return arms
+
+
+def _check_seeds(seeds, noise):
+    if (seeds is None) == (noise is None):
+        raise ValueError("give either seeds or noise tables")
+    if noise is not None:
+        given = np.asarray(noise, dtype=float)
+        if given.ndim != 3:
+            raise ValueError(f"noise must have shape (B, steps, N), got {given.shape}")
+        return (), given
+    if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
+        raise TypeError(f"seeds must be an iterable of non-negative integers, got {seeds!r}")
+    seeds = tuple(check_seed(x, "each seed") for x in seeds)
+    if not seeds:
+        raise ValueError("seeds is empty")
+    return seeds, None
+
+
+def _run_key(arm):
+    """Arms with equal keys are the same runs: a fixed pair's run does not depend on the
+    metric, only its logged bound does."""
+    setup, strategy = arm
+    if strategy == "fixed-pair" and setup.metric != "mahalanobis":
+        return setup.replace(metric="mahalanobis"), strategy
+    return arm
+
+
+def _control_union(setups, B):
+    """The union of the setups' control sets (one contiguous block per distinct set) and each
+    run's barred controls, or ``(None, None)`` when all share one set."""
+    sets, block = [], []
+    for su in setups:
+        c = su.control_array
+        hit = [b for b, x in enumerate(sets) if np.array_equal(x, c)]
+        if not hit:
+            sets.append(c)
+        block.append(hit[0] if hit else len(sets) - 1)
+    if len(sets) == 1:
+        return None, None
+    controls = np.concatenate(sets)
+    edges = np.cumsum([0] + [len(x) for x in sets])
+    barred = np.full((len(setups) * B, len(controls)), np.inf)
+    for g, b in enumerate(block):
+        barred[g * B : (g + 1) * B, edges[b] : edges[b + 1]] = 0.0
+    return controls, barred
+
+
+def _with_metric(setup: TrackingSetup, r: BatchResult) -> BatchResult:
+    """The fixed-pair runs ``r`` with their bound logged in ``setup``'s metric."""
+    i, j = sorted(setup.fixed_pair)
+    M = r.bound.size
+    s = setup.sensor_array
+    bound = fixed_pair_bound(
+        s[:, 0].copy(), s[:, 1].copy(), np.full(M, i), np.full(M, j), setup.u_max**2,
+        r.estimate.reshape(-1, 2), r.cov.reshape(-1, 2, 2),
+        np.full(M, setup.metric == "mahalanobis"),
+    ).reshape(r.bound.shape)
+    return dataclasses.replace(r, setup=setup, bound=bound)
+
+
+def simulate_many(arms, seeds=None, noise=None) -> dict:
+    """Several (setup, strategy) arms over the same noise realisations, batched together.
+
+    Every arm runs once per seed (or noise table), with common noise: run ``b`` of every arm
+    uses ``noise_table(setup, seeds[b])``, so it equals ``simulate(setup, strategy,
+    seed=seeds[b])`` (the tests check this to rounding). Arms whose setups differ only in
+    ``metric``, ``anchor``, ``fixed_pair``, ``adversary`` and ``controls`` share one pass of the
+    batch engine; a run does not depend on the other runs of its pass. Identical arms are run
+    once and share their result; so are fixed-pair arms that differ only in the metric, whose
+    runs are the same (only the logged bound is evaluated with each metric).
+
+    Parameters
+    ----------
+    arms : mapping
+        ``{name: (setup, strategy)}``.
+    seeds : iterable of int, optional
+    noise : array_like, shape (B, steps, N), optional
+        Explicit noise tables instead of seeds.
+
+    Returns
+    -------
+    dict
+        ``{name: BatchResult}`` in the order of ``arms``.
+    """
+    arms = _check_arms(arms)
+    seeds, given = _check_seeds(seeds, noise)
+    first: dict = {}
+    for name, arm in arms.items():
+        first.setdefault(_run_key(arm), name)
+    groups: dict = {}
+    for name in first.values():
+        setup = arms[name][0]
+        key = tuple(getattr(setup, f.name) for f in dataclasses.fields(setup)
+                    if f.name not in _ROW_FIELDS)
+        groups.setdefault(key, []).append(name)
+    drawn: dict = {}
+    out = {}
+    for names in groups.values():
+        base = arms[names[0]][0]
+        if seeds:
+            tkey = (base.steps, base.n_sensors, base.noise_std)
+            if tkey not in drawn:
+                drawn[tkey] = np.stack([noise_table(base, x) for x in seeds])
+            tables = drawn[tkey]
+        else:
+            tables = np.stack([check_noise(base, t) for t in given])
+        B = tables.shape[0]
+        cand = np.concatenate([np.tile(candidates(*arms[n]), (B, 1)) for n in names])
+        maha = np.repeat([arms[n][0].metric == "mahalanobis" for n in names], B)
+        nxt = np.repeat([arms[n][0].adversary == "next-pair" for n in names], B)
+        controls = barred = None
+        if base.motion == "adversarial":
+            controls, barred = _control_union([arms[n][0] for n in names], B)
+        res = _run_rows(base, cand, maha, nxt, tables, controls, barred)
+        for g, n in enumerate(names):
+            sl = slice(g * B, (g + 1) * B)
+            setup, strategy = arms[n]
+            out[n] = BatchResult(
+                setup=setup, strategy=strategy, seed=None, seeds=seeds, noise=tables,
+                **{k: v[sl] for k, v in res.items()},
+            )
+    result = {}
+    for n, arm in arms.items():
+        ref = first[_run_key(arm)]
+        result[n] = out[ref] if arm == arms[ref] else _with_metric(arm[0], out[ref])
+    return result
+
+
+def simulate_batch(setup: TrackingSetup, strategy: str, seeds=None, noise=None) -> BatchResult:
+    """Many runs of one strategy at once: :func:`~obslib.tracking.simulate` vectorised over
+    noise realisations.
+
+    The same equations as filterpy's ``predict`` and ``update`` (Joseph form) in the same order,
+    written as NumPy array operations over runs (:func:`simulate_many`), so a run equals
+    ``simulate(setup, strategy, seed=s)`` to rounding (checked in the tests).
+
+    Parameters
+    ----------
+    seeds : iterable of int, optional
+        One run per seed with ``noise_table(setup, seed)``.
+    noise : array_like, shape (B, steps, N), optional
+        Explicit noise tables instead of seeds.
+    """
+    check_strategy(strategy)
+    return simulate_many({strategy: (setup, strategy)}, seeds=seeds, noise=noise)[strategy]
+
+
+def _count(value, name: str) -> int:
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an integer, got {value!r}")
+    if value < 1:
+        raise ValueError(f"{name} must be at least 1, got {value}")
+    return int(value)
+
+
+def monte_carlo(
+    setup: TrackingSetup,
+    n_seeds: int = 100,
+    strategies: Iterable[str] = ("best-pair", "best-partner", "fixed-pair"),
+    first_seed: int = 0,
+    batch: int = 1000,
+) -> dict[str, BatchResult]:
+    """The strategies over ``n_seeds`` noise realisations, seeds ``first_seed, first_seed + 1, ..``.
+
+    Trial ``t`` uses ``noise_table(setup, first_seed + t)`` for every strategy (common random
+    numbers), so trial ``t`` of a strategy equals ``simulate(setup, strategy,
+    seed=first_seed + t)``. All strategies run together (:func:`simulate_many`), ``batch``
+    seeds at a time.
+
+    Returns
+    -------
+    dict
+        ``{strategy: BatchResult}`` with arrays of leading size ``n_seeds``.
+    """
+    n_seeds = _count(n_seeds, "n_seeds")
+    batch = _count(batch, "batch")
+    first_seed = check_seed(first_seed, "first_seed")
+    if isinstance(strategies, str):
+        raise TypeError(f"strategies must be a list of names, got the string {strategies!r}; "
+                        f"write [{strategies!r}]")
+    strategies = list(strategies)
+    for s in strategies:
+        check_strategy(s)
+    if not strategies:
+        return {}
+    seeds = list(range(first_seed, first_seed + n_seeds))
+    arms = {s: (setup, s) for s in strategies}
+    parts = [simulate_many(arms, seeds=seeds[i : i + batch]) for i in range(0, len(seeds), batch)]
+    if len(parts) == 1:
+        return parts[0]
+    return {
+        s: BatchResult(
+            setup=setup,
+            strategy=s,
+            seed=None,
+            seeds=tuple(seeds),
+            **{
+                f.name: np.concatenate([getattr(p[s], f.name) for p in parts])
+                for f in dataclasses.fields(TrackingResult)
+                if f.name not in ("setup", "strategy", "seed")
+            },
+        )
+        for s in strategies
+    }

@@ -1,0 +1,245 @@
+"""Pair choosers: which two sensors measure the target at the next step, by the paper's
+strategies (the pair bound of Theorem 4).
+
+The strategies of Section V-A score a pair by Theorem 4's bound at the estimate
+:math:`\\hat x` with the setup's :math:`u_{\\max}`,
+
+.. math::
+
+    \\underline{C}^{-1}_{ij} = \\sqrt{\\frac{\\lambda_{\\min}(G_{ij})}
+    {\\lambda_{\\max}(G_{ij}) + u_{\\max}^2}}, \\qquad
+    G_{ij} = \\begin{bmatrix} v_i^T \\\\ v_j^T \\end{bmatrix}^T
+             \\begin{bmatrix} v_i^T \\\\ v_j^T \\end{bmatrix},
+
+where :math:`v_i` is :math:`\\hat x - p_i` rescaled to its Mahalanobis length
+:math:`d_i = \\sqrt{v^T \\Sigma^{-1} v}` in the estimate's covariance (``metric="mahalanobis"``,
+the published runs) or left Euclidean. They differ in their candidates:
+
+``"best-pair"``
+    strategy (1), all pairs;
+``"best-partner"``
+    strategy (2), the pairs of a fixed sensor (``setup.anchor``, the paper's :math:`s_2`);
+``"fixed-pair"``
+    strategy (3), one pair (``setup.fixed_pair``, the paper's :math:`(s_2, s_1)`).
+
+Ties keep the first maximum in ``(i, j)`` order. :class:`PairChooser` evaluates the choice for
+many runs at once without per-step validation; both engines use it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..bounds import _pair_kernel
+from .model import pair_index
+
+__all__ = [
+    "STRATEGIES",
+    "check_strategy",
+    "candidates",
+    "mahalanobis_sq",
+    "scaled_rows",
+    "PairChooser",
+    "fixed_pair_bound",
+    "choose_pairs",
+]
+
+#: The paper's three strategies (Section V-A).
+STRATEGIES = ("best-pair", "best-partner", "fixed-pair")
+
+
+def check_strategy(strategy, known=STRATEGIES) -> str:
+    """``strategy`` if it is one of ``known``, else a ValueError (TypeError for a non-string)."""
+    if not isinstance(strategy, str):
+        raise TypeError(f"strategy must be a string, one of {known}; got {strategy!r}")
+    if strategy not in known:
+        raise ValueError(f"unknown strategy {strategy!r}; known: {known}")
+    return strategy
+
+
+def candidates(setup, strategy: str) -> np.ndarray:
+    """Which pairs (in ``(i, j)`` order, :func:`~obslib.tracking.model.pair_index`) a strategy
+    chooses among, ``(P,)`` bool.
+
+    Best pair: all; best partner: the pairs containing the anchor (in the order of the partner's
+    index); fixed pair: that pair alone.
+    """
+    ii, jj = pair_index(setup.n_sensors)
+    if strategy == "fixed-pair":
+        i, j = sorted(setup.fixed_pair)
+        return (ii == i) & (jj == j)
+    if strategy == "best-partner":
+        return (ii == setup.anchor) | (jj == setup.anchor)
+    return np.ones(ii.size, dtype=bool)
+
+
+def mahalanobis_sq(vx, vy, p00, p01, p10, p11):
+    """:math:`v^T \\Sigma^{-1} v` for :math:`\\Sigma = [[p_{00}, p_{01}], [p_{10}, p_{11}]]`
+    (broadcasting), from the adjugate:
+    :math:`(p_{11} v_x^2 - (p_{01} + p_{10}) v_x v_y + p_{00} v_y^2) / \\det \\Sigma`.
+
+    Where :math:`\\det \\Sigma` is not a normal floating-point number (a covariance of scale
+    1e-160 has a determinant that underflows), numerator and determinant are evaluated with
+    :math:`\\Sigma` divided by its largest entry, which leaves the ratio unchanged.
+    """
+    dm2 = p11 * (vx * vx)
+    dm2 -= (p01 + p10) * (vx * vy)
+    dm2 += p00 * (vy * vy)
+    det = p00 * p11 - p01 * p10
+    small = ~(np.abs(det) >= 1e-290) | ~(np.abs(det) <= 1e290)
+    if small.any():
+        top = np.maximum(np.maximum(np.abs(p00), np.abs(p11)), np.abs(p01))
+        top = np.where(small, top, 1.0)
+        q00, q01, q10, q11 = p00 / top, p01 / top, p10 / top, p11 / top
+        num = q11 * (vx * vx) - (q01 + q10) * (vx * vy) + q00 * (vy * vy)
+        alt = num / (q00 * q11 - q01 * q10) / top
+        dm2 = np.where(small, alt, dm2)
+        dm2 = np.array(dm2, dtype=float)
+        return dm2
+    dm2 /= det
+    return dm2
+
+
+def scaled_rows(vx, vy, c, maha):
+    """The rows of the pair bound, :math:`v = \\hat x - p_i` ``(M, K)`` for ``M`` estimates and
+    ``K`` sensors, rescaled in place to their Mahalanobis length where ``maha`` ``(M,)`` is set
+    (covariance entries ``c = (p00, p01, p10, p11)``, each ``(M,)``) and divided by the longest
+    row of each estimate, as :func:`obslib.pair_bounds` normalises (the bound is invariant under
+    scaling the rows and :math:`u_{\\max}` together).
+
+    Returns
+    -------
+    vx, vy : ndarray, shape (M, K)
+    inv : ndarray, shape (M,)
+        :math:`1 / \\text{scale}^2`, the factor of :math:`u_{\\max}^2`.
+    """
+    e2 = vx * vx + vy * vy
+    if not (e2 > 0).all():
+        raise ValueError("an estimate is not finite or sits on a sensor")
+    if maha.any():
+        dm2 = mahalanobis_sq(vx, vy, *(x[:, None] for x in c))
+        n2 = np.where(maha[:, None], dm2, e2)
+        f = np.sqrt(n2 / e2)
+        vx *= f
+        vy *= f
+    else:
+        n2 = e2
+    inv = 1.0 / n2.max(axis=1)  # 1 / scale^2
+    sc = np.sqrt(inv)[:, None]
+    vx *= sc
+    vy *= sc
+    return vx, vy, inv
+
+
+class PairChooser:
+    """The strategies' picks for ``R`` runs at once, without per-step validation.
+
+    Built once per batched pass from each run's candidate pairs ``cand`` (``(R, P)`` bool,
+    :func:`candidates`) and metric (``maha``, ``(R,)`` bool). Calling it with the runs'
+    estimates and covariance entries returns the chosen pair's index (in
+    :func:`~obslib.tracking.model.pair_index` order) and bound: the rows of
+    :func:`scaled_rows`, then the kernel of :func:`obslib.pair_bounds` for the run's candidate
+    pairs only. The pick is the first maximum among the candidates in ``(i, j)`` order.
+
+    Runs with a single candidate (the fixed pair) need no scores to choose, so the call leaves
+    their bound out (NaN); :meth:`fixed_bounds` evaluates it afterwards over whole runs at once.
+    """
+
+    def __init__(self, sensors, cand, maha, u2):
+        self.sx = sensors[:, 0].copy()
+        self.sy = sensors[:, 1].copy()
+        self.n = n = sensors.shape[0]
+        self.ii, self.jj = pair_index(n)
+        self.maha = np.asarray(maha, dtype=bool)
+        self.u2 = float(u2)
+        R_ = cand.shape[0]
+        counts = cand.sum(axis=1)
+        if (counts == 0).any():
+            raise ValueError("a run has no candidate pair")
+        self.best = np.empty(R_, dtype=int)
+        self.bound = np.full(R_, np.nan)
+        self.single = np.flatnonzero(counts == 1)
+        self.best[self.single] = np.nonzero(cand[self.single])[1]
+        self.multi = np.flatnonzero(counts > 1)
+        self.groups = []
+        for c in np.unique(counts[self.multi]):
+            rows = np.flatnonzero(counts == c)
+            cidx = np.nonzero(cand[rows])[1].reshape(rows.size, int(c))  # ascending pair index
+            loc = np.searchsorted(self.multi, rows)  # rows within the multi-candidate block
+            fi = loc[:, None] * n + self.ii[cidx]
+            fj = loc[:, None] * n + self.jj[cidx]
+            self.groups.append((rows, loc, cidx, fi, fj, np.arange(rows.size)))
+        self.maha_multi = self.maha[self.multi]
+
+    def __call__(self, xx, xy, p00, p01, p10, p11):
+        if self.groups:
+            m = self.multi
+            vx = xx[m, None] - self.sx
+            vy = xy[m, None] - self.sy
+            vx, vy, inv = scaled_rows(vx, vy, (p00[m], p01[m], p10[m], p11[m]), self.maha_multi)
+            u2s = self.u2 * inv
+            for rows, loc, cidx, fi, fj, ar in self.groups:
+                w = _pair_kernel(vx.take(fi), vy.take(fi), vx.take(fj), vy.take(fj), u2s[loc, None])
+                pick = w.argmax(axis=1)
+                self.best[rows] = cidx[ar, pick]
+                self.bound[rows] = w[ar, pick]
+        elif not (np.isfinite(xx).all() and np.isfinite(xy).all()):
+            raise ValueError("an estimate is not finite")
+        return self.best.copy(), self.bound.copy()
+
+    def fixed_bounds(self, est, cov) -> np.ndarray:
+        """The bound of the single-candidate runs' pair over whole runs: ``est`` ``(R, T, 2)``
+        and ``cov`` ``(R, T, 2, 2)`` of all runs in; ``(len(single), T)`` out."""
+        r = self.single
+        T = est.shape[1]
+        k = np.repeat(self.best[r], T)
+        val = fixed_pair_bound(self.sx, self.sy, self.ii[k], self.jj[k], self.u2,
+                               est[r].reshape(-1, 2), cov[r].reshape(-1, 2, 2),
+                               np.repeat(self.maha[r], T))
+        return val.reshape(r.size, T)
+
+
+def fixed_pair_bound(sx, sy, i, j, u2, x, c, maha) -> np.ndarray:
+    """Theorem 4's bound of the pair ``(i[m], j[m])`` at estimate ``x[m]`` (covariance ``c[m]``,
+    Mahalanobis where ``maha[m]``), ``(M,)``: the rows of :func:`scaled_rows` for the pair's two
+    sensors only, in chunks that stay in cache."""
+    out = np.empty(x.shape[0])
+    step = 1 << 14
+    for a in range(0, x.shape[0], step):
+        sl = slice(a, a + step)
+        ie, je = i[sl], j[sl]
+        vx = x[sl, 0, None] - np.stack([sx[ie], sx[je]], axis=1)
+        vy = x[sl, 1, None] - np.stack([sy[ie], sy[je]], axis=1)
+        cs = c[sl]
+        vx, vy, inv = scaled_rows(vx, vy, (cs[:, 0, 0], cs[:, 0, 1], cs[:, 1, 0], cs[:, 1, 1]),
+                                  maha[sl])
+        out[sl] = _pair_kernel(vx[:, 0], vy[:, 0], vx[:, 1], vy[:, 1], u2 * inv)
+    return out
+
+
+def choose_pairs(setup, strategy: str, xhat, cov):
+    """The pair a strategy picks at estimates ``xhat`` ``(B, 2)`` with covariances ``cov``
+    ``(B, 2, 2)``, validated (:class:`PairChooser` with one run per estimate).
+
+    Returns
+    -------
+    pairs : ndarray of int, shape (B, 2)
+        0-based sensor indices, ``pairs[:, 0] < pairs[:, 1]``.
+    bound : ndarray, shape (B,)
+        The chosen pair's bound (the setup's metric).
+    """
+    from .._validate import as_cov, as_points
+
+    check_strategy(strategy)
+    x = as_points(np.atleast_2d(np.asarray(xhat, dtype=float)), "xhat")
+    c = as_cov(cov, x.shape[0]) if setup.metric == "mahalanobis" else np.broadcast_to(
+        np.eye(2), (x.shape[0], 2, 2))
+    b = x.shape[0]
+    cand = np.broadcast_to(candidates(setup, strategy), (b, len(pair_index(setup.n_sensors)[0])))
+    maha = np.full(b, setup.metric == "mahalanobis")
+    ch = PairChooser(setup.sensor_array, cand, maha, setup.u_max**2)
+    best, bound = ch(x[:, 0].copy(), x[:, 1].copy(), *(c[:, a, e].copy() for a in (0, 1)
+                                                      for e in (0, 1)))
+    if ch.single.size:
+        bound[ch.single] = ch.fixed_bounds(x[ch.single, None, :], c[ch.single, None])[:, 0]
+    return np.stack([ch.ii[best], ch.jj[best]], axis=1), bound

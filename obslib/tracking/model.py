@@ -1,0 +1,134 @@
+"""The measurement model of Section V: the half squared range, its Jacobian, the circling
+target's path, the pair bound along a run and the exact :math:`C^{-1}` the adversary minimises.
+
+A sensor :math:`p_i` measures
+
+.. math::
+
+    z_i = h_i(o) + n_i, \\qquad h_i(o) = \\tfrac12 \\lVert p_i - o \\rVert^2,
+
+so the filter's Jacobian rows are :math:`H_i = (\\hat x - p_i)^T`, the rows of the paper's
+observability matrix :math:`O(o)` at the estimate.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..bounds import _normalise, _pair_kernel, relative_vectors
+from ..observability import _inverse_condition
+
+__all__ = [
+    "half_squared_range",
+    "range_jacobian",
+    "circle_truth",
+    "pair_index",
+    "pair_bound_series",
+    "target_objective",
+    "inverse_condition",
+]
+
+
+def circle_truth(setup) -> np.ndarray:
+    """True positions :math:`o_k`, ``k = 1..steps + 1``, on the circle of Section V-A,
+    ``(steps + 1, 2)``.
+
+    :math:`o_k = c + r\\,(\\cos(\\omega (k - 1)), \\sin(\\omega (k - 1)))` with ``center``,
+    ``radius`` and ``rate`` of the setup; the extra last row is the position the target moves
+    to after the last step.
+    """
+    a = setup.rate * np.arange(setup.steps + 1)
+    return np.asarray(setup.center) + setup.radius * np.column_stack([np.cos(a), np.sin(a)])
+
+
+def half_squared_range(x, pair_sensors) -> np.ndarray:
+    """Measurement function :math:`h(x) = \\tfrac12 \\lVert p_i - x \\rVert^2` for the rows
+    :math:`p_i` of ``pair_sensors``.
+
+    ``x`` may be a filterpy column ``(2, 1)`` (returns ``(m, 1)``) or a batch ``(..., 2)`` with
+    ``pair_sensors`` ``(..., m, 2)`` (returns ``(..., m)``).
+    """
+    x = np.asarray(x, dtype=float)
+    ps = np.asarray(pair_sensors, dtype=float)
+    if x.shape == (2, 1):
+        d = ps - x[:, 0]
+        return (0.5 * (d[:, 0] ** 2 + d[:, 1] ** 2))[:, None]
+    d = ps - x[..., None, :]
+    return 0.5 * (d[..., 0] ** 2 + d[..., 1] ** 2)
+
+
+def range_jacobian(x, pair_sensors) -> np.ndarray:
+    """Jacobian of :func:`half_squared_range`: rows :math:`H_i = (x - p_i)^T`, ``(..., m, 2)``."""
+    x = np.asarray(x, dtype=float)
+    ps = np.asarray(pair_sensors, dtype=float)
+    if x.shape == (2, 1):
+        return x[:, 0][None, :] - ps
+    return x[..., None, :] - ps
+
+
+def pair_index(n: int):
+    """Row and column of the pairs ``i < j`` of ``n`` sensors in ``(i, j)`` order."""
+    return np.triu_indices(n, 1)
+
+
+def pair_bound_series(setup, points, pairs, cov=None) -> np.ndarray:
+    """Theorem 4's bound of the given pair at each point: ``W[pairs[k, 0], pairs[k, 1], k]``
+    of :func:`obslib.pair_bounds`.
+
+    Evaluates only the given pair at each point, with :func:`obslib.pair_bounds`'s own
+    normalisation and kernel, so whole Monte Carlo batches can be passed at once.
+
+    Parameters
+    ----------
+    points : array_like, shape (K, 2)
+        Where to evaluate (e.g. a run's ``estimate`` or ``truth``).
+    pairs : array_like of int, shape (K, 2)
+    cov : array_like, shape (K, 2, 2), optional
+        Mahalanobis distances in these covariances; Euclidean when omitted.
+    """
+    v = relative_vectors(setup.sensors, points, cov)  # validated, (N, K, 2)
+    K = v.shape[1]
+    pr = np.asarray(pairs)
+    n = setup.n_sensors
+    if pr.shape != (K, 2) or not np.issubdtype(pr.dtype, np.integer):
+        raise ValueError(f"pairs must be integers of shape ({K}, 2), got {pr.dtype} {pr.shape}")
+    if K and (pr.min() < 0 or pr.max() >= n):
+        raise ValueError(f"pairs must be sensor indices in 0..{n - 1}")
+    v, u2 = _normalise(v, setup.u_max**2)
+    k = np.arange(K)
+    vi, vj = v[pr[:, 0], k], v[pr[:, 1], k]
+    return _pair_kernel(vi[:, 0], vi[:, 1], vj[:, 0], vj[:, 1], u2)
+
+
+def inverse_condition(rows) -> np.ndarray:
+    """Exact :math:`C^{-1} = \\sigma_{\\min} / \\sigma_{\\max}` of each stacked ``(m, 2)`` matrix
+    of ``rows`` ``(..., m, 2)`` (the closed form of :func:`obslib.inverse_condition_number`,
+    without validation)."""
+    return _inverse_condition(np.asarray(rows, dtype=float))
+
+
+def target_objective(pair_sensors, position, controls) -> np.ndarray:
+    """Exact :math:`C^{-1}` of :math:`[o' - p_i; o' - p_j; u]` at :math:`o' = o + u` for each
+    control :math:`u`.
+
+    The adversary of Section V-B minimises this over its control set.
+
+    Parameters
+    ----------
+    pair_sensors : array_like, shape (..., 2, 2)
+        The two sensors' positions (rows).
+    position : array_like, shape (..., 2)
+        The target's current position :math:`o`.
+    controls : array_like, shape (K, 2)
+
+    Returns
+    -------
+    ndarray, shape (..., K)
+    """
+    ps = np.asarray(pair_sensors, dtype=float)
+    o = np.asarray(position, dtype=float)
+    u = np.asarray(controls, dtype=float)
+    nxt = o[..., None, :] + u  # (..., K, 2)
+    rows = nxt[..., :, None, :] - ps[..., None, :, :]  # (..., K, 2, 2)
+    uu = np.broadcast_to(u, nxt.shape)[..., None, :]  # (..., K, 1, 2)
+    return _inverse_condition(np.concatenate([rows, uu], axis=-2))

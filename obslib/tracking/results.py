@@ -1,0 +1,159 @@
+"""What a tracking run returns: :class:`TrackingResult` (one run), :class:`BatchResult` (many
+runs of one strategy) and the quantities both derive from the logged states.
+
+Per-step arrays hold step ``k`` at index ``k - 1``; a batch adds a leading run axis.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+
+from .model import inverse_condition
+from .setup import TrackingSetup
+
+__all__ = ["TrackingResult", "BatchResult", "derived_arrays"]
+
+
+def derived_arrays(est, cov, truth_ext) -> dict:
+    """Arrays shared by both engines, for any leading shape: errors, traces, truth, controls.
+
+    ``truth_ext`` holds ``o_1 .. o_{steps+1}`` (the last is where the target moves after the
+    last step).
+    """
+    control = truth_ext[..., 1:, :] - truth_ext[..., :-1, :]
+    cur = truth_ext[..., :-1, :]
+    diff = est - cur
+    return {
+        "error": np.hypot(diff[..., 0], diff[..., 1]),
+        "trace_cov": cov[..., 0, 0] + cov[..., 1, 1],
+        "truth": cur,
+        "control": control,
+        "truth_end": truth_ext[..., -1, :].copy(),
+    }
+
+
+
+@dataclass(frozen=True, eq=False)
+class TrackingResult:
+    """One tracking run (:func:`simulate`); per-step arrays, step ``k`` at index ``k - 1``.
+
+    Attributes
+    ----------
+    setup, strategy, seed :
+        What was run (``seed`` is None when an explicit noise table was given).
+    noise : (steps, N)
+        The noise table used.
+    pairs : (steps, 2) int
+        The chosen pair, 0-based, ``pairs[:, 0] < pairs[:, 1]``.
+    bound : (steps,)
+        The chosen pair's bound at the estimate (the setup's metric).
+    error, trace_cov : (steps,)
+        ``||xhat_k - o_k||`` and ``trace(Sigma_k)`` before the step's update.
+    truth, estimate : (steps, 2)
+        ``o_k`` and ``xhat_k`` (before the update).
+    cov : (steps, 2, 2)
+        ``Sigma_k`` before the update.
+    control : (steps, 2)
+        The target's move after step ``k``: ``u_k = o_{k+1} - o_k``.
+    truth_end : (2,)
+        ``o_{steps+1}``, where the target is after its last move.
+    next_pair : (2,) int
+        The pair the sensors would choose after the last step.
+    objective : (steps,)
+        ``C^{-1}([o_{k+1} - p_i; o_{k+1} - p_j; u_k])`` with the pair of step ``k``: the value the
+        adversary of Section V-B minimises (computed on first access).
+    true_icn : (steps,)
+        The exact ``C^{-1}([o_k - p_i; o_k - p_j; u_{k-1}])`` the sensors face at step ``k``
+        with the pair they chose (``u_0 = 0``; computed on first access).
+    """
+
+    setup: TrackingSetup
+    strategy: str
+    seed: int | None
+    noise: np.ndarray
+    pairs: np.ndarray
+    bound: np.ndarray
+    error: np.ndarray
+    trace_cov: np.ndarray
+    truth: np.ndarray
+    estimate: np.ndarray
+    cov: np.ndarray
+    control: np.ndarray
+    truth_end: np.ndarray
+    next_pair: np.ndarray
+
+    @cached_property
+    def objective(self) -> np.ndarray:
+        ps = self.setup.sensor_array[self.pairs]  # (..., steps, 2, 2)
+        nxt = np.concatenate([self.truth[..., 1:, :], self.truth_end[..., None, :]], axis=-2)
+        return inverse_condition(
+            np.concatenate([nxt[..., None, :] - ps, self.control[..., None, :]], axis=-2)
+        )
+
+    @cached_property
+    def true_icn(self) -> np.ndarray:
+        ps = self.setup.sensor_array[self.pairs]
+        c = self.control
+        prev = np.concatenate([np.zeros_like(c[..., :1, :]), c[..., :-1, :]], axis=-2)
+        return inverse_condition(
+            np.concatenate([self.truth[..., None, :] - ps, prev[..., None, :]], axis=-2)
+        )
+
+    @property
+    def steps(self) -> int:
+        return self.pairs.shape[-2]
+
+    @property
+    def switched(self) -> np.ndarray:
+        """``(steps - 1,)`` bool: the pair at step ``k + 1`` differs from the pair at step ``k``."""
+        return (self.pairs[..., 1:, :] != self.pairs[..., :-1, :]).any(axis=-1)
+
+    @property
+    def switches(self):
+        """Number of pair changes over the ``steps - 1`` transitions."""
+        return int(self.switched.sum())
+
+    def summary(self) -> dict:
+        """The run's headline numbers: switches, transitions, mean bound, error and trace."""
+        return {
+            "switches": self.switches,
+            "transitions": self.steps - 1,
+            "mean_bound": float(self.bound.mean()),
+            "mean_error": float(self.error.mean()),
+            "mean_trace": float(self.trace_cov.mean()),
+        }
+
+
+@dataclass(frozen=True, eq=False)
+class BatchResult(TrackingResult):
+    """Many runs of one strategy (:func:`simulate_batch`): the arrays of :class:`TrackingResult`
+    with a leading run axis ``(B, ...)``; ``seeds`` replaces ``seed``. ``run(b)`` gives one run."""
+
+    seeds: tuple = ()
+
+    @property
+    def n_runs(self) -> int:
+        return self.pairs.shape[0]
+
+    @property
+    def switches(self) -> np.ndarray:
+        """Pair changes per run, ``(B,)``."""
+        return self.switched.sum(axis=-1)
+
+    def run(self, b: int) -> TrackingResult:
+        """Run ``b`` as a :class:`TrackingResult`."""
+        arrays = {
+            f.name: getattr(self, f.name)[b]
+            for f in dataclasses.fields(TrackingResult)
+            if f.name not in ("setup", "strategy", "seed")
+        }
+        seed = self.seeds[b] if self.seeds else None
+        r = TrackingResult(setup=self.setup, strategy=self.strategy, seed=seed, **arrays)
+        for name in ("objective", "true_icn"):  # if already computed for the whole batch
+            if name in self.__dict__:
+                r.__dict__[name] = self.__dict__[name][b]
+        return r

@@ -1,0 +1,372 @@
+"""The parameter record of a Section V tracking experiment, the paper's two records, and the
+measurement-noise tables every strategy shares.
+
+A :class:`TrackingSetup` is frozen and validated on construction; :data:`PAPER_CIRCLE` holds the
+parameters of Figs. 4-6 and :data:`PAPER_ADVERSARIAL` those of Fig. 7. A noise table is a
+``(steps, N)`` array whose entry ``[k - 1, i]`` is sensor ``i``'s noise at step ``k``, whichever
+strategy asks for it (:func:`noise_table`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+import numpy as np
+
+from .._validate import as_point, as_points, check_distinct, check_spd2
+
+__all__ = [
+    "METRICS",
+    "ADVERSARIES",
+    "MOTIONS",
+    "PARAM_FIELDS",
+    "PAPER_SENSORS",
+    "TrackingSetup",
+    "PAPER_CIRCLE",
+    "PAPER_ADVERSARIAL",
+    "paper_controls",
+    "noise_table",
+    "setup_from_params",
+    "check_setup",
+    "check_noise",
+    "check_seed",
+]
+
+METRICS = ("mahalanobis", "euclidean")
+ADVERSARIES = ("current-pair", "next-pair")
+MOTIONS = ("circle", "adversarial")
+
+#: Largest entry of ``cov0``, ``Q`` and ``R`` the filter can carry (see ``_check_spd_any_scale``).
+MAX_COV_SCALE = 1e100
+
+#: The six sensors s1..s6 of Section V (Figs. 4-7).
+PAPER_SENSORS = ((-3.0, 2.0), (0.0, 0.0), (1.0, -1.0), (4.0, 0.0), (4.0, 4.0), (2.0, 5.0))
+
+
+def paper_controls(u_max: float, n_angles: int = 63, dphi: float = 0.1) -> np.ndarray:
+    """The adversary's control set of the published Fig. 7 run.
+
+    ``u = 0`` followed by ``n_angles`` controls of norm ``u_max`` at angles ``0, dphi, ...,
+    (n_angles - 1) dphi`` (default 0, 0.1, ..., 6.2 rad). The paper's text says "all the
+    possible control inputs within a ball"; :func:`obslib.bound_checks.disc_controls` gives that.
+
+    Returns
+    -------
+    ndarray, shape (n_angles + 1, 2)
+    """
+    phi = dphi * np.arange(n_angles)
+    ring = float(u_max) * np.column_stack([np.cos(phi), np.sin(phi)])
+    return np.vstack([np.zeros((1, 2)), ring])
+
+
+# --------------------------------------------------------------------------------------------
+# Validators of the record's fields
+# --------------------------------------------------------------------------------------------
+
+
+def _real_array(value, name: str, what: str) -> np.ndarray:
+    """``value`` as a float array, or a named error: TypeError for text, bools and complex
+    numbers (which ``float`` would coerce silently or drop), ValueError for the rest."""
+    arr = np.asarray(value) if not isinstance(value, np.ndarray) else value
+    kinds = {arr.dtype.kind}
+    if arr.dtype.kind == "O":
+        kinds = {np.asarray(x).dtype.kind for x in arr.ravel()}
+    if kinds & {"b", "c", "U", "S"}:
+        kind = {"b": "a bool", "c": "a complex number", "U": "text", "S": "text"}
+        got = kind[sorted(kinds & {"b", "c", "U", "S"})[0]]
+        raise TypeError(f"{name} must be {what} of real numbers, got {got}: {value!r}")
+    try:
+        return np.asarray(value, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"{name} must be {what}: {exc}") from None
+
+
+def _matrix(value, name: str) -> tuple:
+    """A symmetric positive-definite 2x2 matrix as a tuple of tuples, or ValueError."""
+    m = _real_array(value, name, "a numeric 2x2 matrix")
+    if m.ndim == 0:
+        m = m * np.eye(2)
+    if m.shape != (2, 2):
+        raise ValueError(f"{name} must be a 2x2 matrix (or a scalar times I), got shape {m.shape}")
+    _check_spd_any_scale(m, name)
+    return tuple(map(tuple, m.tolist()))
+
+
+def _check_spd_any_scale(m: np.ndarray, name: str) -> None:
+    """:func:`obslib._validate.check_spd2` on ``m`` divided by its largest entry, so that a
+    positive definite matrix of any scale passes (its determinant may underflow or overflow
+    in floating point), and a scale the filter cannot carry is named.
+
+    The determinant of the filter's innovation covariance ``S = H P H^T + R`` is of the order
+    of the square of ``P``'s entries times the squared distances, so entries beyond
+    :data:`MAX_COV_SCALE` are refused with their name.
+    """
+    if not np.isfinite(m).all():
+        raise ValueError(f"{name} has a non-finite entry: {m.tolist()}")
+    top = float(np.abs(m).max())
+    if top == 0:
+        raise ValueError(f"{name} is not positive definite: {m.tolist()}")
+    check_spd2(m / top, name)  # scaled: a determinant of any scale stays representable
+    if top > MAX_COV_SCALE:
+        raise ValueError(
+            f"{name} has entries of scale {top:.3g}; the filter's innovation covariance "
+            f"H P H^T + R would overflow: keep entries below {MAX_COV_SCALE:g}"
+        )
+
+
+def _point(value, name: str) -> tuple:
+    return tuple(as_point(_real_array(value, name, "a point (x, y)"), name).tolist())
+
+
+def _scalar(value, name: str, *, positive=False, nonneg=False) -> float:
+    arr = _real_array(value, name, "a number")
+    if arr.ndim != 0:
+        raise ValueError(f"{name} must be a number, got shape {arr.shape}")
+    v = float(arr)
+    if not np.isfinite(v):
+        raise ValueError(f"{name} must be finite, got {v}")
+    if positive and v <= 0:
+        raise ValueError(f"{name} must be positive, got {v}")
+    if nonneg and v < 0:
+        raise ValueError(f"{name} must be non-negative, got {v}")
+    return v
+
+
+def _index(value, name: str, n: int) -> int:
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise ValueError(f"{name} must be a sensor index in 0..{n - 1}, got {value!r}")
+    if not 0 <= value < n:
+        raise ValueError(f"{name} must be a sensor index in 0..{n - 1}, got {value!r}")
+    return int(value)
+
+
+@dataclass(frozen=True)
+class TrackingSetup:
+    """Parameters of one tracking experiment of Section V (a frozen parameter record).
+
+    Build variants with :meth:`replace` (:func:`dataclasses.replace`), e.g.
+    ``PAPER_CIRCLE.replace(metric="euclidean")``; every construction is validated and bad
+    values raise :class:`ValueError` (or :class:`TypeError` for a value of the wrong kind, such
+    as a bool or a complex number where a real number belongs).
+
+    Attributes
+    ----------
+    sensors : tuple of (x, y)
+        Stationary sensor positions :math:`p_i` (at least two, pairwise distinct).
+    steps : int
+        Number of time steps (at least 1).
+    u_max : float
+        Speed bound entering the pair bound (and the adversary's default control set).
+    estimate0, cov0 : (x, y), 2x2
+        Initial estimate and covariance of the filter.
+    Q, R : 2x2
+        Process noise of the random-walk prediction and measurement-noise covariance of the
+        filter for the pair's two measurements (a scalar means that multiple of :math:`I`).
+    noise_std : float
+        Standard deviation of the true measurement noise :math:`n_i` (may differ from ``R``).
+    motion : {"circle", "adversarial"}
+        The true target's motion: the circle of Section V-A or the adversary of Section V-B.
+    center, radius, rate : circle parameters
+        :math:`o_k = c + r\\,(\\cos(\\omega (k-1)), \\sin(\\omega (k-1)))`.
+    start : (x, y) or None
+        True start of the adversarial target (``None`` for the circle).
+    controls : tuple of (ux, uy) or None
+        The adversary's control set, each of norm at most ``u_max``; ``None`` means
+        :func:`paper_controls` of ``u_max``.
+    adversary : {"current-pair", "next-pair"}
+        What the adversary minimises: the exact :math:`C^{-1}` of
+        :math:`[o' - p_i; o' - p_j; u]` at its next position :math:`o' = o + u` with the pair
+        that just measured it (``"current-pair"``, the paper) or with the pair the sensors will
+        use next (``"next-pair"``, a stronger target that knows the sensors' next choice).
+    metric : {"mahalanobis", "euclidean"}
+        Distances in the pair bound: Mahalanobis in the estimate's covariance (the published
+        runs) or Euclidean.
+    anchor : int
+        The fixed sensor of strategy (2), 0-based (``1`` is the paper's :math:`s_2`).
+    fixed_pair : (int, int)
+        The pair of strategy (3), 0-based (``(1, 0)`` is the paper's :math:`(s_2, s_1)`).
+    """
+
+    sensors: tuple = PAPER_SENSORS
+    steps: int = 315
+    u_max: float = 3.0
+    estimate0: tuple = (5.5, 3.5)
+    cov0: tuple = ((0.5, 0.0), (0.0, 0.5))
+    Q: tuple = ((0.5, 0.0), (0.0, 0.5))
+    R: tuple = ((0.5, 0.0), (0.0, 0.5))
+    noise_std: float = 0.5
+    motion: str = "circle"
+    center: tuple = (2.0, 3.0)
+    radius: float = 3.0
+    rate: float = 0.02
+    start: tuple | None = None
+    controls: tuple | None = None
+    adversary: str = "current-pair"
+    metric: str = "mahalanobis"
+    anchor: int = 1
+    fixed_pair: tuple = (1, 0)
+
+    def __post_init__(self):
+        put = lambda name, value: object.__setattr__(self, name, value)  # noqa: E731
+        if self.sensors is None or np.size(np.asarray(self.sensors, dtype=object)) == 0:
+            raise ValueError("setup has no sensors; the strategies need at least 2")
+        s = as_points(_real_array(self.sensors, "sensors", "points (x, y)"), "sensors")
+        if s.shape[0] == 0:
+            raise ValueError("setup has no sensors; the strategies need at least 2")
+        if s.shape[0] < 2:
+            raise ValueError(f"setup has {s.shape[0]} sensor; the strategies need at least 2")
+        check_distinct(s)
+        put("sensors", tuple(map(tuple, s.tolist())))
+        n = s.shape[0]
+        if isinstance(self.steps, (bool, np.bool_)) or not isinstance(self.steps, (int, np.integer)):
+            raise ValueError(f"steps must be an integer, got {self.steps!r}")
+        if self.steps < 1:
+            raise ValueError(f"steps must be at least 1, got {self.steps}")
+        put("steps", int(self.steps))
+        put("u_max", _scalar(self.u_max, "u_max", nonneg=True))
+        put("estimate0", _point(self.estimate0, "estimate0"))
+        put("cov0", _matrix(self.cov0, "cov0"))
+        put("Q", _matrix(self.Q, "Q"))
+        put("R", _matrix(self.R, "R"))
+        put("noise_std", _scalar(self.noise_std, "noise_std", nonneg=True))
+        if self.motion not in MOTIONS:
+            raise ValueError(f"motion must be one of {MOTIONS}, got {self.motion!r}")
+        put("center", _point(self.center, "center"))
+        put("radius", _scalar(self.radius, "radius", nonneg=True))
+        put("rate", _scalar(self.rate, "rate"))
+        if self.motion == "adversarial":
+            if self.start is None:
+                raise ValueError("an adversarial target needs a start position")
+            put("start", _point(self.start, "start"))
+        elif self.start is not None:
+            raise ValueError("start is for the adversarial target; the circle starts on the circle")
+        if self.controls is not None:
+            c = as_points(_real_array(self.controls, "controls", "points (ux, uy)"), "controls",
+                          min_count=1)
+            norms = np.hypot(c[:, 0], c[:, 1])
+            over = norms > self.u_max * (1 + 1e-12)
+            if over.any():
+                k = int(np.flatnonzero(over)[0])
+                raise ValueError(
+                    f"control {k} has norm {norms[k]:.6g} > u_max = {self.u_max:g}"
+                )
+            put("controls", tuple(map(tuple, c.tolist())))
+        if self.adversary not in ADVERSARIES:
+            raise ValueError(f"adversary must be one of {ADVERSARIES}, got {self.adversary!r}")
+        if self.metric not in METRICS:
+            raise ValueError(f"metric must be one of {METRICS}, got {self.metric!r}")
+        put("anchor", _index(self.anchor, "anchor", n))
+        try:
+            fp = tuple(self.fixed_pair)
+        except TypeError:
+            raise ValueError(f"fixed_pair must be two sensor indices in 0..{n - 1}, "
+                             f"got {self.fixed_pair!r}") from None
+        if len(fp) != 2 or not all(
+            isinstance(i, (int, np.integer)) and not isinstance(i, (bool, np.bool_)) and 0 <= i < n
+            for i in fp
+        ):
+            raise ValueError(f"fixed_pair must be two sensor indices in 0..{n - 1}, got {fp!r}")
+        if fp[0] == fp[1]:
+            raise ValueError(f"fixed_pair names sensor {fp[0]} twice")
+        put("fixed_pair", (int(fp[0]), int(fp[1])))
+
+    # Convenience arrays (fresh copies, so the record stays immutable).
+    @property
+    def sensor_array(self) -> np.ndarray:
+        """Sensors as an ``(N, 2)`` array."""
+        return np.array(self.sensors, dtype=float)
+
+    @property
+    def n_sensors(self) -> int:
+        """Number of sensors ``N``."""
+        return len(self.sensors)
+
+    @property
+    def control_array(self) -> np.ndarray:
+        """The adversary's controls, ``(K, 2)`` (the paper's set when ``controls`` is None)."""
+        if self.controls is None:
+            return paper_controls(self.u_max)
+        return np.array(self.controls, dtype=float)
+
+    def replace(self, **changes) -> "TrackingSetup":
+        """A validated copy with some fields changed (:func:`dataclasses.replace`)."""
+        return dataclasses.replace(self, **changes)
+
+
+#: Figs. 4-6: the circle of radius 3 about (2, 3), 0.02 rad per step, u_max = 3.
+PAPER_CIRCLE = TrackingSetup()
+
+#: Fig. 7: the adversarial target, u_max = 0.1, true start (2, 2), estimate (2.5, 1.5).
+PAPER_ADVERSARIAL = TrackingSetup(
+    u_max=0.1, estimate0=(2.5, 1.5), motion="adversarial", start=(2.0, 2.0)
+)
+
+
+#: Notebook parameter names and the setup fields they set (see :func:`setup_from_params`).
+PARAM_FIELDS = {
+    "steps": "steps",
+    "u_max": "u_max",
+    "noise_std": "noise_std",
+    "q": "Q",
+    "r": "R",
+    "p0": "cov0",
+    "metric": "metric",
+}
+
+
+def setup_from_params(base: TrackingSetup, params: dict) -> TrackingSetup:
+    """``base`` with the notebook parameters of :data:`PARAM_FIELDS` applied (others ignored).
+
+    The notebooks and the claims ledger build their setups with this, so both run the same
+    experiment for the same parameters (``q``, ``r``, ``p0`` are multiples of :math:`I`).
+    """
+    check_setup(base)
+    changes = {PARAM_FIELDS[k]: v for k, v in params.items() if k in PARAM_FIELDS}
+    return base.replace(**changes)
+
+
+# --------------------------------------------------------------------------------------------
+# Checks shared by the engines
+# --------------------------------------------------------------------------------------------
+
+
+def check_setup(setup, what: str = "setup") -> "TrackingSetup":
+    """``setup`` if it is a :class:`TrackingSetup`, else a ValueError naming ``what``."""
+    if not isinstance(setup, TrackingSetup):
+        raise ValueError(f"{what} must be a TrackingSetup, got {type(setup).__name__}")
+    return setup
+
+
+def check_seed(seed, name: str = "seed") -> int:
+    """A seed as an ``int`` (a non-negative integer, not a bool), or a named error."""
+    if isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (int, np.integer)):
+        raise TypeError(f"{name} must be a non-negative integer, got {seed!r}")
+    if seed < 0:
+        raise ValueError(f"{name} must be a non-negative integer, got {seed}")
+    return int(seed)
+
+
+def noise_table(setup: TrackingSetup, seed: int = 0) -> np.ndarray:
+    """The measurement noise of one run, ``(steps, N)``: ``[k-1, i]`` is sensor ``i`` at step ``k``.
+
+    Drawn once from ``numpy.random.default_rng(seed)`` as ``normal(0, noise_std)``, so every
+    strategy sees the same realisation (noise common to all strategies).
+    """
+    check_setup(setup)
+    rng = np.random.default_rng(check_seed(seed))
+    return rng.normal(0.0, setup.noise_std, size=(setup.steps, setup.n_sensors))
+
+
+def check_noise(setup: TrackingSetup, noise) -> np.ndarray:
+    """A noise table for ``setup`` as a float ``(steps, N)`` array, or a ValueError naming the
+    first non-finite entry or the wrong shape."""
+    t = _real_array(noise, "noise", "a numeric (steps, sensors) table")
+    want = (setup.steps, setup.n_sensors)
+    if t.shape != want:
+        raise ValueError(f"noise table must have shape {want} (steps, sensors), got {t.shape}")
+    bad = ~np.isfinite(t)
+    if bad.any():
+        k, i = (int(v) for v in np.argwhere(bad)[0])
+        raise ValueError(f"noise of sensor {i} at step {k + 1} is not finite")
+    return t

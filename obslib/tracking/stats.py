@@ -1,0 +1,314 @@
+"""Statistics of tracking runs: strategy comparisons with common noise, rank correlations,
+pair switches, track loss at the mirror image, and how far an adversarial target escapes.
+
+Every function takes the results of :func:`~obslib.tracking.simulate` or the batch engine
+(:class:`~obslib.tracking.TrackingResult`, :class:`~obslib.tracking.BatchResult`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .model import pair_bound_series
+from .results import BatchResult, TrackingResult
+
+__all__ = [
+    "TIE_RTOL",
+    "clearly_lower",
+    "compare_strategies",
+    "spearman",
+    "switch_rate",
+    "switch_back_fraction",
+    "bound_correlation",
+    "mirror_point",
+    "track_loss",
+    "Entrapment",
+    "entrapment",
+    "ENTRAPMENT_CRITERIA",
+    "is_entrapped",
+]
+
+
+#: Relative difference below which two logged values count as equal when strategies are compared.
+TIE_RTOL = 1e-9
+
+
+def clearly_lower(a, b, rtol: float = TIE_RTOL) -> np.ndarray:
+    """``a < b`` by more than ``rtol`` times the larger magnitude, elementwise.
+
+    Two strategies that pick the same pairs for long enough drive their filters to the same
+    state, equal up to rounding; whether such values compare as exactly equal then depends on the
+    order of floating-point operations (and could differ between engines or machines). Counting
+    only clear differences makes the win fractions independent of that: a tie wins for neither.
+    """
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a < b - rtol * np.maximum(np.abs(a), np.abs(b))
+
+
+def compare_strategies(mc: dict, reference: str = "best-pair", skip_first: bool = True) -> dict:
+    """Monte Carlo statistics of Fig. 6: means, spreads and how often ``reference`` wins.
+
+    Step 1 logs the values before any update, identical for all strategies by construction;
+    ``skip_first`` leaves it out of the win fractions and overall means.
+
+    Returns
+    -------
+    dict
+        ``{"strategies": {name: {...}}, "wins": {other: {...}}}``. Per strategy: overall
+        ``mean_error``, ``mean_trace``, ``mean_bound`` (over seeds and steps), their spread
+        ``sd_*`` (standard deviation over seeds of the per-run means), ``switches`` (mean pair
+        changes per run) and per-step arrays ``step_mean_*`` and ``step_sd_*`` (over seeds).
+        Per other strategy: ``error_pointwise`` / ``trace_pointwise``, the fraction of
+        (seed, step) with the reference lower; ``error_stepmean`` / ``trace_stepmean``,
+        the fraction of steps where the reference's Monte Carlo mean is lower;
+        ``bound_pointwise``, the fraction with the reference's bound higher; ``run_error`` /
+        ``run_trace``, the fraction of runs with the reference's run mean lower. Lower and higher
+        mean by more than :data:`TIE_RTOL` relatively (:func:`clearly_lower`): ties count for
+        neither.
+    """
+    steps = next(iter(mc.values())).error.shape[1]
+    sl = slice(1, None) if skip_first and steps > 1 else slice(None)
+    stats = {}
+    for name, r in mc.items():
+        d = {}
+        for key, arr in (("error", r.error), ("trace", r.trace_cov), ("bound", r.bound)):
+            a = arr[:, sl]
+            d[f"mean_{key}"] = float(a.mean())
+            d[f"sd_{key}"] = float(a.mean(axis=1).std(ddof=1)) if a.shape[0] > 1 else 0.0
+            d[f"step_mean_{key}"] = arr.mean(axis=0)
+            d[f"step_sd_{key}"] = arr.std(axis=0, ddof=1) if arr.shape[0] > 1 else 0 * arr[0]
+        d["switches"] = float(r.switches.mean())
+        stats[name] = d
+    ref = mc[reference]
+    wins = {}
+    for name, r in mc.items():
+        if name == reference:
+            continue
+        e1, e2 = ref.error[:, sl], r.error[:, sl]
+        t1, t2 = ref.trace_cov[:, sl], r.trace_cov[:, sl]
+        wins[name] = {
+            "error_pointwise": float(clearly_lower(e1, e2).mean()),
+            "trace_pointwise": float(clearly_lower(t1, t2).mean()),
+            "error_stepmean": float(clearly_lower(e1.mean(0), e2.mean(0)).mean()),
+            "trace_stepmean": float(clearly_lower(t1.mean(0), t2.mean(0)).mean()),
+            "bound_pointwise": float(clearly_lower(r.bound[:, sl], ref.bound[:, sl]).mean()),
+            "run_error": float(clearly_lower(e1.mean(1), e2.mean(1)).mean()),
+            "run_trace": float(clearly_lower(t1.mean(1), t2.mean(1)).mean()),
+        }
+    return {"strategies": stats, "wins": wins}
+
+
+def _rank(a: np.ndarray) -> np.ndarray:
+    """Ranks ``1..n`` along the last axis, ties by their average rank (``scipy.stats.rankdata``'s
+    ``"average"`` method; the tests compare the two). A slice with a NaN gets NaN ranks."""
+    a = np.asarray(a, dtype=float)
+    shape = a.shape
+    n = shape[-1] if a.ndim else 1
+    flat = a.reshape(-1, n)
+    m = flat.shape[0]
+    order = np.argsort(flat, axis=1)  # tie order does not matter: ties share one rank
+    srt = np.take_along_axis(flat, order, axis=1)
+    new = np.ones((m, n), dtype=bool)
+    new[:, 1:] = srt[:, 1:] != srt[:, :-1]  # a tie group starts here
+    starts = np.flatnonzero(new.ravel())
+    sizes = np.diff(np.append(starts, m * n))
+    avg = (starts % n) + (sizes + 1) / 2.0  # 1-based average position of each group
+    ranks_sorted = np.repeat(avg, sizes).reshape(m, n)
+    ranks = np.empty_like(ranks_sorted)
+    np.put_along_axis(ranks, order, ranks_sorted, axis=1)
+    ranks[np.isnan(flat).any(axis=1)] = np.nan
+    return ranks.reshape(shape)
+
+
+def spearman(a, b, axis: int = -1) -> np.ndarray:
+    """Spearman rank correlation of ``a`` and ``b`` along ``axis`` (ties by average rank)."""
+    ra = np.moveaxis(_rank(np.moveaxis(np.asarray(a, dtype=float), axis, -1)), -1, axis)
+    rb = np.moveaxis(_rank(np.moveaxis(np.asarray(b, dtype=float), axis, -1)), -1, axis)
+    ra = ra - ra.mean(axis=axis, keepdims=True)
+    rb = rb - rb.mean(axis=axis, keepdims=True)
+    num = (ra * rb).sum(axis=axis)
+    den = np.sqrt((ra * ra).sum(axis=axis) * (rb * rb).sum(axis=axis))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return num / den  # NaN where one series is constant
+
+
+def switch_back_fraction(batch: BatchResult) -> float:
+    """Fraction of the pair switches that return at once to the pair of the step before.
+
+    Over all runs of ``batch`` and the transitions ``k -> k + 1`` with ``k >= 2``: a switch
+    (``pairs[k + 1] != pairs[k]``) counts as going back when ``pairs[k + 1] == pairs[k - 1]``.
+    Chattering between two nearly equal pairs shows as a high fraction.
+    """
+    sw = batch.switched[:, 1:]
+    back = (batch.pairs[:, 2:] == batch.pairs[:, :-2]).all(axis=2) & sw
+    return float(back.sum() / max(sw.sum(), 1))
+
+
+def switch_rate(batch: BatchResult) -> np.ndarray:
+    """Fraction of runs whose pair changes at each transition ``k -> k + 1``, ``(steps - 1,)``."""
+    return batch.switched.mean(axis=0)
+
+
+def bound_correlation(batch: BatchResult, bound: str = "own", skip_first: bool = True) -> dict:
+    """Spearman correlation, within each run and over time, of the bound with error and trace.
+
+    Section V-A: "higher C^-1 correlates with lower epsilon and trace(Sigma)". ``bound="own"``
+    uses the logged bound (the setup's metric, Mahalanobis in the published runs, which itself
+    shrinks as ``Sigma`` grows); ``bound="euclidean"`` re-evaluates the chosen pairs at the
+    estimates with Euclidean distances, i.e. the geometry alone.
+
+    Returns
+    -------
+    dict
+        ``error`` and ``trace``: per-run correlations ``(B,)``.
+    """
+    sl = slice(1, None) if skip_first else slice(None)
+    if bound == "own":
+        b = batch.bound
+    elif bound == "euclidean":
+        shape = batch.bound.shape
+        b = pair_bound_series(
+            batch.setup, batch.estimate.reshape(-1, 2), batch.pairs.reshape(-1, 2)
+        ).reshape(shape)
+    else:
+        raise ValueError(f"bound must be 'own' or 'euclidean', got {bound!r}")
+    return {
+        "error": spearman(b[:, sl], batch.error[:, sl]),
+        "trace": spearman(b[:, sl], batch.trace_cov[:, sl]),
+    }
+
+
+def mirror_point(points, a, b) -> np.ndarray:
+    """Reflection of ``points`` (..., 2) across the line through ``a`` and ``b``.
+
+    Two range measurements cannot tell ``o`` from its mirror image across the baseline of the
+    two sensors; a filter fed by one fixed pair can lock onto the mirror image.
+    """
+    a = np.asarray(a, dtype=float)
+    d = np.asarray(b, dtype=float) - a
+    d = d / np.hypot(*d)
+    v = np.asarray(points, dtype=float) - a
+    return a + 2 * (v @ d)[..., None] * d - v
+
+
+def track_loss(batch: BatchResult, threshold: float = 0.5) -> dict:
+    """Runs of a fixed pair whose estimate ends at the mirror image of the target.
+
+    A run is *lost* when its mean error exceeds ``threshold``. For each run, also whether the
+    last estimate is closer to the target's mirror image across the pair's baseline than to the
+    target, and the first step from which it stays so.
+
+    Returns
+    -------
+    dict
+        ``lost`` (B,) bool, ``mirrored`` (B,) bool, ``flip_step`` (B,) int (1-based; 0 if never).
+    """
+    s = batch.setup.sensor_array
+    i, j = batch.pairs[0, 0]
+    m = mirror_point(batch.truth, s[i], s[j])
+    dm = np.hypot(*(batch.estimate - m).transpose(2, 0, 1))
+    closer = dm < batch.error
+    # first step from which the estimate stays closer to the mirror image
+    stays = np.flip(np.logical_and.accumulate(np.flip(closer, axis=1), axis=1), axis=1)
+    flip = np.where(stays.any(axis=1), stays.argmax(axis=1) + 1, 0)
+    return {
+        "lost": batch.error.mean(axis=1) > threshold,
+        "mirrored": closer[:, -1],
+        "flip_step": flip,
+    }
+
+
+@dataclass(frozen=True)
+class Entrapment:
+    """Measures of how "entrapped" an adversarial target is (Fig. 7).
+
+    Attributes
+    ----------
+    reach : float
+        How far the target could go: ``steps * max ||u||`` of its control set.
+    net_displacement : float
+        ``||o_end - o_start||``.
+    max_from_start : float
+        Largest distance from the start over the run.
+    radius : float
+        Radius of the smallest disc about the path's centroid containing the whole path.
+    path_length : float
+        Total distance travelled.
+    bound_mean, bound_min : float
+        The sensors' pair bound over the run.
+    icn_mean, icn_min : float
+        The exact ``C^{-1}`` the sensors face (``true_icn``), steps 2.. (step 1 has no control).
+    objective_mean : float
+        Mean of the value the target aimed at (its minimised ``C^{-1}``).
+    switches : int
+        Pair changes over ``steps - 1`` transitions.
+    switch_gain : float
+        Mean of ``true_icn[k+1] - objective[k]`` over transitions where the pair switched: what
+        the switch gave back to the sensors.
+    mean_error, mean_trace : float
+        Tracking quality over the run.
+    """
+
+    reach: float
+    net_displacement: float
+    max_from_start: float
+    radius: float
+    path_length: float
+    bound_mean: float
+    bound_min: float
+    icn_mean: float
+    icn_min: float
+    objective_mean: float
+    switches: int
+    transitions: int
+    switch_gain: float
+    mean_error: float
+    mean_trace: float
+
+
+def entrapment(result: TrackingResult) -> Entrapment:
+    """Measure how well the adversarial target of Fig. 7 escapes (:class:`Entrapment`)."""
+    path = np.vstack([result.truth, result.truth[-1] + result.control[-1]])
+    c = path.mean(axis=0)
+    ctrl = result.setup.control_array
+    reach = result.steps * float(np.hypot(ctrl[:, 0], ctrl[:, 1]).max())
+    sw = result.switched
+    gain = result.true_icn[1:][sw] - result.objective[:-1][sw]
+    return Entrapment(
+        reach=reach,
+        net_displacement=float(np.hypot(*(path[-1] - path[0]))),
+        max_from_start=float(np.hypot(*(path - path[0]).T).max()),
+        radius=float(np.hypot(*(path - c).T).max()),
+        path_length=float(np.hypot(*np.diff(path, axis=0).T).sum()),
+        bound_mean=float(result.bound.mean()),
+        bound_min=float(result.bound.min()),
+        icn_mean=float(result.true_icn[1:].mean()) if result.steps > 1 else float("nan"),
+        icn_min=float(result.true_icn[1:].min()) if result.steps > 1 else float("nan"),
+        objective_mean=float(result.objective.mean()),
+        switches=int(sw.sum()),
+        transitions=int(sw.size),
+        switch_gain=float(gain.mean()) if gain.size else 0.0,
+        mean_error=float(result.error.mean()),
+        mean_trace=float(result.trace_cov.mean()),
+    )
+
+
+#: What "entrapped" means in this book (fixed before looking at the runs): the target stays
+#: within ``reach_fraction`` of its reach (``steps * max ||u||``) from its start, the sensors'
+#: bound averages at least ``bound_mean`` and the exact C^-1 they face never drops below
+#: ``icn_min``.
+ENTRAPMENT_CRITERIA = {"reach_fraction": 0.2, "bound_mean": 0.5, "icn_min": 0.1}
+
+
+def is_entrapped(e: Entrapment, reach_fraction=None, bound_mean=None, icn_min=None) -> bool:
+    """Whether one adversarial run meets :data:`ENTRAPMENT_CRITERIA` (or the values given)."""
+    c = dict(ENTRAPMENT_CRITERIA)
+    given = {"reach_fraction": reach_fraction, "bound_mean": bound_mean, "icn_min": icn_min}
+    c.update({k: v for k, v in given.items() if v is not None})
+    return bool(
+        e.max_from_start <= c["reach_fraction"] * e.reach
+        and e.bound_mean >= c["bound_mean"]
+        and e.icn_min >= c["icn_min"]
+    )

@@ -1,0 +1,237 @@
+"""Drawings of tracking runs (Section V): the Fig. 4 snapshot, labelled sensors, covariance
+ellipses and the animation player of a run.
+
+Nothing outside :mod:`obslib.viz` imports matplotlib; the functions here import it on first use.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = [
+    "CHI2_2DOF_9973",
+    "cov_ellipse",
+    "sensor_label",
+    "draw_sensors",
+    "draw_snapshot",
+    "RunAnimation",
+    "animate",
+    "animation_html",
+]
+
+#: Chi-square quantile, 2 degrees of freedom, 99.73 % (the "3 sigma" ellipse of Fig. 4).
+CHI2_2DOF_9973 = 11.82
+
+
+def cov_ellipse(mean, cov, chi2: float = CHI2_2DOF_9973, n: int = 100) -> np.ndarray:
+    """Boundary of ``{x : (x - mean)^T cov^-1 (x - mean) <= chi2}``, ``(n, 2)`` points.
+
+    The default ``chi2 = 11.82`` is the 99.73 % ellipse of Fig. 4.
+    """
+    w, v = np.linalg.eigh(np.asarray(cov, dtype=float))
+    t = np.linspace(0, 2 * np.pi, n)
+    circle = np.column_stack([np.cos(t), np.sin(t)])
+    return np.asarray(mean, dtype=float) + (circle * np.sqrt(chi2 * np.clip(w, 0, None))) @ v.T
+
+
+_SUBSCRIPT = str.maketrans("0123456789", "".join(chr(0x2080 + d) for d in range(10)))
+
+
+def sensor_label(i: int) -> str:
+    """``"s"`` with the 1-based index of sensor ``i`` (0-based) as Unicode subscript digits:
+    the figures' sensor names, plain text (no mathtext to parse)."""
+    return "s" + str(int(i) + 1).translate(_SUBSCRIPT)
+
+
+def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
+    """Sensors as blue triangles named ``s1..sN`` (:func:`sensor_label`) on ``ax``."""
+    s = np.asarray(sensors, dtype=float)
+    ax.plot(*s.T, "^", color="tab:blue", ms=ms, **({} if label is None else {"label": label}))
+    for n, p in enumerate(s):
+        ax.annotate(sensor_label(n), p, textcoords="offset points", xytext=(4, 4), fontsize=8)
+
+
+def draw_snapshot(ax, result, k: int, *, legend: bool = True, ellipse_scale=1.0):
+    """Draw step ``k`` (1-based) of a run as in Fig. 4 on ``ax``.
+
+    Sensors (labelled ``s1..sN``), the true path so far and the target, the estimate with its
+    99.73 % covariance ellipse (scaled by ``ellipse_scale`` if wanted for visibility) and lines
+    from the chosen pair to the estimate. Returns the artists.
+    """
+    i = k - 1
+    s = result.setup.sensor_array
+    draw_sensors(ax, s, label="sensors")
+    for j in result.pairs[i]:
+        ax.plot(*np.array([s[j], result.estimate[i]]).T, "-", color="tab:green", lw=1)
+    ax.plot(*result.truth[: i + 1].T, "-", color="0.6", lw=1, label="true path")
+    ax.plot(*result.truth[i], "o", color="k", ms=5, label="target o\u2096")
+    ax.plot(*result.estimate[i], "x", color="tab:red", ms=7, label="estimate \u00f4\u2096")
+    e = cov_ellipse(result.estimate[i], ellipse_scale**2 * result.cov[i])
+    ax.plot(*e.T, "-", color="tab:red", lw=1, label="99.73 % ellipse")
+    ax.set_aspect("equal")
+    i0, j0 = result.pairs[i]
+    ax.set_title(f"k = {k}, pair ({sensor_label(i0)}, {sensor_label(j0)})", fontsize=9)
+    if legend:
+        ax.legend(fontsize=6, loc="lower left")
+    return ax
+
+
+class RunAnimation:
+    """An animation of a tracking run (:func:`animate`), rendered by blitting.
+
+    The static part (axes, sensors, labels) is drawn once; each frame restores it and draws only
+    the moving artists (chosen pair, true path, target, estimate, ellipse, caption), then keeps
+    the canvas as a PNG. :meth:`to_jshtml` wraps the frames in matplotlib's JavaScript player
+    (:class:`matplotlib.animation.HTMLWriter`), like ``FuncAnimation.to_jshtml``;
+    :meth:`func_animation` gives a :class:`matplotlib.animation.FuncAnimation` of the same frames
+    for other writers.
+
+    Attributes
+    ----------
+    fig : matplotlib.figure.Figure
+        The (closed) figure.
+    frames : list of int
+        The steps shown (1-based).
+    interval : float
+        Milliseconds per frame.
+    """
+
+    def __init__(self, fig, update, artists, frames, interval):
+        self.fig = fig
+        self.frames = list(frames)
+        self.interval = float(interval)
+        self._update = update
+        self._artists = tuple(artists)
+        self._html = None
+
+    def draw(self, k: int):
+        """Set the moving artists to step ``k``; returns them."""
+        self._update(k)
+        return self._artists
+
+    def png_frames(self) -> list:
+        """Every frame as PNG bytes (blitting on an Agg canvas)."""
+        from io import BytesIO
+
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from PIL import Image
+
+        canvas = FigureCanvasAgg(self.fig)
+        for a in self._artists:
+            a.set_animated(True)
+        canvas.draw()  # everything but the moving artists
+        background = canvas.copy_from_bbox(self.fig.bbox)
+        out = []
+        for k in self.frames:
+            self.draw(k)
+            canvas.restore_region(background)
+            for a in self._artists:
+                self.fig.draw_artist(a)
+            w, h = canvas.get_width_height(physical=True)
+            img = Image.frombuffer("RGBA", (w, h), canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
+            f = BytesIO()
+            img.convert("RGB").save(f, format="png", compress_level=3)  # the figure is opaque
+            out.append(f.getvalue())
+        return out
+
+    def to_jshtml(self, default_mode: str = "loop") -> str:
+        """HTML/JS player with the frames embedded (matplotlib's ``HTMLWriter`` template)."""
+        if self._html is None:
+            import base64
+            import tempfile
+            from pathlib import Path
+
+            from matplotlib.animation import HTMLWriter
+
+            frames = self.png_frames()
+
+            class _Writer(HTMLWriter):
+                def grab_frame(self, **kwargs):
+                    self._saved_frames.append(base64.encodebytes(frames.pop(0)).decode("ascii"))
+
+            with tempfile.TemporaryDirectory() as tmp:
+                path = Path(tmp, "anim.html")
+                writer = _Writer(fps=1000.0 / self.interval, embed_frames=True,
+                                 default_mode=default_mode)
+                writer.setup(self.fig, path, dpi=self.fig.dpi)
+                for _ in self.frames:
+                    writer.grab_frame()
+                writer.finish()
+                self._html = path.read_text()
+        return self._html
+
+    def _repr_html_(self):
+        return self.to_jshtml()
+
+    def func_animation(self):
+        """The same frames as a :class:`matplotlib.animation.FuncAnimation` (blitted)."""
+        from matplotlib.animation import FuncAnimation
+
+        return FuncAnimation(self.fig, self.draw, frames=self.frames, interval=self.interval,
+                             blit=True)
+
+
+def animate(result, every: int = 3, dpi: int = 50, figsize=(4.0, 4.0), interval=80):
+    """An animation of a run (:class:`RunAnimation`): every ``every``-th step and the last.
+
+    Each frame shows what :func:`draw_snapshot` draws (Fig. 4): sensors, the chosen pair's lines
+    to the estimate, the true path so far and the target, the estimate and its 99.73 %
+    covariance ellipse, and the step and pair as a caption. Show it in a notebook with
+    ``IPython.display.HTML(animation_html(anim))``; the figure is closed so that it is not also
+    shown as a still.
+    """
+    import matplotlib.pyplot as plt
+
+    if int(every) < 1:
+        raise ValueError(f"every must be at least 1, got {every}")
+    s = result.setup.sensor_array
+    fig, ax = plt.subplots(figsize=figsize, dpi=dpi)
+    pts = np.vstack([s, result.truth, result.estimate])
+    lo, hi = pts.min(axis=0) - 1.0, pts.max(axis=0) + 1.0
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
+    ax.set_aspect("equal")
+    draw_sensors(ax, s, ms=7)
+    (links,) = ax.plot([], [], "-", color="tab:green", lw=1)
+    (path,) = ax.plot([], [], "-", color="0.6", lw=1)
+    (target,) = ax.plot([], [], "o", color="k", ms=4)
+    (est,) = ax.plot([], [], "x", color="tab:red", ms=6)
+    (ell,) = ax.plot([], [], "-", color="tab:red", lw=1)
+    title = ax.set_title(" ", fontsize=9)
+    frames = list(range(1, result.steps + 1, int(every)))
+    if frames[-1] != result.steps:
+        frames.append(result.steps)
+
+    def frame(k):
+        i = k - 1
+        e = result.estimate[i]
+        a, b = s[result.pairs[i]]
+        links.set_data([a[0], e[0], b[0]], [a[1], e[1], b[1]])
+        path.set_data(*result.truth[: i + 1].T)
+        target.set_data([result.truth[i, 0]], [result.truth[i, 1]])
+        est.set_data([e[0]], [e[1]])
+        ell.set_data(*cov_ellipse(e, result.cov[i]).T)
+        i0, j0 = result.pairs[i]
+        title.set_text(f"k = {k}, pair ({sensor_label(i0)}, {sensor_label(j0)})")
+
+    plt.close(fig)
+    return RunAnimation(fig, frame, (links, path, target, est, ell, title), frames, interval)
+
+
+def animation_html(anim, uid: str = "anim") -> str:
+    """Self-contained, stable HTML/JS for an animation (``anim.to_jshtml()``): a
+    :class:`RunAnimation` or a matplotlib animation.
+
+    ``to_jshtml`` names its elements with a random id and links Font Awesome from a CDN for its
+    buttons. The id is replaced by ``uid`` so the stored notebook does not change from run to
+    run, and the external stylesheet is dropped so the page fetches nothing at view time (the
+    book's theme ships Font Awesome itself).
+    """
+    import re
+
+    html = anim.to_jshtml()
+    m = re.search(r'id="_anim_img([0-9a-f]+)"', html)
+    if m is None:
+        raise ValueError("not the HTML of matplotlib's to_jshtml: no _anim_img element")
+    html = html.replace(m.group(1), uid)
+    return re.sub(r'<link[^>]*href="(?:https?:)?//[^"]*"[^>]*>\s*', "", html)

@@ -1,0 +1,127 @@
+"""The pair choosers (obslib.tracking.criteria) against brute-force evaluations of their formulas."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import pytest
+
+import obslib as ob
+from obslib import tracking as tr
+from obslib.tracking.criteria import PairChooser
+from obslib.tracking.criteria import candidates as strategy_candidates
+
+CIRCLE = tr.PAPER_CIRCLE
+ADV = tr.PAPER_ADVERSARIAL
+
+
+def brute_pair_bound(sensors, xhat, cov, i, j, u_max, metric):
+    """Theorem 4 with Mahalanobis distances and the Euclidean angle (the published runs), or
+    Theorem 1 (SVD) with Euclidean distances."""
+    vi, vj = sensors[i] - xhat, sensors[j] - xhat
+    if metric == "euclidean":
+        return ob.lower_bound(sensors[[i, j]], xhat, u_max)
+    prec = np.linalg.inv(cov)
+    di, dj = np.sqrt(vi @ prec @ vi), np.sqrt(vj @ prec @ vj)
+    cos = vi @ vj / (np.linalg.norm(vi) * np.linalg.norm(vj))
+    theta = np.arccos(np.clip(cos, -1, 1))
+    return ob.pair_bound_polar(dj / di, theta, u_max / di)
+
+
+def candidates(setup, strategy):
+    n = setup.n_sensors
+    if strategy == "best-pair":
+        return list(itertools.combinations(range(n), 2))
+    if strategy == "best-partner":
+        a = setup.anchor
+        return [tuple(sorted((a, j))) for j in range(n) if j != a]
+    return [tuple(sorted(setup.fixed_pair))]
+
+
+@pytest.mark.parametrize("metric", ["mahalanobis", "euclidean"])
+@pytest.mark.parametrize("strategy", tr.STRATEGIES)
+def test_pick_is_brute_force_argmax_at_every_step(runs, strategy, metric):
+    r = runs[(strategy, metric)]
+    s = r.setup.sensor_array
+    cands = candidates(r.setup, strategy)
+    for k in range(r.steps):
+        vals = np.array([
+            brute_pair_bound(s, r.estimate[k], r.cov[k], i, j, r.setup.u_max, metric)
+            for i, j in cands
+        ])
+        best = int(np.argmax(vals))  # first maximum in (i, j) order
+        assert r.bound[k] == pytest.approx(vals[best], rel=1e-9, abs=1e-12)
+        top2 = np.sort(vals)[-2:] if len(vals) > 1 else vals
+        if len(vals) == 1 or top2[1] - top2[0] > 1e-9:
+            assert tuple(r.pairs[k]) == cands[best], f"step {k + 1}"
+        else:  # a near tie: the pick must be one of the tied maxima
+            assert vals[cands.index(tuple(r.pairs[k]))] >= vals[best] - 1e-9
+
+
+def test_ties_keep_first_maximum():
+    # Four sensors symmetric about the estimate: every pair of neighbours scores the same.
+    setup = tr.TrackingSetup(
+        sensors=((1, 0), (0, 1), (-1, 0), (0, -1)), steps=1, estimate0=(0, 0), anchor=2,
+        fixed_pair=(3, 1),
+    )
+    pairs, b = tr.choose_pairs(setup, "best-pair", [[0.0, 0.0]], np.eye(2)[None])
+    assert pairs.tolist() == [[0, 1]]
+    pairs, _ = tr.choose_pairs(setup, "best-partner", [[0.0, 0.0]], np.eye(2)[None])
+    assert pairs.tolist() == [[1, 2]]  # partners of sensor 2 in index order: 0 (opposite), 1, 3
+    pairs, _ = tr.choose_pairs(setup, "fixed-pair", [[0.0, 0.0]], np.eye(2)[None])
+    assert pairs.tolist() == [[1, 3]]
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_batch_pair_chooser_equals_pair_bounds_and_brute_force(seed, random_states):
+    """PairChooser (no per-step validation, only the candidates' pairs) against
+    obslib.pair_bounds and the argmax over each strategy's candidates."""
+    rng = np.random.default_rng(seed)
+    setup = CIRCLE
+    s = setup.sensor_array
+    ii, jj = np.triu_indices(s.shape[0], 1)
+    n = 300
+    x, cov = random_states(rng, n)
+    strategies = rng.choice(tr.STRATEGIES, n)
+    maha = rng.random(n) < 0.5
+    anchors = rng.integers(0, 6, n)
+    fixed = [tuple(rng.choice(6, 2, replace=False)) for _ in range(n)]
+    setups = [
+        setup.replace(anchor=int(a), fixed_pair=f, metric="mahalanobis" if m else "euclidean")
+        for a, f, m in zip(anchors, fixed, maha)
+    ]
+    cand = np.stack([strategy_candidates(su, st_) for su, st_ in zip(setups, strategies)])
+    ch = PairChooser(s, cand, maha, setup.u_max**2)
+    best, bound = ch(x[:, 0], x[:, 1], cov[:, 0, 0], cov[:, 0, 1], cov[:, 1, 0], cov[:, 1, 1])
+    Wm = ob.pair_bounds(s, x, setup.u_max, cov=cov)[ii, jj]  # (P, n)
+    We = ob.pair_bounds(s, x, setup.u_max)[ii, jj]
+    W = np.where(maha, Wm, We)
+    multi = cand.sum(axis=1) > 1
+    for r in range(n):
+        c = np.flatnonzero(cand[r])
+        if not multi[r]:
+            assert best[r] == c[0] and np.isnan(bound[r])  # fixed pair: bound filled in later
+            continue
+        vals = W[c, r]
+        want = c[int(np.argmax(vals))]
+        top2 = np.sort(vals)[-2:]
+        if top2[1] - top2[0] > 1e-12:
+            assert best[r] == want
+        assert bound[r] == pytest.approx(W[best[r], r], rel=1e-13, abs=1e-15)
+        assert W[best[r], r] >= vals.max() - 1e-13
+    # the fixed pairs' bound over whole "runs" (here: runs of one step)
+    fb = ch.fixed_bounds(x[:, None, :], cov[:, None])
+    single = np.flatnonzero(~multi)
+    np.testing.assert_allclose(fb[:, 0], W[best[single], single], rtol=1e-13, atol=1e-15)
+
+
+def test_batch_pair_chooser_rejects_an_estimate_on_a_sensor():
+    s = CIRCLE.sensor_array
+    cand = np.ones((1, 15), bool)
+    ch = PairChooser(s, cand, np.array([True]), 9.0)
+    one, zero = np.ones(1), np.zeros(1)
+    with pytest.raises(ValueError, match="sits on a sensor"):
+        ch(s[2:3, 0].copy(), s[2:3, 1].copy(), one, zero, zero, one)
+    with pytest.raises(ValueError, match="not finite"):
+        ch(np.array([np.nan]), one, one, zero, zero, one)

@@ -1,0 +1,69 @@
+"""Statistics of runs (obslib.tracking.stats) against direct computations."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from obslib import tracking as tr
+from obslib.tracking.stats import _rank  # private: the rank kernel is tested against scipy
+
+CIRCLE = tr.PAPER_CIRCLE
+ADV = tr.PAPER_ADVERSARIAL
+
+
+def test_entrapment_measures_are_consistent():
+    r = tr.simulate(ADV, "best-pair")
+    e = tr.entrapment(r)
+    assert e.reach == pytest.approx(315 * 0.1)
+    assert e.path_length <= e.reach + 1e-9
+    assert 0 <= e.net_displacement <= e.max_from_start <= e.path_length + 1e-9
+    assert e.radius <= e.max_from_start + 1e-9 or e.radius <= 2 * e.max_from_start
+    assert 0 <= e.icn_min <= e.icn_mean <= 1
+    assert e.switches == r.switches
+    assert e.bound_mean == pytest.approx(r.bound.mean())
+
+
+def test_mirror_point():
+    m = tr.mirror_point([[1.0, 1.0]], [0.0, 0.0], [2.0, 0.0])
+    np.testing.assert_allclose(m, [[1.0, -1.0]])
+
+
+def test_spearman_ranks_equal_scipy():
+    from scipy.stats import rankdata, spearmanr
+
+    rng = np.random.default_rng(2)
+    a = rng.integers(0, 5, (4, 30)).astype(float)  # many ties
+    b = rng.normal(size=(4, 30))
+    for axis in (0, 1):
+        np.testing.assert_array_equal(
+            np.moveaxis(_rank(np.moveaxis(a, axis, -1)), -1, axis), rankdata(a, axis=axis)
+        )
+    for i in range(4):
+        assert tr.spearman(a[i], b[i]) == pytest.approx(spearmanr(a[i], b[i])[0], abs=1e-12)
+    assert np.isnan(tr.spearman(np.ones(5), np.arange(5.0)))
+
+
+def test_ties_between_strategies_count_for_neither():
+    a = np.array([1.0, 2.0, 3.0, 0.0])
+    b = np.array([1.0 + 1e-13, 2.5, 3.0 * (1 + 2e-9), 0.0])
+    np.testing.assert_array_equal(tr.clearly_lower(a, b), [False, True, True, False])
+    np.testing.assert_array_equal(tr.clearly_lower(b, a), [False, False, False, False])
+    # a strategy compared with an identical copy of itself wins nowhere
+    mc = tr.monte_carlo(CIRCLE.replace(steps=30), 3, first_seed=0)
+    same = {"best-pair": mc["best-pair"], "best-partner": mc["best-pair"], "fixed-pair": mc["fixed-pair"]}
+    assert all(v == 0.0 for v in tr.compare_strategies(same)["wins"]["best-partner"].values())
+
+
+def test_switch_back_fraction_counts_returns_to_the_previous_pair():
+    mc = tr.monte_carlo(CIRCLE.replace(steps=60), 3, first_seed=0)
+    b = mc["best-pair"]
+    back = switches = 0
+    for r in range(b.pairs.shape[0]):
+        p = [tuple(x) for x in b.pairs[r]]
+        for k in range(1, len(p) - 1):  # transition k -> k + 1, with a step k - 1 before it
+            if p[k + 1] != p[k]:
+                switches += 1
+                back += p[k + 1] == p[k - 1]
+    assert switches > 0
+    assert tr.switch_back_fraction(b) == back / switches
