@@ -113,3 +113,26 @@ def test_params_profiles():
     assert q["n_seeds"] < p["n_seeds"] and p["n_seeds"] >= 200 and p["assign_seeds"] >= 100
     with pytest.raises(ValueError, match="profile"):
         cs.params("nonsense")
+
+
+def test_figures_label_their_axes():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from obslib.studies import assignment_tracking as at
+    from obslib.viz.assignment_tracking import plot_assignment_errors
+    from obslib.viz.criteria import plot_run_errors
+
+    setup = tr.PAPER_CIRCLE.replace(steps=20)
+    study = {("circle", "mahalanobis"): tr.monte_carlo(setup, 3, ("best-pair", "fixed-pair"))}
+    fig = plot_run_errors(study)
+    assert fig.get_figwidth() <= 9 and "error" in fig.axes[0].get_ylabel()
+    assert [t.get_text() for t in fig.axes[0].get_xticklabels()] == ["bound\n(best pair)", "fixed\npair"]
+    runs = {2: at.run_all(at.AssignmentTrackingSetup(n_targets=2, steps=5), [0, 1])}
+    fig2 = plot_assignment_errors(runs)
+    assert fig2.get_figwidth() <= 9 and "length units" in fig2.axes[0].get_ylabel()
+    plt.close("all")
+    with pytest.raises(ValueError):
+        plot_run_errors(study, "euclidean")

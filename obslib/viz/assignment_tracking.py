@@ -14,6 +14,7 @@ def plot_assignment_errors(runs: dict, figsize=(8.5, 3.4)):
     after each update, per assignment rule. ``runs`` is
     :func:`obslib.studies.criteria.assignment_study`'s result. Returns the figure."""
     import matplotlib.pyplot as plt
+    from matplotlib.ticker import FormatStrFormatter, LogLocator
 
     if not runs:
         raise ValueError("no assignment runs to plot")
@@ -25,9 +26,13 @@ def plot_assignment_errors(runs: dict, figsize=(8.5, 3.4)):
         ax.boxplot(data, whis=(5, 95), flierprops={"ms": 2}, medianprops={"color": "C3"})
         ax.set_xticks(np.arange(1, len(rules) + 1), [LABELS.get(r, r) for r in rules], fontsize=9)
         ax.set_yscale("log")
-        ax.set_ylabel("error summed over targets\n(length units)")
+        ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
+        ax.yaxis.set_minor_locator(LogLocator(subs=(2.0, 5.0)))
+        ax.yaxis.set_minor_formatter(FormatStrFormatter("%g"))
+        ax.tick_params(axis="y", which="minor", labelsize=9)
         n = runs[L][rules[0]].setup.n_sensors
         ax.set_title(f"L = {L} targets, N = {n} sensors", fontsize=10)
         ax.grid(axis="y", alpha=0.3)
-    fig.subplots_adjust(left=0.1, right=0.99, bottom=0.2, top=0.9, wspace=0.35)
+    axes[0, 0].set_ylabel("error summed over targets\n(length units)")
+    fig.subplots_adjust(left=0.1, right=0.99, bottom=0.2, top=0.9, wspace=0.22)
     return fig

@@ -25,6 +25,7 @@ def plot_run_errors(study: dict, metric: str = "mahalanobis", figsize=(8.5, 3.6)
     ``study`` is :func:`obslib.studies.criteria.tracking_study`'s result. Returns the figure.
     """
     import matplotlib.pyplot as plt
+    from matplotlib.ticker import FormatStrFormatter, LogLocator
 
     settings = [s for s in ("circle", "adversary") if (s, metric) in study]
     if not settings:
@@ -39,8 +40,12 @@ def plot_run_errors(study: dict, metric: str = "mahalanobis", figsize=(8.5, 3.6)
                    medianprops={"color": "C3"})
         ax.set_xticks(np.arange(1, len(names) + 1), [LABELS.get(n, n) for n in names], fontsize=9)
         ax.set_yscale("log")
-        ax.set_ylabel("per-run mean error (length units)")
+        ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
+        ax.yaxis.set_minor_locator(LogLocator(subs=(2.0, 5.0)))
+        ax.yaxis.set_minor_formatter(FormatStrFormatter("%g"))
+        ax.tick_params(axis="y", which="minor", labelsize=9)
         ax.set_title(f"{titles[setting]}, {metric}", fontsize=10)
         ax.grid(axis="y", alpha=0.3)
-    fig.subplots_adjust(left=0.08, right=0.99, bottom=0.2, top=0.91, wspace=0.28)
+    axes[0, 0].set_ylabel("per-run mean error (length units)")
+    fig.subplots_adjust(left=0.09, right=0.99, bottom=0.2, top=0.91, wspace=0.22)
     return fig
