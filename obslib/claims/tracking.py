@@ -178,7 +178,8 @@ def _fig6_higher_bound(profile: str) -> Finding:
     p = params(NB5, profile)
     mc = _mc(circle_setup(p), p["n_seeds"], p["seed"])
     b1 = mc["best-pair"].bound[:, 1:]
-    frac = {o: float(tr.clearly_lower(mc[o].bound[:, 1:].mean(0), b1.mean(0)).mean()) for o in tr.STRATEGIES[1:]}
+    frac = {o: float(tr.clearly_lower(mc[o].bound[:, 1:].mean(0), b1.mean(0)).mean())
+            for o in tr.STRATEGIES[1:]}
     point = {o: float(tr.clearly_lower(mc[o].bound[:, 1:], b1).mean()) for o in tr.STRATEGIES[1:]}
     avg = {o: bool(b1.mean() > mc[o].bound[:, 1:].mean()) for o in tr.STRATEGIES[1:]}
     if min(frac.values()) >= 0.9:
@@ -392,8 +393,8 @@ def _fig7_entrapment(profile: str) -> Finding:
 def _fig7_switch(profile: str) -> Finding:
     """Pooled over ``n_seeds`` runs (:func:`obslib.studies.tracking.pooled_switch_mechanism`).
     reproduced: the pair switches after >= 90 % of the moves that bring the target closer to a
-    sensor of the pair AND >= 90 % of switches give the sensors a higher C^-1 than the target aimed at;
-    partly: only the first; refuted: not the first."""
+    sensor of the pair AND >= 90 % of switches give the sensors a higher C^-1 than the target
+    aimed at; partly: only the first; refuted: not the first."""
     p = params(NB6, profile)
     b = _adv_batch(adversarial_setup(p), "best-pair", p["n_seeds"], p["seed"])
     m = study.pooled_switch_mechanism(b)
@@ -405,7 +406,8 @@ def _fig7_switch(profile: str) -> Finding:
     ours = (
         f"The target moves closer to a sensor of the current pair at {m['closer_fraction']:.0%} of "
         f"the transitions; the pair then switches {sw_closer:.0%} of the time (switches overall "
-        f"{m['switch_fraction']:.0%}). A switch leaves the sensors a higher C^-1 than the target aimed "
+        f"{m['switch_fraction']:.0%}). A switch leaves the sensors a higher C^-1 than the target "
+        "aimed "
         f"at in only {raised:.0%} of switches (mean gain {gain:+.3f})."
     )
     ev = {"n_seeds": p["n_seeds"], "closer_fraction": _r(m["closer_fraction"]),

@@ -72,14 +72,15 @@ def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> di
     Checks the paper's choice of ``s_1`` as ``s_2``'s fixed partner ("it gives the best
     performance amongst all other sensors, on an average, for the circular trajectory"). All
     partners run over the same seeds in one batched pass (:func:`partner_arms`,
-    :func:`~obslib.tracking.simulate_many`); partner ``j`` equals ``tr.monte_carlo(setup.replace(fixed_pair=(anchor,
-    j)), n_seeds, ["fixed-pair"], first_seed)``.
+    :func:`~obslib.tracking.simulate_many`); partner ``j`` equals
+    ``monte_carlo(setup.replace(fixed_pair=(anchor, j)), n_seeds, ["fixed-pair"], first_seed)``.
 
     Returns
     -------
     dict
         ``{partner: {"mean_bound", "mean_error", "median_error", "mean_trace", "lost"}}`` with
-        ``partner`` 0-based and ``lost`` the fraction of runs of :func:`~obslib.tracking.track_loss`.
+        ``partner`` 0-based and ``lost`` the fraction of runs of
+        :func:`~obslib.tracking.track_loss`.
     """
     if int(n_seeds) < 1:
         raise ValueError(f"n_seeds must be at least 1, got {n_seeds}")
@@ -192,7 +193,8 @@ def entrapment_summary(batch: BatchResult) -> dict:
     Returns
     -------
     dict
-        ``entrapped`` (fraction of runs meeting :data:`~obslib.tracking.ENTRAPMENT_CRITERIA`), the largest
+        ``entrapped`` (fraction of runs meeting :data:`~obslib.tracking.ENTRAPMENT_CRITERIA`),
+        the largest
         ``max_from_start``, ``reach``, the mean and range of the per-run mean bound, the
         smallest ``icn_min``, the mean ``icn_mean``, mean ``switches`` and ``mean_error``, and
         ``runs`` (the list of :class:`~obslib.tracking.Entrapment`).

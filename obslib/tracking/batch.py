@@ -23,6 +23,7 @@ import numpy as np
 
 from .adversary import adversary_moves, control_basis
 from .criteria import PairChooser, candidates, check_strategy, fixed_pair_bound
+from .ekf import SINGULAR_RTOL, singular_update_message
 from .model import circle_truth, pair_index
 from .results import BatchResult, TrackingResult, derived_arrays
 from .setup import TrackingSetup, check_noise, check_seed, noise_table
@@ -74,8 +75,8 @@ class _Filters:
         if not self.r_diag:
             s01, s10 = s01 + r01, s10 + r10
         det = s00 * s11 - s01 * s10
-        if not (det > 0).all() or not np.isfinite(det).all():
-            self._singular(det, k, s0x, s0y, s1x, s1y)
+        if not (det > SINGULAR_RTOL * (s00 * s11)).all():  # also false for NaN and inf
+            self._singular(det > SINGULAR_RTOL * (s00 * s11), k, s0x, s0y, s1x, s1y)
         i00, i01, i10, i11 = s11 / det, -s01 / det, -s10 / det, s00 / det
         k00, k01 = a00 * i00 + a01 * i10, a00 * i01 + a01 * i11
         k10, k11 = a10 * i00 + a11 * i10, a10 * i01 + a11 * i11
@@ -98,18 +99,12 @@ class _Filters:
         self.p10 = (b10 * A00 + b11 * A01) + (e10 * k00 + e11 * k01)
         self.p11 = (b10 * A10 + b11 * A11) + (e10 * k10 + e11 * k11)
 
-    def _singular(self, det, k, s0x, s0y, s1x, s1y):
-        r = int(np.flatnonzero(~(det > 0) | ~np.isfinite(det))[0])
+    def _singular(self, ok, k, s0x, s0y, s1x, s1y):
+        r = int(np.flatnonzero(~ok)[0])
         pick = lambda a: a[r] if np.ndim(a) else a  # noqa: E731
-        x = [float(self.xx[r]), float(self.xy[r])]
-        ps = [[float(pick(s0x)), float(pick(s0y))], [float(pick(s1x)), float(pick(s1y))]]
-        raise ValueError(
-            f"the filter's update at step {k + 1} of run {r} failed: the innovation covariance "
-            f"H P H^T + R is singular in floating point (estimate {np.round(x, 6).tolist()}, "
-            f"pair sensors {ps}); the estimate is so far from the sensors, or the covariance so "
-            "large, that the two Jacobian rows are parallel to rounding. Start the estimate "
-            "nearer the target or with a smaller cov0."
-        )
+        x = np.array([self.xx[r], self.xy[r]])
+        ps = np.array([[pick(s0x), pick(s0y)], [pick(s1x), pick(s1y)]])
+        raise ValueError(singular_update_message(x, ps, k, run=r))
 
 
 def _measure(sx, sy, i0, i1, ox, oy, noise_k, cols):

@@ -34,25 +34,40 @@ from .setup import TrackingSetup, check_noise, check_seed, check_setup, noise_ta
 __all__ = ["simulate"]
 
 
+#: The update stops with a ValueError when the innovation covariance ``S = H P H^T + R`` is
+#: singular to this relative precision, ``det S <= SINGULAR_RTOL * S_00 S_11`` (its gain would
+#: carry no correct digit); both engines apply the same test.
+SINGULAR_RTOL = 1e-13
+
+
+def singular_update_message(x, ps, k: int, run: int | None = None) -> str:
+    """The error of an update whose innovation covariance is singular (see
+    :data:`SINGULAR_RTOL`): estimate ``x``, pair sensors ``ps``, step ``k`` (0-based)."""
+    where = f"step {k + 1}" + ("" if run is None else f" of run {run}")
+    return (
+        f"the filter's update at {where} failed: the innovation covariance H P H^T + R is "
+        f"singular in floating point (estimate {np.round(x, 6).tolist()}, pair sensors "
+        f"{np.asarray(ps).tolist()}); the estimate is so far from the sensors, or its covariance "
+        "so large, that the two Jacobian rows are parallel to rounding. Start the estimate "
+        "nearer the target or with a smaller cov0."
+    )
+
+
 def _update(ekf, z, ps, k: int) -> None:
-    """filterpy's EKF update, with a named error where its innovation covariance
-    :math:`S = H P H^T + R` is singular in floating point."""
+    """filterpy's EKF update (after its predict), with a ValueError naming the cause where the
+    innovation covariance is singular (:data:`SINGULAR_RTOL`) instead of filterpy's
+    LinAlgError or a silently wrong gain."""
+    x = ekf.x[:, 0]
+    H = range_jacobian(ekf.x, ps)
+    S = H @ ekf.P @ H.T + ekf.R
+    if not S[0, 0] * S[1, 1] - S[0, 1] * S[1, 0] > SINGULAR_RTOL * (S[0, 0] * S[1, 1]):
+        raise ValueError(singular_update_message(x, ps, k))
     try:
         ekf.update(z, range_jacobian, half_squared_range, args=(ps,), hx_args=(ps,))
     except np.linalg.LinAlgError:
-        raise ValueError(_singular_message(ekf.x[:, 0], ps, k)) from None
+        raise ValueError(singular_update_message(x, ps, k)) from None
     if not (np.isfinite(ekf.x).all() and np.isfinite(ekf.P).all()):
-        raise ValueError(_singular_message(ekf.x[:, 0], ps, k))
-
-
-def _singular_message(x, ps, k: int) -> str:
-    return (
-        f"the filter's update at step {k + 1} failed: the innovation covariance H P H^T + R is "
-        f"singular in floating point (estimate {np.round(x, 6).tolist()}, pair sensors "
-        f"{ps.tolist()}); the estimate is so far from the sensors, or the covariance so large, "
-        "that the two Jacobian rows are parallel to rounding. Start the estimate nearer the "
-        "target or with a smaller cov0."
-    )
+        raise ValueError(singular_update_message(x, ps, k))
 
 
 def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> TrackingResult:

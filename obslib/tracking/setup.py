@@ -65,17 +65,31 @@ def paper_controls(u_max: float, n_angles: int = 63, dphi: float = 0.1) -> np.nd
 # --------------------------------------------------------------------------------------------
 
 
+def _bad_kind(value) -> str | None:
+    """What makes ``value`` not a real number (or nested sequence of them): ``"a bool"``,
+    ``"a complex number"``, ``"text"``, or None."""
+    if isinstance(value, np.ndarray):
+        kind = value.dtype.kind
+        if kind == "O":
+            return next(filter(None, map(_bad_kind, value.ravel())), None)
+        return {"b": "a bool", "c": "a complex number", "U": "text", "S": "text"}.get(kind)
+    if isinstance(value, (bool, np.bool_)):
+        return "a bool"
+    if isinstance(value, (complex, np.complexfloating)):
+        return "a complex number"
+    if isinstance(value, (str, bytes)):
+        return "text"
+    if isinstance(value, (list, tuple)):
+        return next(filter(None, map(_bad_kind, value)), None)
+    return None
+
+
 def _real_array(value, name: str, what: str) -> np.ndarray:
     """``value`` as a float array, or a named error: TypeError for text, bools and complex
     numbers (which ``float`` would coerce silently or drop), ValueError for the rest."""
-    arr = np.asarray(value) if not isinstance(value, np.ndarray) else value
-    kinds = {arr.dtype.kind}
-    if arr.dtype.kind == "O":
-        kinds = {np.asarray(x).dtype.kind for x in arr.ravel()}
-    if kinds & {"b", "c", "U", "S"}:
-        kind = {"b": "a bool", "c": "a complex number", "U": "text", "S": "text"}
-        got = kind[sorted(kinds & {"b", "c", "U", "S"})[0]]
-        raise TypeError(f"{name} must be {what} of real numbers, got {got}: {value!r}")
+    got = _bad_kind(value)
+    if got:
+        raise TypeError(f"{name} must be {what}, got {got}: {value!r}")
     try:
         return np.asarray(value, dtype=float)
     except (TypeError, ValueError) as exc:
@@ -84,7 +98,7 @@ def _real_array(value, name: str, what: str) -> np.ndarray:
 
 def _matrix(value, name: str) -> tuple:
     """A symmetric positive-definite 2x2 matrix as a tuple of tuples, or ValueError."""
-    m = _real_array(value, name, "a numeric 2x2 matrix")
+    m = _real_array(value, name, "a real 2x2 matrix or a real number")
     if m.ndim == 0:
         m = m * np.eye(2)
     if m.shape != (2, 2):
@@ -116,11 +130,11 @@ def _check_spd_any_scale(m: np.ndarray, name: str) -> None:
 
 
 def _point(value, name: str) -> tuple:
-    return tuple(as_point(_real_array(value, name, "a point (x, y)"), name).tolist())
+    return tuple(as_point(_real_array(value, name, "a real point (x, y)"), name).tolist())
 
 
 def _scalar(value, name: str, *, positive=False, nonneg=False) -> float:
-    arr = _real_array(value, name, "a number")
+    arr = _real_array(value, name, "a real number")
     if arr.ndim != 0:
         raise ValueError(f"{name} must be a number, got shape {arr.shape}")
     v = float(arr)
@@ -211,7 +225,7 @@ class TrackingSetup:
         put = lambda name, value: object.__setattr__(self, name, value)  # noqa: E731
         if self.sensors is None or np.size(np.asarray(self.sensors, dtype=object)) == 0:
             raise ValueError("setup has no sensors; the strategies need at least 2")
-        s = as_points(_real_array(self.sensors, "sensors", "points (x, y)"), "sensors")
+        s = as_points(_real_array(self.sensors, "sensors", "real points (x, y)"), "sensors")
         if s.shape[0] == 0:
             raise ValueError("setup has no sensors; the strategies need at least 2")
         if s.shape[0] < 2:
@@ -219,7 +233,7 @@ class TrackingSetup:
         check_distinct(s)
         put("sensors", tuple(map(tuple, s.tolist())))
         n = s.shape[0]
-        if isinstance(self.steps, (bool, np.bool_)) or not isinstance(self.steps, (int, np.integer)):
+        if isinstance(self.steps, (bool, np.bool_)) or not isinstance(self.steps, np.integer | int):
             raise ValueError(f"steps must be an integer, got {self.steps!r}")
         if self.steps < 1:
             raise ValueError(f"steps must be at least 1, got {self.steps}")
@@ -242,8 +256,8 @@ class TrackingSetup:
         elif self.start is not None:
             raise ValueError("start is for the adversarial target; the circle starts on the circle")
         if self.controls is not None:
-            c = as_points(_real_array(self.controls, "controls", "points (ux, uy)"), "controls",
-                          min_count=1)
+            c = _real_array(self.controls, "controls", "real points (ux, uy)")
+            c = as_points(c, "controls", min_count=1)
             norms = np.hypot(c[:, 0], c[:, 1])
             over = norms > self.u_max * (1 + 1e-12)
             if over.any():
@@ -361,7 +375,7 @@ def noise_table(setup: TrackingSetup, seed: int = 0) -> np.ndarray:
 def check_noise(setup: TrackingSetup, noise) -> np.ndarray:
     """A noise table for ``setup`` as a float ``(steps, N)`` array, or a ValueError naming the
     first non-finite entry or the wrong shape."""
-    t = _real_array(noise, "noise", "a numeric (steps, sensors) table")
+    t = _real_array(noise, "noise", "a real (steps, sensors) table")
     want = (setup.steps, setup.n_sensors)
     if t.shape != want:
         raise ValueError(f"noise table must have shape {want} (steps, sensors), got {t.shape}")

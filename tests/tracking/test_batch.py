@@ -94,3 +94,16 @@ def test_simulate_many_bad_arguments_raise():
         tr.simulate_many({"a": (CIRCLE, "best-pair")}, seeds=[])
     with pytest.raises(ValueError, match="shape"):
         tr.simulate_many({"a": (CIRCLE, "best-pair")}, noise=np.zeros((1, 10, 6)))
+
+
+def test_monte_carlo_arguments_of_the_wrong_kind_raise():
+    with pytest.raises(TypeError, match="strategies must be a list of names, got the string"):
+        tr.monte_carlo(CIRCLE, 2, strategies="best-pair")
+    with pytest.raises(TypeError, match="n_seeds must be an integer"):
+        tr.monte_carlo(CIRCLE, 2.5)
+    with pytest.raises(TypeError, match="first_seed must be a non-negative integer"):
+        tr.monte_carlo(CIRCLE, 2, first_seed=None)
+    with pytest.raises(TypeError, match="each seed must be a non-negative integer"):
+        tr.simulate_batch(CIRCLE, "best-pair", seeds=[0, None])
+    with pytest.raises(TypeError, match="seeds must be an iterable"):
+        tr.simulate_batch(CIRCLE, "best-pair", seeds=5)

@@ -1,4 +1,5 @@
-"""The pair choosers (obslib.tracking.criteria) against brute-force evaluations of their formulas."""
+"""The pair choosers (obslib.tracking.criteria) against brute-force evaluations of their
+formulas."""
 
 from __future__ import annotations
 
@@ -125,3 +126,23 @@ def test_batch_pair_chooser_rejects_an_estimate_on_a_sensor():
         ch(s[2:3, 0].copy(), s[2:3, 1].copy(), one, zero, zero, one)
     with pytest.raises(ValueError, match="not finite"):
         ch(np.array([np.nan]), one, one, zero, zero, one)
+
+
+def test_mahalanobis_length_is_scale_free():
+    """v^T Sigma^-1 v for Sigma of scale 1e-170 (det underflows to 0) and 1e120 (det overflows)
+    is the value at scale 1 divided by the scale (to rounding: the scaled path divides by the
+    largest entry, a few ulps)."""
+    from obslib.tracking.criteria import mahalanobis_sq
+
+    rng = np.random.default_rng(0)
+    vx, vy = rng.normal(size=(2, 50))
+    A = rng.normal(size=(50, 2, 2))
+    c = A @ np.swapaxes(A, 1, 2) + 0.1 * np.eye(2)
+    one = mahalanobis_sq(vx, vy, c[:, 0, 0], c[:, 0, 1], c[:, 1, 0], c[:, 1, 1])
+    want = np.einsum("ni,nij,nj->n", np.column_stack([vx, vy]), np.linalg.inv(c),
+                     np.column_stack([vx, vy]))
+    np.testing.assert_allclose(one, want, rtol=1e-10)
+    for scale in (1e-170, 1e120):
+        cs = c * scale
+        got = mahalanobis_sq(vx, vy, cs[:, 0, 0], cs[:, 0, 1], cs[:, 1, 0], cs[:, 1, 1])
+        np.testing.assert_allclose(got * scale, one, rtol=1e-12)

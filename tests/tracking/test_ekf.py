@@ -170,3 +170,62 @@ def test_bad_run_arguments_raise():
         tr.simulate_batch(CIRCLE, "best-pair")
     with pytest.raises(ValueError, match="n_seeds"):
         tr.monte_carlo(CIRCLE, 0)
+
+
+# --------------------------------------------------------------------------------------------
+# Inputs at the edge: named errors, or a correct run
+# --------------------------------------------------------------------------------------------
+
+
+def test_seed_and_strategy_of_the_wrong_kind_raise():
+    with pytest.raises(TypeError, match="seed must be a non-negative integer, got None"):
+        tr.simulate(CIRCLE, "best-pair", seed=None)
+    with pytest.raises(TypeError, match="seed must be a non-negative integer, got True"):
+        tr.simulate(CIRCLE, "best-pair", seed=True)
+    with pytest.raises(TypeError, match="strategy must be a string"):
+        tr.simulate(CIRCLE, 3)
+
+
+@pytest.mark.parametrize("engine", ["filterpy", "batch"])
+def test_an_estimate_far_from_the_target_gives_a_named_error(engine):
+    """At 1e10 from the sensors the two Jacobian rows are parallel to rounding and the
+    innovation covariance is singular: filterpy raised LinAlgError from inside its update."""
+    setup = CIRCLE.replace(estimate0=(1e10, 7e9), steps=20)
+    with pytest.raises(ValueError, match="innovation covariance H P H\\^T \\+ R is singular"):
+        if engine == "filterpy":
+            tr.simulate(setup, "best-pair")
+        else:
+            tr.simulate_batch(setup, "best-pair", seeds=[0])
+
+
+def test_a_far_but_representable_estimate_still_runs():
+    setup = CIRCLE.replace(estimate0=(1e3, 7e2), steps=40)
+    r = tr.simulate(setup, "best-pair")
+    b = tr.simulate_batch(setup, "best-pair", seeds=[0])
+    assert np.isfinite(r.estimate).all()
+    np.testing.assert_array_equal(b.pairs[0], r.pairs)
+
+
+def test_a_tiny_initial_covariance_runs_with_the_right_first_pick():
+    """cov0 of scale 1e-170 (determinant underflows): the first pick and bound equal the
+    Mahalanobis bound evaluated with numpy.linalg.inv, and both engines agree."""
+    from obslib import pair_bound_polar
+
+    c = 1e-170 * np.array([[2.0, 0.5], [0.5, 1.0]])
+    setup = CIRCLE.replace(cov0=c, steps=6)
+    r = tr.simulate(setup, "best-pair")
+    b = tr.simulate_batch(setup, "best-pair", seeds=[0])
+    s, x = setup.sensor_array, np.array(setup.estimate0)
+    prec = np.linalg.inv(c)
+    vals = {}
+    for i in range(6):
+        for j in range(i + 1, 6):
+            vi, vj = s[i] - x, s[j] - x
+            di, dj = np.sqrt(vi @ prec @ vi), np.sqrt(vj @ prec @ vj)
+            theta = np.arccos(np.clip(vi @ vj / np.hypot(*vi) / np.hypot(*vj), -1, 1))
+            vals[(i, j)] = pair_bound_polar(dj / di, theta, setup.u_max / di)
+    best = max(vals, key=vals.get)
+    assert tuple(r.pairs[0]) == best
+    assert r.bound[0] == pytest.approx(vals[best], rel=1e-9)
+    np.testing.assert_array_equal(b.pairs[0], r.pairs)
+    assert np.isfinite(r.estimate).all() and np.isfinite(b.estimate).all()

@@ -1,4 +1,5 @@
-"""The measurement model (obslib.tracking.model) against finite differences, pair_bounds and the exact C^-1."""
+"""The measurement model (obslib.tracking.model) against finite differences, pair_bounds and
+the exact C^-1."""
 
 from __future__ import annotations
 

@@ -67,3 +67,42 @@ def test_paper_controls():
     np.testing.assert_array_equal(c[0], [0, 0])
     np.testing.assert_allclose(np.hypot(*c[1:].T), 0.1)
     np.testing.assert_allclose(np.arctan2(c[-1, 1], c[-1, 0]) % (2 * np.pi), 6.2)
+
+
+# --------------------------------------------------------------------------------------------
+# Named errors for values of the wrong kind or scale
+# --------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "changes, match",
+    [
+        ({"u_max": True}, "u_max must be a real number, got a bool"),
+        ({"radius": 1 + 2j}, "radius must be a real number, got a complex"),
+        ({"noise_std": "0.5"}, "noise_std must be a real number, got text"),
+        ({"sensors": [[0.0, 0.0], [1j, 1.0]]}, "sensors must be real points"),
+        ({"cov0": True}, "cov0 must be a real 2x2 matrix"),
+        ({"estimate0": (True, 0.0)}, "estimate0 must be a real point"),
+    ],
+)
+def test_values_of_the_wrong_kind_raise_type_errors(changes, match):
+    with pytest.raises(TypeError, match=match):
+        CIRCLE.replace(**changes)
+
+
+def test_a_covariance_too_large_for_the_filter_is_named():
+    """1e300 I used to pass validation and fail later as "cov of target 0"."""
+    with pytest.raises(ValueError, match=r"cov0 has entries of scale 1e\+300"):
+        CIRCLE.replace(cov0=1e300)
+    with pytest.raises(ValueError, match="Q has entries of scale"):
+        CIRCLE.replace(Q=[[1e200, 0.0], [0.0, 1e200]])
+
+
+def test_a_tiny_positive_definite_covariance_is_accepted():
+    """Scale 1e-170: the determinant (1e-340) underflows to 0, yet the matrix is positive
+    definite; the checks run on the matrix divided by its largest entry."""
+    c = 1e-170 * np.array([[2.0, 0.5], [0.5, 1.0]])
+    setup = CIRCLE.replace(cov0=c)
+    np.testing.assert_array_equal(np.array(setup.cov0), c)
+    with pytest.raises(ValueError, match="cov0 is not positive definite"):
+        CIRCLE.replace(cov0=1e-170 * np.array([[1.0, 2.0], [2.0, 1.0]]))
