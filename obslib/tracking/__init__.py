@@ -12,7 +12,11 @@ the two measurements. The parts:
 :mod:`~obslib.tracking.model`
     measurement function and Jacobian, the circle, the pair bound along a run;
 :mod:`~obslib.tracking.criteria`
-    the pair choosers (:data:`STRATEGIES`);
+    the pair choosers: the paper's :data:`STRATEGIES` (``"best-pair"``, ``"best-partner"``,
+    ``"fixed-pair"``, by Theorem 4's bound) and, beyond the paper, :data:`CRITERIA`
+    (``"d-optimal"``, ``"a-optimal"``, ``"e-optimal"`` on the filter's information,
+    ``"exact-icn"`` an oracle knowing the target's control, ``"random"``); every name runs in
+    both engines with the same decisions;
 :mod:`~obslib.tracking.adversary`
     the adversarial target's moves (Section V-B);
 :mod:`~obslib.tracking.ekf`
@@ -37,7 +41,7 @@ The drawings are in :mod:`obslib.viz.tracking` and the studies of the paper's cl
 from __future__ import annotations
 
 from .batch import monte_carlo, simulate_batch, simulate_many
-from .criteria import STRATEGIES, choose_pairs
+from .criteria import CRITERIA, STRATEGIES, choose_pairs
 from .ekf import simulate
 from .model import (
     circle_truth,
@@ -78,6 +82,7 @@ from .stats import (
 
 __all__ = [
     "STRATEGIES",
+    "CRITERIA",
     "METRICS",
     "ADVERSARIES",
     "MOTIONS",

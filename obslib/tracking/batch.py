@@ -22,7 +22,7 @@ from typing import Iterable
 import numpy as np
 
 from .adversary import adversary_moves, control_basis
-from .criteria import PairChooser, candidates, check_strategy, fixed_pair_bound
+from .criteria import PairChooser, candidates, check_strategy, fixed_pair_bound, pair_draws
 from .ekf import SINGULAR_RTOL, singular_update_message
 from .model import circle_truth, pair_index
 from .results import BatchResult, TrackingResult, derived_arrays
@@ -140,11 +140,16 @@ class _Adversaries:
 
 
 def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
-              barred=None) -> dict:
+              barred=None, kinds=None, draws=None) -> dict:
     """``R`` runs of one shared setup, each with its own pair candidates (``cand``, ``(R, P)``),
-    metric (``maha``) and adversary (``nextpair``), and noise table: run ``r`` uses
+    metric (``maha``), adversary (``nextpair``), chooser (``kinds`` and ``draws`` of
+    :class:`~obslib.tracking.criteria.PairChooser`) and noise table: run ``r`` uses
     ``tables[r % B]``. An adversary's controls are ``controls`` (default: the setup's) less each
-    run's ``barred`` ones (see :func:`~obslib.tracking.adversary.adversary_moves`)."""
+    run's ``barred`` ones (see :func:`~obslib.tracking.adversary.adversary_moves`).
+
+    With an ``"exact-icn"`` run in the pass, the target moves before the next choice (the
+    oracle needs the control that brings it to its next position; no run of such a pass may
+    have a ``"next-pair"`` adversary, which needs the choice first)."""
     R_ = cand.shape[0]
     B, steps, n = tables.shape
     s = setup.sensor_array
@@ -164,8 +169,13 @@ def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
     bound = np.empty((steps, R_))
     est = np.empty((steps, 2, R_))
     cov = np.empty((steps, 4, R_))
-    chooser = PairChooser(s, cand, maha, setup.u_max**2)
-    best, b = chooser(filters.xx, filters.xy, *filters.covariance())
+    chooser = PairChooser(s, cand, maha, setup.u_max**2, kinds, setup.Q, setup.R, draws)
+    oracle = kinds is not None and bool((np.asarray(kinds, object) == "exact-icn").any())
+    if oracle and nextpair.any():
+        raise ValueError("an exact-icn run cannot face a next-pair adversary: each needs the "
+                         "other's next move first")
+    zero = np.zeros((R_, 2))
+    best, b = chooser(filters.xx, filters.xy, *filters.covariance(), zero, 0)
     for k in range(steps):
         best_log[k], bound[k] = best, b
         est[k] = filters.xx, filters.xy
@@ -174,10 +184,18 @@ def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
         ox, oy = path[k] if circle else (adv.truth[k, :, 0], adv.truth[k, :, 1])
         z0, z1 = _measure(sx, sy, i0, i1, ox, oy, noise[k], cols)
         filters.step(sx[i0], sy[i0], sx[i1], sy[i1], z0, z1, k)
+        pair = np.stack([i0, i1], axis=1)
+        if oracle:  # move first: the oracle knows the control that brings the target to o_{k+1}
+            if not circle:
+                adv.move(k, s, pair, None)
+            control = (path[k + 1] - path[k]) if circle else adv.truth[k + 1] - adv.truth[k]
+            best, b = chooser(filters.xx, filters.xy, *filters.covariance(),
+                              np.broadcast_to(control, (R_, 2)), k + 1)
+            continue
         # the next choice depends only on the posterior (a "next-pair" adversary may know it)
-        best, b = chooser(filters.xx, filters.xy, *filters.covariance())
+        best, b = chooser(filters.xx, filters.xy, *filters.covariance(), zero, k + 1)
         if not circle:
-            adv.move(k, s, np.stack([i0, i1], axis=1), np.stack([ii[best], jj[best]], axis=1))
+            adv.move(k, s, pair, np.stack([ii[best], jj[best]], axis=1))
     truth = path[None] if circle else np.ascontiguousarray(adv.truth.transpose(1, 0, 2))
     return _collect(chooser, best_log, bound, est, cov, best, truth)
 
@@ -190,8 +208,8 @@ def _collect(chooser, best_log, bound, est, cov, best, truth) -> dict:
     est = np.ascontiguousarray(est.transpose(2, 0, 1))
     cov = np.ascontiguousarray(cov.transpose(2, 0, 1)).reshape(R_, steps, 2, 2)
     bound = np.ascontiguousarray(bound.T)
-    if chooser.single.size:
-        bound[chooser.single] = chooser.fixed_bounds(est, cov)
+    if chooser.deferred.size:
+        bound[chooser.deferred] = chooser.deferred_bounds(best_log.T[chooser.deferred], est, cov)
     next_pair = np.stack([ii[best], jj[best]], axis=1)
     d = derived_arrays(est, cov, truth)
     if truth.shape[0] == 1 < R_:  # one path for every run (the circle): read-only views
@@ -239,6 +257,11 @@ def _check_seeds(seeds, noise):
     if not seeds:
         raise ValueError("seeds is empty")
     return seeds, None
+
+
+def _kind(strategy: str) -> str:
+    """The chooser kind of a strategy: ``"bound"`` for the paper's, else the criterion."""
+    return "bound" if strategy in ("best-pair", "best-partner", "fixed-pair") else strategy
 
 
 def _run_key(arm):
@@ -297,7 +320,10 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
     Parameters
     ----------
     arms : mapping
-        ``{name: (setup, strategy)}``.
+        ``{name: (setup, strategy)}``, ``strategy`` any name of
+        :data:`~obslib.tracking.STRATEGIES` or :data:`~obslib.tracking.CRITERIA` (``"random"``
+        needs ``seeds``; ``"exact-icn"`` arms run in a pass of their own, in which the target
+        moves before the next choice).
     seeds : iterable of int, optional
     noise : array_like, shape (B, steps, N), optional
         Explicit noise tables instead of seeds.
@@ -316,7 +342,7 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
     for name in first.values():
         setup = arms[name][0]
         key = tuple(getattr(setup, f.name) for f in dataclasses.fields(setup)
-                    if f.name not in _ROW_FIELDS)
+                    if f.name not in _ROW_FIELDS) + (arms[name][1] == "exact-icn",)
         groups.setdefault(key, []).append(name)
     drawn: dict = {}
     out = {}
@@ -336,7 +362,16 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
         controls = barred = None
         if base.motion == "adversarial":
             controls, barred = _control_union([arms[n][0] for n in names], B)
-        res = _run_rows(base, cand, maha, nxt, tables, controls, barred)
+        kinds = np.repeat([_kind(arms[n][1]) for n in names], B).astype(object)
+        draws = None
+        if any(arms[n][1] == "random" for n in names):
+            if not seeds:
+                raise ValueError("the random strategy draws its pairs from the run's seed: "
+                                 "give seeds, not noise tables")
+            P = cand.shape[1]
+            one = np.stack([pair_draws(x, base.steps, P) for x in seeds])
+            draws = np.tile(one, (len(names), 1))
+        res = _run_rows(base, cand, maha, nxt, tables, controls, barred, kinds, draws)
         for g, n in enumerate(names):
             sl = slice(g * B, (g + 1) * B)
             setup, strategy = arms[n]
@@ -390,7 +425,8 @@ def monte_carlo(
     Trial ``t`` uses ``noise_table(setup, first_seed + t)`` for every strategy (common random
     numbers), so trial ``t`` of a strategy equals ``simulate(setup, strategy,
     seed=first_seed + t)``. All strategies run together (:func:`simulate_many`), ``batch``
-    seeds at a time.
+    seeds at a time. ``strategies`` may name any of :data:`~obslib.tracking.STRATEGIES` and
+    :data:`~obslib.tracking.CRITERIA`, e.g. ``STRATEGIES + CRITERIA``.
 
     Returns
     -------

@@ -1,5 +1,5 @@
 """Pair choosers: which two sensors measure the target at the next step, by the paper's
-strategies (the pair bound of Theorem 4).
+strategies (the pair bound of Theorem 4) or by other criteria.
 
 The strategies of Section V-A score a pair by Theorem 4's bound at the estimate
 :math:`\\hat x` with the setup's :math:`u_{\\max}`,
@@ -22,8 +22,41 @@ the published runs) or left Euclidean. They differ in their candidates:
 ``"fixed-pair"``
     strategy (3), one pair (``setup.fixed_pair``, the paper's :math:`(s_2, s_1)`).
 
-Ties keep the first maximum in ``(i, j)`` order. :class:`PairChooser` evaluates the choice for
-many runs at once without per-step validation; both engines use it.
+Beyond the paper, :data:`CRITERIA` choose among all pairs by the classical criteria of optimal
+experimental design on the filter's information at its next update,
+
+.. math::
+
+    J_{ij} = (\\Sigma^-)^{-1} + H_{ij}^T R^{-1} H_{ij}, \\qquad
+    \\Sigma^- = \\Sigma + Q, \\qquad
+    H_{ij} = \\begin{bmatrix} (\\hat x - p_i)^T \\\\ (\\hat x - p_j)^T \\end{bmatrix},
+
+exactly the quantities of the filter's next update (the measurement is the half squared range,
+so its Jacobian rows are :math:`(\\hat x - p_i)^T`, and :math:`R` is the setup's measurement
+noise of the pair):
+
+``"d-optimal"``
+    maximise :math:`\\det J_{ij}`;
+``"a-optimal"``
+    minimise :math:`\\operatorname{tr} J_{ij}^{-1} = \\operatorname{tr} J_{ij} / \\det J_{ij}`;
+``"e-optimal"``
+    maximise :math:`\\lambda_{\\min}(J_{ij}) = \\det J_{ij} / \\lambda_{\\max}(J_{ij})` with
+    :math:`\\lambda_{\\max} = \\tfrac12 \\operatorname{tr} J + \\sqrt{\\tfrac14 (J_{00} - J_{11})^2
+    + J_{01}^2}` (no cancellation);
+``"exact-icn"``
+    an oracle that knows the target's actual control: maximise the exact
+    :math:`C^{-1}` of :math:`[(\\hat x - p_i)^T; (\\hat x - p_j)^T; u^T]`, where :math:`u` is the
+    control in the observability matrix the sensors face at this step, the move
+    :math:`u_{k-1} = o_k - o_{k-1}` that brought the target to :math:`o_k` (zero at step 1;
+    the control of :attr:`~obslib.tracking.TrackingResult.true_icn`);
+``"random"``
+    a uniformly random pair, drawn from :func:`pair_draws` of the run's seed.
+
+The logged bound of every run stays the paper's pair bound of the chosen pair (the setup's
+metric), so all runs compare with Fig. 6. Ties keep the first maximum in ``(i, j)`` order (the
+smallest pair). :class:`PairChooser` evaluates the choice for many runs at once without per-step
+validation, with the same arithmetic for one run or many: both engines use it, so they take the
+same decisions from the same states.
 """
 
 from __future__ import annotations
@@ -31,10 +64,14 @@ from __future__ import annotations
 import numpy as np
 
 from ..bounds import _pair_kernel
-from .model import pair_index
+from .model import inverse_condition, pair_index
 
 __all__ = [
     "STRATEGIES",
+    "CRITERIA",
+    "pair_draws",
+    "information_scores",
+    "icn_scores",
     "check_strategy",
     "candidates",
     "mahalanobis_sq",
@@ -47,8 +84,15 @@ __all__ = [
 #: The paper's three strategies (Section V-A).
 STRATEGIES = ("best-pair", "best-partner", "fixed-pair")
 
+#: Other pair choosers (beyond the paper): optimal design on the filter's information, an oracle
+#: that knows the target's control, and a random pair.
+CRITERIA = ("d-optimal", "a-optimal", "e-optimal", "exact-icn", "random")
 
-def check_strategy(strategy, known=STRATEGIES) -> str:
+#: Every name :func:`~obslib.tracking.simulate` and the batch engine accept.
+NAMES = STRATEGIES + CRITERIA
+
+
+def check_strategy(strategy, known=NAMES) -> str:
     """``strategy`` if it is one of ``known``, else a ValueError (TypeError for a non-string)."""
     if not isinstance(strategy, str):
         raise TypeError(f"strategy must be a string, one of {known}; got {strategy!r}")
@@ -61,8 +105,8 @@ def candidates(setup, strategy: str) -> np.ndarray:
     """Which pairs (in ``(i, j)`` order, :func:`~obslib.tracking.model.pair_index`) a strategy
     chooses among, ``(P,)`` bool.
 
-    Best pair: all; best partner: the pairs containing the anchor (in the order of the partner's
-    index); fixed pair: that pair alone.
+    Best pair and the :data:`CRITERIA`: all; best partner: the pairs containing the anchor (in
+    the order of the partner's index); fixed pair: that pair alone.
     """
     ii, jj = pair_index(setup.n_sensors)
     if strategy == "fixed-pair":
@@ -141,11 +185,17 @@ class PairChooser:
     :func:`scaled_rows`, then the kernel of :func:`obslib.pair_bounds` for the run's candidate
     pairs only. The pick is the first maximum among the candidates in ``(i, j)`` order.
 
-    Runs with a single candidate (the fixed pair) need no scores to choose, so the call leaves
-    their bound out (NaN); :meth:`fixed_bounds` evaluates it afterwards over whole runs at once.
+    Runs of the :data:`CRITERIA` (``kinds``, ``(R,)``: ``"bound"`` for the paper's strategies
+    or a criterion's name) choose among all pairs by :func:`information_scores` (with the
+    setup's ``Q`` and ``R``), :func:`icn_scores` or the ``draws`` ``(R, steps + 1)`` of
+    :func:`pair_draws`.
+
+    Runs with a single candidate (the fixed pair) need no scores to choose, and the criteria do
+    not compute the bound, so the call leaves their bound out (NaN) (the rows
+    :attr:`deferred`); :meth:`deferred_bounds` evaluates it afterwards over whole runs at once.
     """
 
-    def __init__(self, sensors, cand, maha, u2):
+    def __init__(self, sensors, cand, maha, u2, kinds=None, Q=None, R=None, draws=None):
         self.sx = sensors[:, 0].copy()
         self.sy = sensors[:, 1].copy()
         self.n = n = sensors.shape[0]
@@ -153,25 +203,37 @@ class PairChooser:
         self.maha = np.asarray(maha, dtype=bool)
         self.u2 = float(u2)
         R_ = cand.shape[0]
+        kinds = np.full(R_, "bound", dtype=object) if kinds is None else np.asarray(kinds, object)
+        by_bound = kinds == "bound"
         counts = cand.sum(axis=1)
         if (counts == 0).any():
             raise ValueError("a run has no candidate pair")
         self.best = np.empty(R_, dtype=int)
         self.bound = np.full(R_, np.nan)
-        self.single = np.flatnonzero(counts == 1)
+        self.single = np.flatnonzero(by_bound & (counts == 1))
         self.best[self.single] = np.nonzero(cand[self.single])[1]
-        self.multi = np.flatnonzero(counts > 1)
+        self.multi = np.flatnonzero(by_bound & (counts > 1))
         self.groups = []
         for c in np.unique(counts[self.multi]):
-            rows = np.flatnonzero(counts == c)
+            rows = self.multi[counts[self.multi] == c]
             cidx = np.nonzero(cand[rows])[1].reshape(rows.size, int(c))  # ascending pair index
             loc = np.searchsorted(self.multi, rows)  # rows within the multi-candidate block
             fi = loc[:, None] * n + self.ii[cidx]
             fj = loc[:, None] * n + self.jj[cidx]
             self.groups.append((rows, loc, cidx, fi, fj, np.arange(rows.size)))
         self.maha_multi = self.maha[self.multi]
+        # the criteria's rows; their bound, like the single candidates', is evaluated afterwards
+        self.criteria = [(c, np.flatnonzero(kinds == c)) for c in CRITERIA if (kinds == c).any()]
+        self.deferred = np.flatnonzero(~by_bound | (counts == 1))
+        self.Q = None if Q is None else np.asarray(Q, dtype=float)
+        self.W = None if R is None else np.linalg.inv(np.asarray(R, dtype=float))
+        self.draws = draws
 
-    def __call__(self, xx, xy, p00, p01, p10, p11):
+    def __call__(self, xx, xy, p00, p01, p10, p11, control=None, k: int = 0):
+        """Pick for every run at estimates ``xx, xy`` with covariance entries ``p00 .. p11``
+        (each ``(R,)``); ``control`` ``(R, 2)`` is the targets' control for ``"exact-icn"``
+        and ``k`` the step (0-based) for ``"random"``. Returns the pair indices and the bounds
+        (NaN for the rows of :attr:`deferred`)."""
         if self.groups:
             m = self.multi
             vx = xx[m, None] - self.sx
@@ -185,14 +247,28 @@ class PairChooser:
                 self.bound[rows] = w[ar, pick]
         elif not (np.isfinite(xx).all() and np.isfinite(xy).all()):
             raise ValueError("an estimate is not finite")
+        for name, r in self.criteria:
+            if name == "random":
+                self.best[r] = self.draws[r, k]
+                continue
+            hx = xx[r, None] - self.sx  # Jacobian rows (xhat - p_i)^T, (M, N)
+            hy = xy[r, None] - self.sy
+            if name == "exact-icn":
+                score = icn_scores(hx, hy, control[r], self.ii, self.jj)
+            else:
+                q = self.Q
+                pp = (p00[r] + q[0, 0], p01[r] + q[0, 1], p10[r] + q[1, 0], p11[r] + q[1, 1])
+                score = information_scores(name, hx, hy, pp, self.W, self.ii, self.jj)
+            self.best[r] = score.argmax(axis=1)  # the first maximum: the smallest (i, j)
         return self.best.copy(), self.bound.copy()
 
-    def fixed_bounds(self, est, cov) -> np.ndarray:
-        """The bound of the single-candidate runs' pair over whole runs: ``est`` ``(R, T, 2)``
-        and ``cov`` ``(R, T, 2, 2)`` of all runs in; ``(len(single), T)`` out."""
-        r = self.single
+    def deferred_bounds(self, picks, est, cov) -> np.ndarray:
+        """The paper's bound of the picks of the :attr:`deferred` rows (single candidates and
+        criteria) over whole runs: ``picks`` ``(len(deferred), T)`` pair indices, ``est``
+        ``(R, T, 2)`` and ``cov`` ``(R, T, 2, 2)`` of all runs in; ``(len(deferred), T)`` out."""
+        r = self.deferred
         T = est.shape[1]
-        k = np.repeat(self.best[r], T)
+        k = np.asarray(picks).reshape(-1)
         val = fixed_pair_bound(self.sx, self.sy, self.ii[k], self.jj[k], self.u2,
                                est[r].reshape(-1, 2), cov[r].reshape(-1, 2, 2),
                                np.repeat(self.maha[r], T))
@@ -215,6 +291,56 @@ def fixed_pair_bound(sx, sy, i, j, u2, x, c, maha) -> np.ndarray:
                                   maha[sl])
         out[sl] = _pair_kernel(vx[:, 0], vy[:, 0], vx[:, 1], vy[:, 1], u2 * inv)
     return out
+
+
+def pair_draws(seed: int, steps: int, n_pairs: int) -> np.ndarray:
+    """The ``"random"`` chooser's picks for the ``steps + 1`` choices of a run (the last is the
+    pair after the last step): pair indices uniform on ``0 .. n_pairs - 1``, drawn from
+    ``numpy.random.default_rng([1, seed])``, a stream apart from the run's noise table
+    (``default_rng(seed)``), so the noise stays common to all strategies."""
+    return np.random.default_rng([1, int(seed)]).integers(0, n_pairs, size=steps + 1)
+
+
+def information_scores(name: str, hx, hy, pp, W, ii, jj) -> np.ndarray:
+    """Scores of every pair ``(ii[p], jj[p])`` by an optimal-design criterion, higher is better,
+    ``(M, P)``: :math:`\\det J`, :math:`-\\operatorname{tr} J^{-1}` or
+    :math:`\\lambda_{\\min}(J)` for ``"d-optimal"``, ``"a-optimal"``, ``"e-optimal"``.
+
+    ``hx, hy`` ``(M, N)`` are the Jacobian rows :math:`(\\hat x - p_i)^T` of every sensor,
+    ``pp`` the entries ``(p00, p01, p10, p11)`` of the predicted covariance :math:`\\Sigma^-`
+    (each ``(M,)``) and ``W`` ``(2, 2)`` the inverse of the measurement noise :math:`R`
+    (row 0 for the pair's sensor ``i``, row 1 for ``j``). Closed forms for 2 x 2 matrices:
+    :math:`J = (\\Sigma^-)^{-1} + H^T W H` from the adjugate, then its determinant, trace and
+    smallest eigenvalue.
+    """
+    p00, p01, p10, p11 = (x[:, None] for x in pp)
+    det_p = p00 * p11 - p01 * p10
+    a00, a11, a01 = p11 / det_p, p00 / det_p, -0.5 * (p01 + p10) / det_p
+    xi, yi, xj, yj = hx[:, ii], hy[:, ii], hx[:, jj], hy[:, jj]
+    w00, w11, w01 = W[0, 0], W[1, 1], 0.5 * (W[0, 1] + W[1, 0])
+    j00 = a00 + (w00 * xi * xi + 2 * w01 * xi * xj + w11 * xj * xj)
+    j11 = a11 + (w00 * yi * yi + 2 * w01 * yi * yj + w11 * yj * yj)
+    j01 = a01 + (w00 * xi * yi + w01 * (xi * yj + xj * yi) + w11 * xj * yj)
+    det = j00 * j11 - j01 * j01
+    if name == "d-optimal":
+        return det
+    tr = j00 + j11
+    if name == "a-optimal":
+        return -(tr / det)
+    half = 0.5 * (j00 - j11)
+    lmax = 0.5 * tr + np.sqrt(half * half + j01 * j01)
+    return det / lmax
+
+
+def icn_scores(hx, hy, control, ii, jj) -> np.ndarray:
+    """The exact :math:`C^{-1}` of :math:`[(\\hat x - p_i)^T; (\\hat x - p_j)^T; u^T]` for every
+    pair ``(ii[p], jj[p])``, ``(M, P)``: rows ``hx, hy`` ``(M, N)``, controls ``(M, 2)``."""
+    M, P = hx.shape[0], ii.size
+    stack = np.empty((M, P, 3, 2))
+    stack[:, :, 0, 0], stack[:, :, 0, 1] = hx[:, ii], hy[:, ii]
+    stack[:, :, 1, 0], stack[:, :, 1, 1] = hx[:, jj], hy[:, jj]
+    stack[:, :, 2, :] = np.asarray(control, dtype=float)[:, None, :]
+    return inverse_condition(stack)
 
 
 def choose_pairs(setup, strategy: str, xhat, cov):
@@ -240,6 +366,7 @@ def choose_pairs(setup, strategy: str, xhat, cov):
     ch = PairChooser(setup.sensor_array, cand, maha, setup.u_max**2)
     best, bound = ch(x[:, 0].copy(), x[:, 1].copy(), *(c[:, a, e].copy() for a in (0, 1)
                                                       for e in (0, 1)))
-    if ch.single.size:
-        bound[ch.single] = ch.fixed_bounds(x[ch.single, None, :], c[ch.single, None])[:, 0]
+    if ch.deferred.size:
+        bound[ch.deferred] = ch.deferred_bounds(best[ch.deferred, None], x[:, None, :],
+                                                c[:, None])[:, 0]
     return np.stack([ch.ii[best], ch.jj[best]], axis=1), bound

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .criteria import PairChooser, candidates, check_strategy
+from .criteria import CRITERIA, PairChooser, candidates, check_strategy, pair_draws
 from .model import circle_truth, half_squared_range, range_jacobian, target_objective
 from .results import TrackingResult, derived_arrays
 from .setup import TrackingSetup, check_noise, check_seed, check_setup, noise_table
@@ -78,13 +78,18 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
     setup : TrackingSetup
         E.g. :data:`~obslib.tracking.PAPER_CIRCLE` (Figs. 4-6) or
         :data:`~obslib.tracking.PAPER_ADVERSARIAL` (Fig. 7).
-    strategy : {"best-pair", "best-partner", "fixed-pair"}
-        Strategies (1), (2), (3) of Section V-A.
+    strategy : str
+        ``"best-pair"``, ``"best-partner"``, ``"fixed-pair"``: strategies (1), (2), (3) of
+        Section V-A (:data:`~obslib.tracking.STRATEGIES`); or a criterion beyond the paper,
+        ``"d-optimal"``, ``"a-optimal"``, ``"e-optimal"``, ``"exact-icn"``, ``"random"``
+        (:data:`~obslib.tracking.CRITERIA`, see :mod:`~obslib.tracking.criteria`). The logged
+        ``bound`` is always the paper's pair bound of the chosen pair.
     noise : array_like, shape (steps, N), optional
         Explicit measurement noise, entry ``[k-1, i]`` for sensor ``i`` at step ``k`` (exact
         replay). Default: :func:`~obslib.tracking.noise_table` of ``seed``.
     seed : int
-        Seed of the noise table when ``noise`` is not given.
+        Seed of the noise table when ``noise`` is not given, and of the ``"random"`` chooser's
+        draws (:func:`~obslib.tracking.criteria.pair_draws`, a separate stream) in any case.
 
     Returns
     -------
@@ -94,11 +99,16 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
 
     check_setup(setup)
     check_strategy(strategy)
-    if noise is None:
+    if noise is None or strategy == "random":
         seed = check_seed(seed)
+    if noise is None:
         table, used_seed = noise_table(setup, seed), seed
     else:
         table, used_seed = check_noise(setup, noise), None
+    oracle = strategy == "exact-icn"
+    if oracle and setup.motion == "adversarial" and setup.adversary == "next-pair":
+        raise ValueError("an exact-icn run cannot face a next-pair adversary: each needs the "
+                         "other's next move first")
 
     s = setup.sensor_array
     steps = setup.steps
@@ -121,18 +131,21 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
     est = np.empty((steps, 2))
     cov = np.empty((steps, 2, 2))
 
-    chooser = PairChooser(s, candidates(setup, strategy)[None], [setup.metric == "mahalanobis"],
-                          setup.u_max**2)
+    cand = candidates(setup, strategy)[None]
+    kind = strategy if strategy in CRITERIA else "bound"
+    draws = pair_draws(seed, steps, cand.shape[1])[None] if strategy == "random" else None
+    chooser = PairChooser(s, cand, [setup.metric == "mahalanobis"], setup.u_max**2, [kind],
+                          setup.Q, setup.R, draws)
 
-    def choose():
+    def choose(k, control=np.zeros((1, 2))):
         x, P = ekf.x[:, 0], ekf.P
         best, b = chooser(x[:1].copy(), x[1:].copy(), *(P[a, e, None] for a in (0, 1)
-                                                        for e in (0, 1)))
-        if chooser.single.size:
-            b = chooser.fixed_bounds(x[None, None, :], P[None, None])[:, 0]
+                                                        for e in (0, 1)), control, k)
+        if chooser.deferred.size:
+            b = chooser.deferred_bounds(best[:, None], x[None, None, :], P[None, None])[:, 0]
         return np.array([chooser.ii[best[0]], chooser.jj[best[0]]]), float(b[0])
 
-    pair, b = choose()
+    pair, b = choose(0)
     for k in range(steps):
         # (1) the pair chosen from the current estimate and covariance, and its bound
         pairs[k], bound[k] = pair, b
@@ -145,8 +158,14 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
         z = half_squared_range(o.reshape(2, 1), ps) + table[k, pairs[k]][:, None]
         ekf.predict()
         _update(ekf, z, ps, k)
+        if oracle:  # (4) move the target first: the oracle knows the control u_k
+            if not circle:
+                u = controls[int(np.argmin(target_objective(ps, o, controls)))]
+                truth[k + 1] = o + u
+            pair, b = choose(k + 1, (truth[k + 1] - truth[k])[None])
+            continue
         # The next choice depends only on the posterior, so a "next-pair" adversary can know it.
-        pair, b = choose()
+        pair, b = choose(k + 1)
         # (4) move the target
         if not circle:
             eval_pair = ps if setup.adversary == "current-pair" else s[pair]

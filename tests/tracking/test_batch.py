@@ -85,7 +85,7 @@ def test_simulate_many_bad_arguments_raise():
     with pytest.raises(ValueError, match="no arms"):
         tr.simulate_many({}, seeds=[0])
     with pytest.raises(ValueError, match="unknown strategy"):
-        tr.simulate_many({"a": (CIRCLE, "random")}, seeds=[0])
+        tr.simulate_many({"a": (CIRCLE, "random-pair")}, seeds=[0])  # "random" is a criterion
     with pytest.raises(ValueError, match="TrackingSetup"):
         tr.simulate_many({"a": ("setup", "best-pair")}, seeds=[0])
     with pytest.raises(ValueError, match="either seeds or noise"):
@@ -107,3 +107,44 @@ def test_monte_carlo_arguments_of_the_wrong_kind_raise():
         tr.simulate_batch(CIRCLE, "best-pair", seeds=[0, None])
     with pytest.raises(TypeError, match="seeds must be an iterable"):
         tr.simulate_batch(CIRCLE, "best-pair", seeds=5)
+
+
+@pytest.mark.parametrize("setup", [CIRCLE, ADV], ids=["circle", "adversarial"])
+@pytest.mark.parametrize("name", ["d-optimal", "a-optimal", "e-optimal", "exact-icn", "random"])
+def test_batch_engine_equals_filterpy_engine_for_the_criteria(setup, name):
+    """Same decisions (the PairChooser of both engines sees the two filters' states, equal to
+    rounding ~1e-14), and values to 1e-9: the filters differ only in the order of floating
+    operations, which over 315 steps leaves differences of ~1e-14 (the adversary, which parks
+    the target near a baseline, amplifies them to ~1e-12)."""
+    seeds = [0, 5]
+    b = tr.simulate_batch(setup, name, seeds=seeds)
+    for n, seed in enumerate(seeds):
+        r = tr.simulate(setup, name, seed=seed)
+        np.testing.assert_array_equal(b.pairs[n], r.pairs)
+        np.testing.assert_array_equal(b.next_pair[n], r.next_pair)
+        for f in ("estimate", "cov", "truth", "bound", "true_icn"):
+            np.testing.assert_allclose(getattr(b, f)[n], getattr(r, f), rtol=0, atol=1e-9,
+                                       err_msg=f)
+
+
+def test_criteria_share_a_monte_carlo_with_common_random_numbers():
+    """All names in one call: every arm sees the same noise tables, and the runs equal the arms
+    run alone (one pass or several)."""
+    setup = CIRCLE.replace(steps=40)
+    names = tr.STRATEGIES + tr.CRITERIA
+    mc = tr.monte_carlo(setup, 3, names, first_seed=7)
+    for name in names:
+        np.testing.assert_array_equal(mc[name].noise, mc["best-pair"].noise)
+        alone = tr.simulate_batch(setup, name, seeds=[7, 8, 9])
+        np.testing.assert_array_equal(mc[name].pairs, alone.pairs)
+        np.testing.assert_allclose(mc[name].estimate, alone.estimate, rtol=0, atol=1e-12)
+
+
+def test_criteria_arguments_raise():
+    adv_next = ADV.replace(adversary="next-pair", steps=5)
+    with pytest.raises(ValueError, match="exact-icn run cannot face a next-pair adversary"):
+        tr.simulate(adv_next, "exact-icn")
+    with pytest.raises(ValueError, match="exact-icn run cannot face a next-pair adversary"):
+        tr.simulate_batch(adv_next, "exact-icn", seeds=[0])
+    with pytest.raises(ValueError, match="random strategy draws its pairs from the run's seed"):
+        tr.simulate_batch(CIRCLE, "random", noise=tr.noise_table(CIRCLE, 0)[None])

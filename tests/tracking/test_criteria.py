@@ -112,8 +112,9 @@ def test_batch_pair_chooser_equals_pair_bounds_and_brute_force(seed, random_stat
         assert bound[r] == pytest.approx(W[best[r], r], rel=1e-13, abs=1e-15)
         assert W[best[r], r] >= vals.max() - 1e-13
     # the fixed pairs' bound over whole "runs" (here: runs of one step)
-    fb = ch.fixed_bounds(x[:, None, :], cov[:, None])
     single = np.flatnonzero(~multi)
+    np.testing.assert_array_equal(ch.deferred, single)
+    fb = ch.deferred_bounds(best[single, None], x[:, None, :], cov[:, None])
     np.testing.assert_allclose(fb[:, 0], W[best[single], single], rtol=1e-13, atol=1e-15)
 
 
@@ -146,3 +147,115 @@ def test_mahalanobis_length_is_scale_free():
         cs = c * scale
         got = mahalanobis_sq(vx, vy, cs[:, 0, 0], cs[:, 0, 1], cs[:, 1, 0], cs[:, 1, 1])
         np.testing.assert_allclose(got * scale, one, rtol=1e-12)
+
+
+# --------------------------------------------------------------------------------------------
+# Criteria beyond the paper: each pick against a direct evaluation of its formula
+# --------------------------------------------------------------------------------------------
+
+
+def brute_criterion(name, s, x, P, Q, R, u):
+    """Score of every pair (i < j in (i, j) order), higher is better, with numpy.linalg."""
+    out = []
+    for i, j in itertools.combinations(range(s.shape[0]), 2):
+        H = np.array([x - s[i], x - s[j]])
+        J = np.linalg.inv(P + Q) + H.T @ np.linalg.inv(R) @ H
+        if name == "d-optimal":
+            out.append(np.linalg.det(J))
+        elif name == "a-optimal":
+            out.append(-np.trace(np.linalg.inv(J)))
+        elif name == "e-optimal":
+            out.append(np.linalg.eigvalsh(J)[0])
+        else:  # exact-icn: sigma_min / sigma_max of [x - p_i; x - p_j; u] by SVD
+            sv = np.linalg.svd(np.vstack([H, u]), compute_uv=False)
+            out.append(sv[-1] / sv[0])
+    return np.array(out)
+
+
+def spd(rng, n, scale):
+    A = rng.normal(size=(n, 2, 2))
+    return scale * (A @ np.swapaxes(A, 1, 2) + 0.05 * np.eye(2))
+
+
+@pytest.mark.parametrize("name", ["d-optimal", "a-optimal", "e-optimal", "exact-icn"])
+def test_criterion_pick_is_the_brute_force_optimum(name, random_states):
+    """PairChooser's closed forms (2 x 2 adjugate, trace, lambda_min; C^-1 from the Gram
+    matrix) against numpy.linalg over all pairs at random states, with random Q and R. Where two
+    pairs score within 1e-9 (relative) the pick must be one of them."""
+    rng = np.random.default_rng(11)
+    s = CIRCLE.sensor_array
+    n = 200
+    x, P = random_states(rng, n)
+    Q, R = spd(rng, 1, 0.3)[0], spd(rng, 1, 0.5)[0]
+    R = 0.5 * (R + R.T)
+    u = rng.normal(scale=0.5, size=(n, 2))
+    ch = PairChooser(s, np.ones((n, 15), bool), np.ones(n, bool), 9.0, [name] * n, Q, R)
+    best, bound = ch(x[:, 0].copy(), x[:, 1].copy(), P[:, 0, 0].copy(), P[:, 0, 1].copy(),
+                     P[:, 1, 0].copy(), P[:, 1, 1].copy(), u, 0)
+    assert np.isnan(bound).all()  # the paper's bound of the pick is evaluated afterwards
+    np.testing.assert_array_equal(ch.deferred, np.arange(n))
+    for r in range(n):
+        vals = brute_criterion(name, s, x[r], P[r], Q, R, u[r])
+        top = vals.max()
+        tol = 1e-9 * max(abs(top), 1e-300)
+        if np.sort(vals)[-2] < top - tol:
+            assert best[r] == int(np.argmax(vals)), r
+        else:
+            assert vals[best[r]] >= top - tol
+            assert best[r] == int(np.flatnonzero(vals >= top - tol)[0])  # the smallest (i, j)
+
+
+def test_ties_between_criteria_scores_go_to_the_smallest_pair():
+    # Four sensors symmetric about the estimate, isotropic covariance: every neighbouring pair
+    # has the same information matrix up to rotation, so the same det, trace and lambda_min.
+    sensors = np.array([(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)])
+    for name in ("d-optimal", "a-optimal", "e-optimal", "exact-icn"):
+        ch = PairChooser(sensors, np.ones((1, 6), bool), [True], 1.0, [name], np.eye(2), np.eye(2))
+        one, zero = np.ones(1), np.zeros(1)
+        best, _ = ch(zero.copy(), zero.copy(), one, zero, zero, one, np.zeros((1, 2)), 0)
+        assert (ch.ii[best[0]], ch.jj[best[0]]) == (0, 1), name
+
+
+def test_criteria_disagree_somewhere():
+    """The criteria are different rules: at some random states D- and E-optimality and the
+    bound pick different pairs (each pick checked against its brute-force optimum)."""
+    rng = np.random.default_rng(4)
+    s = CIRCLE.sensor_array
+    Q, R = 0.5 * np.eye(2), 0.5 * np.eye(2)
+    seen = set()
+    for _ in range(200):
+        x = rng.normal([2.0, 2.0], 2.0)
+        P = spd(rng, 1, 0.5)[0]
+        picks = {}
+        for name in ("d-optimal", "e-optimal"):
+            picks[name] = int(np.argmax(brute_criterion(name, s, x, P, Q, R, None)))
+        W = ob.pair_bounds(s, x[None], 3.0, cov=P[None])[np.triu_indices(6, 1)][:, 0]
+        picks["bound"] = int(np.argmax(W))
+        seen.add(len(set(picks.values())))
+        if len(set(picks.values())) == 3:
+            setup = CIRCLE.replace(estimate0=tuple(x), cov0=P, Q=Q, R=R, steps=1)
+            for name in ("d-optimal", "e-optimal"):
+                got = tr.simulate(setup, name).pairs[0]
+                pairs = list(itertools.combinations(range(6), 2))
+                assert tuple(got) == pairs[picks[name]], name
+            assert tuple(tr.simulate(setup, "best-pair").pairs[0]) == pairs[picks["bound"]]
+            break
+    else:
+        raise AssertionError(f"no state with three different picks; seen {seen}")
+
+
+def test_random_pairs_follow_the_seeded_draws():
+    from obslib.tracking.criteria import pair_draws
+
+    setup = CIRCLE.replace(steps=50)
+    r = tr.simulate(setup, "random", seed=3)
+    d = pair_draws(3, 50, 15)
+    ii, jj = np.triu_indices(6, 1)
+    np.testing.assert_array_equal(r.pairs, np.column_stack([ii[d[:50]], jj[d[:50]]]))
+    np.testing.assert_array_equal(r.next_pair, [ii[d[50]], jj[d[50]]])
+    np.testing.assert_array_equal(r.noise, tr.noise_table(setup, 3))  # noise still common
+    counts = np.bincount(pair_draws(0, 14999, 15), minlength=15)
+    assert counts.min() > 850 and counts.max() < 1150  # 1000 each; 5 sd = 150
+    # the logged bound is the paper's bound of the random pair
+    np.testing.assert_allclose(
+        r.bound, tr.pair_bound_series(setup, r.estimate, r.pairs, cov=r.cov), rtol=1e-12)
