@@ -136,3 +136,34 @@ def test_figures_label_their_axes():
     plt.close("all")
     with pytest.raises(ValueError):
         plot_run_errors(study, "euclidean")
+
+
+def test_defaults_equal_the_notebook_parameters_cell():
+    import ast
+    import json
+
+    from obslib.run import NOTEBOOK_DIR
+
+    nb = json.loads((NOTEBOOK_DIR / f"{cs.NOTEBOOK}.ipynb").read_text())
+    first = next(c for c in nb["cells"] if c["cell_type"] == "code")
+    assert "parameters" in first["metadata"]["tags"]
+    values = {n.targets[0].id: ast.literal_eval(n.value) for n in ast.parse("".join(first["source"])).body}
+    assert values == cs.DEFAULTS
+    assert set(cs.QUICK) <= set(cs.DEFAULTS)
+
+
+@pytest.mark.parametrize("base", [tr.PAPER_CIRCLE, tr.PAPER_ADVERSARIAL], ids=["circle", "adversary"])
+def test_criteria_runs_reused_across_metrics_equal_direct_runs(base):
+    """The criteria's runs do not depend on the bound's metric; re-logging the bound of one
+    metric's runs under the other equals running them with the other metric."""
+    names = [c for c in cs.CRITERIA if c in cs.available_strategies()]
+    if not names:
+        pytest.skip("the tracking engine offers no criteria")
+    maha, eucl = (base.replace(steps=25, metric=m) for m in ("mahalanobis", "euclidean"))
+    a = tr.monte_carlo(maha, 3, names)
+    b = tr.monte_carlo(eucl, 3, names)
+    for n in names:
+        r = cs.relog_bound(a[n], eucl)
+        assert np.array_equal(r.pairs, b[n].pairs)
+        np.testing.assert_allclose(r.error, b[n].error, rtol=1e-12)
+        np.testing.assert_allclose(r.bound, b[n].bound, rtol=1e-10, atol=1e-14)
