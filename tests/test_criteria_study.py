@@ -167,3 +167,14 @@ def test_criteria_runs_reused_across_metrics_equal_direct_runs(base):
         assert np.array_equal(r.pairs, b[n].pairs)
         np.testing.assert_allclose(r.error, b[n].error, rtol=1e-12)
         np.testing.assert_allclose(r.bound, b[n].bound, rtol=1e-10, atol=1e-14)
+
+
+def test_adversary_rows_equal_entrapment_summary():
+    setup = tr.PAPER_ADVERSARIAL.replace(steps=40)
+    names = ["best-pair", "fixed-pair"] + [c for c in ("d-optimal",) if c in cs.available_strategies()]
+    mc = tr.monte_carlo(setup, 4, names)
+    for row in cs.adversary_rows(mc):
+        want = tr.entrapment_summary(mc[row["strategy"]])
+        for key in ("entrapped", "max_from_start", "reach", "icn_mean", "icn_min", "bound_mean",
+                    "switches", "mean_error"):
+            assert row[key] == pytest.approx(want[key], rel=1e-12, abs=1e-15), key
