@@ -66,8 +66,10 @@ def _criteria(profile: str) -> Finding:
         ref = by[cs.REFERENCE]["mean_error"]
         best = min(CLASSICAL, key=lambda c: by[c]["mean_error"])
         parts.append(
-            f"{k}: bound {ref:.3f}, best classical {best} {by[best]['mean_error']:.3f} "
-            f"(better than the bound: {', '.join(beats[k]) or 'none'}; worse: {', '.join(loses[k]) or 'none'})"
+            f"{k}: bound {ref:.3f}, best classical {best} {by[best]['mean_error']:.3f}, better in "
+            f"{by[best]['vs_other_better']} of {by[best]['vs_n']} runs (significantly better than "
+            f"the bound: {', '.join(beats[k]) or 'none'}; worse: {', '.join(loses[k]) or 'none'}"
+            + (f"; exact-C^-1 oracle {by['exact-icn']['mean_error']:.3f}" if "exact-icn" in by else "") + ")"
         )
     ours = (
         f"Mean tracking error over {p['n_seeds']} seeds with common noise, paired Wilcoxon test at "
