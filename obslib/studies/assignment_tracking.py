@@ -1,0 +1,468 @@
+"""Assignments judged by tracking: Fig. 8's setting with moving targets and one EKF per target.
+
+Section V-C of the paper compares pair assignments only by the value of their own objective
+(the sum of Theorem 4's pair bounds). This module asks how well the targets are then *tracked*.
+``L`` targets move in the square ``[0, side]^2`` among ``N`` stationary range sensors (Fig. 8:
+``N = 2 L``); at every step each target gets its own pair of sensors, no sensor serving two
+targets, and its own extended Kalman filter fuses the pair's two measurements. Three rules make
+the assignment, re-made at every step from the current estimates:
+
+``"bound"``
+    Algorithm 1 (greedy unique pairs) on Theorem 4's pair bound at each estimate, with
+    Mahalanobis distances in the estimate's covariance ``Sigma_l`` (as the tracking experiments
+    of Section V evaluate it) or Euclidean ones;
+``"d-optimal"``
+    the same greedy on the information gain of the pair,
+    :math:`\\log\\det J_l(i, j) - \\log\\det (\\Sigma_l^-)^{-1}` with
+    :math:`J_l(i, j) = (\\Sigma_l^-)^{-1} + H^T R^{-1} H`, :math:`\\Sigma_l^- = \\Sigma_l + Q` and
+    ``H`` the rows :math:`(\\hat x_l - p_i)^T, (\\hat x_l - p_j)^T` (D-optimal design);
+``"random"``
+    a uniformly random valid assignment (a random permutation of the sensors, paired in order).
+
+The model
+---------
+Target ``l`` moves by a control drawn uniformly from the disc of radius ``u_max`` (the paper's
+bounded unknown control): :math:`o_{k+1} = o_k + u_k`. Each filter predicts with the random walk
+:math:`\\hat x^- = \\hat x`, :math:`\\Sigma^- = \\Sigma + Q`, :math:`Q = (u_{max}^2 / 4) I`
+(the covariance of the uniform disc), and updates with the half squared ranges
+:math:`z_i = \\tfrac12 \\|p_i - o\\|^2 + n_i` (Section II; :func:`obslib.tracking.half_squared_range`)
+of its two sensors, :math:`n_i \\sim N(0, \\sigma^2)`, ``R = sigma^2 I``, in Joseph form as
+filterpy's ``ExtendedKalmanFilter.update`` (the tests compare the two).
+
+Order within step ``k``, as in :mod:`obslib.tracking`: (1) assign from the current estimates and
+covariances; (2) log each target's error :math:`\\|\\hat x - o\\|` and :math:`\\operatorname{tr}
+\\Sigma` before the update; (3) predict, measure, update; (4) move the targets.
+
+Common random numbers: seed ``s`` fixes the sensors, the targets' starts and controls, the
+initial estimates and the measurement noise (``numpy.random.default_rng([s, 0])``; entry
+``[k, i]`` of the noise table is sensor ``i``'s at step ``k``, whichever target it serves) and
+the random assignments (``default_rng([s, 1])``), identically for every rule. All runs and
+targets advance together as NumPy array operations.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from ..bounds import _pair_kernel
+
+__all__ = [
+    "RULES",
+    "AssignmentTrackingSetup",
+    "Scenario",
+    "AssignmentRuns",
+    "scenario",
+    "bound_weights",
+    "info_gain_weights",
+    "batch_greedy",
+    "random_assignments",
+    "ekf_step",
+    "run",
+    "run_all",
+]
+
+#: The assignment rules, in the order the studies report them.
+RULES = ("bound", "d-optimal", "random")
+METRICS = ("mahalanobis", "euclidean")
+
+
+def _positive(v, name, *, allow_zero=False):
+    try:
+        x = float(v)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a number, got {v!r}") from None
+    if not np.isfinite(x) or x < 0 or (x == 0 and not allow_zero):
+        raise ValueError(f"{name} must be {'non-negative' if allow_zero else 'positive'} and finite, got {v!r}")
+    return x
+
+
+def _count(v, name, minimum):
+    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
+        raise ValueError(f"{name} must be an integer, got {v!r}")
+    if v < minimum:
+        raise ValueError(f"{name} must be at least {minimum}, got {v}")
+    return int(v)
+
+
+@dataclass(frozen=True)
+class AssignmentTrackingSetup:
+    """Parameters of the assignment-by-tracking experiment (validated, frozen).
+
+    Attributes
+    ----------
+    n_targets : int
+        ``L``, the number of moving targets (at least 1).
+    n_sensors : int or None
+        ``N >= 2 L``; ``None`` means ``2 L`` as in Fig. 8.
+    steps : int
+        Time steps per run.
+    side : float
+        Sensors and starting targets are uniform in ``[0, side]^2`` (Fig. 8: 100).
+    u_max : float
+        Radius of the targets' control disc and the bound's control bound (Fig. 8: 1).
+    noise_std : float
+        Standard deviation of each half-squared-range measurement; the filters use
+        ``R = noise_std^2 I``.
+    p0 : float
+        Initial covariance ``p0 I``; the initial estimate is the start plus ``N(0, p0 I)``.
+    metric : {"mahalanobis", "euclidean"}
+        Distances in the bound (Mahalanobis in the estimate's covariance, or Euclidean).
+    """
+
+    n_targets: int = 5
+    n_sensors: int | None = None
+    steps: int = 100
+    side: float = 100.0
+    u_max: float = 1.0
+    noise_std: float = 0.5
+    p0: float = 1.0
+    metric: str = "mahalanobis"
+
+    def __post_init__(self):
+        put = lambda k, v: object.__setattr__(self, k, v)  # noqa: E731
+        L = _count(self.n_targets, "n_targets", 1)
+        put("n_targets", L)
+        n = 2 * L if self.n_sensors is None else _count(self.n_sensors, "n_sensors", 2)
+        if n < 2 * L:
+            raise ValueError(f"n_sensors must be at least 2 n_targets = {2 * L}, got {n}")
+        put("n_sensors", n)
+        put("steps", _count(self.steps, "steps", 1))
+        put("side", _positive(self.side, "side"))
+        put("u_max", _positive(self.u_max, "u_max"))
+        put("noise_std", _positive(self.noise_std, "noise_std"))
+        put("p0", _positive(self.p0, "p0"))
+        if self.metric not in METRICS:
+            raise ValueError(f"metric must be one of {METRICS}, got {self.metric!r}")
+
+    @property
+    def Q(self) -> float:
+        """Process-noise variance per axis, ``u_max^2 / 4`` (the uniform disc's covariance)."""
+        return self.u_max**2 / 4.0
+
+    @property
+    def R(self) -> float:
+        """Measurement-noise variance, ``noise_std^2``."""
+        return self.noise_std**2
+
+    def replace(self, **changes) -> "AssignmentTrackingSetup":
+        """A validated copy with some fields changed."""
+        return replace(self, **changes)
+
+
+@dataclass(frozen=True, eq=False)
+class Scenario:
+    """The random draws of a batch of runs (common to every rule), leading axis = run.
+
+    ``sensors`` (B, N, 2); ``start`` (B, L, 2); ``estimate0`` (B, L, 2); ``controls``
+    (B, steps, L, 2); ``noise`` (B, steps, N); ``perm`` (B, steps, N), the random rule's sensor
+    permutations; ``seeds`` the seeds.
+    """
+
+    setup: AssignmentTrackingSetup
+    seeds: tuple
+    sensors: np.ndarray
+    start: np.ndarray
+    estimate0: np.ndarray
+    controls: np.ndarray
+    noise: np.ndarray
+    perm: np.ndarray
+
+    @property
+    def truth(self) -> np.ndarray:
+        """True positions ``o_k``, ``k = 1..steps + 1``, shape (B, steps + 1, L, 2)."""
+        return np.concatenate([self.start[:, None], self.start[:, None] + np.cumsum(self.controls, axis=1)], axis=1)
+
+
+def _seeds(seeds) -> tuple:
+    out = tuple(int(s) for s in np.atleast_1d(np.asarray(seeds)))
+    if not out:
+        raise ValueError("seeds must name at least one seed")
+    if any(s < 0 for s in out):
+        raise ValueError(f"seeds must be non-negative, got {out}")
+    return out
+
+
+def scenario(setup: AssignmentTrackingSetup, seeds) -> Scenario:
+    """Draw the runs ``seeds`` of ``setup`` (see the module's note on common random numbers)."""
+    if not isinstance(setup, AssignmentTrackingSetup):
+        raise ValueError(f"setup must be an AssignmentTrackingSetup, got {type(setup).__name__}")
+    seeds = _seeds(seeds)
+    L, n, T = setup.n_targets, setup.n_sensors, setup.steps
+    parts = {k: [] for k in ("sensors", "start", "estimate0", "controls", "noise", "perm")}
+    for s in seeds:
+        rng = np.random.default_rng([s, 0])
+        parts["sensors"].append(rng.uniform(0, setup.side, size=(n, 2)))
+        start = rng.uniform(0, setup.side, size=(L, 2))
+        parts["start"].append(start)
+        parts["estimate0"].append(start + rng.normal(0, np.sqrt(setup.p0), size=(L, 2)))
+        rad = setup.u_max * np.sqrt(rng.uniform(size=(T, L)))
+        ang = rng.uniform(0, 2 * np.pi, size=(T, L))
+        parts["controls"].append(np.stack([rad * np.cos(ang), rad * np.sin(ang)], axis=-1))
+        parts["noise"].append(rng.normal(0, setup.noise_std, size=(T, n)))
+        rng_a = np.random.default_rng([s, 1])
+        parts["perm"].append(rng_a.permuted(np.tile(np.arange(n), (T, 1)), axis=1))
+    return Scenario(setup, seeds, **{k: np.stack(v) for k, v in parts.items()})
+
+
+# --------------------------------------------------------------------------------------------
+# Pair weights, batched over runs (validation-free workers; the public entry is run())
+# --------------------------------------------------------------------------------------------
+
+
+def bound_weights(sensors, xhat, cov, u_max, metric="mahalanobis") -> np.ndarray:
+    """Theorem 4's pair bound for a batch: ``W[b, i, j, l]``, shape (B, N, N, L).
+
+    Equals :func:`obslib.pair_bounds` ``(sensors[b], xhat[b], u_max, cov=cov[b])`` (Mahalanobis)
+    or without ``cov`` (Euclidean), up to rounding: the same rescaling and the same kernel.
+    ``sensors`` (B, N, 2), ``xhat`` (B, L, 2), ``cov`` (B, L, 2, 2).
+    """
+    v = xhat[:, None, :, :] - sensors[:, :, None, :]  # (B, N, L, 2)
+    d2 = np.einsum("bnlk,bnlk->bnl", v, v)
+    if metric == "mahalanobis":
+        prec = np.linalg.inv(cov)  # (B, L, 2, 2)
+        m2 = np.einsum("bnlk,blkm,bnlm->bnl", v, prec, v)
+        v = v * np.sqrt(m2 / d2)[..., None]
+        d2 = m2
+    scale = np.sqrt(d2.max(axis=1))  # (B, L)
+    v = v / scale[:, None, :, None]
+    u2 = u_max**2 / scale**2  # (B, L)
+    x, y = v[..., 0], v[..., 1]  # (B, N, L)
+    return _pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
+
+
+def info_gain_weights(sensors, xhat, cov_pred, r) -> np.ndarray:
+    """Information gain of every pair, ``log det J(i, j) - log det (Sigma^-)^{-1}``, (B, N, N, L).
+
+    With ``H`` the rows ``h_i = (xhat - p_i)^T``, ``h_j`` and ``R = r I``, the gain is
+    :math:`\\log\\det(I_2 + H \\Sigma^- H^T / r) = \\log((1 + a_i/r)(1 + a_j/r) - c_{ij}^2/r^2)`
+    with :math:`a_i = h_i^T \\Sigma^- h_i`, :math:`c_{ij} = h_i^T \\Sigma^- h_j` (Sylvester's
+    determinant identity). Symmetric in ``i, j``; the diagonal is the gain of measuring one sensor
+    twice and is never used.
+    """
+    h = xhat[:, None, :, :] - sensors[:, :, None, :]  # (B, N, L, 2)
+    hx, hy = h[..., 0] / np.sqrt(r), h[..., 1] / np.sqrt(r)  # (B, N, L)
+    p00, p01, p11 = (cov_pred[:, None, None, :, a, b] for a, b in ((0, 0), (0, 1), (1, 1)))
+    xi, yi, xj, yj = hx[:, :, None], hy[:, :, None], hx[:, None], hy[:, None]
+    # c_ij = h_i^T Sigma^- h_j / r, written symmetrically so that c_ij == c_ji exactly
+    c = p00 * (xi * xj) + p01 * (xi * yj + yi * xj) + p11 * (yi * yj)  # (B, N, N, L)
+    a = np.einsum("biil->bil", c)
+    det = (1 + a[:, :, None, :]) * (1 + a[:, None, :, :]) - c * c
+    return np.log(det)
+
+
+def batch_greedy(W) -> np.ndarray:
+    """Algorithm 1 on a batch of weights ``W`` (B, N, N, L): each target's pair, (B, L, 2).
+
+    Every round takes, in each instance at once, the heaviest triple ``(i, j, l)`` with ``i < j``
+    whose sensors and target are unused, ties to the smallest ``(i, j, l)`` (the first maximum in
+    C order), as :func:`obslib.greedy_pair_assignment` does (the tests compare the picks).
+    """
+    W = np.asarray(W, dtype=float)
+    B, n, _, L = W.shape
+    upper = np.triu(np.ones((n, n), dtype=bool), 1)[None, :, :, None]
+    w = np.where(upper, W, -np.inf)
+    rows = np.arange(B)
+    out = np.empty((B, L, 2), dtype=np.int64)
+    for _ in range(L):
+        flat = np.argmax(w.reshape(B, -1), axis=1)
+        i, j, l = np.unravel_index(flat, (n, n, L))
+        out[rows, l, 0], out[rows, l, 1] = i, j
+        for s in (i, j):
+            w[rows, s, :, :] = -np.inf
+            w[rows, :, s, :] = -np.inf
+        w[rows, :, :, l] = -np.inf
+    return out
+
+
+def random_assignments(perm, n_targets) -> np.ndarray:
+    """Pairs from sensor permutations ``perm`` (B, N): target ``l`` gets ``perm[2l], perm[2l+1]``
+    (sorted), shape (B, L, 2)."""
+    p = np.asarray(perm)[:, : 2 * n_targets].reshape(-1, n_targets, 2)
+    return np.sort(p, axis=-1)
+
+
+def ekf_step(x, P, pair_sensors, z, q, r):
+    """One predict-update step of many independent EKFs at once (Joseph form).
+
+    Predict :math:`\\hat x^- = \\hat x`, :math:`\\Sigma^- = \\Sigma + qI`; update with the half
+    squared ranges of the two sensors: :math:`H = [(\\hat x^- - p_i)^T; (\\hat x^- - p_j)^T]`,
+    :math:`S = H\\Sigma^- H^T + rI`, :math:`K = \\Sigma^- H^T S^{-1}`,
+    :math:`\\hat x = \\hat x^- + K(z - h(\\hat x^-))`,
+    :math:`\\Sigma = (I - KH)\\Sigma^-(I - KH)^T + rKK^T`, as filterpy's
+    ``ExtendedKalmanFilter.predict``/``update``.
+
+    Parameters
+    ----------
+    x : (..., 2)
+    P : (..., 2, 2)
+    pair_sensors : (..., 2, 2), rows the two sensors' positions
+    z : (..., 2), the two measurements
+    q, r : float, process and measurement noise variances
+
+    Returns
+    -------
+    x, P : the updated estimates and covariances (new arrays).
+    """
+    eye = np.eye(2)
+    Pm = P + q * eye
+    H = x[..., None, :] - pair_sensors  # (..., 2, 2): rows (x - p_i)^T
+    d = pair_sensors - x[..., None, :]
+    hx = 0.5 * (d[..., 0] ** 2 + d[..., 1] ** 2)
+    PHt = Pm @ np.swapaxes(H, -1, -2)
+    S = H @ PHt + r * eye
+    K = PHt @ np.linalg.inv(S)
+    xn = x + np.einsum("...ij,...j->...i", K, z - hx)
+    IKH = eye - K @ H
+    Pn = IKH @ Pm @ np.swapaxes(IKH, -1, -2) + r * (K @ np.swapaxes(K, -1, -2))
+    return xn, Pn
+
+
+# --------------------------------------------------------------------------------------------
+# Runs
+# --------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, eq=False)
+class AssignmentRuns:
+    """The runs of one rule: per-step arrays, step ``k`` at index ``k - 1``, leading axis = run.
+
+    ``pairs`` (B, steps, L, 2) each target's pair; ``error`` (B, steps, L) ``||xhat - o_k||``
+    before the step's update (the convention of :mod:`obslib.tracking`; it includes the target's
+    last move); ``post_error`` (B, steps, L) ``||xhat - o_k||`` after it, the error the
+    assignment of step ``k`` controls; ``trace`` (B, steps, L) ``tr Sigma`` before the update;
+    ``bound`` (B, steps, L) the chosen pair's bound as the ``"bound"`` rule scores it; ``gain``
+    (B, steps, L) its information gain as the ``"d-optimal"`` rule scores it.
+    """
+
+    setup: AssignmentTrackingSetup
+    rule: str
+    seeds: tuple
+    pairs: np.ndarray
+    error: np.ndarray
+    post_error: np.ndarray
+    estimate: np.ndarray
+    truth: np.ndarray
+    trace: np.ndarray
+    bound: np.ndarray
+    gain: np.ndarray
+    extras: dict = field(default_factory=dict)
+
+    def total_error(self, which: str = "post") -> np.ndarray:
+        """Error summed over targets, (B, steps): after the update (``"post"``) or before it
+        (``"prior"``)."""
+        if which not in ("post", "prior"):
+            raise ValueError(f"which must be 'post' or 'prior', got {which!r}")
+        return (self.post_error if which == "post" else self.error).sum(axis=-1)
+
+    def lost(self, threshold: float, skip_first: bool = True) -> np.ndarray:
+        """(B, L) bool: targets whose mean error after the update exceeds ``threshold``."""
+        e = self.post_error[:, 1:] if skip_first and self.post_error.shape[1] > 1 else self.post_error
+        return e.mean(axis=1) > threshold
+
+    def mirrored(self) -> np.ndarray:
+        """(B, L) bool: the last estimate is closer to the target's mirror image across the
+        baseline of its last pair than to the target (the two-range ambiguity)."""
+        S = self.extras["sensors"]
+        b = np.arange(S.shape[0])[:, None]
+        a, c = S[b, self.pairs[:, -1, :, 0]], S[b, self.pairs[:, -1, :, 1]]  # (B, L, 2)
+        o, x = self.truth[:, -1], self.estimate[:, -1]
+        d = (c - a) / np.hypot(*(c - a).transpose(2, 0, 1))[..., None]
+        v = o - a
+        m = a + 2 * (v * d).sum(-1)[..., None] * d - v  # o reflected across the baseline
+        return np.hypot(*(x - m).transpose(2, 0, 1)) < np.hypot(*(x - o).transpose(2, 0, 1))
+
+    def run_mean_error(self, which: str = "post", skip_first: bool = True) -> np.ndarray:
+        """Per-run mean over steps of the error summed over targets, (B,).
+
+        ``skip_first`` leaves out step 1, whose prior error is the same for every rule.
+        """
+        e = self.total_error(which)
+        return (e[:, 1:] if skip_first and e.shape[1] > 1 else e).mean(axis=1)
+
+
+def _chosen_values(S, x, P, pr, u_max, metric, q, r):
+    """The bound and the information gain of the chosen pairs ``pr`` (B, L, 2), each (B, L):
+    the entries of :func:`bound_weights` and :func:`info_gain_weights` at the chosen pairs, up
+    to rounding, without scoring the other pairs."""
+    bb = np.arange(S.shape[0])[:, None]
+    ps = S[bb[..., None], pr]  # (B, L, 2, 2)
+    h = x[..., None, :] - ps  # rows x - p_i, x - p_j
+    v = h
+    if metric == "mahalanobis":
+        prec = np.linalg.inv(P)
+        m2 = np.einsum("blpk,blkm,blpm->blp", h, prec, h)
+        v = h * np.sqrt(m2 / np.einsum("blpk,blpk->blp", h, h))[..., None]
+    scale = np.sqrt(np.einsum("blpk,blpk->blp", v, v).max(axis=-1))
+    v = v / scale[..., None, None]
+    bound = _pair_kernel(v[..., 0, 0], v[..., 0, 1], v[..., 1, 0], v[..., 1, 1], u_max**2 / scale**2)
+    G = h @ (P + q * np.eye(2)) @ np.swapaxes(h, -1, -2) / r  # H Sigma^- H^T / r
+    gain = np.log((1 + G[..., 0, 0]) * (1 + G[..., 1, 1]) - G[..., 0, 1] * G[..., 1, 0])
+    return bound, gain
+
+
+def _run(sc: Scenario, rules) -> dict:
+    """All ``rules`` on the scenario ``sc`` in one batch (rule-major rows), step by step."""
+    st = sc.setup
+    nb, L, T = len(sc.seeds), st.n_targets, st.steps
+    nr = len(rules)
+    B = nr * nb
+    q, r = st.Q, st.R
+    S = np.tile(sc.sensors, (nr, 1, 1))
+    truth = np.tile(sc.truth, (nr, 1, 1, 1))
+    noise = np.tile(sc.noise, (nr, 1, 1))
+    rows = {rule: slice(a * nb, (a + 1) * nb) for a, rule in enumerate(rules)}
+    x = np.tile(sc.estimate0, (nr, 1, 1))
+    P = np.broadcast_to(st.p0 * np.eye(2), (B, L, 2, 2)).copy()
+    pairs = np.empty((B, T, L, 2), dtype=np.int64)
+    err, post, tr, bnd, gain = (np.empty((B, T, L)) for _ in range(5))
+    est = np.empty((B, T, L, 2))
+    bb = np.arange(B)[:, None]
+    pr = np.empty((B, L, 2), dtype=np.int64)
+    for k in range(T):
+        for rule, sl in rows.items():
+            if rule == "bound":
+                pr[sl] = batch_greedy(bound_weights(S[sl], x[sl], P[sl], st.u_max, st.metric))
+            elif rule == "d-optimal":
+                pr[sl] = batch_greedy(info_gain_weights(S[sl], x[sl], P[sl] + q * np.eye(2), r))
+            else:
+                pr[sl] = random_assignments(sc.perm[:, k], L)
+        pairs[:, k] = pr
+        bnd[:, k], gain[:, k] = _chosen_values(S, x, P, pr, st.u_max, st.metric, q, r)
+        o = truth[:, k]
+        dx = x - o
+        err[:, k] = np.hypot(dx[..., 0], dx[..., 1])
+        tr[:, k] = P[..., 0, 0] + P[..., 1, 1]
+        ps = S[bb[..., None], pr]  # (B, L, 2, 2)
+        d = ps - o[..., None, :]
+        z = 0.5 * (d[..., 0] ** 2 + d[..., 1] ** 2) + noise[:, k][bb[..., None], pr]
+        x, P = ekf_step(x, P, ps, z, q, r)
+        dx = x - o
+        post[:, k] = np.hypot(dx[..., 0], dx[..., 1])
+        est[:, k] = x
+    return {
+        rule: AssignmentRuns(st, rule, sc.seeds, pairs[sl], err[sl], post[sl], est[sl],
+                             sc.truth[:, :T], tr[sl], bnd[sl], gain[sl], {"sensors": sc.sensors})
+        for rule, sl in rows.items()
+    }
+
+
+def run(setup: AssignmentTrackingSetup, rule: str, seeds) -> AssignmentRuns:
+    """Runs ``seeds`` of ``setup`` with the assignment ``rule`` (one of :data:`RULES`).
+
+    Run ``b`` depends only on ``(setup, rule, seeds[b])``: the same seed gives the same run in
+    any batch, and every rule sees the same draws (common random numbers).
+    """
+    if rule not in RULES:
+        raise ValueError(f"unknown rule {rule!r}; known: {RULES}")
+    return _run(scenario(setup, seeds), [rule])[rule]
+
+
+def run_all(setup: AssignmentTrackingSetup, seeds, rules=RULES) -> dict:
+    """:func:`run` for several rules on one shared draw: ``{rule: AssignmentRuns}``."""
+    rules = list(rules)
+    bad = [r for r in rules if r not in RULES]
+    if bad:
+        raise ValueError(f"unknown rule(s) {bad}; known: {RULES}")
+    return _run(scenario(setup, seeds), rules)

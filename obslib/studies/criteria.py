@@ -1,0 +1,440 @@
+"""Is the bound the right criterion? The pair bound against the field's standard criteria.
+
+Computed once here and shared by notebook 10 and the claims ledger:
+
+* the tracking experiments of Section V (the circle of V-A and the adversary of V-B) run with the
+  paper's strategies and the classical criteria of optimal experimental design, over many seeds
+  with common noise (:func:`tracking_study`), summarised per strategy (:func:`summary_rows`) and
+  compared run by run with the bound's choice (:func:`paired_test`);
+* the cost of scoring one pair by each criterion (:func:`criterion_scores`, timed in the
+  notebook);
+* the assignment-by-tracking experiment of :mod:`obslib.studies.assignment_tracking`
+  (:func:`assignment_study`).
+
+The criteria score a pair ``(i, j)`` at the estimate :math:`\\hat x` with covariance
+:math:`\\Sigma` through the information the filter's next update would have,
+
+.. math::
+
+    J(i, j) = (\\Sigma^-)^{-1} + H^T R^{-1} H, \\qquad \\Sigma^- = \\Sigma + Q, \\qquad
+    H = \\begin{bmatrix} (\\hat x - p_i)^T \\\\ (\\hat x - p_j)^T \\end{bmatrix},
+
+D-optimality maximising :math:`\\det J`, A-optimality minimising :math:`\\operatorname{tr}
+J^{-1}`, E-optimality maximising :math:`\\lambda_{\\min}(J)`; the ``exact-icn`` oracle maximises
+the exact :math:`C^{-1}` of :math:`[\\hat x - p_i; \\hat x - p_j; u]` for the target's actual
+control ``u``; the paper's ``best-pair`` maximises Theorem 4's bound (Eq. (9)).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+from scipy import stats
+
+from .. import tracking as tr
+from ..bounds import _pair_kernel
+from ..observability import _inverse_condition
+from . import assignment_tracking as at
+
+__all__ = [
+    "NOTEBOOK",
+    "CRITERIA",
+    "PAPER_STRATEGIES",
+    "REFERENCE",
+    "SCORES",
+    "DEFAULTS",
+    "QUICK",
+    "params",
+    "available_strategies",
+    "missing_strategies",
+    "criterion_scores",
+    "paired_test",
+    "summary_rows",
+    "tracking_study",
+    "relog_bound",
+    "adversary_rows",
+    "assignment_study",
+    "assignment_rows",
+    "significance",
+    "markdown_table",
+]
+
+NOTEBOOK = "10_criteria"
+
+#: The classical criteria and the floor, as named in :mod:`obslib.tracking`.
+CRITERIA = ("d-optimal", "a-optimal", "e-optimal", "exact-icn", "random")
+#: The paper's strategies (Section V-A).
+PAPER_STRATEGIES = ("best-pair", "best-partner", "fixed-pair")
+#: The bound's choice, the reference of every paired test.
+REFERENCE = "best-pair"
+#: The scores :func:`criterion_scores` computes (``"bound"`` is ``best-pair``'s).
+SCORES = ("bound", "d-optimal", "a-optimal", "e-optimal", "exact-icn")
+
+#: Notebook 10's parameters (its tagged ``parameters`` cell) and the quick profile's changes.
+DEFAULTS = {
+    "seed": 0,
+    "n_seeds": 200,
+    "metrics": ["mahalanobis", "euclidean"],
+    "loss_threshold": 0.5,
+    "n_timing": 1000,
+    "assign_targets": [2, 5],
+    "assign_seeds": 200,
+    "assign_steps": 50,
+    "assign_side": 100.0,
+    "assign_u_max": 1.0,
+    "assign_noise_std": 0.5,
+    "assign_p0": 1.0,
+    "assign_loss": 0.5,
+}
+QUICK = {"n_seeds": 20, "n_timing": 100, "assign_targets": [2, 3], "assign_seeds": 20, "assign_steps": 20}
+
+
+def params(profile: str = "paper") -> dict:
+    """Notebook 10's parameters under ``profile`` (from :mod:`obslib.profiles` when it lists the
+    notebook, else :data:`DEFAULTS` updated by :data:`QUICK` for ``"quick"``)."""
+    from ..profiles import PROFILES, params as profile_params, profile_names
+
+    if profile not in profile_names():
+        raise ValueError(f"unknown profile {profile!r}; known: {profile_names()}")
+    if NOTEBOOK in PROFILES["paper"]:
+        return profile_params(NOTEBOOK, profile)
+    out = dict(DEFAULTS)
+    if profile == "quick":
+        out.update(QUICK)
+    return out
+
+
+def _known() -> tuple:
+    """Every strategy name the tracking engine accepts (its strategies and criteria)."""
+    return tuple(tr.STRATEGIES) + tuple(getattr(tr, "CRITERIA", ()))
+
+
+def available_strategies(names=PAPER_STRATEGIES + CRITERIA) -> list:
+    """The ``names`` the tracking engine knows (:data:`obslib.tracking.STRATEGIES` and
+    :data:`obslib.tracking.CRITERIA`), in order."""
+    return [n for n in names if n in _known()]
+
+
+def missing_strategies(names=PAPER_STRATEGIES + CRITERIA) -> list:
+    """The ``names`` the tracking engine does not know."""
+    return [n for n in names if n not in _known()]
+
+
+# --------------------------------------------------------------------------------------------
+# Scores of every pair, batched over estimates
+# --------------------------------------------------------------------------------------------
+
+
+def criterion_scores(name: str, sensors, xhat, cov, Q, R, u_max, control=None,
+                     metric: str = "mahalanobis") -> np.ndarray:
+    """Each criterion's score of every pair at a batch of estimates, shape (B, P).
+
+    Pairs ``i < j`` in ``(i, j)`` order (``numpy.triu_indices``); larger is better for every
+    score (A-optimality returns :math:`-\\operatorname{tr} J^{-1}`).
+
+    Parameters
+    ----------
+    name : one of :data:`SCORES`
+    sensors : (N, 2)
+    xhat : (B, 2) estimates
+    cov : (B, 2, 2) their covariances :math:`\\Sigma`
+    Q, R : (2, 2) process and measurement noise covariances of the filter
+    u_max : float, the bound's control bound
+    control : (B, 2), the target's actual control (``exact-icn`` only)
+    metric : the bound's distances, ``"mahalanobis"`` in ``cov`` or ``"euclidean"``
+    """
+    if name not in SCORES:
+        raise ValueError(f"unknown criterion {name!r}; known: {SCORES}")
+    S = np.asarray(sensors, dtype=float)
+    x = np.atleast_2d(np.asarray(xhat, dtype=float))
+    C = np.asarray(cov, dtype=float).reshape(-1, 2, 2)
+    if S.ndim != 2 or S.shape[1] != 2 or S.shape[0] < 2:
+        raise ValueError(f"sensors must have shape (N, 2) with N >= 2, got {S.shape}")
+    if x.shape[1] != 2 or C.shape[0] != x.shape[0]:
+        raise ValueError(f"xhat (B, 2) and cov (B, 2, 2) must match, got {x.shape} and {C.shape}")
+    if name == "exact-icn":
+        if control is None:
+            raise ValueError("exact-icn needs the target's control")
+        u = np.broadcast_to(np.asarray(control, dtype=float), x.shape)
+    if metric not in ("mahalanobis", "euclidean"):
+        raise ValueError(f"metric must be 'mahalanobis' or 'euclidean', got {metric!r}")
+    return _scores(name, S, x, C, np.asarray(Q, float), np.asarray(R, float), float(u_max),
+                   u if name == "exact-icn" else None, metric)
+
+
+def _scores(name, S, x, C, Q, R, u_max, u, metric):
+    ii, jj = np.triu_indices(S.shape[0], 1)
+    v = x[:, None, :] - S[None, :, :]  # (B, N, 2) rows xhat - p_i
+    if name == "bound":  # Theorem 4 on the pairs only, Mahalanobis lengths in closed form
+        d2 = v[..., 0] ** 2 + v[..., 1] ** 2  # (B, N)
+        if metric == "mahalanobis":
+            cdet = C[:, 0, 0] * C[:, 1, 1] - C[:, 0, 1] * C[:, 1, 0]
+            m2 = (C[:, None, 1, 1] * v[..., 0] ** 2 - 2 * C[:, None, 0, 1] * v[..., 0] * v[..., 1]
+                  + C[:, None, 0, 0] * v[..., 1] ** 2) / cdet[:, None]
+            v = v * np.sqrt(m2 / d2)[..., None]
+            d2 = m2
+        scale = np.sqrt(d2.max(axis=1))  # (B,), as pair_bounds normalises
+        v = v / scale[:, None, None]
+        u2 = (u_max**2 / scale**2)[:, None]
+        return _pair_kernel(v[:, ii, 0], v[:, ii, 1], v[:, jj, 0], v[:, jj, 1], u2)
+    if name == "exact-icn":
+        rows = np.stack([v[:, ii], v[:, jj], np.broadcast_to(u[:, None], v[:, ii].shape)], axis=-2)
+        return _inverse_condition(rows)  # (B, P)
+    # J = (Sigma + Q)^{-1} + H^T R^{-1} H entry by entry (2x2 closed forms, no LAPACK calls)
+    M = C + Q
+    mdet = M[:, 0, 0] * M[:, 1, 1] - M[:, 0, 1] * M[:, 1, 0]
+    p00, p01, p11 = (M[:, 1, 1] / mdet)[:, None], (-M[:, 0, 1] / mdet)[:, None], (M[:, 0, 0] / mdet)[:, None]
+    rdet = R[0, 0] * R[1, 1] - R[0, 1] * R[1, 0]
+    r00, r01, r11 = R[1, 1] / rdet, -R[0, 1] / rdet, R[0, 0] / rdet
+    xi, yi, xj, yj = v[:, ii, 0], v[:, ii, 1], v[:, jj, 0], v[:, jj, 1]  # (B, P)
+    a = p00 + r00 * xi * xi + 2 * r01 * xi * xj + r11 * xj * xj
+    b = p01 + r00 * xi * yi + r01 * (xi * yj + xj * yi) + r11 * xj * yj
+    d = p11 + r00 * yi * yi + 2 * r01 * yi * yj + r11 * yj * yj
+    det = a * d - b * b
+    if name == "d-optimal":
+        return det
+    if name == "a-optimal":
+        return -(a + d) / det
+    return 0.5 * (a + d) - np.hypot(0.5 * (a - d), b)  # lambda_min of [[a, b], [b, d]]
+
+
+# --------------------------------------------------------------------------------------------
+# Statistics
+# --------------------------------------------------------------------------------------------
+
+
+def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
+    """Paired comparison of per-run values (lower is better), run ``b`` against run ``b``.
+
+    Returns ``n``, the mean, median and standard deviation of ``other - reference``, the counts of runs
+    where each is clearly lower (:func:`obslib.tracking.clearly_lower`) and of ties, the two-sided
+    sign-test p-value (ties dropped) and the Wilcoxon signed-rank p-value (``scipy.stats``).
+    """
+    a = np.asarray(reference, dtype=float)
+    b = np.asarray(other, dtype=float)
+    if a.shape != b.shape or a.ndim != 1 or a.size < 2:
+        raise ValueError(f"need two equal-length 1-D samples of at least 2 runs, got {a.shape}, {b.shape}")
+    d = b - a
+    ref_better = int(tr.clearly_lower(a, b, rtol).sum())
+    other_better = int(tr.clearly_lower(b, a, rtol).sum())
+    ties = a.size - ref_better - other_better
+    n_signed = ref_better + other_better
+    p_sign = float(stats.binomtest(ref_better, n_signed, 0.5).pvalue) if n_signed else 1.0
+    nonzero = d[d != 0]
+    p_wil = float(stats.wilcoxon(nonzero).pvalue) if nonzero.size >= 2 else 1.0
+    return {
+        "n": int(a.size),
+        "mean_diff": float(d.mean()),
+        "median_diff": float(np.median(d)),
+        "sd_diff": float(d.std(ddof=1)),
+        "reference_better": ref_better,
+        "other_better": other_better,
+        "ties": ties,
+        "p_sign": p_sign,
+        "p_wilcoxon": p_wil,
+    }
+
+
+def significance(row: dict, alpha: float = 0.01) -> str:
+    """Verdict of a row's paired test against the reference: ``"better"`` or ``"worse"`` (the
+    other strategy, by the sign of the median paired difference, when the Wilcoxon test rejects
+    at ``alpha``) or ``"same"``."""
+    if row.get("vs_p_wilcoxon", 1.0) >= alpha:
+        return "same"
+    return "better" if row["vs_median_diff"] < 0 else "worse"
+
+
+def _run_means(batch, skip_first=True):
+    sl = slice(1, None) if skip_first and batch.error.shape[1] > 1 else slice(None)
+    return batch.error[:, sl].mean(axis=1), batch.trace_cov[:, sl].mean(axis=1)
+
+
+def summary_rows(mc: dict, reference: str = REFERENCE, loss_threshold: float = 0.5) -> list:
+    """One row per strategy of a Monte Carlo (``{strategy: BatchResult}``).
+
+    Keys: ``strategy``, ``mean_error`` / ``sd_error`` and ``mean_trace`` / ``sd_trace`` (mean over
+    runs and steps, standard deviation over runs of the run means; step 1 left out), ``lost``
+    (runs whose mean error exceeds ``loss_threshold``, :func:`obslib.tracking.track_loss`),
+    ``switches`` (mean pair changes per run), ``mean_bound`` (the chosen pairs' bound), and the
+    paired test of the run-mean error against ``reference`` (:func:`paired_test`, prefixed
+    ``vs_``; empty for the reference itself).
+    """
+    ref_err = _run_means(mc[reference])[0] if reference in mc else None
+    rows = []
+    for name, b in mc.items():
+        err, trc = _run_means(b)
+        row = {
+            "strategy": name,
+            "mean_error": float(err.mean()),
+            "sd_error": float(err.std(ddof=1)),
+            "mean_trace": float(trc.mean()),
+            "sd_trace": float(trc.std(ddof=1)),
+            "lost": int(tr.track_loss(b, loss_threshold)["lost"].sum()),
+            "switches": float(b.switches.mean()),
+            "mean_bound": float(b.bound[:, 1:].mean()),
+        }
+        if ref_err is not None and name != reference:
+            row.update({f"vs_{k}": v for k, v in paired_test(ref_err, err).items()})
+        rows.append(row)
+    return rows
+
+
+def relog_bound(batch, setup):
+    """``batch`` with its logged bound re-evaluated under ``setup``'s metric.
+
+    The classical criteria choose without the bound, so their runs do not depend on the
+    bound's metric; only the logged bound of the chosen pair does
+    (:func:`obslib.tracking.pair_bound_series` at the logged estimates and covariances).
+    """
+    import dataclasses
+
+    B, K = batch.pairs.shape[:2]
+    cov = batch.cov.reshape(-1, 2, 2) if setup.metric == "mahalanobis" else None
+    bound = tr.pair_bound_series(setup, batch.estimate.reshape(-1, 2), batch.pairs.reshape(-1, 2), cov)
+    return dataclasses.replace(batch, setup=setup, bound=bound.reshape(B, K))
+
+
+@lru_cache(maxsize=8)
+def _tracking_study(n_seeds, seed, metrics, strategies):
+    free = [s for s in strategies if s in CRITERIA]  # their choices ignore the bound's metric
+    out = {}
+    for label, base in (("circle", tr.PAPER_CIRCLE), ("adversary", tr.PAPER_ADVERSARIAL)):
+        first = None
+        for metric in metrics:
+            setup = base.replace(metric=metric)
+            run = strategies if first is None else [s for s in strategies if s not in free]
+            mc = tr.monte_carlo(setup, n_seeds, run, seed)
+            if first is None:
+                first = mc
+            else:
+                mc.update({s: relog_bound(first[s], setup) for s in free})
+            out[(label, metric)] = {s: mc[s] for s in strategies}
+    return out
+
+
+def tracking_study(n_seeds: int, seed: int = 0, metrics=("mahalanobis", "euclidean"),
+                   strategies=None) -> dict:
+    """Monte Carlo of every strategy on the circle (V-A) and the adversary (V-B), per metric.
+
+    Seeds ``seed .. seed + n_seeds - 1``, the same noise for every strategy
+    (:func:`obslib.tracking.monte_carlo`). ``strategies`` defaults to those of the paper and
+    the criteria the tracking engine knows (:func:`available_strategies`).
+
+    Returns ``{(setting, metric): {strategy: BatchResult}}`` with ``setting`` in
+    ``("circle", "adversary")``. Cached: the notebook and the ledger share one computation.
+    """
+    if int(n_seeds) < 2:
+        raise ValueError(f"n_seeds must be at least 2 for the paired tests, got {n_seeds}")
+    metrics = tuple(metrics)
+    bad = [m for m in metrics if m not in tr.METRICS]
+    if bad or not metrics:
+        raise ValueError(f"metrics must be among {tr.METRICS}, got {list(metrics)}")
+    strategies = tuple(available_strategies() if strategies is None else strategies)
+    unknown = [s for s in strategies if s not in _known()]
+    if unknown:
+        raise ValueError(f"unknown strategies {unknown}; known: {_known()}")
+    if REFERENCE not in strategies:
+        raise ValueError(f"strategies must include the reference {REFERENCE!r}")
+    return _tracking_study(int(n_seeds), int(seed), metrics, strategies)
+
+
+def adversary_rows(mc: dict) -> list:
+    """How the adversary of Section V-B fares against each strategy: one row per strategy with
+    the fraction of runs that entrap it (:data:`obslib.tracking.ENTRAPMENT_CRITERIA`), its
+    largest distance from the start, the exact ``C^{-1}`` the sensors face (mean and minimum),
+    the mean bound, mean switches and mean error: the numbers of
+    :func:`obslib.tracking.entrapment_summary`, computed over whole batches at once."""
+    crit = tr.ENTRAPMENT_CRITERIA
+    rows = []
+    for name, b in mc.items():
+        path = np.concatenate([b.truth, (b.truth[:, -1] + b.control[:, -1])[:, None]], axis=1)
+        far = np.hypot(*(path - path[:, :1]).transpose(2, 0, 1)).max(axis=1)  # (B,)
+        ctrl = b.setup.control_array
+        reach = b.steps * float(np.hypot(ctrl[:, 0], ctrl[:, 1]).max())
+        icn = b.true_icn[:, 1:]
+        bound_mean = b.bound.mean(axis=1)
+        trapped = (far <= crit["reach_fraction"] * reach) & (bound_mean >= crit["bound_mean"]) & (
+            icn.min(axis=1) >= crit["icn_min"])
+        rows.append({
+            "strategy": name,
+            "entrapped": float(trapped.mean()),
+            "max_from_start": float(far.max()),
+            "reach": reach,
+            "icn_mean": float(icn.mean(axis=1).mean()),
+            "icn_min": float(icn.min()),
+            "bound_mean": float(bound_mean.mean()),
+            "switches": float(b.switches.mean()),
+            "mean_error": float(b.error.mean(axis=1).mean()),
+        })
+    return rows
+
+
+@lru_cache(maxsize=8)
+def _assignment_study(targets, n_seeds, seed, steps, side, u_max, noise_std, p0, metric):
+    out = {}
+    seeds = range(seed, seed + n_seeds)
+    for L in targets:
+        setup = at.AssignmentTrackingSetup(n_targets=L, steps=steps, side=side, u_max=u_max,
+                                           noise_std=noise_std, p0=p0, metric=metric)
+        out[L] = at.run_all(setup, seeds)
+    return out
+
+
+def assignment_study(p: dict, metric: str = "mahalanobis") -> dict:
+    """The assignment-by-tracking runs at the parameters ``p`` (:func:`params`), per ``L``.
+
+    Returns ``{L: {rule: AssignmentRuns}}`` (cached).
+    """
+    targets = tuple(int(L) for L in p["assign_targets"])
+    return _assignment_study(targets, int(p["assign_seeds"]), int(p["seed"]), int(p["assign_steps"]),
+                             float(p["assign_side"]), float(p["assign_u_max"]),
+                             float(p["assign_noise_std"]), float(p["assign_p0"]), metric)
+
+
+def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float = 0.5) -> list:
+    """One row per ``(L, rule)``: mean, spread and median over runs of the per-run mean error
+    summed over targets (after the update), ``lost`` (targets, over all runs, whose mean error
+    exceeds ``loss_threshold``), ``lost_mirrored`` (those whose last estimate is nearer the
+    target's mirror image across its last pair's baseline than the target), ``switch_rate`` (fraction of steps where a target's pair
+    changes), the chosen pairs' bound and information gain summed over targets, and the paired
+    test against ``reference``."""
+    rows = []
+    for L, by_rule in runs.items():
+        ref = by_rule[reference].run_mean_error()
+        for rule, r in by_rule.items():
+            e = r.run_mean_error()
+            row = {
+                "L": int(L),
+                "rule": rule,
+                "mean_error": float(e.mean()),
+                "sd_error": float(e.std(ddof=1)),
+                "median_error": float(np.median(e)),
+                "lost": int(r.lost(loss_threshold).sum()),
+                "lost_mirrored": int((r.lost(loss_threshold) & r.mirrored()).sum()),
+                "switch_rate": float((r.pairs[:, 1:] != r.pairs[:, :-1]).any(-1).mean()),
+                "bound_sum": float(r.bound[:, 1:].sum(-1).mean()),
+                "gain_sum": float(r.gain[:, 1:].sum(-1).mean()),
+            }
+            if rule != reference:
+                row.update({f"vs_{k}": v for k, v in paired_test(ref, e).items()})
+            rows.append(row)
+    return rows
+
+
+def markdown_table(rows: list, columns: dict) -> str:
+    """A Markdown table of ``rows`` (dicts): ``columns`` maps a header to ``(key, format)``,
+    ``format`` a format spec (``".3f"``) or a callable of the row."""
+    head = "| " + " | ".join(columns) + " |"
+    sep = "|" + "|".join("---" for _ in columns) + "|"
+    lines = [head, sep]
+    for r in rows:
+        cells = []
+        for key, fmt in columns.values():
+            if callable(fmt):
+                cells.append(fmt(r))
+            else:
+                v = r.get(key)
+                cells.append("" if v is None else format(v, fmt))
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines)
