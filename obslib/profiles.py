@@ -70,7 +70,7 @@ PROFILES: dict[str, dict[str, dict]] = {
             "p0": 0.5,
             "metric": "mahalanobis",
             "anim_every": 8,
-            "anim_dpi": 50,
+            "anim_dpi": 100,
         },
         "06_adversarial_target": {
             "seed": 0,
