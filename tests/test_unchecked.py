@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from obslib import claims
-from obslib import team_study as ts
+from obslib.studies import teams as ts
 from obslib.studies import fig9_measure as fm
 
 
@@ -75,7 +75,7 @@ def test_literal_greedy_matlab_rule_gives_every_sensor_to_target_1():
 
 def test_literal_sweep_uses_the_fig9_instances():
     lit = fm.literal_fig9_sweep([12], 2, 3, nan="first")
-    S, T = ts._fig9_geometry(12, 1, 3, 5, 100.0)
+    S, T = ts.fig9_geometry(12, 1, 3, 5, 100.0)
     np.testing.assert_array_equal(lit[0, 1], fm.literal_logdet_counts(S, T, "first"))
     with pytest.raises(ValueError, match="nan must be one of"):
         fm.literal_logdet_counts(S, T, "max")
@@ -141,7 +141,7 @@ def test_eq4_bad_input():
 import itertools  # noqa: E402
 
 import obslib as ob  # noqa: E402
-from obslib import assignment_study as ast  # noqa: E402
+from obslib.studies import assignment as ast  # noqa: E402
 from obslib.claims import unchecked as cu  # noqa: E402
 from obslib.studies import hardness as hd  # noqa: E402
 

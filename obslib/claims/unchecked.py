@@ -10,7 +10,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .. import assignment_study as ast
+from ..studies import greedy_vs_relaxed as ast
 from .. import tracking as tr
 from ..assignment import relaxed_pair_assignment
 from ..studies import eq4, experiment_details as ed, hardness as hd

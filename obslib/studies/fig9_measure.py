@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import team_study as ts
+from . import teams as ts
 from ..bounds import relative_vectors
 
 __all__ = ["NAN_RULES", "literal_logdet_counts", "literal_fig9_sweep"]
@@ -85,7 +85,7 @@ def literal_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, sid
                        nan: str = "ignore") -> np.ndarray:
     """Counts ``(len(N_values), trials, L)`` of the Fig. 9 sweep with the literal measure.
 
-    The geometries are those of :func:`obslib.team_study.fig9_sweep` (same seeds), so the two
+    The geometries are those of :func:`obslib.studies.teams.fig9_sweep` (same seeds), so the two
     measures are compared on the same instances.
     """
     if nan not in NAN_RULES:
@@ -94,6 +94,6 @@ def literal_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, sid
     out = np.empty((len(N_values), int(trials), int(n_targets)), dtype=int)
     for a, n in enumerate(N_values):
         for t in range(int(trials)):
-            S, T = ts._fig9_geometry(n, t, seed, n_targets, side)
+            S, T = ts.fig9_geometry(n, t, seed, n_targets, side)
             out[a, t] = literal_logdet_counts(S, T, nan)
     return out

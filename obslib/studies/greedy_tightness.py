@@ -1,7 +1,7 @@
 """How tight Theorem 6's 1/3 is on geometric instances, and how fragile the tight geometry is.
 
 On random instances Algorithm 1 is near-optimal (notebook 03), but a local search over sensor
-and target positions (:func:`obslib.assignment_study.worst_instance_search`) finds geometries
+and target positions (:func:`obslib.studies.assignment.worst_instance_search`) finds geometries
 where it collects only about 0.34 of the optimum, close to the 1/3 guarantee. There the greedy's
 first pick outweighs each of the three optimal triples it blocks by a small relative margin
 (:func:`first_pick_margin`). :func:`jitter_ratios` measures how fragile this is: it moves every
@@ -15,7 +15,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .. import assignment_study as st
+from . import assignment as st
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..bounds import pair_bounds
 

@@ -16,10 +16,12 @@ import numpy as np
 from ..sweep import run_sweep
 from ..teams import greedy_team_assignment, greedy_team_counts
 
-__all__ = ["fig9_trial", "fig9_trials", "fig9_sweep", "random_spread", "Evenness", "evenness", "greedy_vs_optimal_teams"]
+__all__ = ["fig9_geometry", "fig9_trial", "fig9_trials", "fig9_sweep", "random_spread", "Evenness", "evenness", "greedy_vs_optimal_teams"]
 
 
-def _fig9_geometry(n_sensors, trial, seed, n_targets, side):
+def fig9_geometry(n_sensors, trial, seed, n_targets, side):
+    """Sensors and targets of one Fig. 9 trial, uniform in the square of ``side``, seeded by
+    ``(seed, n_sensors, trial)`` so every study of Fig. 9 sees the same geometry."""
     rng = np.random.default_rng([seed, n_sensors, trial])
     return rng.uniform(0, side, size=(n_sensors, 2)), rng.uniform(0, side, size=(n_targets, 2))
 
@@ -37,7 +39,7 @@ def fig9_trial(n_sensors: int, trial: int, seed: int, n_targets: int = 5, measur
     >>> counts.size, int(counts.sum())
     (5, 20)
     """
-    S, T = _fig9_geometry(n_sensors, trial, seed, n_targets, side)
+    S, T = fig9_geometry(n_sensors, trial, seed, n_targets, side)
     teams = greedy_team_assignment(S, T, measure=measure, eps=eps)
     return np.array([len(t) for t in teams])
 
@@ -45,7 +47,7 @@ def fig9_trial(n_sensors: int, trial: int, seed: int, n_targets: int = 5, measur
 def fig9_trials(n_sensors: int, trials, seed: int, n_targets: int = 5, measure: str = "logdet",
                 eps: float = 1.0, side: float = 100.0) -> np.ndarray:
     """:func:`fig9_trial` for several trials of one ``N`` at once (one batch), shape ``(len(trials), L)``."""
-    geoms = [_fig9_geometry(n_sensors, t, seed, n_targets, side) for t in trials]
+    geoms = [fig9_geometry(n_sensors, t, seed, n_targets, side) for t in trials]
     return greedy_team_counts(np.array([g[0] for g in geoms]).reshape(-1, n_sensors, 2),
                               np.array([g[1] for g in geoms]).reshape(-1, n_targets, 2), measure, eps)
 
