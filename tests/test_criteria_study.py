@@ -138,20 +138,6 @@ def test_figures_label_their_axes():
         plot_run_errors(study, "euclidean")
 
 
-def test_defaults_equal_the_notebook_parameters_cell():
-    import ast
-    import json
-
-    from obslib.run import NOTEBOOK_DIR
-
-    nb = json.loads((NOTEBOOK_DIR / f"{cs.NOTEBOOK}.ipynb").read_text())
-    first = next(c for c in nb["cells"] if c["cell_type"] == "code")
-    assert "parameters" in first["metadata"]["tags"]
-    values = {n.targets[0].id: ast.literal_eval(n.value) for n in ast.parse("".join(first["source"])).body}
-    assert values == cs.DEFAULTS
-    assert set(cs.QUICK) <= set(cs.DEFAULTS)
-
-
 @pytest.mark.parametrize("base", [tr.PAPER_CIRCLE, tr.PAPER_ADVERSARIAL], ids=["circle", "adversary"])
 def test_criteria_runs_reused_across_metrics_equal_direct_runs(base):
     """The criteria's runs do not depend on the bound's metric; re-logging the bound of one

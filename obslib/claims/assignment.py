@@ -101,6 +101,7 @@ NEAR_THIRD = 0.35
 @claim(
     id="thm6-tight",
     where="Theorem 6 (Sec. IV-A)",
+    title="Theorem 6's $1/3$ is nearly attained by the pair bound's own weights.",
     statement="The 1/3 of Theorem 6 is nearly attained also by the pair bound's own weights: "
     "sensor-target geometries exist where Algorithm 1 collects about a third of the optimum.",
     paper="A 1/3-approximation \"for any omega\"; tightness is not discussed.",

@@ -32,6 +32,7 @@ def _typical(n_seeds: int, seed: int):
 @claim(
     id="published-replay",
     where="Sec. V-A/B, Figs. 4-7 (published runs)",
+    title="The published runs of Figs. 4-7, replayed with the noise they used.",
     statement="The published runs of Figs. 4-7 follow from the experiments' model: replayed "
     "with the noise they used, strategies (1) and (2) and the adversarial run give every logged "
     "number (bound, error, trace of the covariance, pair, truth, estimate).",

@@ -53,9 +53,10 @@ def _eq4(n_geometries: int, n_refine: int, seed: int, u_max: float):
 @claim(
     id="eq4-collapse",
     where="Sec. III, Eqs. (3)-(4) and Theorem 1",
-    statement="The observability matrix derived from the Lie derivatives of every h_i (a u_o row "
-    "per sensor) \"can be rewritten\" as Eq. (4) with a single u_o row, and Theorem 1 bounds its "
-    "inverse condition number.",
+    title="Eq. (4) collapses one control row per sensor into one; does Theorem 1 cover the derived matrix?",
+    statement="The observability matrix derived from the Lie derivatives of every $h_i$ (a row "
+    "$u_o^\\top$ per sensor) \"can be rewritten\" as Eq. (4) with a single row $u_o^\\top$, and "
+    "Theorem 1 bounds its inverse condition number.",
     paper="Eq. (3) derived, Eq. (4) \"rewritten\"; Theorem 1 on Eq. (4).",
     notebook=NOTEBOOK,
 )
@@ -70,14 +71,17 @@ def _eq4_collapse(profile: str) -> Finding:
     status = "reproduced" if holds else "partly"
     small, big = ratios[1.0], ratios[100.0]
     ours = (
-        "Same rank, not the same conditioning: the derived matrix has O(o)^T O(o) + N u u^T, so "
-        "the control weighs sqrt(N) times more, and its worst case over ||u|| <= u_max is "
-        "sqrt(lambda_min / (lambda_max + N u_max^2)), Theorem 1 with sqrt(N) u_max. Theorem 1's "
+        "Same rank, not the same conditioning: the derived matrix has Gram matrix "
+        r"$O(o)^\top O(o) + N u u^\top$, so the control weighs $\sqrt{N}$ times more, and its "
+        r"worst case over $\lVert u\rVert \le u_{\max}$ is "
+        r"$\sqrt{\lambda_{\min} / (\lambda_{\max} + N u_{\max}^2)}$, Theorem 1 with "
+        r"$\sqrt{N}\, u_{\max}$. Theorem 1's "
         f"bound fails for it in {below} of {p['n_refine']} random scenes (grid search of the "
         f"disc); the worst case is down to {small.min():.3f} of the bound in scenes of side 1 "
-        f"(median {np.median(small):.3f}, infimum 1/sqrt(N) as lambda_max / u_max^2 -> 0) and "
+        f"(median {np.median(small):.3f}, infimum $1/\\sqrt{{N}}$ as "
+        f"$\\lambda_{{\\max}} / u_{{\\max}}^2 \\to 0$) and "
         f"{big.min():.4f} in scenes of side 100. The bound holds for Eq. (4), and for the derived "
-        "matrix with u_max replaced by sqrt(N) u_max."
+        r"matrix with $u_{\max}$ replaced by $\sqrt{N}\, u_{\max}$."
     )
     ev = {
         "violations": below,
@@ -104,6 +108,7 @@ def _reach(L_values: tuple, time_budget: float, seed: int, u_max: float):
 @claim(
     id="sec5c-np-complete",
     where="Sec. V-C and Sec. I",
+    title="Unique pair assignment is NP-complete, and its optimum cannot be computed.",
     statement="The Unique Pair Assignment problem is NP-complete; the optimal solution cannot be "
     "computed, so the greedy is compared with the relaxed matching instead.",
     paper="\"The Unique Pair Assignment problem is NP-Complete\"; \"the optimal solution cannot "
@@ -157,9 +162,10 @@ def ordered_gap_example():
 @claim(
     id="problem3-ordered",
     where="Sec. V-C, Problem 3 and Fig. 8",
+    title="Fig. 8's relaxed optimum is Problem 3 as printed (unordered pairs).",
     statement="Fig. 8 compares the greedy with the optimum of Problem 3 (each unordered pair "
     "serves at most one target), solved by maximum weight bipartite matching.",
-    paper="Problem 3: \"all pairs are unique\" with sigma_1(l) < sigma_2(l); Fig. 8's relaxed "
+    paper="Problem 3: \"all pairs are unique\" with $\\sigma_1(l) < \\sigma_2(l)$; Fig. 8's relaxed "
     "curve from the authors' code, which matches ordered pairs.",
     notebook=NOTEBOOK,
 )
@@ -204,10 +210,11 @@ def _problem3(profile: str) -> Finding:
 @claim(
     id="sec4-mahalanobis-angle",
     where="Sec. IV (Mahalanobis distance) and Figs. 4-7",
-    statement="The sensors evaluate Theorem 4's bound with Mahalanobis distances d_io in the "
+    title="The experiments' bound uses Mahalanobis distances; what angle goes with them?",
+    statement="The sensors evaluate Theorem 4's bound with Mahalanobis distances $d_{io}$ in the "
     "estimate's covariance.",
-    paper="d_io = sqrt((o_hat - p_i)^T Sigma^-1 (o_hat - p_i)); the angle theta_ji is not "
-    "discussed. The experiments keep the Euclidean angle.",
+    paper="$d_{io} = \\sqrt{(\\hat o - p_i)^\\top \\Sigma^{-1} (\\hat o - p_i)}$; the angle "
+    "$\\theta_{ji}$ is not discussed. The experiments keep the Euclidean angle.",
     notebook=NOTEBOOK,
 )
 def _mahalanobis(profile: str) -> Finding:
@@ -249,9 +256,10 @@ def _disc(n_seeds: int, seed: int, n_radii: int, n_angles: int):
 @claim(
     id="sec5b-control-ball",
     where="Sec. V-B, Fig. 7",
+    title="The adversary searches every control in the ball of radius $u_{\\max}$.",
     statement="At each time step the adversarial target evaluates all the possible control inputs "
-    "within a ball of radius u_max and chooses the one that minimises C^-1.",
-    paper="\"evaluates all the possible control inputs within a ball of radius u_max\".",
+    "within a ball of radius $u_{\\max}$ and chooses the one that minimises $C^{-1}$.",
+    paper="\"evaluates all the possible control inputs within a ball of radius $u_{\\max}$\".",
     notebook=NOTEBOOK,
 )
 def _control_ball(profile: str) -> Finding:
@@ -266,7 +274,7 @@ def _control_ball(profile: str) -> Finding:
     freed = d["disc"]["entrapped"] < d["paper"]["entrapped"]
     status = "refuted" if freed else "partly"
     ours = (
-        "Fig. 7's run used u = 0 and 63 controls of norm u_max at 0, 0.1, ..., 6.2 rad, not the "
+        r"Fig. 7's run used $u = 0$ and 63 controls of norm $u_{\max}$ at 0, 0.1, ..., 6.2 rad, not the "
         f"ball (the replay with that set reproduces it to {g['logged_match']:.0e}). Along the "
         "published trajectory the whole disc lowers the target's per-step objective by at most "
         f"{g['gap'].max():.1e}, and over {p['n_seeds_disc']} noise seeds the target is entrapped "
@@ -284,6 +292,7 @@ def _control_ball(profile: str) -> Finding:
 @claim(
     id="greedy-half-citation",
     where="Sec. I, II and IV-B (citation)",
+    title="The greedy team assignment's $1/2$ guarantee, and the work it is cited from.",
     statement="For monotone submodular measures the greedy team assignment is a "
     "1/2-approximation, as shown by Nemhauser, Wolsey and Fisher (1978).",
     paper="\"a greedy algorithm gives a 1/2-approximation [Nemhauser et al. 1978]\".",
@@ -311,8 +320,10 @@ def _half_citation(profile: str) -> Finding:
     id="paper-typos",
     where="Algorithm 1, Problems 1-3",
     statement="Algorithm 1, Problem 1 and the sets S and T are stated correctly.",
-    paper="Algorithm 1: \"while true\"; Problem 1: maximise sum_{i=1}^L omega(sigma_1(l), "
-    "sigma_2(l), t_l); S := {s_0, ..., s_N}, T := {t_0, ..., t_L}.",
+    title="Algorithm 1, Problem 1 and the sets $S$, $T$ as printed.",
+    paper="Algorithm 1: \"while true\"; Problem 1: maximise "
+    "$\\sum_{i=1}^L \\omega(\\sigma_1(l), \\sigma_2(l), t_l)$; $S := \\{s_0, \\dots, s_N\\}$, "
+    "$T := \\{t_0, \\dots, t_L\\}$.",
     notebook=NOTEBOOK,
 )
 def _typos(profile: str) -> Finding:
@@ -322,8 +333,9 @@ def _typos(profile: str) -> Finding:
         "partly",
         "Three misprints with an obvious intended reading: Algorithm 1's \"while true\" has no "
         "stopping rule (it must stop when every target has its pair, which comes first since "
-        "N >= 2L; greedy_pair_assignment stops there); Problem 1 sums over i = 1..L but indexes by l "
-        "(read l = 1..L); S := {s_0, ..., s_N} and T := {t_0, ..., t_L} list N + 1 sensors and "
-        "L + 1 targets for N and L (read s_1..s_N, t_1..t_L, as the constraints i = 1..N do).",
+        r"$N \ge 2L$; `greedy_pair_assignment` stops there); Problem 1 sums over $i = 1..L$ but "
+        r"indexes by $l$ (read $l = 1..L$); $S := \{s_0, \dots, s_N\}$ and "
+        r"$T := \{t_0, \dots, t_L\}$ list $N + 1$ sensors and $L + 1$ targets for $N$ and $L$ "
+        r"(read $s_1..s_N$, $t_1..t_L$, as the constraints $i = 1..N$ do).",
         {"typos": ["algorithm1-while-true", "problem1-index", "sets-from-zero"]},
     )

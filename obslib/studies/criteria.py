@@ -43,8 +43,6 @@ __all__ = [
     "PAPER_STRATEGIES",
     "REFERENCE",
     "SCORES",
-    "DEFAULTS",
-    "QUICK",
     "params",
     "available_strategies",
     "missing_strategies",
@@ -71,38 +69,11 @@ REFERENCE = "best-pair"
 #: The scores :func:`criterion_scores` computes (``"bound"`` is ``best-pair``'s).
 SCORES = ("bound", "d-optimal", "a-optimal", "e-optimal", "exact-icn")
 
-#: Notebook 10's parameters (its tagged ``parameters`` cell) and the quick profile's changes.
-DEFAULTS = {
-    "seed": 0,
-    "n_seeds": 200,
-    "metrics": ["mahalanobis", "euclidean"],
-    "loss_threshold": 0.5,
-    "n_timing": 1000,
-    "assign_targets": [2, 5],
-    "assign_seeds": 200,
-    "assign_steps": 50,
-    "assign_side": 100.0,
-    "assign_u_max": 1.0,
-    "assign_noise_std": 0.5,
-    "assign_p0": 1.0,
-    "assign_loss": 0.5,
-}
-QUICK = {"n_seeds": 20, "n_timing": 100, "assign_targets": [2, 3], "assign_seeds": 20, "assign_steps": 20}
-
-
 def params(profile: str = "paper") -> dict:
-    """Notebook 10's parameters under ``profile`` (from :mod:`obslib.profiles` when it lists the
-    notebook, else :data:`DEFAULTS` updated by :data:`QUICK` for ``"quick"``)."""
-    from ..profiles import PROFILES, params as profile_params, profile_names
+    """Notebook 10's parameters under ``profile`` (:func:`obslib.profiles.params`)."""
+    from ..profiles import params as profile_params
 
-    if profile not in profile_names():
-        raise ValueError(f"unknown profile {profile!r}; known: {profile_names()}")
-    if NOTEBOOK in PROFILES["paper"]:
-        return profile_params(NOTEBOOK, profile)
-    out = dict(DEFAULTS)
-    if profile == "quick":
-        out.update(QUICK)
-    return out
+    return profile_params(NOTEBOOK, profile)
 
 
 def _known() -> tuple:
