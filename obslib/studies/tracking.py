@@ -16,6 +16,8 @@ from ..tracking import BatchResult, TrackingResult, TrackingSetup
 
 __all__ = [
     "K50_WINDOW",
+    "FIGURE_TOLERANCE",
+    "near_published",
     "partner_arms",
     "partner_summary",
     "partner_study",
@@ -33,6 +35,24 @@ __all__ = [
 
 #: Transitions around k = 50 where the paper says the best pair "changes frequently" (Fig. 5(a)).
 K50_WINDOW = (30, 70)
+
+#: A published figure number counts as matched when ours is within this relative distance.
+FIGURE_TOLERANCE = 0.15
+
+
+def near_published(ours, published, rtol: float = FIGURE_TOLERANCE):
+    """Whether our value(s) lie within ``rtol`` (relative) of a published number; a published
+    zero must be matched exactly.
+
+    Examples
+    --------
+    >>> near_published([0.70, 0.60], 0.79).tolist()
+    [True, False]
+    """
+    ours = np.asarray(ours, dtype=float)
+    if published == 0:
+        return ours == 0
+    return np.abs(ours - published) <= rtol * abs(published)
 
 
 # --------------------------------------------------------------------------------------------
