@@ -90,7 +90,7 @@ def test_pooled_switch_mechanism_counts_over_all_transitions():
 
 
 def test_near_published_is_a_relative_window_and_zero_is_exact():
-    assert study.near_published(0.79 * 1.15, 0.79) and not study.near_published(0.79 * 1.16, 0.79)
+    assert study.near_published(0.79 * 1.149, 0.79) and not study.near_published(0.79 * 1.151, 0.79)
     assert study.near_published(0.0, 0) and not study.near_published(1e-9, 0)
     np.testing.assert_array_equal(study.near_published([100, 88, 85], 100, rtol=0.12),
                                   [True, True, False])
