@@ -102,9 +102,10 @@ def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> di
         ``partner`` 0-based and ``lost`` the fraction of runs of
         :func:`~obslib.tracking.track_loss`.
     """
-    if int(n_seeds) < 1:
-        raise ValueError(f"n_seeds must be at least 1, got {n_seeds}")
-    seeds = range(int(first_seed), int(first_seed) + int(n_seeds))
+    tr.check_setup(setup)
+    n_seeds = tr.check_count(n_seeds, "n_seeds")
+    first_seed = tr.check_seed(first_seed, "first_seed")
+    seeds = range(first_seed, first_seed + n_seeds)
     return partner_summary(tr.simulate_many(partner_arms(setup), seeds=seeds))
 
 
@@ -213,7 +214,9 @@ def adversary_variants(setup: TrackingSetup, n_radii: int, n_angles: int) -> dic
     will use next; ``"disc"``: controls on a polar grid of the whole disc ``||u|| <= u_max``
     (``1 + n_radii * n_angles`` controls, :func:`disc_controls`); ``"disc, next-pair"``: both.
     """
-    disc = disc_controls(setup.u_max, n_radii, n_angles)
+    tr.check_setup(setup)
+    disc = disc_controls(setup.u_max, tr.check_count(n_radii, "n_radii"),
+                         tr.check_count(n_angles, "n_angles"))
     return {
         "paper": setup,
         "next-pair": setup.replace(adversary="next-pair"),

@@ -94,3 +94,16 @@ def test_near_published_is_a_relative_window_and_zero_is_exact():
     assert study.near_published(0.0, 0) and not study.near_published(1e-9, 0)
     np.testing.assert_array_equal(study.near_published([100, 88, 85], 100, rtol=0.12),
                                   [True, True, False])
+
+
+def test_study_arguments_of_the_wrong_kind_raise():
+    with pytest.raises(TypeError, match="n_seeds must be an integer"):
+        study.partner_study(CIRCLE, 2.5)
+    with pytest.raises(ValueError, match="n_seeds must be at least 1"):
+        study.partner_study(CIRCLE, 0)
+    with pytest.raises(TypeError, match="first_seed must be a non-negative integer"):
+        study.partner_study(CIRCLE, 2, None)
+    with pytest.raises(TypeError, match="n_angles must be an integer"):
+        study.adversary_variants(ADV, 3, 10.0)
+    with pytest.raises(ValueError, match="setup must be a TrackingSetup"):
+        study.adversary_variants({"u_max": 0.1}, 3, 10)
