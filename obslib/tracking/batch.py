@@ -26,7 +26,7 @@ from .criteria import PairChooser, candidates, check_strategy, fixed_pair_bound,
 from .ekf import SINGULAR_RTOL, singular_update_message
 from .model import circle_truth, pair_index
 from .results import BatchResult, TrackingResult, derived_arrays
-from .setup import TrackingSetup, check_noise, check_seed, noise_table
+from .setup import TrackingSetup, check_count, check_noise, check_seed, noise_table
 
 __all__ = ["simulate_many", "simulate_batch", "monte_carlo"]
 
@@ -332,6 +332,16 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
     -------
     dict
         ``{name: BatchResult}`` in the order of ``arms``.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=30)
+    >>> eu = setup.replace(metric="euclidean")
+    >>> arms = {"bound": (setup, "best-pair"), "eu": (eu, "best-pair"), "d": (setup, "d-optimal")}
+    >>> runs = tracking.simulate_many(arms, seeds=[0, 1, 2])
+    >>> runs["eu"].pairs.shape, runs["eu"].seeds
+    ((3, 30, 2), (0, 1, 2))
     """
     arms = _check_arms(arms)
     seeds, given = _check_seeds(seeds, noise)
@@ -400,17 +410,17 @@ def simulate_batch(setup: TrackingSetup, strategy: str, seeds=None, noise=None) 
         One run per seed with ``noise_table(setup, seed)``.
     noise : array_like, shape (B, steps, N), optional
         Explicit noise tables instead of seeds.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> b = tracking.simulate_batch(setup, "best-pair", seeds=[0, 1])
+    >>> b.n_runs, b.run(0).pairs[:2].tolist()
+    (2, [[3, 5], [3, 5]])
     """
     check_strategy(strategy)
     return simulate_many({strategy: (setup, strategy)}, seeds=seeds, noise=noise)[strategy]
-
-
-def _count(value, name: str) -> int:
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-        raise TypeError(f"{name} must be an integer, got {value!r}")
-    if value < 1:
-        raise ValueError(f"{name} must be at least 1, got {value}")
-    return int(value)
 
 
 def monte_carlo(
@@ -432,9 +442,19 @@ def monte_carlo(
     -------
     dict
         ``{strategy: BatchResult}`` with arrays of leading size ``n_seeds``.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> mc = tracking.monte_carlo(tracking.PAPER_CIRCLE.replace(steps=30), 4,
+    ...                           ["best-pair", "d-optimal", "random"])
+    >>> {name: r.pairs.shape for name, r in mc.items()}
+    {'best-pair': (4, 30, 2), 'd-optimal': (4, 30, 2), 'random': (4, 30, 2)}
+    >>> bool((mc["random"].noise == mc["best-pair"].noise).all())  # common random numbers
+    True
     """
-    n_seeds = _count(n_seeds, "n_seeds")
-    batch = _count(batch, "batch")
+    n_seeds = check_count(n_seeds, "n_seeds")
+    batch = check_count(batch, "batch")
     first_seed = check_seed(first_seed, "first_seed")
     if isinstance(strategies, str):
         raise TypeError(f"strategies must be a list of names, got the string {strategies!r}; "

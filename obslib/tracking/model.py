@@ -36,6 +36,12 @@ def circle_truth(setup) -> np.ndarray:
     :math:`o_k = c + r\\,(\\cos(\\omega (k - 1)), \\sin(\\omega (k - 1)))` with ``center``,
     ``radius`` and ``rate`` of the setup; the extra last row is the position the target moves
     to after the last step.
+
+    Examples
+    --------
+    >>> from obslib.tracking import PAPER_CIRCLE
+    >>> circle_truth(PAPER_CIRCLE.replace(steps=2)).round(4).tolist()
+    [[5.0, 3.0], [4.9994, 3.06], [4.9976, 3.12]]
     """
     a = setup.rate * np.arange(setup.steps + 1)
     return np.asarray(setup.center) + setup.radius * np.column_stack([np.cos(a), np.sin(a)])
@@ -47,6 +53,11 @@ def half_squared_range(x, pair_sensors) -> np.ndarray:
 
     ``x`` may be a filterpy column ``(2, 1)`` (returns ``(m, 1)``) or a batch ``(..., 2)`` with
     ``pair_sensors`` ``(..., m, 2)`` (returns ``(..., m)``).
+
+    Examples
+    --------
+    >>> half_squared_range([1.0, 2.0], [[0.0, 0.0], [4.0, 6.0]]).tolist()
+    [2.5, 12.5]
     """
     x = np.asarray(x, dtype=float)
     ps = np.asarray(pair_sensors, dtype=float)
@@ -58,7 +69,13 @@ def half_squared_range(x, pair_sensors) -> np.ndarray:
 
 
 def range_jacobian(x, pair_sensors) -> np.ndarray:
-    """Jacobian of :func:`half_squared_range`: rows :math:`H_i = (x - p_i)^T`, ``(..., m, 2)``."""
+    """Jacobian of :func:`half_squared_range`: rows :math:`H_i = (x - p_i)^T`, ``(..., m, 2)``.
+
+    Examples
+    --------
+    >>> range_jacobian([1.0, 2.0], [[0.0, 0.0], [4.0, 6.0]]).tolist()
+    [[1.0, 2.0], [-3.0, -4.0]]
+    """
     x = np.asarray(x, dtype=float)
     ps = np.asarray(pair_sensors, dtype=float)
     if x.shape == (2, 1):
@@ -67,7 +84,13 @@ def range_jacobian(x, pair_sensors) -> np.ndarray:
 
 
 def pair_index(n: int):
-    """Row and column of the pairs ``i < j`` of ``n`` sensors in ``(i, j)`` order."""
+    """Row and column of the pairs ``i < j`` of ``n`` sensors in ``(i, j)`` order.
+
+    Examples
+    --------
+    >>> [a.tolist() for a in pair_index(3)]
+    [[0, 0, 1], [1, 2, 2]]
+    """
     return np.triu_indices(n, 1)
 
 
@@ -85,6 +108,12 @@ def pair_bound_series(setup, points, pairs, cov=None) -> np.ndarray:
     pairs : array_like of int, shape (K, 2)
     cov : array_like, shape (K, 2, 2), optional
         Mahalanobis distances in these covariances; Euclidean when omitted.
+
+    Examples
+    --------
+    >>> from obslib.tracking import PAPER_CIRCLE
+    >>> pair_bound_series(PAPER_CIRCLE, [[5.5, 3.5]], [[3, 5]]).round(4).tolist()
+    [0.7855]
     """
     v = relative_vectors(setup.sensors, points, cov)  # validated, (N, K, 2)
     K = v.shape[1]
@@ -124,6 +153,11 @@ def target_objective(pair_sensors, position, controls) -> np.ndarray:
     Returns
     -------
     ndarray, shape (..., K)
+
+    Examples
+    --------
+    >>> target_objective([[0.0, 0.0], [4.0, 0.0]], [2.0, 2.0], [[0.0, 0.0], [0.1, 0.0]]).round(4)
+    array([1.    , 0.9512])
     """
     ps = np.asarray(pair_sensors, dtype=float)
     o = np.asarray(position, dtype=float)

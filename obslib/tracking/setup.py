@@ -31,6 +31,8 @@ __all__ = [
     "check_setup",
     "check_noise",
     "check_seed",
+    "check_count",
+    "check_covariances",
 ]
 
 METRICS = ("mahalanobis", "euclidean")
@@ -54,6 +56,11 @@ def paper_controls(u_max: float, n_angles: int = 63, dphi: float = 0.1) -> np.nd
     Returns
     -------
     ndarray, shape (n_angles + 1, 2)
+
+    Examples
+    --------
+    >>> paper_controls(0.1).shape
+    (64, 2)
     """
     phi = dphi * np.arange(n_angles)
     ring = float(u_max) * np.column_stack([np.cos(phi), np.sin(phi)])
@@ -121,7 +128,10 @@ def _check_spd_any_scale(m: np.ndarray, name: str) -> None:
     top = float(np.abs(m).max())
     if top == 0:
         raise ValueError(f"{name} is not positive definite: {m.tolist()}")
-    check_spd2(m / top, name)  # scaled: a determinant of any scale stays representable
+    try:
+        check_spd2(m / top, name)  # scaled: a determinant of any scale stays representable
+    except ValueError as exc:
+        raise ValueError(f"{str(exc).split(': [')[0]}: {m.tolist()}") from None
     if top > MAX_COV_SCALE:
         raise ValueError(
             f"{name} has entries of scale {top:.3g}; the filter's innovation covariance "
@@ -334,6 +344,11 @@ def setup_from_params(base: TrackingSetup, params: dict) -> TrackingSetup:
 
     The notebooks and the claims ledger build their setups with this, so both run the same
     experiment for the same parameters (``q``, ``r``, ``p0`` are multiples of :math:`I`).
+
+    Examples
+    --------
+    >>> setup_from_params(PAPER_CIRCLE, {"q": 0.2, "n_seeds": 5}).Q
+    ((0.2, 0.0), (0.0, 0.2))
     """
     check_setup(base)
     changes = {PARAM_FIELDS[k]: v for k, v in params.items() if k in PARAM_FIELDS}
@@ -353,7 +368,13 @@ def check_setup(setup, what: str = "setup") -> "TrackingSetup":
 
 
 def check_seed(seed, name: str = "seed") -> int:
-    """A seed as an ``int`` (a non-negative integer, not a bool), or a named error."""
+    """A seed as an ``int`` (a non-negative integer, not a bool), or a named error.
+
+    Examples
+    --------
+    >>> check_seed(3)
+    3
+    """
     if isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (int, np.integer)):
         raise TypeError(f"{name} must be a non-negative integer, got {seed!r}")
     if seed < 0:
@@ -361,11 +382,46 @@ def check_seed(seed, name: str = "seed") -> int:
     return int(seed)
 
 
+def check_covariances(cov, n: int, name: str = "cov") -> np.ndarray:
+    """Covariances as an ``(n, 2, 2)`` array (one ``(2, 2)`` is shared), each finite, symmetric
+    and positive definite at any scale (checked divided by its largest entry, so that a
+    determinant that underflows does not reject it), or a named ValueError."""
+    c = _real_array(cov, name, "real 2x2 matrices")
+    if c.shape == (2, 2):
+        c = np.broadcast_to(c, (n, 2, 2))
+    if c.shape != (n, 2, 2):
+        raise ValueError(f"{name} must have shape (2, 2) or ({n}, 2, 2), got {c.shape}")
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        top = np.abs(c).max(axis=(1, 2))
+        m = c / top[:, None, None]
+        ok = (np.isfinite(c).all(axis=(1, 2)) & (top > 0)
+              & (np.abs(m[:, 0, 1] - m[:, 1, 0]) <= 1e-12)
+              & (m[:, 0, 0] > 0) & (m[:, 0, 0] * m[:, 1, 1] - m[:, 0, 1] * m[:, 1, 0] > 0))
+    if not ok.all():
+        k = int(np.flatnonzero(~ok)[0])
+        _check_spd_any_scale(c[k], f"{name} {k}")
+    return c
+
+
+def check_count(value, name: str) -> int:
+    """A count as an ``int`` (an integer of at least 1, not a bool), or a named error."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an integer, got {value!r}")
+    if value < 1:
+        raise ValueError(f"{name} must be at least 1, got {value}")
+    return int(value)
+
+
 def noise_table(setup: TrackingSetup, seed: int = 0) -> np.ndarray:
     """The measurement noise of one run, ``(steps, N)``: ``[k-1, i]`` is sensor ``i`` at step ``k``.
 
     Drawn once from ``numpy.random.default_rng(seed)`` as ``normal(0, noise_std)``, so every
     strategy sees the same realisation (noise common to all strategies).
+
+    Examples
+    --------
+    >>> noise_table(PAPER_CIRCLE, 0).shape
+    (315, 6)
     """
     check_setup(setup)
     rng = np.random.default_rng(check_seed(seed))

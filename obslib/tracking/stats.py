@@ -42,6 +42,11 @@ def clearly_lower(a, b, rtol: float = TIE_RTOL) -> np.ndarray:
     state, equal up to rounding; whether such values compare as exactly equal then depends on the
     order of floating-point operations (and could differ between engines or machines). Counting
     only clear differences makes the win fractions independent of that: a tie wins for neither.
+
+    Examples
+    --------
+    >>> clearly_lower([1.0, 1.0], [2.0, 1.0 + 1e-12]).tolist()
+    [True, False]
     """
     a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
     return a < b - rtol * np.maximum(np.abs(a), np.abs(b))
@@ -123,7 +128,13 @@ def _rank(a: np.ndarray) -> np.ndarray:
 
 
 def spearman(a, b, axis: int = -1) -> np.ndarray:
-    """Spearman rank correlation of ``a`` and ``b`` along ``axis`` (ties by average rank)."""
+    """Spearman rank correlation of ``a`` and ``b`` along ``axis`` (ties by average rank).
+
+    Examples
+    --------
+    >>> float(spearman([1, 2, 3], [3, 5, 4]))
+    0.5
+    """
     ra = np.moveaxis(_rank(np.moveaxis(np.asarray(a, dtype=float), axis, -1)), -1, axis)
     rb = np.moveaxis(_rank(np.moveaxis(np.asarray(b, dtype=float), axis, -1)), -1, axis)
     ra = ra - ra.mean(axis=axis, keepdims=True)
@@ -185,6 +196,11 @@ def mirror_point(points, a, b) -> np.ndarray:
 
     Two range measurements cannot tell ``o`` from its mirror image across the baseline of the
     two sensors; a filter fed by one fixed pair can lock onto the mirror image.
+
+    Examples
+    --------
+    >>> mirror_point([1.0, 1.0], [0.0, 0.0], [2.0, 0.0]).tolist()
+    [1.0, -1.0]
     """
     a = np.asarray(a, dtype=float)
     d = np.asarray(b, dtype=float) - a

@@ -259,3 +259,39 @@ def test_random_pairs_follow_the_seeded_draws():
     # the logged bound is the paper's bound of the random pair
     np.testing.assert_allclose(
         r.bound, tr.pair_bound_series(setup, r.estimate, r.pairs, cov=r.cov), rtol=1e-12)
+
+
+def test_choose_pairs_accepts_tiny_covariances_and_names_bad_ones():
+    """A covariance of scale 1e-170 (its determinant underflows) is positive definite; the
+    Mahalanobis distances are then ~1e85 and u_max^2 / d^2 vanishes, so the bound is the
+    exact C^-1 of the two rows: 1 for the pair (s4, s6), whose rows from (5.5, 3.5) are
+    perpendicular and of equal length."""
+    pairs, bound = tr.choose_pairs(CIRCLE, "best-pair", [[5.5, 3.5]], 1e-170 * np.eye(2)[None])
+    assert pairs.tolist() == [[3, 5]]
+    assert bound[0] == pytest.approx(1.0, abs=1e-12)
+    bad = np.array([np.eye(2), -np.eye(2)])
+    with pytest.raises(ValueError, match=r"cov 1 is not positive definite: \[\[-1.0"):
+        tr.choose_pairs(CIRCLE, "best-pair", [[5.5, 3.5], [1.0, 1.0]], bad)
+    with pytest.raises(ValueError, match="unknown strategy"):
+        tr.choose_pairs(CIRCLE, "psychic", [[5.5, 3.5]], np.eye(2)[None])
+
+
+@pytest.mark.parametrize("name", ["d-optimal", "a-optimal", "e-optimal", "exact-icn"])
+def test_choose_pairs_for_a_criterion_is_the_brute_force_optimum(name, random_states):
+    rng = np.random.default_rng(8)
+    x, P = random_states(rng, 30)
+    u = rng.normal(scale=0.3, size=(30, 2))
+    setup = CIRCLE.replace(Q=0.3, R=[[0.6, 0.1], [0.1, 0.4]])
+    pairs, bound = tr.choose_pairs(setup, name, x, P, control=u)
+    allp = list(itertools.combinations(range(6), 2))
+    for r in range(30):
+        vals = brute_criterion(name, setup.sensor_array, x[r], P[r], np.array(setup.Q),
+                               np.array(setup.R), u[r])
+        if np.sort(vals)[-2] < vals.max() - 1e-9 * abs(vals.max()):
+            assert tuple(pairs[r]) == allp[int(np.argmax(vals))]
+    # the logged bound is the paper's bound of the pick
+    np.testing.assert_allclose(bound, tr.pair_bound_series(setup, x, pairs, cov=P), rtol=1e-12)
+    with pytest.raises(ValueError, match="no state-based pick"):
+        tr.choose_pairs(setup, "random", x, P)
+    with pytest.raises(ValueError, match="exact-icn needs the targets' control"):
+        tr.choose_pairs(setup, "exact-icn", x, P)

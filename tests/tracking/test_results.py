@@ -18,8 +18,10 @@ def test_lazy_icn_of_a_run_equals_the_batch():
     fresh = tr.TrackingResult(**{
         f: getattr(r, f) for f in r.__dataclass_fields__
     })
-    np.testing.assert_array_equal(fresh.true_icn, b.true_icn[1])
-    np.testing.assert_array_equal(fresh.objective, b.objective[1])
+    # one run against the batch: the same elementwise closed form over different shapes,
+    # equal to rounding (values in [0, 1])
+    np.testing.assert_allclose(fresh.true_icn, b.true_icn[1], rtol=0, atol=1e-14)
+    np.testing.assert_allclose(fresh.objective, b.objective[1], rtol=0, atol=1e-14)
     s = ADV.sensor_array
     k = 7
     want = ob.inverse_condition_number(s[r.pairs[k]], r.truth[k], r.control[k - 1])
