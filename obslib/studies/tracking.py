@@ -16,6 +16,8 @@ from ..tracking import BatchResult, TrackingResult, TrackingSetup
 
 __all__ = [
     "K50_WINDOW",
+    "FIGURE_TOLERANCE",
+    "near_published",
     "partner_arms",
     "partner_summary",
     "partner_study",
@@ -33,6 +35,24 @@ __all__ = [
 
 #: Transitions around k = 50 where the paper says the best pair "changes frequently" (Fig. 5(a)).
 K50_WINDOW = (30, 70)
+
+#: A published figure number counts as matched when ours is within this relative distance.
+FIGURE_TOLERANCE = 0.15
+
+
+def near_published(ours, published, rtol: float = FIGURE_TOLERANCE):
+    """Whether our value(s) lie within ``rtol`` (relative) of a published number; a published
+    zero must be matched exactly.
+
+    Examples
+    --------
+    >>> near_published([0.70, 0.60], 0.79).tolist()
+    [True, False]
+    """
+    ours = np.asarray(ours, dtype=float)
+    if published == 0:
+        return ours == 0
+    return np.abs(ours - published) <= rtol * abs(published)
 
 
 # --------------------------------------------------------------------------------------------
@@ -82,9 +102,10 @@ def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> di
         ``partner`` 0-based and ``lost`` the fraction of runs of
         :func:`~obslib.tracking.track_loss`.
     """
-    if int(n_seeds) < 1:
-        raise ValueError(f"n_seeds must be at least 1, got {n_seeds}")
-    seeds = range(int(first_seed), int(first_seed) + int(n_seeds))
+    tr.check_setup(setup)
+    n_seeds = tr.check_count(n_seeds, "n_seeds")
+    first_seed = tr.check_seed(first_seed, "first_seed")
+    seeds = range(first_seed, first_seed + n_seeds)
     return partner_summary(tr.simulate_many(partner_arms(setup), seeds=seeds))
 
 
@@ -193,7 +214,9 @@ def adversary_variants(setup: TrackingSetup, n_radii: int, n_angles: int) -> dic
     will use next; ``"disc"``: controls on a polar grid of the whole disc ``||u|| <= u_max``
     (``1 + n_radii * n_angles`` controls, :func:`disc_controls`); ``"disc, next-pair"``: both.
     """
-    disc = disc_controls(setup.u_max, n_radii, n_angles)
+    tr.check_setup(setup)
+    disc = disc_controls(setup.u_max, tr.check_count(n_radii, "n_radii"),
+                         tr.check_count(n_angles, "n_angles"))
     return {
         "paper": setup,
         "next-pair": setup.replace(adversary="next-pair"),

@@ -26,7 +26,7 @@ from .criteria import PairChooser, candidates, check_strategy, fixed_pair_bound,
 from .ekf import SINGULAR_RTOL, singular_update_message
 from .model import circle_truth, pair_index
 from .results import BatchResult, TrackingResult, derived_arrays
-from .setup import TrackingSetup, check_noise, check_seed, noise_table
+from .setup import TrackingSetup, check_count, check_noise, check_seed, noise_table
 
 __all__ = ["simulate_many", "simulate_batch", "monte_carlo"]
 
@@ -423,14 +423,6 @@ def simulate_batch(setup: TrackingSetup, strategy: str, seeds=None, noise=None) 
     return simulate_many({strategy: (setup, strategy)}, seeds=seeds, noise=noise)[strategy]
 
 
-def _count(value, name: str) -> int:
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-        raise TypeError(f"{name} must be an integer, got {value!r}")
-    if value < 1:
-        raise ValueError(f"{name} must be at least 1, got {value}")
-    return int(value)
-
-
 def monte_carlo(
     setup: TrackingSetup,
     n_seeds: int = 100,
@@ -461,8 +453,8 @@ def monte_carlo(
     >>> bool((mc["random"].noise == mc["best-pair"].noise).all())  # common random numbers
     True
     """
-    n_seeds = _count(n_seeds, "n_seeds")
-    batch = _count(batch, "batch")
+    n_seeds = check_count(n_seeds, "n_seeds")
+    batch = check_count(batch, "batch")
     first_seed = check_seed(first_seed, "first_seed")
     if isinstance(strategies, str):
         raise TypeError(f"strategies must be a list of names, got the string {strategies!r}; "

@@ -350,17 +350,21 @@ def icn_scores(hx, hy, control, ii, jj) -> np.ndarray:
     return inverse_condition(stack)
 
 
-def choose_pairs(setup, strategy: str, xhat, cov):
-    """The pair one of the paper's :data:`STRATEGIES` picks at estimates ``xhat`` ``(B, 2)``
-    with covariances ``cov`` ``(B, 2, 2)``, validated (:class:`PairChooser` with one run per
-    estimate).
+def choose_pairs(setup, strategy: str, xhat, cov, control=None):
+    """The pair a chooser picks at estimates ``xhat`` ``(B, 2)`` with covariances ``cov``
+    ``(B, 2, 2)``, validated (:class:`PairChooser` with one run per estimate).
+
+    ``strategy`` is one of the paper's :data:`STRATEGIES` or a state-based criterion
+    (``"d-optimal"``, ``"a-optimal"``, ``"e-optimal"`` with the setup's ``Q`` and ``R``;
+    ``"exact-icn"`` with the targets' ``control`` ``(B, 2)``). ``"random"`` has no state-based
+    pick: its picks are :func:`pair_draws` of the run's seed.
 
     Returns
     -------
     pairs : ndarray of int, shape (B, 2)
         0-based sensor indices, ``pairs[:, 0] < pairs[:, 1]``.
     bound : ndarray, shape (B,)
-        The chosen pair's bound (the setup's metric).
+        The chosen pair's bound (Theorem 4, the setup's metric).
 
     Examples
     --------
@@ -369,21 +373,38 @@ def choose_pairs(setup, strategy: str, xhat, cov):
     >>> pairs, bound = choose_pairs(PAPER_CIRCLE, "best-pair", [[5.5, 3.5]], [0.5 * np.eye(2)])
     >>> pairs.tolist(), bound.round(4).tolist()
     ([[3, 5]], [0.8736])
+    >>> [choose_pairs(PAPER_CIRCLE, name, [[5.5, 3.5]], [0.5 * np.eye(2)])[0][0].tolist()
+    ...  for name in ("d-optimal", "a-optimal", "e-optimal")]  # the criteria disagree here
+    [[0, 2], [2, 5], [3, 5]]
     """
     from .._validate import as_points
     from .setup import check_covariances, check_setup
 
     check_setup(setup)
-    check_strategy(strategy, STRATEGIES)
+    check_strategy(strategy)
+    if strategy == "random":
+        raise ValueError("the random chooser has no state-based pick: its picks are "
+                         "pair_draws(seed, steps, n_pairs)")
     x = as_points(np.atleast_2d(np.asarray(xhat, dtype=float)), "xhat")
-    c = check_covariances(cov, x.shape[0]) if setup.metric == "mahalanobis" else np.broadcast_to(
-        np.eye(2), (x.shape[0], 2, 2))
     b = x.shape[0]
+    if cov is None and setup.metric == "euclidean" and strategy in STRATEGIES:
+        c = np.broadcast_to(np.eye(2), (b, 2, 2))
+    else:
+        c = check_covariances(cov, b)
+    if strategy == "exact-icn":
+        if control is None:
+            raise ValueError("exact-icn needs the targets' control, shape (B, 2)")
+        u = as_points(np.atleast_2d(np.asarray(control, dtype=float)), "control")
+        if u.shape[0] != b:
+            raise ValueError(f"control must have one row per estimate ({b}), got {u.shape[0]}")
+    else:
+        u = np.zeros((b, 2))
     cand = np.broadcast_to(candidates(setup, strategy), (b, len(pair_index(setup.n_sensors)[0])))
     maha = np.full(b, setup.metric == "mahalanobis")
-    ch = PairChooser(setup.sensor_array, cand, maha, setup.u_max**2)
+    kinds = [strategy if strategy in CRITERIA else "bound"] * b
+    ch = PairChooser(setup.sensor_array, cand, maha, setup.u_max**2, kinds, setup.Q, setup.R)
     best, bound = ch(x[:, 0].copy(), x[:, 1].copy(), *(c[:, a, e].copy() for a in (0, 1)
-                                                      for e in (0, 1)))
+                                                      for e in (0, 1)), u, 0)
     if ch.deferred.size:
         bound[ch.deferred] = ch.deferred_bounds(best[ch.deferred, None], x[:, None, :],
                                                 c[:, None])[:, 0]

@@ -31,6 +31,7 @@ __all__ = [
     "check_setup",
     "check_noise",
     "check_seed",
+    "check_count",
     "check_covariances",
 ]
 
@@ -400,6 +401,15 @@ def check_covariances(cov, n: int, name: str = "cov") -> np.ndarray:
         k = int(np.flatnonzero(~ok)[0])
         _check_spd_any_scale(c[k], f"{name} {k}")
     return c
+
+
+def check_count(value, name: str) -> int:
+    """A count as an ``int`` (an integer of at least 1, not a bool), or a named error."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an integer, got {value!r}")
+    if value < 1:
+        raise ValueError(f"{name} must be at least 1, got {value}")
+    return int(value)
 
 
 def noise_table(setup: TrackingSetup, seed: int = 0) -> np.ndarray:

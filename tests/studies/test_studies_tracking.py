@@ -87,3 +87,23 @@ def test_pooled_switch_mechanism_counts_over_all_transitions():
     assert m["switch_if_closer"] == pytest.approx(switched_after / max(closer, 1))
     assert m["switch_fraction"] == pytest.approx(switches / 78)
     assert m["raised"] == pytest.approx(raised / max(switches, 1))
+
+
+def test_near_published_is_a_relative_window_and_zero_is_exact():
+    assert study.near_published(0.79 * 1.149, 0.79) and not study.near_published(0.79 * 1.151, 0.79)
+    assert study.near_published(0.0, 0) and not study.near_published(1e-9, 0)
+    np.testing.assert_array_equal(study.near_published([100, 88, 85], 100, rtol=0.12),
+                                  [True, True, False])
+
+
+def test_study_arguments_of_the_wrong_kind_raise():
+    with pytest.raises(TypeError, match="n_seeds must be an integer"):
+        study.partner_study(CIRCLE, 2.5)
+    with pytest.raises(ValueError, match="n_seeds must be at least 1"):
+        study.partner_study(CIRCLE, 0)
+    with pytest.raises(TypeError, match="first_seed must be a non-negative integer"):
+        study.partner_study(CIRCLE, 2, None)
+    with pytest.raises(TypeError, match="n_angles must be an integer"):
+        study.adversary_variants(ADV, 3, 10.0)
+    with pytest.raises(ValueError, match="setup must be a TrackingSetup"):
+        study.adversary_variants({"u_max": 0.1}, 3, 10)

@@ -273,4 +273,25 @@ def test_choose_pairs_accepts_tiny_covariances_and_names_bad_ones():
     with pytest.raises(ValueError, match=r"cov 1 is not positive definite: \[\[-1.0"):
         tr.choose_pairs(CIRCLE, "best-pair", [[5.5, 3.5], [1.0, 1.0]], bad)
     with pytest.raises(ValueError, match="unknown strategy"):
-        tr.choose_pairs(CIRCLE, "d-optimal", [[5.5, 3.5]], np.eye(2)[None])
+        tr.choose_pairs(CIRCLE, "psychic", [[5.5, 3.5]], np.eye(2)[None])
+
+
+@pytest.mark.parametrize("name", ["d-optimal", "a-optimal", "e-optimal", "exact-icn"])
+def test_choose_pairs_for_a_criterion_is_the_brute_force_optimum(name, random_states):
+    rng = np.random.default_rng(8)
+    x, P = random_states(rng, 30)
+    u = rng.normal(scale=0.3, size=(30, 2))
+    setup = CIRCLE.replace(Q=0.3, R=[[0.6, 0.1], [0.1, 0.4]])
+    pairs, bound = tr.choose_pairs(setup, name, x, P, control=u)
+    allp = list(itertools.combinations(range(6), 2))
+    for r in range(30):
+        vals = brute_criterion(name, setup.sensor_array, x[r], P[r], np.array(setup.Q),
+                               np.array(setup.R), u[r])
+        if np.sort(vals)[-2] < vals.max() - 1e-9 * abs(vals.max()):
+            assert tuple(pairs[r]) == allp[int(np.argmax(vals))]
+    # the logged bound is the paper's bound of the pick
+    np.testing.assert_allclose(bound, tr.pair_bound_series(setup, x, pairs, cov=P), rtol=1e-12)
+    with pytest.raises(ValueError, match="no state-based pick"):
+        tr.choose_pairs(setup, "random", x, P)
+    with pytest.raises(ValueError, match="exact-icn needs the targets' control"):
+        tr.choose_pairs(setup, "exact-icn", x, P)
