@@ -135,8 +135,8 @@ def _np_complete(profile: str) -> Finding:
         + (f"(greedy / optimum there {ratio[top]:.3f})" if top else "")
         + ", where Fig. 8 used only the relaxed upper bound."
     )
-    ev = {"reduction": red, "reach": [{k: (_r(v) if isinstance(v, float) else v) for k, v in r.items()}
-                                      for r in reach]}
+    rounded = [{k: (_r(v) if isinstance(v, float) else v) for k, v in r.items()} for r in reach]
+    ev = {"reduction": red, "reach": rounded}
     return Finding(status, ours, ev)
 
 
@@ -322,8 +322,9 @@ def _typos(profile: str) -> Finding:
         "partly",
         "Three misprints with an obvious intended reading: Algorithm 1's \"while true\" has no "
         "stopping rule (it must stop when every target has its pair, which comes first since "
-        "N >= 2L; greedy_pair_assignment stops there); Problem 1 sums over i = 1..L but indexes by l "
-        "(read l = 1..L); S := {s_0, ..., s_N} and T := {t_0, ..., t_L} list N + 1 sensors and "
-        "L + 1 targets for N and L (read s_1..s_N, t_1..t_L, as the constraints i = 1..N do).",
+        "N >= 2L; greedy_pair_assignment stops there); Problem 1 sums over i = 1..L but indexes "
+        "by l (read l = 1..L); S := {s_0, ..., s_N} and T := {t_0, ..., t_L} list N + 1 sensors "
+        "and L + 1 targets for N and L (read s_1..s_N, t_1..t_L, as the constraints i = 1..N "
+        "do).",
         {"typos": ["algorithm1-while-true", "problem1-index", "sets-from-zero"]},
     )
