@@ -101,7 +101,7 @@ NEAR_THIRD = 0.35
     where="Theorem 6 (Sec. IV-A)",
     statement="The 1/3 of Theorem 6 is nearly attained also by the pair bound's own weights: "
     "sensor-target geometries exist where Algorithm 1 collects about a third of the optimum.",
-    paper="A 1/3-approximation \"for any omega\"; tightness is not discussed.",
+    paper="A 1/3-approximation \"for any $\\omega$\"; tightness is not discussed.",
     notebook="11_unchecked_statements",
 )
 def _thm6_tight(profile: str) -> Finding:

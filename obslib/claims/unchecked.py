@@ -53,9 +53,9 @@ def _eq4(n_geometries: int, n_refine: int, seed: int, u_max: float):
 @claim(
     id="eq4-collapse",
     where="Sec. III, Eqs. (3)-(4) and Theorem 1",
-    statement="The observability matrix derived from the Lie derivatives of every h_i (a u_o row "
-    "per sensor) \"can be rewritten\" as Eq. (4) with a single u_o row, and Theorem 1 bounds its "
-    "inverse condition number.",
+    statement="The observability matrix derived from the Lie derivatives of every $h_i$ (a $u_o$ "
+    "row per sensor) \"can be rewritten\" as Eq. (4) with a single $u_o$ row, and Theorem 1 "
+    "bounds its inverse condition number.",
     paper="Eq. (3) derived, Eq. (4) \"rewritten\"; Theorem 1 on Eq. (4).",
     notebook=NOTEBOOK,
 )
@@ -70,14 +70,15 @@ def _eq4_collapse(profile: str) -> Finding:
     status = "reproduced" if holds else "partly"
     small, big = ratios[1.0], ratios[100.0]
     ours = (
-        "Same rank, not the same conditioning: the derived matrix has O(o)^T O(o) + N u u^T, so "
-        "the control weighs sqrt(N) times more, and its worst case over ||u|| <= u_max is "
-        "sqrt(lambda_min / (lambda_max + N u_max^2)), Theorem 1 with sqrt(N) u_max. Theorem 1's "
+        "Same rank, not the same conditioning: the derived matrix has $O_d^T O_d = O(o)^T O(o) + "
+        "N u u^T$, so the control weighs $\\sqrt{N}$ times more, and its worst case over "
+        "$\\lVert u\\rVert \\le u_{\\max}$ is $\\sqrt{\\lambda_{\\min} / (\\lambda_{\\max} + N "
+        "u_{\\max}^2)}$, Theorem 1 with $\\sqrt{N} u_{\\max}$. Theorem 1's "
         f"bound fails for it in {below} of {p['n_refine']} random scenes (grid search of the "
         f"disc); the worst case is down to {small.min():.3f} of the bound in scenes of side 1 "
-        f"(median {np.median(small):.3f}, infimum 1/sqrt(N) as lambda_max / u_max^2 -> 0) and "
-        f"{big.min():.4f} in scenes of side 100. The bound holds for Eq. (4), and for the derived "
-        "matrix with u_max replaced by sqrt(N) u_max."
+        f"(median {np.median(small):.3f}, infimum $1/\\sqrt{{N}}$ as $\\lambda_{{\\max}} / "
+        f"u_{{\\max}}^2 \\to 0$) and {big.min():.4f} in scenes of side 100. The bound holds for "
+        "Eq. (4), and for the derived matrix with $u_{\\max}$ replaced by $\\sqrt{N} u_{\\max}$."
     )
     ev = {
         "violations": below,
@@ -125,10 +126,10 @@ def _np_complete(profile: str) -> Finding:
     status = "partly" if ok else "refuted"
     ratio = {r["L"]: _r(r["greedy"] / r["optimum"]) for r in solved}
     ours = (
-        "True for arbitrary weights, by a reduction from 3-dimensional matching (sensors X u Y, "
-        "targets Z, weight 1 on the triples of the instance): a perfect matching exists iff the "
-        f"optimum reaches q, confirmed by brute force on {red['agree']} of {red['n']} random "
-        f"instances ({red['with_matching']} with a matching). For the paper's geometric weights "
+        "True for arbitrary weights, by a reduction from 3-dimensional matching (sensors "
+        "$X \\cup Y$, targets $Z$, weight 1 on the triples of the instance): a perfect matching "
+        f"exists iff the optimum reaches $q$, confirmed by brute force on {red['agree']} of "
+        f"{red['n']} random instances ({red['with_matching']} with a matching). For the paper's geometric weights "
         "no hardness proof is known (the reduction needs free 0/1 weights). And NP-hardness does "
         "not make the optimum uncomputable at the paper's sizes: the exact 0-1 program proves it "
         f"up to L = {top}, N = {2 * top} within {p['time_budget']:g} s per instance "
@@ -159,8 +160,8 @@ def ordered_gap_example():
     where="Sec. V-C, Problem 3 and Fig. 8",
     statement="Fig. 8 compares the greedy with the optimum of Problem 3 (each unordered pair "
     "serves at most one target), solved by maximum weight bipartite matching.",
-    paper="Problem 3: \"all pairs are unique\" with sigma_1(l) < sigma_2(l); Fig. 8's relaxed "
-    "curve from the authors' code, which matches ordered pairs.",
+    paper="Problem 3: \"all pairs are unique\" with $\\sigma_1(l) < \\sigma_2(l)$; Fig. 8's "
+    "relaxed curve from the authors' code, which matches ordered pairs.",
     notebook=NOTEBOOK,
 )
 def _problem3(profile: str) -> Finding:
@@ -204,10 +205,10 @@ def _problem3(profile: str) -> Finding:
 @claim(
     id="sec4-mahalanobis-angle",
     where="Sec. IV (Mahalanobis distance) and Figs. 4-7",
-    statement="The sensors evaluate Theorem 4's bound with Mahalanobis distances d_io in the "
+    statement="The sensors evaluate Theorem 4's bound with Mahalanobis distances $d_{io}$ in the "
     "estimate's covariance.",
-    paper="d_io = sqrt((o_hat - p_i)^T Sigma^-1 (o_hat - p_i)); the angle theta_ji is not "
-    "discussed. The experiments keep the Euclidean angle.",
+    paper="$d_{io} = \\sqrt{(\\hat o - p_i)^T \\Sigma^{-1} (\\hat o - p_i)}$; the angle "
+    "$\\theta_{ji}$ is not discussed. The experiments keep the Euclidean angle.",
     notebook=NOTEBOOK,
 )
 def _mahalanobis(profile: str) -> Finding:
@@ -250,8 +251,8 @@ def _disc(n_seeds: int, seed: int, n_radii: int, n_angles: int):
     id="sec5b-control-ball",
     where="Sec. V-B, Fig. 7",
     statement="At each time step the adversarial target evaluates all the possible control inputs "
-    "within a ball of radius u_max and chooses the one that minimises C^-1.",
-    paper="\"evaluates all the possible control inputs within a ball of radius u_max\".",
+    "within a ball of radius $u_{\\max}$ and chooses the one that minimises $C^{-1}$.",
+    paper="\"evaluates all the possible control inputs within a ball of radius $u_{\\max}$\".",
     notebook=NOTEBOOK,
 )
 def _control_ball(profile: str) -> Finding:
@@ -266,7 +267,8 @@ def _control_ball(profile: str) -> Finding:
     freed = d["disc"]["entrapped"] < d["paper"]["entrapped"]
     status = "refuted" if freed else "partly"
     ours = (
-        "Fig. 7's run used u = 0 and 63 controls of norm u_max at 0, 0.1, ..., 6.2 rad, not the "
+        "Fig. 7's run used $u = 0$ and 63 controls of norm $u_{\\max}$ at angles "
+        "$0, 0.1, \\dots, 6.2$ rad, not the "
         f"ball (the replay with that set reproduces it to {g['logged_match']:.0e}). Along the "
         "published trajectory the whole disc lowers the target's per-step objective by at most "
         f"{g['gap'].max():.1e}, and over {p['n_seeds_disc']} noise seeds the target is entrapped "
@@ -311,8 +313,9 @@ def _half_citation(profile: str) -> Finding:
     id="paper-typos",
     where="Algorithm 1, Problems 1-3",
     statement="Algorithm 1, Problem 1 and the sets S and T are stated correctly.",
-    paper="Algorithm 1: \"while true\"; Problem 1: maximise sum_{i=1}^L omega(sigma_1(l), "
-    "sigma_2(l), t_l); S := {s_0, ..., s_N}, T := {t_0, ..., t_L}.",
+    paper="Algorithm 1: \"while true\"; Problem 1: maximise $\\sum_{i=1}^L \\omega(\\sigma_1(l), "
+    "\\sigma_2(l), t_l)$; $\\mathcal{S} := \\{s_0, \\ldots, s_N\\}$, $\\mathcal{T} := \\{t_0, "
+    "\\ldots, t_L\\}$.",
     notebook=NOTEBOOK,
 )
 def _typos(profile: str) -> Finding:
@@ -322,9 +325,10 @@ def _typos(profile: str) -> Finding:
         "partly",
         "Three misprints with an obvious intended reading: Algorithm 1's \"while true\" has no "
         "stopping rule (it must stop when every target has its pair, which comes first since "
-        "N >= 2L; greedy_pair_assignment stops there); Problem 1 sums over i = 1..L but indexes "
-        "by l (read l = 1..L); S := {s_0, ..., s_N} and T := {t_0, ..., t_L} list N + 1 sensors "
-        "and L + 1 targets for N and L (read s_1..s_N, t_1..t_L, as the constraints i = 1..N "
-        "do).",
+        "$N \\ge 2L$; `greedy_pair_assignment` stops there); Problem 1 sums over $i = 1, \\dots, "
+        "L$ but indexes by $l$ (read $l = 1, \\dots, L$); $\\mathcal{S} := \\{s_0, \\ldots, "
+        "s_N\\}$ and $\\mathcal{T} := \\{t_0, \\ldots, t_L\\}$ list $N + 1$ sensors and $L + 1$ "
+        "targets (read $s_1, \\dots, s_N$ and $t_1, \\dots, t_L$, as the constraints "
+        "$i = 1, \\dots, N$ do).",
         {"typos": ["algorithm1-while-true", "problem1-index", "sets-from-zero"]},
     )
