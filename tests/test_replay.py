@@ -11,7 +11,8 @@ from obslib.studies import replay as rp
 
 @pytest.fixture(scope="module")
 def comparisons():
-    return {n: rp.compare_replay(n) for n in ("best-pair", "best-partner", "fixed-pair", "adversarial")}
+    names = ("best-pair", "best-partner", "fixed-pair", "adversarial")
+    return {n: rp.compare_replay(n) for n in names}
 
 
 @pytest.mark.parametrize("name", ["best-pair", "best-partner", "adversarial"])

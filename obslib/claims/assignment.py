@@ -86,7 +86,8 @@ def _thm6_practice(profile: str) -> Finding:
         f"{r.size} small instances, median {np.median(r):.3f} of the optimum and above "
         f"{q05:.2f} in 95 %. (Geometries built by local search get down to {worst_ratio:.3f}: "
         "see thm6-tight.)",
-        {"quantile_05": q05, "median": float(np.median(r)), "worst_search_ratio": float(worst_ratio)},
+        {"quantile_05": q05, "median": float(np.median(r)),
+         "worst_search_ratio": float(worst_ratio)},
     )
 
 
@@ -104,7 +105,7 @@ NEAR_THIRD = 0.35
     title="Theorem 6's $1/3$ is nearly attained by the pair bound's own weights.",
     statement="The 1/3 of Theorem 6 is nearly attained also by the pair bound's own weights: "
     "sensor-target geometries exist where Algorithm 1 collects about a third of the optimum.",
-    paper="A 1/3-approximation \"for any omega\"; tightness is not discussed.",
+    paper="A 1/3-approximation \"for any $\\omega$\"; tightness is not discussed.",
     notebook="11_unchecked_statements",
 )
 def _thm6_tight(profile: str) -> Finding:

@@ -71,13 +71,15 @@ def _fig9(profile: str) -> Finding:
     status = "reproduced" if ok and lit_ok else ("partly" if ok or lit_ok else "refuted")
     return Finding(
         status,
-        f"Only with the prior $\\varepsilon I$, $\\varepsilon = {p['eps']:g}$, that this book adds: then the counts spread "
+        f"Only with the prior $\\varepsilon I$, $\\varepsilon = {p['eps']:g}$, that this book "
+        f"adds: then the counts spread "
         f"{within.min():.2f}-{within.max():.2f} within a trial (std across targets), "
         f"{rel.min():.2f}-{rel.max():.2f} of a uniformly random assignment's (single trials "
         f"range from {C.min()} to {C.max()} sensors on a target; mean counts within "
-        f"{mean_dev:.2f} of $N/L$, which symmetry alone guarantees, largest $\\lvert z\\rvert$ {z.max():.1f}). "
-        f"The paper's literal $\\log\\det(O^\\top O)$ is $-\\infty$ for teams of fewer than two sensors, so "
-        f"the greedy's first gains are $-\\infty - (-\\infty)$; skipping those (as MATLAB's max does), "
+        f"{mean_dev:.2f} of $N/L$, which symmetry alone guarantees, largest $\\lvert z\\rvert$ "
+        f"{z.max():.1f}). The paper's literal $\\log\\det(O^T O)$ is $-\\infty$ for teams of fewer "
+        f"than two sensors, so the greedy's first gains are $-\\infty - (-\\infty)$; skipping "
+        f"those (as MATLAB's max does), "
         f"target 1 takes {lit[..., 0].sum() / lit.sum():.0%} of all sensors "
         f"({lit_rel.min():.1f}-{lit_rel.max():.1f} times random's spread): not even.",
         {

@@ -54,9 +54,9 @@ def _eq4(n_geometries: int, n_refine: int, seed: int, u_max: float):
     id="eq4-collapse",
     where="Sec. III, Eqs. (3)-(4) and Theorem 1",
     title="Eq. (4) collapses one control row per sensor into one; does Theorem 1 cover the derived matrix?",
-    statement="The observability matrix derived from the Lie derivatives of every $h_i$ (a row "
-    "$u_o^\\top$ per sensor) \"can be rewritten\" as Eq. (4) with a single row $u_o^\\top$, and "
-    "Theorem 1 bounds its inverse condition number.",
+    statement="The observability matrix derived from the Lie derivatives of every $h_i$ (a $u_o$ "
+    "row per sensor) \"can be rewritten\" as Eq. (4) with a single $u_o$ row, and Theorem 1 "
+    "bounds its inverse condition number.",
     paper="Eq. (3) derived, Eq. (4) \"rewritten\"; Theorem 1 on Eq. (4).",
     notebook=NOTEBOOK,
 )
@@ -71,17 +71,15 @@ def _eq4_collapse(profile: str) -> Finding:
     status = "reproduced" if holds else "partly"
     small, big = ratios[1.0], ratios[100.0]
     ours = (
-        "Same rank, not the same conditioning: the derived matrix has Gram matrix "
-        r"$O(o)^\top O(o) + N u u^\top$, so the control weighs $\sqrt{N}$ times more, and its "
-        r"worst case over $\lVert u\rVert \le u_{\max}$ is "
-        r"$\sqrt{\lambda_{\min} / (\lambda_{\max} + N u_{\max}^2)}$, Theorem 1 with "
-        r"$\sqrt{N}\, u_{\max}$. Theorem 1's "
+        "Same rank, not the same conditioning: the derived matrix has $O_d^T O_d = O(o)^T O(o) + "
+        "N u u^T$, so the control weighs $\\sqrt{N}$ times more, and its worst case over "
+        "$\\lVert u\\rVert \\le u_{\\max}$ is $\\sqrt{\\lambda_{\\min} / (\\lambda_{\\max} + N "
+        "u_{\\max}^2)}$, Theorem 1 with $\\sqrt{N} u_{\\max}$. Theorem 1's "
         f"bound fails for it in {below} of {p['n_refine']} random scenes (grid search of the "
         f"disc); the worst case is down to {small.min():.3f} of the bound in scenes of side 1 "
-        f"(median {np.median(small):.3f}, infimum $1/\\sqrt{{N}}$ as "
-        f"$\\lambda_{{\\max}} / u_{{\\max}}^2 \\to 0$) and "
-        f"{big.min():.4f} in scenes of side 100. The bound holds for Eq. (4), and for the derived "
-        r"matrix with $u_{\max}$ replaced by $\sqrt{N}\, u_{\max}$."
+        f"(median {np.median(small):.3f}, infimum $1/\\sqrt{{N}}$ as $\\lambda_{{\\max}} / "
+        f"u_{{\\max}}^2 \\to 0$) and {big.min():.4f} in scenes of side 100. The bound holds for "
+        "Eq. (4), and for the derived matrix with $u_{\\max}$ replaced by $\\sqrt{N} u_{\\max}$."
     )
     ev = {
         "violations": below,
@@ -130,18 +128,18 @@ def _np_complete(profile: str) -> Finding:
     status = "partly" if ok else "refuted"
     ratio = {r["L"]: _r(r["greedy"] / r["optimum"]) for r in solved}
     ours = (
-        "True for arbitrary weights, by a reduction from 3-dimensional matching (sensors X u Y, "
-        "targets Z, weight 1 on the triples of the instance): a perfect matching exists iff the "
-        f"optimum reaches q, confirmed by brute force on {red['agree']} of {red['n']} random "
-        f"instances ({red['with_matching']} with a matching). For the paper's geometric weights "
+        "True for arbitrary weights, by a reduction from 3-dimensional matching (sensors "
+        "$X \\cup Y$, targets $Z$, weight 1 on the triples of the instance): a perfect matching "
+        f"exists iff the optimum reaches $q$, confirmed by brute force on {red['agree']} of "
+        f"{red['n']} random instances ({red['with_matching']} with a matching). For the paper's geometric weights "
         "no hardness proof is known (the reduction needs free 0/1 weights). And NP-hardness does "
         "not make the optimum uncomputable at the paper's sizes: the exact 0-1 program proves it "
         f"up to L = {top}, N = {2 * top} within {p['time_budget']:g} s per instance "
         + (f"(greedy / optimum there {ratio[top]:.3f})" if top else "")
         + ", where Fig. 8 used only the relaxed upper bound."
     )
-    ev = {"reduction": red, "reach": [{k: (_r(v) if isinstance(v, float) else v) for k, v in r.items()}
-                                      for r in reach]}
+    rounded = [{k: (_r(v) if isinstance(v, float) else v) for k, v in r.items()} for r in reach]
+    ev = {"reduction": red, "reach": rounded}
     return Finding(status, ours, ev)
 
 
@@ -165,8 +163,8 @@ def ordered_gap_example():
     title="Fig. 8's relaxed optimum is Problem 3 as printed (unordered pairs).",
     statement="Fig. 8 compares the greedy with the optimum of Problem 3 (each unordered pair "
     "serves at most one target), solved by maximum weight bipartite matching.",
-    paper="Problem 3: \"all pairs are unique\" with $\\sigma_1(l) < \\sigma_2(l)$; Fig. 8's relaxed "
-    "curve from the authors' code, which matches ordered pairs.",
+    paper="Problem 3: \"all pairs are unique\" with $\\sigma_1(l) < \\sigma_2(l)$; Fig. 8's "
+    "relaxed curve from the authors' code, which matches ordered pairs.",
     notebook=NOTEBOOK,
 )
 def _problem3(profile: str) -> Finding:
@@ -213,7 +211,7 @@ def _problem3(profile: str) -> Finding:
     title="The experiments' bound uses Mahalanobis distances; what angle goes with them?",
     statement="The sensors evaluate Theorem 4's bound with Mahalanobis distances $d_{io}$ in the "
     "estimate's covariance.",
-    paper="$d_{io} = \\sqrt{(\\hat o - p_i)^\\top \\Sigma^{-1} (\\hat o - p_i)}$; the angle "
+    paper="$d_{io} = \\sqrt{(\\hat o - p_i)^T \\Sigma^{-1} (\\hat o - p_i)}$; the angle "
     "$\\theta_{ji}$ is not discussed. The experiments keep the Euclidean angle.",
     notebook=NOTEBOOK,
 )
@@ -274,7 +272,8 @@ def _control_ball(profile: str) -> Finding:
     freed = d["disc"]["entrapped"] < d["paper"]["entrapped"]
     status = "refuted" if freed else "partly"
     ours = (
-        r"Fig. 7's run used $u = 0$ and 63 controls of norm $u_{\max}$ at 0, 0.1, ..., 6.2 rad, not the "
+        "Fig. 7's run used $u = 0$ and 63 controls of norm $u_{\\max}$ at angles "
+        "$0, 0.1, \\dots, 6.2$ rad, not the "
         f"ball (the replay with that set reproduces it to {g['logged_match']:.0e}). Along the "
         "published trajectory the whole disc lowers the target's per-step objective by at most "
         f"{g['gap'].max():.1e}, and over {p['n_seeds_disc']} noise seeds the target is entrapped "
@@ -321,9 +320,9 @@ def _half_citation(profile: str) -> Finding:
     where="Algorithm 1, Problems 1-3",
     statement="Algorithm 1, Problem 1 and the sets S and T are stated correctly.",
     title="Algorithm 1, Problem 1 and the sets $S$, $T$ as printed.",
-    paper="Algorithm 1: \"while true\"; Problem 1: maximise "
-    "$\\sum_{i=1}^L \\omega(\\sigma_1(l), \\sigma_2(l), t_l)$; $S := \\{s_0, \\dots, s_N\\}$, "
-    "$T := \\{t_0, \\dots, t_L\\}$.",
+    paper="Algorithm 1: \"while true\"; Problem 1: maximise $\\sum_{i=1}^L \\omega(\\sigma_1(l), "
+    "\\sigma_2(l), t_l)$; $\\mathcal{S} := \\{s_0, \\ldots, s_N\\}$, $\\mathcal{T} := \\{t_0, "
+    "\\ldots, t_L\\}$.",
     notebook=NOTEBOOK,
 )
 def _typos(profile: str) -> Finding:
@@ -333,9 +332,10 @@ def _typos(profile: str) -> Finding:
         "partly",
         "Three misprints with an obvious intended reading: Algorithm 1's \"while true\" has no "
         "stopping rule (it must stop when every target has its pair, which comes first since "
-        r"$N \ge 2L$; `greedy_pair_assignment` stops there); Problem 1 sums over $i = 1..L$ but "
-        r"indexes by $l$ (read $l = 1..L$); $S := \{s_0, \dots, s_N\}$ and "
-        r"$T := \{t_0, \dots, t_L\}$ list $N + 1$ sensors and $L + 1$ targets for $N$ and $L$ "
-        r"(read $s_1..s_N$, $t_1..t_L$, as the constraints $i = 1..N$ do).",
+        "$N \\ge 2L$; `greedy_pair_assignment` stops there); Problem 1 sums over $i = 1, \\dots, "
+        "L$ but indexes by $l$ (read $l = 1, \\dots, L$); $\\mathcal{S} := \\{s_0, \\ldots, "
+        "s_N\\}$ and $\\mathcal{T} := \\{t_0, \\ldots, t_L\\}$ list $N + 1$ sensors and $L + 1$ "
+        "targets (read $s_1, \\dots, s_N$ and $t_1, \\dots, t_L$, as the constraints "
+        "$i = 1, \\dots, N$ do).",
         {"typos": ["algorithm1-while-true", "problem1-index", "sets-from-zero"]},
     )

@@ -59,7 +59,9 @@ def metric_choices(name: str = "best-pair") -> dict:
         mixed choice is the logged pair).
     """
     if name not in ("best-pair", "adversarial"):
-        raise ValueError(f"name must be 'best-pair' or 'adversarial' (runs of strategy (1)), got {name!r}")
+        raise ValueError(
+            f"name must be 'best-pair' or 'adversarial' (runs of strategy (1)), got {name!r}"
+        )
     run = published_run(name)
     setup = tr.PAPER_ADVERSARIAL if name == "adversarial" else tr.PAPER_CIRCLE
     S, u_max = setup.sensor_array, setup.u_max
@@ -107,7 +109,8 @@ def control_set_gap(n_radii: int = 20, n_angles: int = 360) -> dict:
     setup = tr.PAPER_ADVERSARIAL
     ps = setup.sensor_array[run.pairs]  # (steps, 2, 2)
     paper = tr.target_objective(ps, run.truth, tr.paper_controls(setup.u_max)).min(axis=-1)
-    disc = tr.target_objective(ps, run.truth, tr.disc_controls(setup.u_max, n_radii, n_angles)).min(axis=-1)
+    grid = tr.disc_controls(setup.u_max, n_radii, n_angles)
+    disc = tr.target_objective(ps, run.truth, grid).min(axis=-1)
     return {
         "paper": paper,
         "disc": disc,

@@ -1,4 +1,4 @@
-"""Fig. 9 with the paper's literal measure, log det(O^T O), next to the book's log det(O^T O + eps I).
+"""Fig. 9 with the paper's literal measure, log det(O^T O), and the book's log det(O^T O + eps I).
 
 Section V-D runs the greedy team assignment with "log determinant of the symmetric observability
 matrix", built from the sensors' rows only. For a team of fewer than two sensors that matrix is

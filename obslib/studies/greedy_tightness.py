@@ -41,7 +41,8 @@ def tight_geometry(n_sensors: int = 6, n_targets: int = 3, seed: int = 0, n_star
             raise ValueError(f"{name} must be a positive integer, got {v!r}")
     if n_sensors < 2 * n_targets:
         raise ValueError(f"need n_sensors >= 2 n_targets, got {n_sensors} and {n_targets}")
-    r, S, T = _search(int(n_sensors), int(n_targets), int(seed), int(n_starts), int(n_steps), float(u_max))
+    r, S, T = _search(int(n_sensors), int(n_targets), int(seed), int(n_starts), int(n_steps),
+                      float(u_max))
     return r, S.copy(), T.copy()
 
 
@@ -106,7 +107,9 @@ def jitter_ratios(sensors, targets, fractions, n_draws: int, seed: int = 0, u_ma
     if S.ndim != 2 or S.shape[1] != 2 or T.ndim != 2 or T.shape[1] != 2:
         raise ValueError(f"need sensors (N, 2) and targets (L, 2), got {S.shape} and {T.shape}")
     if S.shape[0] < 2 * T.shape[0] or T.shape[0] < 1:
-        raise ValueError(f"need at least one target and N >= 2 L, got N = {S.shape[0]}, L = {T.shape[0]}")
+        raise ValueError(
+            f"need at least one target and N >= 2 L, got N = {S.shape[0]}, L = {T.shape[0]}"
+        )
     if not (np.isfinite(S).all() and np.isfinite(T).all()):
         raise ValueError("sensor and target positions must be finite")
     f = np.asarray(fractions, dtype=float).reshape(-1)

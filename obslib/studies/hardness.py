@@ -46,7 +46,9 @@ def _check_3dm(q, triples) -> tuple[int, list]:
     out = []
     for t in triples:
         if len(t) != 3 or not all(isinstance(a, (int, np.integer)) and 0 <= a < q for a in t):
-            raise ValueError(f"each triple must be (x, y, z) with elements in 0..{q - 1}, got {t!r}")
+            raise ValueError(
+                f"each triple must be (x, y, z) with elements in 0..{q - 1}, got {t!r}"
+            )
         out.append(tuple(int(a) for a in t))
     return int(q), out
 
@@ -78,7 +80,8 @@ def random_3dm(q: int, n_triples: int, rng) -> list:
     """``n_triples`` distinct random triples over ``q``-element sets (a random 3DM instance)."""
     q, _ = _check_3dm(q, [])
     total = q**3
-    if isinstance(n_triples, bool) or not isinstance(n_triples, (int, np.integer)) or not 0 <= n_triples <= total:
+    if (isinstance(n_triples, bool) or not isinstance(n_triples, (int, np.integer))
+            or not 0 <= n_triples <= total):
         raise ValueError(f"n_triples must be an integer in 0..{total}, got {n_triples!r}")
     idx = rng.choice(total, size=int(n_triples), replace=False)
     return [(int(i // (q * q)), int(i // q % q), int(i % q)) for i in idx]
@@ -95,7 +98,8 @@ def reduction_check(n_instances: int, seed: int = 0, q_values=(2, 3, 4)) -> dict
     dict
         ``n``, ``agree`` (instances where both sides agree), ``with_matching``.
     """
-    if isinstance(n_instances, bool) or not isinstance(n_instances, (int, np.integer)) or n_instances < 1:
+    if (isinstance(n_instances, bool) or not isinstance(n_instances, (int, np.integer))
+            or n_instances < 1):
         raise ValueError(f"n_instances must be a positive integer, got {n_instances!r}")
     rng = np.random.default_rng(seed)
     agree = with_m = 0

@@ -216,12 +216,12 @@ def seed_typicality(n_seeds: int, first_seed: int = 0) -> dict:
     """
     if isinstance(n_seeds, bool) or not isinstance(n_seeds, (int, np.integer)) or n_seeds < 1:
         raise ValueError(f"n_seeds must be a positive integer, got {n_seeds!r}")
-    if isinstance(first_seed, bool) or not isinstance(first_seed, (int, np.integer)) or first_seed < 0:
+    if (isinstance(first_seed, bool) or not isinstance(first_seed, (int, np.integer))
+            or first_seed < 0):
         raise ValueError(f"first_seed must be a non-negative integer, got {first_seed!r}")
     pub = float(published_run("adversarial").bound.mean())
-    b = tr.simulate_batch(
-        tr.PAPER_ADVERSARIAL, "best-pair", seeds=range(int(first_seed), int(first_seed) + int(n_seeds))
-    )
+    seeds = range(int(first_seed), int(first_seed) + int(n_seeds))
+    b = tr.simulate_batch(tr.PAPER_ADVERSARIAL, "best-pair", seeds=seeds)
     m = b.bound.mean(axis=1)
     return {
         "published": pub,

@@ -3,8 +3,8 @@
 The computations live in one module per topic (:mod:`obslib.studies.replay`,
 :mod:`obslib.studies.greedy_tightness`, :mod:`obslib.studies.eq4`,
 :mod:`obslib.studies.hardness`, :mod:`obslib.studies.fig9_measure`,
-:mod:`obslib.studies.experiment_details`); this module holds the parameters of the notebook that shows
-them (``11_unchecked_statements``) under each profile.
+:mod:`obslib.studies.experiment_details`); this module holds the parameters of the notebook
+that shows them (``11_unchecked_statements``) under each profile.
 """
 
 from __future__ import annotations
