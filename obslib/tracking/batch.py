@@ -265,10 +265,10 @@ def _kind(strategy: str) -> str:
 
 
 def _run_key(arm):
-    """Arms with equal keys are the same runs: a fixed pair's run does not depend on the
-    metric, only its logged bound does."""
+    """Arms with equal keys are the same runs: the run of a fixed pair or of a criterion does not
+    depend on the metric, only its logged bound does."""
     setup, strategy = arm
-    if strategy == "fixed-pair" and setup.metric != "mahalanobis":
+    if _kind(strategy) != "bound" or strategy == "fixed-pair":
         return setup.replace(metric="mahalanobis"), strategy
     return arm
 
@@ -294,12 +294,13 @@ def _control_union(setups, B):
 
 
 def _with_metric(setup: TrackingSetup, r: BatchResult) -> BatchResult:
-    """The fixed-pair runs ``r`` with their bound logged in ``setup``'s metric."""
-    i, j = sorted(setup.fixed_pair)
+    """The runs ``r`` (of a fixed pair or a criterion) with their bound logged in ``setup``'s
+    metric."""
+    pairs = r.pairs.reshape(-1, 2)
     M = r.bound.size
     s = setup.sensor_array
     bound = fixed_pair_bound(
-        s[:, 0].copy(), s[:, 1].copy(), np.full(M, i), np.full(M, j), setup.u_max**2,
+        s[:, 0].copy(), s[:, 1].copy(), pairs[:, 0], pairs[:, 1], setup.u_max**2,
         r.estimate.reshape(-1, 2), r.cov.reshape(-1, 2, 2),
         np.full(M, setup.metric == "mahalanobis"),
     ).reshape(r.bound.shape)
@@ -314,8 +315,8 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
     seed=seeds[b])`` (the tests check this to rounding). Arms whose setups differ only in
     ``metric``, ``anchor``, ``fixed_pair``, ``adversary`` and ``controls`` share one pass of the
     batch engine; a run does not depend on the other runs of its pass. Identical arms are run
-    once and share their result; so are fixed-pair arms that differ only in the metric, whose
-    runs are the same (only the logged bound is evaluated with each metric).
+    once and share their result; so are arms of a fixed pair or a criterion that differ only in
+    the metric, whose runs are the same (only the logged bound is evaluated with each metric).
 
     Parameters
     ----------

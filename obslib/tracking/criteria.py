@@ -69,6 +69,7 @@ from .model import inverse_condition, pair_index
 __all__ = [
     "STRATEGIES",
     "CRITERIA",
+    "NAMES",
     "pair_draws",
     "information_scores",
     "icn_scores",

@@ -35,6 +35,20 @@ __all__ = [
 TIE_RTOL = 1e-9
 
 
+def _batch(batch, name: str = "batch") -> BatchResult:
+    if not isinstance(batch, BatchResult):
+        raise ValueError(f"{name} must be a BatchResult (simulate_batch, simulate_many, "
+                         f"monte_carlo), got {type(batch).__name__}")
+    return batch
+
+
+def _result(result) -> TrackingResult:
+    if not isinstance(result, TrackingResult) or isinstance(result, BatchResult):
+        raise ValueError(f"result must be one run (a TrackingResult; batch.run(b) of a batch), "
+                         f"got {type(result).__name__}")
+    return result
+
+
 def clearly_lower(a, b, rtol: float = TIE_RTOL) -> np.ndarray:
     """``a < b`` by more than ``rtol`` times the larger magnitude, elementwise.
 
@@ -73,6 +87,12 @@ def compare_strategies(mc: dict, reference: str = "best-pair", skip_first: bool 
         mean by more than :data:`TIE_RTOL` relatively (:func:`clearly_lower`): ties count for
         neither.
     """
+    if not isinstance(mc, dict) or not mc:
+        raise ValueError("mc must be a non-empty dict {strategy: BatchResult}")
+    for name, r in mc.items():
+        _batch(r, f"mc[{name!r}]")
+    if reference not in mc:
+        raise ValueError(f"reference {reference!r} is not among the strategies {list(mc)}")
     steps = next(iter(mc.values())).error.shape[1]
     sl = slice(1, None) if skip_first and steps > 1 else slice(None)
     stats = {}
@@ -152,14 +172,14 @@ def switch_back_fraction(batch: BatchResult) -> float:
     (``pairs[k + 1] != pairs[k]``) counts as going back when ``pairs[k + 1] == pairs[k - 1]``.
     Chattering between two nearly equal pairs shows as a high fraction.
     """
-    sw = batch.switched[:, 1:]
+    sw = _batch(batch).switched[:, 1:]
     back = (batch.pairs[:, 2:] == batch.pairs[:, :-2]).all(axis=2) & sw
     return float(back.sum() / max(sw.sum(), 1))
 
 
 def switch_rate(batch: BatchResult) -> np.ndarray:
     """Fraction of runs whose pair changes at each transition ``k -> k + 1``, ``(steps - 1,)``."""
-    return batch.switched.mean(axis=0)
+    return _batch(batch).switched.mean(axis=0)
 
 
 def bound_correlation(batch: BatchResult, bound: str = "own", skip_first: bool = True) -> dict:
@@ -175,6 +195,7 @@ def bound_correlation(batch: BatchResult, bound: str = "own", skip_first: bool =
     dict
         ``error`` and ``trace``: per-run correlations ``(B,)``.
     """
+    _batch(batch)
     sl = slice(1, None) if skip_first else slice(None)
     if bound == "own":
         b = batch.bound
@@ -221,6 +242,10 @@ def track_loss(batch: BatchResult, threshold: float = 0.5) -> dict:
     dict
         ``lost`` (B,) bool, ``mirrored`` (B,) bool, ``flip_step`` (B,) int (1-based; 0 if never).
     """
+    _batch(batch)
+    real = isinstance(threshold, (int, float, np.integer, np.floating))
+    if isinstance(threshold, (bool, np.bool_)) or not real or not np.isfinite(threshold):
+        raise ValueError(f"threshold must be a finite real number, got {threshold!r}")
     s = batch.setup.sensor_array
     i, j = batch.pairs[0, 0]
     m = mirror_point(batch.truth, s[i], s[j])
@@ -286,6 +311,7 @@ class Entrapment:
 
 def entrapment(result: TrackingResult) -> Entrapment:
     """Measure how well the adversarial target of Fig. 7 escapes (:class:`Entrapment`)."""
+    _result(result)
     path = np.vstack([result.truth, result.truth[-1] + result.control[-1]])
     c = path.mean(axis=0)
     ctrl = result.setup.control_array

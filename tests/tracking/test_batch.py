@@ -157,3 +157,23 @@ def test_criteria_arguments_raise():
         tr.simulate_batch(adv_next, "exact-icn", seeds=[0])
     with pytest.raises(ValueError, match="random strategy draws its pairs from the run's seed"):
         tr.simulate_batch(CIRCLE, "random", noise=tr.noise_table(CIRCLE, 0)[None])
+
+
+def test_criteria_runs_are_shared_between_metrics_and_log_each_metric_s_bound():
+    """A criterion's picks do not depend on the metric: the Euclidean arm reuses the
+    Mahalanobis arm's runs and only its logged bound differs, each equal to pair_bound_series
+    in its own metric."""
+    setup = CIRCLE.replace(steps=30)
+    eu = setup.replace(metric="euclidean")
+    arms = {(m, n): (su, n) for m, su in (("maha", setup), ("eu", eu)) for n in tr.CRITERIA}
+    many = tr.simulate_many(arms, seeds=[0, 1])
+    for n in tr.CRITERIA:
+        a, b = many[("maha", n)], many[("eu", n)]
+        assert b.estimate is a.estimate and b.setup == eu  # one run, two logs
+        for r, su, cov in ((a, setup, a.cov), (b, eu, None)):
+            want = tr.pair_bound_series(su, r.estimate.reshape(-1, 2), r.pairs.reshape(-1, 2),
+                                        None if cov is None else cov.reshape(-1, 2, 2))
+            np.testing.assert_allclose(r.bound.ravel(), want, rtol=1e-12)
+        alone = tr.simulate_batch(eu, n, seeds=[0, 1])  # the same as running it by itself
+        np.testing.assert_array_equal(alone.pairs, b.pairs)
+        np.testing.assert_allclose(alone.bound, b.bound, rtol=0, atol=1e-12)

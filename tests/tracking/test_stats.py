@@ -67,3 +67,17 @@ def test_switch_back_fraction_counts_returns_to_the_previous_pair():
                 back += p[k + 1] == p[k - 1]
     assert switches > 0
     assert tr.switch_back_fraction(b) == back / switches
+
+
+def test_statistics_name_bad_arguments():
+    mc = tr.monte_carlo(CIRCLE.replace(steps=10), 2, ["best-pair", "fixed-pair"])
+    with pytest.raises(ValueError, match="reference 'best-partner' is not among"):
+        tr.compare_strategies(mc, reference="best-partner")
+    with pytest.raises(ValueError, match="mc must be a non-empty dict"):
+        tr.compare_strategies({})
+    with pytest.raises(ValueError, match="batch must be a BatchResult"):
+        tr.switch_rate(mc["best-pair"].run(0))
+    with pytest.raises(ValueError, match="threshold must be a finite real number"):
+        tr.track_loss(mc["fixed-pair"], threshold="0.5")
+    with pytest.raises(ValueError, match="result must be one run"):
+        tr.entrapment(mc["best-pair"])
