@@ -1,4 +1,5 @@
-"""Checks of scalar parameters shared by the pair-form numerics and the studies: positive integers, finite non-negative floats."""
+"""Checks of scalar parameters shared by the pair-form numerics and the studies: positive integers,
+finite non-negative floats."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-r"""Theorem 1's bound :math:`\omega(S)` for every subset :math:`S` of the sensors, as a table or as a set function."""
+r"""Theorem 1's bound :math:`\omega(S)` for every subset :math:`S` of the sensors, as a table or as
+a set function."""
 
 from __future__ import annotations
 
@@ -56,7 +57,8 @@ def lower_bound_tables(vectors, u_max) -> np.ndarray:
 
 
 def lower_bound_table(sensors, target, u_max) -> np.ndarray:
-    r"""Theorem 1's bound :math:`\omega(S)` for every subset :math:`S` of ``sensors``, shape ``(2**N,)``.
+    r"""Theorem 1's bound :math:`\omega(S)` for every subset :math:`S` of ``sensors``, shape
+    ``(2**N,)``.
 
     Vectorised; agrees with :func:`obslib.lower_bound` (SVD) to rounding.
 

@@ -1,4 +1,5 @@
-r"""The controls every exact-versus-bound comparison sweeps: a polar grid of the disc :math:`\|u\| \le u_{\max}`."""
+r"""The controls every exact-versus-bound comparison sweeps: a polar grid of the disc :math:`\|u\|
+\le u_{\max}`."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-r"""Numerics of the pair closed form (Theorems 4-5): the bound on grids of :math:`(\alpha, \theta)`, its maximiser :math:`\alpha^*`, and Weyl's inequalities for 2x2 matrices.
+r"""Numerics of the pair closed form (Theorems 4-5): the bound on grids of :math:`(\alpha, \theta)`,
+its maximiser :math:`\alpha^*`, and Weyl's inequalities for 2x2 matrices.
 
 The symbolic side lives in :mod:`obslib.symbolic`; the audits that compare the two, and the
 published figure's grid, in :mod:`obslib.studies.pair_form`; the figures in
@@ -30,7 +31,8 @@ __all__ = [
 def fine_grid(
     alpha_max: float = 5.0, alpha_per_unit: int = 100, theta_quarter: int = 180
 ) -> tuple[np.ndarray, np.ndarray]:
-    r"""A grid of :math:`(\alpha, \theta)` that contains :math:`\alpha = 1` and :math:`\theta = 0, \pm\pi/2, \pm\pi` exactly.
+    r"""A grid of :math:`(\alpha, \theta)` that contains :math:`\alpha = 1` and :math:`\theta = 0,
+    \pm\pi/2, \pm\pi` exactly.
 
     :math:`\alpha = k / a` for :math:`k = 0, \dots, \lfloor \alpha_{\max} a \rfloor` with
     :math:`a` = ``alpha_per_unit``, and :math:`\theta = \pi (k / (2 m) - 1)` for
@@ -56,7 +58,8 @@ def fine_grid(
 
 
 def bound_surface(alpha, theta, u_max: float = 1.0, d_io: float = 1.0) -> np.ndarray:
-    r"""Theorem 4's bound (Eq. (9)) on the grid :math:`\theta \times \alpha`: ``Z[k, l]`` is :math:`\underline{C}^{-1}(\alpha_l, \theta_k)`.
+    r"""Theorem 4's bound (Eq. (9)) on the grid :math:`\theta \times \alpha`: ``Z[k, l]`` is
+    :math:`\underline{C}^{-1}(\alpha_l, \theta_k)`.
 
     Parameters
     ----------
@@ -98,7 +101,8 @@ class GridMax:
 
 
 def grid_maximum(alpha, theta, Z, atol: float = 1e-12) -> GridMax:
-    r"""Maximum of ``Z`` (shape ``(len(theta), len(alpha))``) and every grid point within ``atol`` of it.
+    r"""Maximum of ``Z`` (shape ``(len(theta), len(alpha))``) and every grid point within ``atol``
+    of it.
 
     Examples
     --------
@@ -136,7 +140,8 @@ def _check_theta_q(theta, u_over_d):
 
 
 def stationarity_alpha(alpha, theta, u_over_d):
-    r"""Eq. (34), the numerator of :math:`\partial \underline{C}^{-1} / \partial \alpha`, evaluated without cancellation.
+    r"""Eq. (34), the numerator of :math:`\partial \underline{C}^{-1} / \partial \alpha`, evaluated
+    without cancellation.
 
     .. math::
 
@@ -176,7 +181,8 @@ def stationarity_alpha(alpha, theta, u_over_d):
 
 
 def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):
-    r"""The :math:`\alpha^*` maximising Theorem 4's bound for a fixed :math:`\theta`, solved numerically.
+    r"""The :math:`\alpha^*` maximising Theorem 4's bound for a fixed :math:`\theta`, solved
+    numerically.
 
     Solves Eq. (34) (:func:`stationarity_alpha`) by bisection, for all :math:`\theta` at once.
     :math:`g(1) \ge 0` and :math:`g < 0` for large :math:`\alpha`, and :math:`g > 0` on
@@ -236,7 +242,8 @@ def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):
 
 
 def maximising_alpha_closed(theta, u_over_d):
-    r"""Closed form of the maximiser :math:`\alpha^*` (derived in :func:`obslib.symbolic.alpha_star_squared`).
+    r"""Closed form of the maximiser :math:`\alpha^*` (derived in
+    :func:`obslib.symbolic.alpha_star_squared`).
 
     .. math::
 
@@ -259,7 +266,8 @@ def maximising_alpha_closed(theta, u_over_d):
 
 # --- Theorem 1: Weyl step for 2x2 symmetric matrices -----------------------------------------
 def random_symmetric_2x2(n: int, seed: int, psd: bool = False) -> np.ndarray:
-    r"""``n`` random symmetric 2x2 matrices (shape ``(n, 2, 2)``) at scales :math:`10^{-3}` to :math:`10^3`.
+    r"""``n`` random symmetric 2x2 matrices (shape ``(n, 2, 2)``) at scales :math:`10^{-3}` to
+    :math:`10^3`.
 
     With ``psd=True`` they are Gram matrices :math:`R^T R` (as :math:`O(o)^T O(o)` and
     :math:`u u^T`); a quarter of those are rank one (a single row, like :math:`u u^T`).

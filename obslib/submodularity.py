@@ -204,7 +204,8 @@ class MonotonicityWitness:
 
 @dataclass(frozen=True)
 class SubmodularityWitness:
-    """``f(B + x) - f(B) > f(A + x) - f(A)`` with ``A`` a proper subset of ``B``, ``x`` not in ``B``."""
+    """``f(B + x) - f(B) > f(A + x) - f(A)`` with ``A`` a proper subset of ``B``, ``x`` not in
+    ``B``."""
 
     A: tuple
     B: tuple
@@ -460,7 +461,8 @@ class TableFlags:
     not_submodular: np.ndarray  #: some triple with ``gain_B > gain_A + tol``
     not_supermodular: np.ndarray  #: some triple with ``gain_B < gain_A - tol``
     monotone_witness_size: np.ndarray  #: ``|A + x|`` of the smallest decrease, -1 if none
-    submodular_witness_size: np.ndarray  #: ``|B|`` of the smallest submodularity witness, -1 if none
+    #: ``|B|`` of the smallest submodularity witness, -1 if none
+    submodular_witness_size: np.ndarray
 
 
 @lru_cache(maxsize=None)

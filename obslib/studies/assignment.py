@@ -1,4 +1,5 @@
-"""Studies of Algorithm 1 against the exact optimum of Problem 1 (Section IV-A, Theorem 6; notebook 03, claims of :mod:`obslib.claims.assignment`).
+"""Studies of Algorithm 1 against the exact optimum of Problem 1 (Section IV-A, Theorem 6; notebook
+03, claims of :mod:`obslib.claims.assignment`).
 
 The paper could not compute the optimum of Problem 1; for small instances we can, exactly, by
 dynamic programming over the sets of used sensors, for a whole batch of instances at once with
@@ -43,6 +44,15 @@ def pair_assignments(n: int, n_targets: int) -> tuple[np.ndarray, np.ndarray]:
     Returns ``(P, Q)``, each of shape ``(A, L)``: assignment ``a`` gives target ``l`` the pair
     ``(P[a, l], Q[a, l])`` with ``P < Q``. With non-negative weights an optimum of Problem 1
     assigns every target (``N >= 2L``), so these are all the candidates.
+
+    Examples
+    --------
+    Two targets, four sensors: three ways to split the sensors into two pairs, each in two orders:
+
+    >>> P, Q = pair_assignments(4, 2)
+    >>> [list(zip(p, q)) for p, q in zip(P.tolist(), Q.tolist())]  # doctest: +NORMALIZE_WHITESPACE
+    [[(0, 1), (2, 3)], [(0, 2), (1, 3)], [(0, 3), (1, 2)], [(1, 2), (0, 3)], [(1, 3), (0, 2)],
+     [(2, 3), (0, 1)]]
     """
     if n < 2 * n_targets or n_targets < 1:
         raise ValueError(f"need L >= 1 and N >= 2L, got N = {n}, L = {n_targets}")
@@ -158,6 +168,15 @@ def batch_pair_bounds(sensors, targets, u_max) -> tuple[np.ndarray, np.ndarray]:
     shape ``(K, N, N, L)``, equal bit for bit to ``pair_bounds(sensors[k], targets[k], u_max)``
     (same normalisation, same kernel), and ``valid[k]``, false where that call would raise
     because two sensors coincide or a sensor sits on a target (``W[k]`` is then meaningless).
+
+    Examples
+    --------
+    >>> import obslib as ob
+    >>> S = np.array([[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]])
+    >>> T = np.array([[[0.5, 0.5], [2.0, 2.0]]])
+    >>> W, valid = batch_pair_bounds(S, T, 1.0)
+    >>> W.shape, valid, bool(np.array_equal(W[0], ob.pair_bounds(S[0], T[0], 1.0)))
+    ((1, 4, 4, 2), array([ True]), True)
     """
     S = np.asarray(sensors, dtype=float)
     T = np.asarray(targets, dtype=float)
@@ -207,7 +226,8 @@ def _random_geometry(rng, n, n_targets, side):
 
 
 def _ratios(S, T, u_max) -> np.ndarray:
-    """Greedy / optimum for a batch of geometries; ``inf`` where the geometry or optimum is degenerate."""
+    """Greedy / optimum for a batch of geometries; ``inf`` where the geometry or optimum is
+    degenerate."""
     W, valid = batch_pair_bounds(S, T, u_max)
     W[~valid] = 0.0
     opt = optimal_values(W)
@@ -262,6 +282,12 @@ def worst_instance_search(n_sensors: int, n_targets: int, seed: int, n_starts: i
     -------
     (float, ndarray, ndarray)
         The smallest ratio found (the first start reaching it), and its sensors and targets.
+
+    Examples
+    --------
+    >>> ratio, sensors, targets = worst_instance_search(4, 2, seed=0, n_starts=2, n_steps=10)
+    >>> 1 / 3 <= ratio <= 1, sensors.shape, targets.shape
+    (True, (4, 2), (2, 2))
     """
     if n_starts < 1 or n_steps < 0:
         raise ValueError(f"need n_starts >= 1 and n_steps >= 0, got {n_starts} and {n_steps}")
@@ -302,6 +328,16 @@ def charging(W, greedy_triples, optimal_triples) -> list[dict]:
     list of dict
         Per round: ``pick``, ``w`` (its weight), ``charged`` (the optimal triples) and their
         weights ``charged_w``.
+
+    Examples
+    --------
+    On :func:`tight_weights` the greedy's first pick is charged with all three optimal triples:
+
+    >>> import obslib as ob
+    >>> W = tight_weights()
+    >>> rounds = charging(W, ob.greedy_pair_assignment(W).triples, ob.optimal_pair_assignment(W).triples)
+    >>> [(r["pick"], len(r["charged"])) for r in rounds]
+    [((0, 1, 0), 3), ((2, 3, 1), 0), ((4, 5, 2), 0)]
     """
     W = np.asarray(W, dtype=float)
     left = list(optimal_triples)
@@ -321,7 +357,8 @@ def charging(W, greedy_triples, optimal_triples) -> list[dict]:
 
 
 def tight_weights(eps: float = 1e-3) -> np.ndarray:
-    r"""Weights (not from geometry) on which Algorithm 1 gets :math:`(1 + \varepsilon) / 3` of the optimum.
+    r"""Weights (not from geometry) on which Algorithm 1 gets :math:`(1 + \varepsilon) / 3` of the
+    optimum.
 
     Six sensors and three targets: the triple ``(0, 1, t0)`` weighs :math:`1 + \varepsilon` and blocks the
     optimal ``(0, 2, t1)``, ``(1, 3, t2)``, ``(4, 5, t0)`` of weight 1 each; every other weight

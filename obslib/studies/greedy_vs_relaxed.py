@@ -1,4 +1,6 @@
-"""Fig. 8's experiment: greedy unique pairs against the relaxed matching and the exact optimum as the number of targets grows (Section V-C; notebook 07, claims of :mod:`obslib.claims.greedy_vs_relaxed`)."""
+"""Fig. 8's experiment: greedy unique pairs against the relaxed matching and the exact optimum as
+the number of targets grows (Section V-C; notebook 07, claims of
+:mod:`obslib.claims.greedy_vs_relaxed`)."""
 
 from __future__ import annotations
 
@@ -71,6 +73,12 @@ def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float
 
     ``backend``, ``n_jobs`` and ``scheduler`` go to :func:`obslib.sweep.run_sweep`; the numbers do
     not depend on them.
+
+    Examples
+    --------
+    >>> r = fig8_sweep([1, 2], trials=2, seed=0)
+    >>> r["L"].tolist(), r["greedy"].shape
+    ([1, 2], (2, 2))
     """
     L_values = [int(L) for L in L_values]
     tasks = [

@@ -1,4 +1,5 @@
-"""Audits of the pair closed form (Theorems 4-5, Fig. 2, the Weyl step of Theorem 1) against SymPy and brute force (notebook 02, claims of :mod:`obslib.claims.pair_form`).
+"""Audits of the pair closed form (Theorems 4-5, Fig. 2, the Weyl step of Theorem 1) against SymPy
+and brute force (notebook 02, claims of :mod:`obslib.claims.pair_form`).
 
 The symbolic side lives in :mod:`obslib.symbolic` and the numerics in :mod:`obslib.pair_form`;
 this module compares them with :func:`obslib.pair_bounds` and :func:`obslib.pair_bound_polar`
@@ -109,6 +110,15 @@ def max_difference_at_rational_points(
     float
         The largest absolute difference; a point where the difference is not finite counts
         as infinity.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from obslib import symbolic as sy
+    >>> d = max_difference_at_rational_points(sp.sin(sy.THETA)**2 + sp.cos(sy.THETA)**2, 1,
+    ...                                       {sy.THETA: (0.0, 3.0)}, n_points=5)
+    >>> d < 1e-40
+    True
     """
     import mpmath
     import sympy as sp
@@ -150,7 +160,8 @@ def max_difference_at_rational_points(
 
 # --- Fig. 2 grid --------------------------------------------------------------------------------
 def paper_grid(alpha_max: float = 5.0, step: float = 0.1) -> tuple[np.ndarray, np.ndarray]:
-    r"""The grid of the published Fig. 2: ``alpha = 0:step:alpha_max``, ``theta = -pi:step:pi`` (MATLAB ranges).
+    r"""The grid of the published Fig. 2: ``alpha = 0:step:alpha_max``, ``theta = -pi:step:pi``
+    (MATLAB ranges).
 
     Values are :math:`k h` and :math:`-\pi + k h` with :math:`h` = ``step``, so with the
     default ``step = 0.1`` there are 51 values of :math:`\alpha` and 63 of :math:`\theta`, and
@@ -180,7 +191,8 @@ class Fig2Grid:
 
     alpha: np.ndarray  #: grid axis of ``alpha``
     theta: np.ndarray  #: grid axis of ``theta_ji``
-    Z: np.ndarray  #: the bound, shape ``(len(theta), len(alpha))`` (:func:`obslib.pair_form.bound_surface`)
+    #: the bound, shape ``(len(theta), len(alpha))`` (:func:`obslib.pair_form.bound_surface`)
+    Z: np.ndarray
     maximum: GridMax  #: its maximum and the grid points attaining it
 
 
@@ -222,6 +234,11 @@ def dual_weyl_printed_range(r: int = 2) -> list[tuple[int, int, int]]:
 
     Returns ``[(i, j, i + j - r), ...]``; entries with index ``< 1`` are meaningless
     (``lambda_0`` does not exist): the correct range is ``i + j - r >= 1``.
+
+    Examples
+    --------
+    >>> dual_weyl_printed_range(2)
+    [(1, 1, 0), (1, 2, 1), (2, 1, 1), (2, 2, 2)]
     """
     r = positive_int("r", r)
     return [(i, j, i + j - r) for i in range(1, r + 1) for j in range(1, r + 1) if i + j - r <= r]
@@ -239,8 +256,11 @@ class Theorem4Audit:
     """SymPy's eigenvalues of ``O_ij^T O_ij`` against Eq. (33) and Theorem 4, and against obslib."""
 
     polar_matrix_printed_equal: bool  #: printed polar matrix - derived expands to 0
-    eigenvalues_printed_equal: bool  #: SymPy eigenvalues (polar) - Eq. (33): 0 (see theorem4_audit)
-    theorem4_ratio_equal: bool  #: lambda_min/(lambda_max + u^2) in alpha, theta, q - Eq. (9)^2 -> 0
+    #: SymPy's eigenvalues (polar) minus Eq. (33) vanish (see :func:`theorem4_audit`)
+    eigenvalues_printed_equal: bool
+    #: :math:`\lambda_{\min}/(\lambda_{\max} + u^2)` in :math:`\alpha, \theta, q` minus Eq. (9)
+    #: squared cancels to 0
+    theorem4_ratio_equal: bool
     cartesian_discriminant_equal: bool  #: Cartesian discriminant - Eq. (33)'s radicand expands to 0
     cartesian_max_difference: float  #: Cartesian SymPy bound vs Eq. (9) at rational points
     n_rational_points: int
@@ -276,6 +296,14 @@ def theorem4_audit(
        at ``n_rational_points`` rational points with ``digits`` digits;
     4. the SymPy expressions evaluated (mpmath, 30 digits) equal :func:`obslib.pair_bounds` and
        :func:`obslib.pair_bound_polar` at ``n_random_points`` random points.
+
+    Examples
+    --------
+    >>> a = theorem4_audit(n_rational_points=3, n_random_points=5, seed=0, digits=20)
+    >>> a.polar_matrix_printed_equal, a.eigenvalues_printed_equal, a.theorem4_ratio_equal
+    (True, True, True)
+    >>> a.max_error_pair_bounds < 1e-12
+    True
     """
     import mpmath
 
@@ -344,6 +372,14 @@ def printed_matrix_audit() -> PrintedMatrixAudit:
 
     The witness is ``o = (0, 0)``, ``p_i = (1, 2)``, ``p_j = (3, 1)``: there the true matrix is
     ``[[10, 5], [5, 5]]`` and the printed one ``[[1, 6], [6, 1]]``, whose determinant is negative.
+
+    Examples
+    --------
+    >>> a = printed_matrix_audit()
+    >>> a.true_at_witness, a.printed_at_witness
+    (((10, 5), (5, 5)), ((1, 6), (6, 1)))
+    >>> [round(x, 9) for x in a.printed_eigenvalues_at_witness]
+    [-5.0, 7.0]
     """
     import sympy as sp
 
@@ -380,7 +416,7 @@ class Theorem5Audit:
     grid_max: tuple  #: per q, the grid maximum
     argmax: tuple  #: per q, the grid points within 1e-12 of the maximum
     predicted_max: tuple  #: per q, ``1 / sqrt(1 + q^2)``
-    symbolic_max_exact: bool  #: SymPy: C^-1(1, pi/2) - 1/sqrt(1+q^2) expands to 0
+    symbolic_max_exact: bool  #: SymPy expands :math:`C^{-1}(1, \pi/2) - 1/\sqrt{1+q^2}` to 0
     max_on_zero_lines: float  #: largest value on theta = 0, +-pi and on alpha = 0
     value_at_large_alpha: float  #: largest value at alpha = 1e6 over the theta grid and q's
     printed_max_halfpi_equal: float  #: printed max over theta vs C^-1(alpha, pi/2), rational points
@@ -401,6 +437,15 @@ def theorem5_audit(
     Theorem 5: the maximum ``1 / sqrt(1 + q^2)`` at ``alpha = 1``, ``theta = +-pi/2``; the
     minimum 0 at ``theta = 0, pi``, ``alpha = 0`` and ``alpha -> inf``. Also checks the proof's
     printed maximum over ``theta`` for fixed ``alpha`` at rational points.
+
+    Examples
+    --------
+    >>> a = theorem5_audit((0.0, 1.0), alpha_max=2.0, alpha_per_unit=4, theta_quarter=4,
+    ...                    n_rational_points=3)
+    >>> [round(float(v), 6) for v in a.grid_max], [round(float(v), 6) for v in a.predicted_max]
+    ([1.0, 0.707107], [1.0, 0.707107])
+    >>> a.symbolic_max_exact
+    True
     """
     import sympy as sp
 
@@ -440,17 +485,29 @@ class ThetaDerivativeAudit:
 
     closed_form_equal: bool  #: SymPy's derivative - our factored form vanishes identically
     slope_at_zero: str  #: right-hand slope at theta = 0 (a formula; the left one is its negative)
-    slope_at_zero_error: float  #: max |derivative at theta = +-1e-12 -+ formula| over the points
-    slope_at_zero_min: float  #: smallest slope over those points (> 0: a corner, not stationary)
-    square_second_derivative_zero: float  #: min of d^2(C^2)/d theta^2 at theta = 0 (> 0)
-    square_second_derivative_halfpi: float  #: its max at theta = pi/2, alpha != 1 (< 0)
+    #: largest :math:`|\partial C / \partial\theta (\pm 10^{-12}) \mp \mathrm{slope}|` over the
+    #: points
+    slope_at_zero_error: float
+    #: smallest slope over those points (positive, so a corner, not a stationary point)
+    slope_at_zero_min: float
+    #: smallest :math:`\partial^2 (C^2) / \partial\theta^2` at :math:`\theta = 0` (positive)
+    square_second_derivative_zero: float
+    #: its largest value at :math:`\theta = \pi/2`, :math:`\alpha \ne 1` (negative)
+    square_second_derivative_halfpi: float
     corner_halfpi_slopes: tuple  #: (left, right) slopes in theta at alpha = 1, theta = pi/2, q = 1
 
 
 @lru_cache(maxsize=4)
 def theta_derivative_audit(n_rational_points: int, seed: int) -> ThetaDerivativeAudit:
     """Check the theta part of the proof of Theorem 5 symbolically (see
-    :func:`obslib.symbolic.dbound_dtheta_closed`)."""
+    :func:`obslib.symbolic.dbound_dtheta_closed`).
+
+    Examples
+    --------
+    >>> a = theta_derivative_audit(n_rational_points=3, seed=0)
+    >>> a.closed_form_equal, a.slope_at_zero_min > 0
+    (True, True)
+    """
     import mpmath
     import sympy as sp
 
@@ -505,18 +562,32 @@ class AlphaDerivativeAudit:
     closed_form_equal: bool  #: SymPy's derivative - our factored form vanishes identically
     numerator_equals_eq36: bool  #: our numerator g - the printed Eq. (34) expands to 0
     printed_ratio_spread: tuple  #: (min, max) of true / printed derivative over rational points
-    slope_at_alpha0: float  #: max |slope at alpha = 0+ - |sin theta| / sqrt(1 + q^2)|
-    slope_at_alpha0_min: float  #: smallest slope at alpha = 0+ (> 0: alpha = 0 is not stationary)
-    halfpi_true_slopes: tuple  #: theta = pi/2, q = 1: slope on (0, 1), left and right at alpha = 1
+    #: largest :math:`|\partial C/\partial\alpha (0^+) - |\sin\theta| / \sqrt{1 + q^2}|`
+    slope_at_alpha0: float
+    #: smallest slope at :math:`\alpha = 0^+` (positive, so :math:`\alpha = 0` is not stationary)
+    slope_at_alpha0_min: float
+    #: at :math:`\theta = \pi/2`, :math:`q = 1`, the slope on :math:`(0, 1)` and left and right of
+    #: :math:`\alpha = 1`
+    halfpi_true_slopes: tuple
     halfpi_printed_at_1: float  #: the printed derivative at alpha = 1 (0)
-    halfpi_printed_vs_true: float  #: max |printed - true derivative| at theta = pi/2 on (0, 1)
-    halfpi_second_derivative_below_1: float  #: max |d^2 C/d alpha^2| on (0, 1), theta = pi/2 (0)
+    #: largest :math:`|` printed :math:`-` true derivative :math:`|` at :math:`\theta = \pi/2` on
+    #: :math:`(0, 1)`
+    halfpi_printed_vs_true: float
+    #: largest :math:`|\partial^2 C/\partial\alpha^2|` on :math:`(0, 1)`, :math:`\theta = \pi/2` (0)
+    halfpi_second_derivative_below_1: float
 
 
 @lru_cache(maxsize=4)
 def alpha_derivative_audit(n_rational_points: int, seed: int) -> AlphaDerivativeAudit:
     """Check the alpha part of the proof of Theorem 5 (see
-    :func:`obslib.symbolic.dbound_dalpha_closed`, :func:`obslib.symbolic.printed_dbound_dalpha`)."""
+    :func:`obslib.symbolic.dbound_dalpha_closed`, :func:`obslib.symbolic.printed_dbound_dalpha`).
+
+    Examples
+    --------
+    >>> a = alpha_derivative_audit(n_rational_points=3, seed=0)
+    >>> a.closed_form_equal, a.numerator_equals_eq36, a.halfpi_printed_at_1
+    (True, True, 0.0)
+    """
     import mpmath
     import sympy as sp
 
@@ -584,11 +655,13 @@ class AlphaStarAudit:
 
     u_over_d: tuple
     n_theta: int
-    max_closed_vs_numeric: float  #: max |closed form - bisection root|
+    #: largest :math:`|` closed form :math:`-` bisection root :math:`|`
+    max_closed_vs_numeric: float
     max_brute_force_gap: float  #: max of (best grid value - value at alpha*) (<= 0 up to rounding)
     min_distance_from_1: float  #: min over q > 0 and theta off {0, +-pi/2, pi} of alpha* - 1
-    alpha_star_at_q0: float  #: max |alpha* - 1| for q = 0 (stationary target)
-    symbolic_root_checks: float  #: max |Eq. (34)| at the derived closed form, rational points
+    alpha_star_at_q0: float  #: largest :math:`|\alpha^* - 1|` for :math:`q = 0` (stationary target)
+    #: largest absolute value of Eq. (34) at the derived closed form, at rational points
+    symbolic_root_checks: float
     stationarity_at_1: str  #: Eq. (34) at alpha = 1, factored
 
 
@@ -600,6 +673,12 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
     (``alpha*`` depends on ``theta`` only through ``sin^2`` and ``|cos|``). Brute force: the
     bound never beats its value at ``alpha*`` on a grid over ``[0, 10]`` (step 0.01) and on a
     finer grid around ``alpha*`` (step 1e-4, ``alpha* +- 0.005``).
+
+    Examples
+    --------
+    >>> a = alpha_star_audit((1.0,), n_theta=9, n_rational_points=3)
+    >>> a.max_closed_vs_numeric < 1e-12, a.min_distance_from_1 > 0
+    (True, True)
     """
     import sympy as sp
 
@@ -640,7 +719,9 @@ class WeylAudit:
 
     symbolic_triangle_equal: dict  #: name -> slack - triangle form expands to 0
     n_pairs: int
-    min_relative_slack: dict  #: name -> min of slack / (|X| + |Y|) over random pairs (>= -1e-15)
+    #: name -> smallest slack / :math:`(\|X\| + \|Y\|)` over random pairs (at least
+    #: :math:`-10^{-15}`)
+    min_relative_slack: dict
     min_ratio_slack: float  #: Eq. (19) over random PSD pairs
     printed_range: tuple  #: (i, j, index) admitted by the printed dual-Weyl range for r = 2
     invalid_indices: tuple  #: those with index < 1

@@ -1,4 +1,5 @@
-"""Audits of Section III's Theorems 1-3 and Remark 1 on seeded random scenes (notebook 01, claims of :mod:`obslib.claims.section3`).
+"""Audits of Section III's Theorems 1-3 and Remark 1 on seeded random scenes (notebook 01, claims of
+:mod:`obslib.claims.section3`).
 
 Each audit draws seeded random scenes (:mod:`obslib.scenes`), computes the quantity a claim
 is about in two independent ways, and returns the counts and extremes that decide it. The
@@ -45,7 +46,8 @@ class Theorem1Audit:
 
 
 def theorem1_audit(n_scenes: int, n_controls: int, seed: int) -> Theorem1Audit:
-    r"""Check Theorem 1, :math:`\underline{C}^{-1} \le C^{-1}(O(o, u))`, for random :math:`\|u\| \le u_{\max}`.
+    r"""Check Theorem 1, :math:`\underline{C}^{-1} \le C^{-1}(O(o, u))`, for random :math:`\|u\| \le
+    u_{\max}`.
 
     For every scene (:func:`obslib.scenes.random_scene_batch`), ``n_controls`` controls are
     drawn uniformly in the disc, plus the worst-case control :math:`u_{\max} v_{\max}`
@@ -135,6 +137,11 @@ def theorem3_terms(lam_before, lam_after, u2):
     ``(lambda'_max + u^2)(lambda_max + u^2)`` and numerator ``T1 + T2`` with
     ``T1 = lambda'_min lambda_max - lambda'_max lambda_min`` and
     ``T2 = u^2 (lambda'_min - lambda_min)``.
+
+    Examples
+    --------
+    >>> theorem3_terms((1.0, 4.0), (2.0, 4.0), u2=1.0)
+    (4.0, 1.0)
     """
     (lmin, lmax), (lmin2, lmax2) = lam_before, lam_after
     return lmin2 * lmax - lmax2 * lmin, u2 * (lmin2 - lmin)
@@ -147,8 +154,10 @@ class Theorem3Audit:
     n_trials: int
     counts: dict  #: condition name -> (trials where it holds, of those where the bound decreased)
     witnesses: dict  #: condition name -> one trial where it holds and the bound decreased
-    printed_implies_stated: bool  #: every trial meeting the proof's printed condition meets the stated one
-    remark2_necessary_violations: int  #: trials where the bound clearly increased but ``T1 + T2 < 0``
+    #: every trial meeting the proof's printed condition meets the stated one
+    printed_implies_stated: bool
+    #: trials where the bound clearly increased but ``T1 + T2 < 0``
+    remark2_necessary_violations: int
 
 
 def theorem3_audit(n_trials: int, seed: int) -> Theorem3Audit:
@@ -226,7 +235,8 @@ class Remark1Audit:
     n_scenes: int
     max_stationary_error: float  #: max ``|C^{-2}(O(o, 0)) - lambda_min / lambda_max|``
     max_moving_error: float  #: max ``|C^{-1}(O(o, u*)) - bound(u_max)|`` with ``||u*|| = u_max``
-    min_over_disc_gap: float  #: min over scenes of (grid minimum of ``C^{-1}`` over the disc) - bound
+    #: min over scenes of (grid minimum of ``C^{-1}`` over the disc) - bound
+    min_over_disc_gap: float
 
 
 def remark1_audit(n_scenes: int, seed: int, n_radii: int = 8, n_angles: int = 64) -> Remark1Audit:

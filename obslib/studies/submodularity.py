@@ -1,4 +1,5 @@
-"""Audits of Section IV-B: Theorem 7's counter-examples (Fig. 3) and Theorem 8's measures on random instances (notebook 04, claims of :mod:`obslib.claims.submodularity`).
+"""Audits of Section IV-B: Theorem 7's counter-examples (Fig. 3) and Theorem 8's measures on random
+instances (notebook 04, claims of :mod:`obslib.claims.submodularity`).
 
 The exhaustive machinery (set-function tables, witnesses, the fast verdicts) lives in
 :mod:`obslib.submodularity`; this module applies it to the paper's instances and to seeded
@@ -78,7 +79,7 @@ class CaseAudit:
 
     @property
     def verdict(self) -> str:
-        """Ledger status: ``refuted`` if our values do not show the printed comparison,
+        """The ledger status, ``refuted`` if our values do not show the printed comparison,
         ``reproduced`` if they do and every printed value matches, ``partly`` otherwise."""
         if not self.shows_with_ours:
             return "refuted"
@@ -160,6 +161,12 @@ def random_instances(n_instances: int, n_sensors: int, seed: int, kind: str = "g
         One of :data:`INSTANCE_KINDS`.
     side : float
         Side of the square the points are drawn from (default 10, the scale of Fig. 3).
+
+    Examples
+    --------
+    >>> sensors, targets = random_instances(3, 4, seed=0, kind="lines")
+    >>> sensors.shape, targets.shape
+    ((3, 4, 2), (3, 2))
     """
     if kind not in INSTANCE_KINDS:
         raise ValueError(f"kind must be one of {INSTANCE_KINDS}, got {kind!r}")
@@ -181,7 +188,7 @@ def random_instances(n_instances: int, n_sensors: int, seed: int, kind: str = "g
     return sensors, targets
 
 
-#: Configurations of the Theorem 8 audit: (name, eps is used, u row, min_size, instance kinds).
+#: Configurations of the Theorem 8 audit, each (name, eps is used, u row, min_size, instance kinds).
 CONFIGS = (
     ("eps I, no u row", True, False, 0, INSTANCE_KINDS),
     ("eps I, u row", True, True, 0, INSTANCE_KINDS),
@@ -293,6 +300,12 @@ def measure_audit(name: str, n_instances: int, n_sensors: int, seed: int, eps: f
     configuration. With a ``u`` row, each instance gets a control of norm ``u_max`` in a random
     direction. The witnesses are the smallest over instances (smallest ``|B|``, then the first
     instance), each the smallest of its instance in the order of :func:`audit_tables`.
+
+    Examples
+    --------
+    >>> a = measure_audit("logdet", 20, 4, seed=0, eps=1.0, u_max=1.0, config=CONFIGS[0][0])
+    >>> a.n_instances, a.increasing, a.submodular
+    (40, True, True)
     """
     if name not in MEASURES:
         raise ValueError(f"unknown measure {name!r}; known: {MEASURES}")
@@ -307,6 +320,12 @@ def theorem8_audit(n_instances: int, n_sensors: int, seed: int, eps: float,
     Rows in measure-major order, each equal to :func:`measure_audit` of its measure and
     configuration; the instances and ``tr``, ``det`` of ``O^T O`` are computed once per
     configuration and shared by the measures.
+
+    Examples
+    --------
+    >>> rows = theorem8_audit(20, 4, 0, 1.0, 1.0)
+    >>> len(rows) == len(CONFIGS) * 5, sorted({r.measure for r in rows if not r.submodular})
+    (True, ['neg_trace_inverse', 'trace_inverse'])
     """
     by_config = {c[0]: _measure_audits(MEASURES, n_instances, n_sensors, seed, eps, u_max, c[0])
                  for c in CONFIGS}
@@ -366,7 +385,16 @@ class LowerBoundAudit:
 @lru_cache(maxsize=8)
 def lower_bound_audit(n_instances: int, n_sensors: int, seed: int, u_max: float,
                       min_size: int = 2) -> LowerBoundAudit:
-    """Exhaustive monotonicity/submodularity check of ``omega`` on ``generic`` random instances."""
+    """Exhaustive monotonicity/submodularity check of ``omega`` on ``generic`` random instances.
+
+    Examples
+    --------
+    Theorem 7 on random instances: the bound is neither monotone nor submodular:
+
+    >>> a = lower_bound_audit(20, 5, seed=0, u_max=1.0)
+    >>> a.n_not_increasing > 0, a.n_not_submodular > 0
+    (True, True)
+    """
     s, t = random_instances(n_instances, n_sensors, seed, "generic")
     vals = lower_bound_tables(t[:, None, :] - s, u_max)
     fl = audit_flags(vals, n_sensors, min_size)

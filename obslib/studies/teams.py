@@ -1,4 +1,5 @@
-"""Studies of the greedy team assignment of Problem 2: Fig. 9's evenness and the greedy against the exact optimum (Sections IV-B and V-D; notebook 08, claims of :mod:`obslib.claims.teams`).
+"""Studies of the greedy team assignment of Problem 2: Fig. 9's evenness and the greedy against the
+exact optimum (Sections IV-B and V-D; notebook 08, claims of :mod:`obslib.claims.teams`).
 
 Fig. 9 of the paper plots, for ``L = 5`` targets and ``N = 20..50`` sensors in ``[0, 100]^2``,
 the mean and spread of the number of sensors the greedy (log det measure) gives to a target.
@@ -46,7 +47,14 @@ def fig9_trial(n_sensors: int, trial: int, seed: int, n_targets: int = 5, measur
 
 def fig9_trials(n_sensors: int, trials, seed: int, n_targets: int = 5, measure: str = "logdet",
                 eps: float = 1.0, side: float = 100.0) -> np.ndarray:
-    """:func:`fig9_trial` for several trials of one ``N`` at once (one batch), shape ``(len(trials), L)``."""
+    """:func:`fig9_trial` for several trials of one ``N`` at once (one batch), shape ``(len(trials),
+    L)``.
+
+    Examples
+    --------
+    >>> fig9_trials(20, [0, 1], seed=0).sum(axis=1)
+    array([20, 20])
+    """
     geoms = [fig9_geometry(n_sensors, t, seed, n_targets, side) for t in trials]
     return greedy_team_counts(np.array([g[0] for g in geoms]).reshape(-1, n_sensors, 2),
                               np.array([g[1] for g in geoms]).reshape(-1, n_targets, 2), measure, eps)
@@ -60,6 +68,11 @@ def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: st
     One task per ``N`` runs its trials as a batch (:func:`fig9_trials`); every trial keeps its own
     seed, so ``backend``, ``n_jobs`` and ``scheduler`` (for :func:`obslib.sweep.run_sweep`) do
     not change the counts.
+
+    Examples
+    --------
+    >>> fig9_sweep([20, 25], trials=2, seed=0).shape
+    (2, 2, 5)
     """
     N_values = [int(n) for n in N_values]
     tasks = [
@@ -75,6 +88,11 @@ def random_spread(n_sensors: int, n_targets: int) -> float:
     """Expected within-trial standard deviation scale of a uniformly random assignment.
 
     Each count is Binomial(N, 1/L): standard deviation ``sqrt(N (1/L)(1 - 1/L))``.
+
+    Examples
+    --------
+    >>> round(random_spread(20, 5), 4)
+    1.7889
     """
     p = 1.0 / n_targets
     return float(np.sqrt(n_sensors * p * (1 - p)))
@@ -126,6 +144,12 @@ def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets
     the same ``(N, L)`` are then solved together: a measure table over all ``2^N`` teams per
     target (:func:`obslib.measures.measure_from_vectors`), the greedy's teams looked up in it and
     the optimum found over all ``L^N`` assignments, as :func:`obslib.optimal_team_assignment` does.
+
+    Examples
+    --------
+    >>> ratios = greedy_vs_optimal_teams(5, seed=0)
+    >>> ratios.shape, bool(ratios.min() >= 0.5)
+    ((5,), True)
     """
     from ..bounds import relative_vectors
     from ..measures import measure_from_vectors, subset_masks
