@@ -126,13 +126,13 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     X, Y = A * np.cos(T), A * np.sin(T)
     surfaces = panels == "all"
     if surfaces:  # 3-D panels (a), (c) on the left, contours (b), (d) on the right
-        fig = plt.figure(figsize=(9.55, 8.6))
+        fig = plt.figure(figsize=(9.0, 8.1))  # at most 9 in: the book column
         grid = fig.add_gridspec(2, 2, width_ratios=[1, 1.534])
     else:  # (b) wide, (d) square
-        fig = plt.figure(figsize=(9.65, 4.6))
+        fig = plt.figure(figsize=(9.0, 4.3))
         grid = fig.add_gridspec(1, 2, width_ratios=[1.45, 1])
     rows = (
-        ("(a)", A, T, r"$\alpha$", r"$\theta_{ji}$"),
+        ("(a)", A, T, r"$\alpha = d_{jo}/d_{io}$", r"$\theta_{ji}$ (rad)"),
         ("(c)", X, Y, r"$\alpha\cos\theta_{ji}$", r"$\alpha\sin\theta_{ji}$"),
     )
     for row, (tag, P, R, xl, yl) in enumerate(rows):
@@ -149,7 +149,7 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
             ax3.set_zlabel(r"$\underline{C}^{-1}$")
         ax2 = fig.add_subplot(grid[row, 1] if surfaces else grid[0, row])
         cs = ax2.contour(P, R, Z, levels=list(levels), cmap="viridis")
-        ax2.clabel(cs, fontsize=7, fmt="%.1f")
+        ax2.clabel(cs, fontsize=9, fmt="%.1f")
         ax2.set_xlabel(xl)
         ax2.set_ylabel(yl)
         ax2.set_title(f"({'b' if row == 0 else 'd'}) contour")
