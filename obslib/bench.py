@@ -15,6 +15,13 @@ prints a few readable lines and, last, one JSON object.
     machine's description to ``book/data/scaling_times.json`` (``--write``), which the scaling
     notebook plots: measured times are committed data, so ``make book`` stays deterministic.
 
+``criteria``
+    Microseconds per pair evaluation of the bound and of each classical criterion of the
+    criteria notebook (:func:`obslib.studies.criteria.criterion_scores`), batched over many
+    estimates and for a single estimate, written with the machine's description to
+    ``book/data/criteria_times.json`` (``--write``), which that notebook reads: measured times
+    are committed data, so ``make book`` stays deterministic.
+
 ``book``
     ``exec_s``: executing every notebook at its default parameters the way ``make book`` does
     (papermill, one kernel per notebook, into a scratch folder); ``floor_s``: executing the same
@@ -35,7 +42,7 @@ import time
 import numpy as np
 
 __all__ = [
-    "one_pass", "bench_assignment", "bench_book", "bench_scaling", "evaluation_counts", "literal_count",
+    "one_pass", "bench_assignment", "bench_book", "bench_criteria", "bench_scaling", "evaluation_counts", "literal_count",
     "COUNTED",
     "SCALING_SIZES", "main",
 ]
@@ -174,9 +181,6 @@ def bench_scaling(seed: int = 0, repeat: int = 3) -> dict:
     --------
     >>> bench_scaling()  # doctest: +SKIP
     """
-    import os
-    import platform
-
     from . import assignment as a
     from .bounds import pair_bounds
 
@@ -200,12 +204,58 @@ def bench_scaling(seed: int = 0, repeat: int = 3) -> dict:
             print(f"{name:22s} N={n:5d} {times[-1]:10.4f} s", flush=True)
         out[name] = {"N": list(ns), "seconds": times}
     return {
-        "machine": f"{platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
-                   f"numpy {np.__version__}",
+        "machine": _machine(),
         "seed": seed,
         "repeat": repeat,
         "times": out,
     }
+
+
+def _machine() -> str:
+    import os
+    import platform
+
+    return (f"{platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
+            f"numpy {np.__version__}")
+
+
+def bench_criteria(n_timing: int = 1000, seed: int = 0, repeat: int = 3) -> dict:
+    """Cost of one decision per criterion: microseconds per pair, batched over ``n_timing``
+    estimates of the six sensors' 15 pairs, and per decision for a single estimate.
+
+    The estimates, covariances and controls are random draws around the paper's six sensors
+    (Section V-A); each score is timed best of ``repeat``.
+
+    Examples
+    --------
+    >>> bench_criteria(20, repeat=1)["per_pair_us"].keys()  # doctest: +SKIP
+    """
+    import timeit
+
+    from . import tracking as tr
+    from .studies import criteria as cs
+
+    rng = np.random.default_rng(seed)
+    S = tr.PAPER_CIRCLE.sensor_array
+    X = rng.uniform(-1.0, 5.0, size=(n_timing, 2))
+    A = rng.normal(0.0, 0.3, size=(n_timing, 2, 2))
+    C = A @ A.transpose(0, 2, 1) + 0.1 * np.eye(2)
+    U = rng.uniform(-2.0, 2.0, size=(n_timing, 2))
+    Q = R = 0.5 * np.eye(2)
+    n_pairs = len(S) * (len(S) - 1) // 2
+    per_pair, per_decision = {}, {}
+    for name in cs.SCORES:
+        def score(b=n_timing, name=name):
+            return cs.criterion_scores(name, S, X[:b], C[:b], Q, R, 3.0, control=U[:b])
+        score(1)  # first-call costs are not timed
+        t_batch = min(timeit.repeat(score, number=5, repeat=repeat)) / 5
+        t_one = min(timeit.repeat(lambda: score(1), number=200, repeat=repeat)) / 200
+        per_pair[name] = round(1e6 * t_batch / (n_timing * n_pairs), 4)
+        per_decision[name] = round(1e6 * t_one, 1)
+        print(f"{name:10s} {per_pair[name]:7.3f} us per pair (batched)"
+              f"  {per_decision[name]:6.0f} us per decision (one estimate)", flush=True)
+    return {"machine": _machine(), "seed": seed, "n_timing": n_timing, "repeat": repeat,
+            "per_pair_us": per_pair, "per_decision_us": per_decision}
 
 
 def bench_book(profile: str = "paper") -> dict:
@@ -272,14 +322,14 @@ def parse_args(argv=None) -> argparse.Namespace:
 
     ap = argparse.ArgumentParser(prog="python -m obslib.bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("which", choices=["assignment", "book", "scaling"], help="benchmark to run")
-    ap.add_argument("--write", help="scaling: also write the JSON to this file")
+    ap.add_argument("which", choices=["assignment", "book", "criteria", "scaling"], help="benchmark to run")
+    ap.add_argument("--write", help="scaling, criteria: also write the JSON to this file")
     ap.add_argument("--profile", default="paper", choices=profile_names(),
                     help="book: parameter profile of the notebooks (default: paper, their defaults)")
     args = ap.parse_args(argv)
     if args.write is not None:
-        if args.which != "scaling":
-            ap.error("--write applies to the scaling benchmark only")
+        if args.which not in ("scaling", "criteria"):
+            ap.error("--write applies to the scaling and criteria benchmarks only")
         if not args.write or Path(args.write).is_dir():
             ap.error(f"--write {args.write!r}: give a file name")
     if args.profile != "paper" and args.which != "book":
@@ -300,7 +350,7 @@ def main(argv=None) -> int:
     elif args.which == "book":
         result = bench_book(args.profile)
     else:
-        result = bench_scaling()
+        result = bench_scaling() if args.which == "scaling" else bench_criteria()
         if args.write:
             from pathlib import Path
 
