@@ -139,7 +139,7 @@ def test_claims_cli_errors_are_argparse_errors(argv, message, capsys):
 @pytest.mark.parametrize("argv, message", [
     (["book", "--profile", "nosuch"], "invalid choice"),
     (["nosuch"], "invalid choice"),
-    (["book", "--write", "x.json"], "scaling benchmark only"),
+    (["book", "--write", "x.json"], "scaling and criteria benchmarks only"),
     (["scaling", "--write", "."], "give a file name"),
 ])
 def test_bench_cli_errors_are_argparse_errors(argv, message, capsys):
