@@ -318,6 +318,9 @@ def dead_links(book: Path, rel: str) -> list[str]:
     page = book / rel
     dead = []
     for href in _HREF.findall(page.read_text(errors="replace")):
+        if re.match(r"^https?://[^/]+\.(md|py|ipynb|txt|json|yml|cfg|toml)/?$", href, re.I):
+            dead.append(href)  # a file name that linkify turned into a web address
+            continue
         if re.match(r"^[a-z][a-z0-9+.-]*:", href, re.I) or href.startswith("//"):
             continue  # external (http, mailto, ...): a plain hyperlink, fetched only if followed
         target, _, frag = href.partition("#")
@@ -435,10 +438,11 @@ def test_dead_links_finds_missing_files_and_anchors(tmp_path):
         '<a href="../b.html#top">ok</a> <a href="../b.html#nowhere">bad anchor</a> '
         '<a href="../c.html">missing</a> <a href="#here">bad local</a> <p id="there"></p> '
         '<a href="#there">ok local</a> <a href="https://example.org/x">external</a> '
-        '<a href="mailto:a@b.c">mail</a>'
+        '<a href="mailto:a@b.c">mail</a> <a href="http://NOTES.md">a file name made a link</a>'
     )
     _ids.cache_clear()
-    assert dead_links(tmp_path, "sub/a.html") == ["#here", "../b.html#nowhere", "../c.html"]
+    assert dead_links(tmp_path, "sub/a.html") == [
+        "#here", "../b.html#nowhere", "../c.html", "http://NOTES.md"]
 
 
 def test_ledger_ids_on_pages_link_to_their_report_entries(book):

@@ -59,9 +59,10 @@ def _published_replay(profile: str) -> Finding:
     adv = cmp["adversarial"]
     run = rp.replay("adversarial")
     near = float((abs(t["per_run"] - t["published"]) <= FIGURE_TOLERANCE * t["published"]).mean())
+    steps = sum(c.steps for c in runs)
     ours = (
         f"Replayed with the recovered noise, strategies (1), (2) and the adversarial run choose "
-        f"the logged pair at all {3 * 315} steps and give all {total} logged numbers to "
+        f"the logged pair at all {steps} steps and give all {total} logged numbers to "
         f"{largest:.1e} at most (the log's rounding); the unknown noise entries are never read. "
         f"Strategy (3) can be checked only at step {fixed.steps} (its sensor s1 was measured by "
         f"no other run). The adversarial run is reproduced exactly (mean bound "

@@ -19,6 +19,7 @@ __all__ = ["render_report", "notebook_labels", "typeset", "MARKERS"]
 
 #: Marker comments around the parts of the report that the introduction includes.
 MARKERS = {
+    "summary": ("% summary: start", "% summary: end"),
     "verdicts": ("% verdicts: start", "% verdicts: end"),
     "exceptions": ("% exceptions: start", "% exceptions: end"),
 }
@@ -198,8 +199,15 @@ def render_report(records: list[Record], profile: str = "paper", labels=None) ->
     def title(r: Record) -> str:
         return typeset(r.title or r.statement)
 
-    lines = [HEADER.format(profile=profile), "## Summary", ""]
     counts = Counter(r.status for r in records)
+    words = {"partly": "partly reproduced"}
+    parts = [f"{counts[s]} {words.get(s, s)}" for s in STATUSES if counts.get(s)]
+    if parts:
+        first = next(s for s in STATUSES if counts.get(s))
+        parts[0] = parts[0].replace(" ", " is " if counts[first] == 1 else " are ", 1)
+    tally = ", ".join(parts[:-1]) + (" and " if len(parts) > 1 else "") + parts[-1] if parts else "none"
+    lines = [HEADER.format(profile=profile), "## Summary", "", MARKERS["summary"][0],
+             f"Of the {len(records)} claims of the ledger, {tally}.", MARKERS["summary"][1], ""]
     lines += ["| verdict | claims |", "| --- | --- |"]
     lines += [f"| {s} | {counts.get(s, 0)} |" for s in STATUSES]
     lines += [f"| total | {len(records)} |", "", "## Verdicts at a glance", ""]
