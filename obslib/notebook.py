@@ -1,15 +1,17 @@
-"""What the book's notebooks share: how figures are drawn inline, how small numbers print.
+"""What the book's notebooks share: how figures are drawn inline, how numbers print.
 
 Every notebook calls :func:`setup_figures` in its import cell, so the nine notebooks draw their
 figures the same way and each figure is drawn once. :func:`format_small` prints a
 rounding-level number as a bound, so stored outputs are the same on every machine.
+:func:`formatted_table` gives a table whose cells are already formatted text, so its HTML and
+text outputs are the same at every run (a pandas ``Styler`` would store its memory address).
 """
 
 from __future__ import annotations
 
 from ._format import format_small
 
-__all__ = ["format_small", "setup_figures"]
+__all__ = ["format_small", "formatted_table", "setup_figures"]
 
 
 def setup_figures() -> None:
@@ -31,3 +33,26 @@ def setup_figures() -> None:
 
     set_matplotlib_formats("png", bbox_inches=None)
     mpl.rcParams["axes.titley"] = 1.0
+
+
+def formatted_table(table, fmt: str = "{:.3f}", formats=None, na: str = "\u2013"):
+    """``table`` (a DataFrame) with every cell formatted as text: ``fmt`` by default,
+    ``formats[column]`` for the columns given, ``na`` for missing values.
+
+    Examples
+    --------
+    >>> import numpy as np, pandas as pd
+    >>> t = pd.DataFrame({"n": [1000.0, np.nan], "r": [0.5, 0.25]})
+    >>> formatted_table(t, formats={"n": "{:,.0f}"}).to_dict("list")
+    {'n': ['1,000', '–'], 'r': ['0.500', '0.250']}
+    """
+    formats = dict(formats or {})
+    unknown = set(formats) - set(table.columns)
+    if unknown:
+        raise ValueError(f"formats name columns the table does not have: {sorted(unknown)}")
+    out = table.astype(object).copy()
+    for col in table.columns:
+        f = formats.get(col, fmt)
+        out[col] = [na if v is None or (isinstance(v, float) and v != v) else f.format(v)
+                    for v in table[col]]
+    return out

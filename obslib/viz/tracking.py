@@ -48,7 +48,7 @@ def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
     s = np.asarray(sensors, dtype=float)
     ax.plot(*s.T, "^", color="tab:blue", ms=ms, **({} if label is None else {"label": label}))
     for n, p in enumerate(s):
-        ax.annotate(sensor_label(n), p, textcoords="offset points", xytext=(4, 4), fontsize=8)
+        ax.annotate(sensor_label(n), p, textcoords="offset points", xytext=(4, 4), fontsize=9)
 
 
 def draw_snapshot(ax, result, k: int, *, legend: bool = True, ellipse_scale=1.0):
@@ -72,7 +72,7 @@ def draw_snapshot(ax, result, k: int, *, legend: bool = True, ellipse_scale=1.0)
     i0, j0 = result.pairs[i]
     ax.set_title(f"k = {k}, pair ({sensor_label(i0)}, {sensor_label(j0)})", fontsize=9)
     if legend:
-        ax.legend(fontsize=6, loc="lower left")
+        ax.legend(fontsize=9, loc="lower left")
     return ax
 
 
