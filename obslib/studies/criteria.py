@@ -1,4 +1,4 @@
-"""Is the bound the right criterion? The pair bound against the field's standard criteria.
+"""The pair bound against the field's standard criteria: is the bound the right criterion?
 
 Computed once here and shared by notebook 10 and the claims ledger:
 
