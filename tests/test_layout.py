@@ -28,7 +28,6 @@ MATPLOTLIB_OUTSIDE_VIZ = {"obslib/notebook.py"}
 #: Known violations in modules this test does not fix, each a strict xfail: it turns red as soon as
 #: the module is fixed, so the entry is removed then.
 KNOWN = {
-    ("lines", "obslib/studies/pair_form.py"): "757 lines: the audits need a second module",
     ("docstring", "obslib/claims/pair_form.py"): "opening docstring of two sentences",
 }
 
