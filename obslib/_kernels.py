@@ -1,5 +1,5 @@
-"""Numerical kernels shared by :mod:`obslib.observability`, :mod:`obslib.bounds`,
-:mod:`obslib.measures`, :mod:`obslib.assignment` and :mod:`obslib.teams`.
+"""Numerical kernels shared by the core modules and the studies: pair bounds, inverse condition
+numbers and Theorem 8's measures, computed scale-free.
 
 The callers validate their input (:mod:`obslib._validate`); these functions assume finite
 arrays of the right shape.
@@ -34,6 +34,8 @@ __all__ = [
     "inverse_condition",
     "matmul_rows",
     "tr_det",
+    "lambda_max",
+    "measure_from_tr_det",
 ]
 
 #: Magnitudes (largest absolute coordinate of a scene) computed without rescaling. Within it,
@@ -240,6 +242,54 @@ def tr_det(vectors: np.ndarray, masks: np.ndarray):
         det = matmul_rows(cross * cross, (m[:, a] * m[:, b]).T)
     else:
         det = np.zeros_like(tr)
+    return tr, det, lambda_max(tr, det)
+
+
+def lambda_max(tr, det):
+    """Largest eigenvalue ``tr/2 + sqrt((tr/2)^2 - det)`` of a symmetric positive semidefinite 2 x 2
+    matrix from its trace and determinant (no cancellation: both terms are non-negative)."""
     half = 0.5 * tr
-    lmax = half + np.sqrt(np.maximum(half * half - det, 0.0))
-    return tr, det, lmax
+    return half + np.sqrt(np.maximum(half * half - det, 0.0))
+
+
+def measure_from_tr_det(name: str, tr, det, lmax, eps: float, rank_rtol: float, p=None):
+    """Theorem 8's measure ``name`` of ``G = A + eps I`` from ``tr``, ``det``, ``lambda_max`` of
+    ``A = O^T O`` (see :mod:`obslib.measures` for the conventions).
+
+    With ``p`` (a power of two per instance, broadcasting against ``tr``), ``tr``, ``det``,
+    ``lambda_max`` and ``eps`` are those of the scene in the unit ``p`` (rows divided by ``p``)
+    and the result is converted back to the original unit; ``eps`` may then be an array. A
+    result beyond the float range in the original unit raises :class:`ValueError`.
+    """
+    if name == "trace":
+        out = tr + 2.0 * eps
+        return out if p is None else _back(out * (p * p), name)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        full = det > (rank_rtol * lmax) ** 2  # sigma_min / sigma_max > rank_rtol, and A != 0
+    if name == "rank":
+        return np.where(full, 2.0, np.where(tr > 0, 1.0, 0.0))
+    det_g = det + eps * tr + eps * eps
+    tr_g = tr + 2.0 * eps
+    if p is None:
+        if eps == 0.0:
+            det_g = np.where(full, det_g, 0.0)
+    else:
+        det_g = np.where(np.asarray(eps) == 0.0, np.where(full, det_g, 0.0), det_g)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        if name == "logdet":
+            out = np.where(det_g > 0, np.log(np.where(det_g > 0, det_g, 1.0)), -np.inf)
+            return out if p is None else out + 4.0 * np.log(p)
+        inv = np.where(det_g > 0, tr_g / np.where(det_g > 0, det_g, 1.0), np.inf)
+    if p is not None:
+        with np.errstate(over="ignore"):
+            inv = _back(np.where(np.isinf(inv), inv, inv / (p * p)), name, singular=np.isinf(inv))
+    return inv if name == "trace_inverse" else -inv
+
+
+def _back(values, name, singular=None):
+    """Raise if converting a measure back to the original unit overflowed."""
+    over = np.isinf(values) if singular is None else np.isinf(values) & ~singular
+    if over.any():
+        raise ValueError(f"the {name} of these sensors and target overflows the float range "
+                         "(coordinates or eps too large or too small); use another unit of length")
+    return values

@@ -21,6 +21,8 @@ __all__ = [
     "as_int",
     "as_bool",
     "as_eps",
+    "positive_int",
+    "positive_float",
     "as_rank_rtol",
     "as_measure_name",
     "as_weights",
@@ -231,6 +233,26 @@ def _as_real(value, name: str) -> float:
     return float(arr)
 
 
+def positive_int(name: str, value) -> int:
+    """A positive integer parameter (a count or grid size); an integral float such as ``3.0`` is
+    accepted, a bool is not."""
+    if isinstance(value, (bool, np.bool_)):
+        raise ArgumentTypeError(f"{name} must be a positive integer, got {value!r}")
+    x = _as_real(value, name)
+    if not np.isfinite(x) or int(x) != x or x < 1:
+        raise ValueError(f"{name} must be a positive integer, got {value!r}")
+    return int(x)
+
+
+def positive_float(name: str, value, allow_zero: bool = False) -> float:
+    """A finite positive (or, with ``allow_zero``, non-negative) real parameter."""
+    x = _as_real(value, name)
+    if not np.isfinite(x) or x < 0 or (x == 0 and not allow_zero):
+        kind = "non-negative" if allow_zero else "positive"
+        raise ValueError(f"{name} must be finite and {kind}, got {value!r}")
+    return x
+
+
 def as_eps(eps) -> float:
     """Prior information ``eps >= 0`` (finite) of Theorem 8's measures."""
     e = _as_real(eps, "eps")
@@ -328,8 +350,10 @@ def check_pair_sizes(n: int, n_targets: int) -> None:
         )
 
 
-def check_maximisable(name: str, eps: float, maximisable) -> None:
-    """A measure the team greedy can maximise: monotone increasing, finite for small teams."""
+def check_maximisable(name: str, eps: float, known, maximisable) -> None:
+    """A measure the team greedy can maximise: one of ``known``, monotone increasing (in
+    ``maximisable``), finite for small teams."""
+    as_measure_name(name, known)
     if name not in maximisable:
         raise ValueError(
             f"measure {name!r} decreases as sensors are added; maximise one of {tuple(maximisable)} "

@@ -7,14 +7,13 @@ from typing import Callable
 
 import numpy as np
 
-from ._validate import as_point, as_points, as_u_max
+from ._kernels import pow2_scale, rescale, tr_det
+from ._validate import as_point, as_points, as_stack, as_u_max, as_u_max_stack
 from .bounds import lower_bound
-from ._kernels import tr_det as _tr_det
 from .measures import subset_masks
 from .observability import relative_rows
 
 __all__ = ["lower_bound_table", "lower_bound_tables", "lower_bound_set_function"]
-
 
 
 def _bound_from_tr_det(tr, det, lmax, u2):
@@ -28,7 +27,9 @@ def lower_bound_tables(vectors, u_max) -> np.ndarray:
 
     :math:`\sqrt{\lambda_{\min} / (\lambda_{\max} + u_{\max}^2)}` with the eigenvalues of
     :math:`O(o)^T O(o)` from its trace and the Cauchy-Binet determinant (Eqs. (6), (25)); 0 for
-    fewer than two sensors.
+    fewer than two sensors. The bound does not depend on the unit of length: each instance is
+    first brought into the safe range by a power of two (exact; instances already inside it are
+    computed as they are), with its ``u_max`` in the same unit.
 
     Parameters
     ----------
@@ -47,12 +48,15 @@ def lower_bound_tables(vectors, u_max) -> np.ndarray:
     >>> lower_bound_tables((target - sensors)[None], u_max=1.0).round(4)
     array([[0.    , 0.    , 0.    , 0.8165, 0.    , 0.8165, 0.    , 0.6325]])
     """
-    v = np.asarray(vectors, dtype=float)
-    if v.ndim != 3 or v.shape[-1] != 2:
+    v = as_stack(vectors, "vectors", 2)
+    if v.ndim != 3:
         raise ValueError(f"vectors must have shape (I, N, 2), got {v.shape}")
-    u = as_u_max(u_max, v.shape[0])
-    tr, det, lmax = _tr_det(v, subset_masks(v.shape[1]))
-    u2 = (u**2)[:, None] if u.ndim == 1 else u**2
+    u = as_u_max_stack(u_max, v.shape[:1])
+    p = pow2_scale(np.abs(v).max(axis=(1, 2), initial=0.0))  # (I,)
+    v, u = rescale(v, p[:, None, None]), rescale(u, p)
+    tr, det, lmax = tr_det(v, subset_masks(v.shape[1]))
+    with np.errstate(over="ignore"):  # u_max beyond the float range in the rows' unit: bound 0
+        u2 = (u**2)[:, None]
     return _bound_from_tr_det(tr, det, lmax, u2)
 
 

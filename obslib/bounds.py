@@ -27,10 +27,6 @@ from ._validate import (
 )
 from .observability import relative_rows
 
-# Old private name, still imported by modules outside this one (obslib.tracking,
-# obslib.assignment_study).
-_pair_kernel = pair_kernel
-
 __all__ = [
     "lower_bound",
     "pair_bounds",

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._scalars import positive_float, positive_int
+from ._validate import positive_float, positive_int
 
 __all__ = ["disc_controls", "disc_mesh"]
 

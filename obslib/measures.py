@@ -52,12 +52,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._kernels import pow2_scale, tr_det
+from ._kernels import measure_from_tr_det, pow2_scale, tr_det
 from ._validate import ArgumentTypeError, as_eps, as_float_array, as_int, as_measure_name, as_point, as_rank_rtol
 from .observability import observability_matrix, relative_rows
-
-# Old private name, still imported by a module outside this one (obslib.submodularity).
-_tr_det = tr_det
 
 __all__ = [
     "MEASURES",
@@ -92,10 +89,6 @@ MAX_GROUND_SET = 16
 
 def _check_name(name: str) -> str:
     return as_measure_name(name, MEASURES)
-
-
-_check_eps = as_eps  # short local names of the shared checks
-_check_rtol = as_rank_rtol
 
 
 def subset_masks(n: int) -> np.ndarray:
@@ -150,50 +143,9 @@ def symmetric_observability_matrix(sensors, target, u=None, eps: float = 0.0) ->
     array([[2., 0.],
            [0., 2.]])
     """
-    e = _check_eps(eps)
+    e = as_eps(eps)
     O = observability_matrix(_sensors_or_empty(sensors), target, u)
     return O.T @ O + e * np.eye(2)
-
-
-def _from_tr_det(name: str, tr, det, lmax, eps: float, rank_rtol: float, p=None):
-    """Measure ``name`` of ``G = A + eps I`` from ``tr``, ``det``, ``lambda_max`` of ``A = O^T O``.
-
-    With ``p`` (a power of two per instance, broadcasting against ``tr``), ``tr``, ``det``,
-    ``lambda_max`` and ``eps`` are those of the scene in the unit ``p`` (rows divided by ``p``)
-    and the result is converted back to the original unit; ``eps`` may then be an array.
-    """
-    if name == "trace":
-        out = tr + 2.0 * eps
-        return out if p is None else _back(out * (p * p), name)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        full = det > (rank_rtol * lmax) ** 2  # sigma_min / sigma_max > rank_rtol, and A != 0
-    if name == "rank":
-        return np.where(full, 2.0, np.where(tr > 0, 1.0, 0.0))
-    det_g = det + eps * tr + eps * eps
-    tr_g = tr + 2.0 * eps
-    if p is None:
-        if eps == 0.0:
-            det_g = np.where(full, det_g, 0.0)
-    else:
-        det_g = np.where(np.asarray(eps) == 0.0, np.where(full, det_g, 0.0), det_g)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        if name == "logdet":
-            out = np.where(det_g > 0, np.log(np.where(det_g > 0, det_g, 1.0)), -np.inf)
-            return out if p is None else out + 4.0 * np.log(p)
-        inv = np.where(det_g > 0, tr_g / np.where(det_g > 0, det_g, 1.0), np.inf)
-    if p is not None:
-        with np.errstate(over="ignore"):
-            inv = _back(np.where(np.isinf(inv), inv, inv / (p * p)), name, singular=np.isinf(inv))
-    return inv if name == "trace_inverse" else -inv
-
-
-def _back(values, name, singular=None):
-    """Raise if converting a measure back to the original unit overflowed."""
-    over = np.isinf(values) if singular is None else np.isinf(values) & ~singular
-    if over.any():
-        raise ValueError(f"the {name} of these sensors and target overflows the float range "
-                         "(coordinates or eps too large or too small); use another unit of length")
-    return values
 
 
 def measure_from_vectors(vectors, masks, name: str, eps: float = 0.0, u=None,
@@ -246,8 +198,8 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
         raise ArgumentTypeError(f"names must be a sequence of measure names, not the string {names!r}")
     for name in names:
         _check_name(name)
-    e = _check_eps(eps)
-    r = _check_rtol(rank_rtol)
+    e = as_eps(eps)
+    r = as_rank_rtol(rank_rtol)
     v = as_float_array(vectors, "vectors")
     m = np.asarray(masks)
     if m.dtype.kind not in "biuf":
@@ -284,13 +236,13 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
         if (p == 1.0).all():
             if "plain" not in cache:
                 cache["plain"] = tr_det(v, m)
-            out[name] = _from_tr_det(name, *cache["plain"], e, r)
+            out[name] = measure_from_tr_det(name, *cache["plain"], e, r)
         else:
             key = "rank" if name == "rank" else "other"
             if key not in cache:
                 cache[key] = tr_det(v / p[..., None, None], m)
             pp = p[..., None]
-            out[name] = _from_tr_det(name, *cache[key], e / (pp * pp), r, pp)
+            out[name] = measure_from_tr_det(name, *cache[key], e / (pp * pp), r, pp)
     return out
 
 

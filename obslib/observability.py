@@ -17,9 +17,6 @@ import numpy as np
 from ._kernels import gram_parts, inverse_condition, pow2_scale, ratio_from_gram, rescale
 from ._validate import as_float_array, as_point, as_points, as_stack, check_differences, check_distinct, check_not_on_targets
 
-# Old private name, still imported by a module outside this one (obslib.tracking).
-_inverse_condition = inverse_condition
-
 __all__ = [
     "observability_matrix",
     "inverse_condition_number",

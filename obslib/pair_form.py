@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._scalars import positive_float, positive_int
+from ._validate import positive_float, positive_int
 from .bounds import pair_bound_polar
 
 __all__ = [

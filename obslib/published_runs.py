@@ -189,19 +189,12 @@ def _build(name: str) -> PublishedRun:
             objective=t["target_true_invcond"],
         )
     three, traj, sel = _table("three"), _table("trajectories"), _table("pairs")
-    truth = np.column_stack([traj["true_x"], traj["true_y"]])[:n]
+    p = {"fixed-pair": "fixed_s2s1", "best-pair": "flex"}.get(name, "partner_s2")
+    logged = dict(name=name, strategy=name, motion="circle", bound=three[f"{p}_lowerbound"],
+                  error=three[f"{p}_est_error"], trace_cov=three[f"{p}_trace_Sigma"])
     if name == "fixed-pair":
-        p = "fixed_s2s1"
-        return PublishedRun(
-            name=name,
-            strategy=name,
-            motion="circle",
-            bound=three[f"{p}_lowerbound"],
-            error=three[f"{p}_est_error"],
-            trace_cov=three[f"{p}_trace_Sigma"],
-            pairs=np.tile([0, 1], (n, 1)),
-        )
-    p, w = ("flex", "flex") if name == "best-pair" else ("partner_s2", "partner")
+        return PublishedRun(**logged, pairs=np.tile([0, 1], (n, 1)))
+    w = "flex" if name == "best-pair" else "partner"
     est = np.column_stack([traj[f"{w}_est_x"], traj[f"{w}_est_y"]])
     cov = _cov(traj[f"{w}_S11"], traj[f"{w}_S12"], traj[f"{w}_S22"])
     if name == "best-pair":
@@ -209,14 +202,9 @@ def _build(name: str) -> PublishedRun:
     else:
         pairs = _pairs(np.full(n, 2), sel["partner_of_s2(black)"])
     return PublishedRun(
-        name=name,
-        strategy=name,
-        motion="circle",
-        bound=three[f"{p}_lowerbound"],
-        error=three[f"{p}_est_error"],
-        trace_cov=three[f"{p}_trace_Sigma"],
+        **logged,
         pairs=pairs,
-        truth=truth,
+        truth=np.column_stack([traj["true_x"], traj["true_y"]])[:n],
         estimate=est[:n],
         cov=cov[:n],
         estimate_end=est[n],

@@ -17,32 +17,19 @@ from itertools import product
 
 import numpy as np
 
-from ._kernels import pow2_scale
+from ._kernels import lambda_max, measure_from_tr_det, pow2_scale
 from ._validate import as_eps, as_float_array, as_measure_name, as_points, as_rank_rtol, check_maximisable
 from .bounds import relative_vectors
-from .measures import MEASURES, RANK_RTOL, _from_tr_det, measure_from_vectors, subset_masks
+from .measures import MEASURES, RANK_RTOL, measure_from_vectors, subset_masks
 
-# Old private names of the checks, still imported by obslib.team_study.
-_check_eps = as_eps
-_check_rtol = as_rank_rtol
-
-
-def _check_name(name):
-    return as_measure_name(name, MEASURES)
-
-__all__ = ["greedy_team_assignment", "greedy_team_counts", "optimal_team_assignment", "team_value", "MAXIMISABLE"]
+__all__ = ["greedy_team_assignment", "greedy_team_picks", "greedy_team_counts", "optimal_team_assignment",
+           "best_team_labelling", "team_value", "MAXIMISABLE"]
 
 #: Measures that can only increase as sensors join a team (the greedy maximises one of these).
 MAXIMISABLE = ("trace", "logdet", "rank", "neg_trace_inverse")
 
 #: Largest instance :func:`optimal_team_assignment` enumerates, as the number of assignments.
 MAX_ASSIGNMENTS = 2_000_000
-
-
-def _check_measure(name: str, eps: float) -> None:
-    """The measure name is known and maximisable (kept here: obslib.team_study imports it)."""
-    as_measure_name(name, MEASURES)
-    check_maximisable(name, eps, MAXIMISABLE)
 
 
 def _rows(sensors, targets, u):
@@ -97,9 +84,9 @@ def greedy_team_assignment(sensors, targets, measure: str = "logdet", eps: float
     >>> greedy_team_assignment(S, T, "rank")
     [[0, 1], [2, 3]]
     """
-    e = _check_eps(eps)
-    _check_measure(measure, e)
-    rank_rtol = _check_rtol(rank_rtol)
+    e = as_eps(eps)
+    check_maximisable(measure, e, MEASURES, MAXIMISABLE)
+    rank_rtol = as_rank_rtol(rank_rtol)
     v, uu = _rows(sensors, targets, u)
     if v.shape[1] < 1:
         raise ValueError("there must be at least one target")
@@ -110,13 +97,48 @@ def greedy_team_assignment(sensors, targets, measure: str = "logdet", eps: float
     return teams
 
 
-def greedy_team_counts(sensors, targets, measure: str = "logdet", eps: float = 1.0,
-                       rank_rtol: float = RANK_RTOL) -> np.ndarray:
-    """Team sizes of :func:`greedy_team_assignment` for a batch of instances, shape ``(K, L)``.
+def greedy_team_picks(sensors, targets, measure: str = "logdet", eps: float = 1.0,
+                      rank_rtol: float = RANK_RTOL) -> tuple[np.ndarray, np.ndarray]:
+    """The picks of :func:`greedy_team_assignment` for a batch of instances, in the order made.
 
     ``sensors`` ``(K, N, 2)`` and ``targets`` ``(K, L, 2)``, each instance validated as in
     :func:`greedy_team_assignment`; the instances run together, round by round, with the same
-    arithmetic, so each count equals the single-instance call's (the tests compare them).
+    arithmetic, so each instance's picks equal the single-instance call's (the tests compare them).
+
+    Returns
+    -------
+    (ndarray, ndarray), each of shape (K, N)
+        Round ``r`` of instance ``k`` gave sensor ``picks_i[k, r]`` to target ``picks_l[k, r]``.
+
+    Examples
+    --------
+    With ``rank``, sensor 0 gains 1 for either target (tie: target 0), sensor 1 then completes
+    target 0's rank (gain 1; tie with target 1 again to target 0), and sensors 2, 3 gain only
+    at target 1:
+
+    >>> S, T = [[0, 0], [2, 0], [10, 0], [12, 0]], [[1, 1], [11, 1]]
+    >>> picks_i, picks_l = greedy_team_picks([S], [T], "rank")
+    >>> picks_i.tolist(), picks_l.tolist()
+    ([[0, 1, 2, 3]], [[0, 0, 1, 1]])
+    """
+    e = as_eps(eps)
+    check_maximisable(measure, e, MEASURES, MAXIMISABLE)
+    rank_rtol = as_rank_rtol(rank_rtol)
+    S, T = as_float_array(sensors, "sensors"), as_float_array(targets, "targets")
+    if S.ndim != 3 or T.ndim != 3 or S.shape[0] != T.shape[0]:
+        raise ValueError(f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}")
+    if T.shape[1] < 1:
+        raise ValueError("there must be at least one target")
+    if S.shape[0] == 0:
+        return np.zeros((0, S.shape[1]), np.int64), np.zeros((0, S.shape[1]), np.int64)
+    v = np.stack([relative_vectors(s, t) for s, t in zip(S, T)])  # validated, (K, N, L, 2)
+    return _greedy_teams(v, None, measure, e, rank_rtol)
+
+
+def greedy_team_counts(sensors, targets, measure: str = "logdet", eps: float = 1.0,
+                       rank_rtol: float = RANK_RTOL) -> np.ndarray:
+    """Team sizes of :func:`greedy_team_assignment` for a batch of instances, shape ``(K, L)``
+    (from :func:`greedy_team_picks`, same arguments).
 
     Examples
     --------
@@ -124,17 +146,9 @@ def greedy_team_counts(sensors, targets, measure: str = "logdet", eps: float = 1
     >>> greedy_team_counts([S], [T], "rank")
     array([[2, 2]])
     """
-    e = _check_eps(eps)
-    _check_measure(measure, e)
-    rank_rtol = _check_rtol(rank_rtol)
-    S, T = as_float_array(sensors, "sensors"), as_float_array(targets, "targets")
-    if S.ndim != 3 or T.ndim != 3 or S.shape[0] != T.shape[0]:
-        raise ValueError(f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}")
-    if T.shape[1] < 1:
-        raise ValueError("there must be at least one target")
-    v = np.stack([relative_vectors(s, t) for s, t in zip(S, T)])  # validated, (K, N, L, 2)
-    _, picks_l = _greedy_teams(v, None, measure, e, rank_rtol)
-    return np.stack([np.bincount(p, minlength=T.shape[1]) for p in picks_l]) if len(picks_l) else np.zeros((0, T.shape[1]), int)
+    _, picks_l = greedy_team_picks(sensors, targets, measure, eps, rank_rtol)
+    n_targets = np.shape(targets)[1]
+    return np.stack([np.bincount(p, minlength=n_targets) for p in picks_l]) if len(picks_l) else np.zeros((0, n_targets), int)
 
 
 def _greedy_teams(v, uu, measure, e, rank_rtol):
@@ -187,9 +201,7 @@ def _greedy_teams_unit(v, uu, measure, e, rank_rtol):
     det = np.zeros((k, n_targets))
 
     def value(tr_, det_):
-        half = 0.5 * tr_
-        lmax = half + np.sqrt(np.maximum(half * half - det_, 0.0))
-        return _from_tr_det(measure, tr_, det_, lmax, e, rank_rtol)
+        return measure_from_tr_det(measure, tr_, det_, lambda_max(tr_, det_), e, rank_rtol)
 
     g = value(tr[:, None, :] + vx * vx + vy * vy, det[:, None, :] + C) - value(tr, det)[:, None, :]
     if np.isnan(g).any():
@@ -224,8 +236,8 @@ def team_value(sensors, targets, teams, measure: str = "logdet", eps: float = 1.
     >>> team_value(S, T, [[0, 1], [2, 3]], "rank")  # both teams have rank 2
     4.0
     """
-    e = _check_eps(eps)
-    _check_name(measure)
+    e = as_eps(eps)
+    as_measure_name(measure, MEASURES)
     v, uu = _rows(sensors, targets, u)
     if len(teams) != v.shape[1]:
         raise ValueError(f"need one team per target ({v.shape[1]}), got {len(teams)}")
@@ -259,26 +271,73 @@ def optimal_team_assignment(sensors, targets, measure: str = "logdet", eps: floa
     >>> optimal_team_assignment(S, T, "rank")
     ([[0, 1], [2, 3]], 4.0)
     """
-    e = _check_eps(eps)
-    _check_name(measure)
+    e = as_eps(eps)
+    as_measure_name(measure, MEASURES)
     v, uu = _rows(sensors, targets, u)
     n, n_targets = v.shape[0], v.shape[1]
     if n_targets < 1:
         raise ValueError("there must be at least one target")
-    if n_targets**n > MAX_ASSIGNMENTS:
-        raise ValueError(f"{n_targets}^{n} assignments is too many to enumerate (max {MAX_ASSIGNMENTS})")
+    _check_assignments(n, n_targets)
     masks = subset_masks(n)
     tables = np.stack(
         [measure_from_vectors(v[:, l, :], masks, measure, e, uu[l] if u is not None else None, rank_rtol)
          for l in range(n_targets)]
     )  # (L, 2^N), subset k = bitmask k
+    labels, total = best_team_labelling(tables)
+    teams = [[int(i) for i in np.flatnonzero(labels == l)] for l in range(n_targets)]
+    return teams, float(total)
+
+
+def best_team_labelling(tables) -> tuple[np.ndarray, np.ndarray]:
+    """Problem 2 by exhaustive search over given team values: the best way to give each sensor to
+    one target.
+
+    Parameters
+    ----------
+    tables : array_like, shape (L, ..., 2**N)
+        ``tables[l, ..., k]`` is target ``l``'s value ``w_l(S)`` of the team ``S`` whose sensors
+        are the set bits of ``k`` (:func:`obslib.measures.subset_masks` order), for one instance
+        or a batch (the middle axes). ``-inf`` is allowed, NaN is not.
+
+    Returns
+    -------
+    labels : ndarray of int, shape (..., N)
+        The target of each sensor in a best assignment, the first in lexicographic order of
+        ``labels`` among the ``L^N`` assignments (at most ``MAX_ASSIGNMENTS``).
+    total : ndarray, shape (...)
+        Its value ``sum_l w_l(S_l)``.
+
+    Examples
+    --------
+    Two sensors, two targets: target 0 values sensor 0 most, target 1 sensor 1.
+
+    >>> labels, total = best_team_labelling([[0, 3, 1, 3], [0, 1, 2, 2]])
+    >>> labels.tolist(), float(total)
+    ([0, 1], 5.0)
+    """
+    t = as_float_array(tables, "tables")
+    if t.ndim < 2 or t.shape[0] < 1:
+        raise ValueError(f"tables must have shape (L, ..., 2**N) with L >= 1, got {t.shape}")
+    n = int(t.shape[-1]).bit_length() - 1
+    if t.shape[-1] != 1 << n:
+        raise ValueError(f"the last axis of tables must have 2**N entries (one per team), got {t.shape[-1]}")
+    if np.isnan(t).any():
+        raise ValueError("tables has a NaN entry")
+    n_targets = t.shape[0]
+    _check_assignments(n, n_targets)
     labels, team_masks = _labellings(n, n_targets)
-    total = _assignment_totals(tables, team_masks)
+    total = np.zeros(t.shape[1:-1] + (team_masks.shape[1],))
+    for l, mask in enumerate(team_masks):
+        total += t[l][..., mask]
     if np.isnan(total).any():
         raise RuntimeError("an assignment's total is NaN")
-    best = int(np.argmax(total))
-    teams = [[int(i) for i in np.flatnonzero(labels[best] == l)] for l in range(n_targets)]
-    return teams, float(total[best])
+    best = np.argmax(total, axis=-1)
+    return labels[best], np.take_along_axis(total, best[..., None], axis=-1)[..., 0]
+
+
+def _check_assignments(n: int, n_targets: int) -> None:
+    if n_targets**n > MAX_ASSIGNMENTS:
+        raise ValueError(f"{n_targets}^{n} assignments is too many to enumerate (max {MAX_ASSIGNMENTS})")
 
 
 def _labellings(n: int, n_targets: int):
@@ -290,15 +349,3 @@ def _labellings(n: int, n_targets: int):
     labels = np.array(list(product(range(n_targets), repeat=n)), dtype=np.int64).reshape(n_targets**n, n)
     bits = 1 << np.arange(n, dtype=np.int64)
     return labels, np.stack([((labels == l) * bits).sum(axis=1) for l in range(n_targets)])
-
-
-def _assignment_totals(tables, team_masks) -> np.ndarray:
-    """``sum_l tables[l][..., team_masks[l]]`` in target order: every assignment's total value.
-
-    ``tables[l]`` has shape ``(..., 2^N)`` (target ``l``'s measure of every team); the result
-    ``(..., A)``.
-    """
-    total = np.zeros(np.shape(tables[0])[:-1] + (team_masks.shape[1],))
-    for l, mask in enumerate(team_masks):
-        total += tables[l][..., mask]
-    return total

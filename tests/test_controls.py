@@ -17,3 +17,20 @@ def test_disc_mesh_closes_the_polar_grid():
     assert Z[1, 0] == 1 and Z[3, 7] == len(controls) - 1
     with pytest.raises(ValueError, match="controls"):
         disc_mesh(controls[1:], vals[1:], 3, 8)
+
+
+@pytest.mark.parametrize("args, message", [
+    ((-1.0, 3, 8), "u_max must be finite and non-negative"),
+    ((np.inf, 3, 8), "u_max must be finite"),
+    (("1", 3, 8), "u_max must be numeric"),
+    ((1.0, 0, 8), "n_radii must be a positive integer"),
+    ((1.0, 2.5, 8), "n_radii must be a positive integer"),
+    ((1.0, 3, True), "n_angles must be a positive integer"),
+])
+def test_bad_scalar_arguments_are_named(args, message):
+    with pytest.raises(ValueError, match=message):
+        disc_controls(*args)
+
+
+def test_integral_floats_count_as_integers():
+    assert np.array_equal(disc_controls(1.0, 3.0, 8), disc_controls(1.0, 3, 8))

@@ -274,7 +274,7 @@ def moderate_points(draw, min_n, max_n):
 @FUZZ
 @given(moderate_points(1, 4), moderate_points(1, 1), st.floats(0, 10), st.sampled_from(list(ob.MEASURES)))
 def test_audits(sensors, target, u_max, name):
-    # The set-function audits at moderate scales (1e-20 to 1e20); see the xfail below for extremes.
+    # The set-function audits at moderate scales (1e-20 to 1e20); extreme scales are tested below.
     with named_errors("sensor", "target", "u_max", "overflow"):
         table = ob.lower_bound_table(sensors, target[0], u_max)
         assert not np.isnan(table).any()
@@ -282,14 +282,19 @@ def test_audits(sensors, target, u_max, name):
         ob.audit_set_function(sensors, values=ob.measure_table(sensors, target[0], name, eps=1.0))
 
 
-@pytest.mark.xfail(strict=True, reason="obslib.submodularity.lower_bound_table squares unscaled rows "
-                                       "(lengths of 1e150 overflow); it should scale before _tr_det")
-def test_lower_bound_table_at_extreme_scale():
+@pytest.mark.parametrize("c", [1e150, 1e-150, 2.0**1000])
+def test_lower_bound_table_at_extreme_scale(c):
+    # The bound is homogeneous of degree 0 in (coordinates, u_max); at these scales squared lengths
+    # overflow or underflow unless the kernel changes unit, so equality with the unit-scale table
+    # (and with the SVD of lower_bound at that scale) shows it does.
     S = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
-    o, c = np.array([0.3, 0.4]), 1e150
-    with np.errstate(all="ignore"):
-        np.testing.assert_allclose(ob.lower_bound_table(S * c, o * c, c), ob.lower_bound_table(S, o, 1.0),
-                                   rtol=1e-9)
+    o = np.array([0.3, 0.4])
+    with np.errstate(all="raise"):
+        table = ob.lower_bound_table(S * c, o * c, c)
+    np.testing.assert_allclose(table, ob.lower_bound_table(S, o, 1.0), rtol=1e-9)
+    for k in range(8):
+        idx = [i for i in range(3) if k >> i & 1]
+        assert table[k] == pytest.approx(ob.lower_bound(S[idx].reshape(-1, 2) * c, o * c, c), rel=1e-9, abs=0)
 
 
 # --------------------------------------------------------------------------- command lines

@@ -317,9 +317,10 @@ def test_measures_from_vectors_is_bitwise_measure_from_vectors(with_u):
 
 
 def test_blocked_matrix_product_equals_the_product_to_rounding():
+    # the blocked product is a kernel with no public entry of its own, so it is tested directly
     from obslib._kernels import matmul_rows
 
-    # _matmul_rows multiplies non-negative data (squared lengths, squared cross products) by 0/1
+    # matmul_rows multiplies non-negative data (squared lengths, squared cross products) by 0/1
     # masks, as its callers do. Each entry is then a sum of `inner` non-negative terms; any order
     # of summation (BLAS picks it by CPU, thread count and block shape) is within
     # inner * eps_machine of the exact sum, relative to the entry itself. That bound is the

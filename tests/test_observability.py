@@ -47,7 +47,8 @@ def test_control_perpendicular_and_equal_length_is_perfectly_conditioned():
 @pytest.mark.parametrize("m", [2, 3, 5, 8, 9, 12])
 def test_closed_form_inverse_condition_equals_svd(m):
     """The Cauchy-Binet closed form (m <= 8 rows) and the SVD path agree with numpy's SVD."""
-    from obslib._kernels import inverse_condition as _inverse_condition
+    # the kernel itself: the public functions take sensors and a target, not a stack of matrices
+    from obslib._kernels import inverse_condition
 
     rng = np.random.default_rng(m)
     stack = rng.normal(size=(500, m, 2)) * 10.0 ** rng.uniform(-3, 4, size=(500, 1, 1))
@@ -55,7 +56,7 @@ def test_closed_form_inverse_condition_equals_svd(m):
     stack[50:100, 1:, :] = stack[50:100, :1, :] * rng.uniform(0.5, 2, size=(50, m - 1, 1))  # collinear
     stack[50:100, 1:, 1] += 1e-9 * stack[50:100, 1:, 0]  # ... nearly
     sv = np.linalg.svd(stack, compute_uv=False)
-    np.testing.assert_allclose(_inverse_condition(stack), sv[:, -1] / sv[:, 0], rtol=1e-7, atol=1e-14)
+    np.testing.assert_allclose(inverse_condition(stack), sv[:, -1] / sv[:, 0], rtol=1e-7, atol=1e-14)
 
 
 # --------------------------------------------------------------------------- batched forms

@@ -105,3 +105,40 @@ def test_batched_counts_equal_single_instances():
         np.testing.assert_array_equal(counts, single)
     with pytest.raises(ValueError, match="coincide"):
         greedy_team_counts(np.zeros((1, 2, 2)), np.ones((1, 1, 2)))
+
+
+def test_batched_picks_are_the_single_instance_teams_in_order():
+    from obslib.teams import greedy_team_picks
+
+    rng = np.random.default_rng(5)
+    S, T = rng.uniform(0, 100, (8, 7, 2)), rng.uniform(0, 100, (8, 3, 2))
+    picks_i, picks_l = greedy_team_picks(S, T, "logdet", 1.0)
+    for k in range(len(S)):
+        teams = greedy_team_assignment(S[k], T[k], "logdet", 1.0)
+        rebuilt = [[int(i) for i, l in zip(picks_i[k], picks_l[k]) if l == target] for target in range(3)]
+        assert rebuilt == teams
+    with pytest.raises(ValueError, match="unknown measure"):
+        greedy_team_picks(S, T, "volume")
+
+
+def test_best_labelling_equals_a_loop_over_all_labellings():
+    from itertools import product
+
+    from obslib.teams import best_team_labelling
+
+    rng = np.random.default_rng(6)
+    n, n_targets, batch = 4, 3, 5
+    tables = rng.normal(size=(n_targets, batch, 2**n))
+    labels, total = best_team_labelling(tables)
+    for b in range(batch):
+        best = None
+        for lab in product(range(n_targets), repeat=n):  # lexicographic: the first best wins ties
+            value = sum(tables[l, b, sum(1 << i for i in range(n) if lab[i] == l)] for l in range(n_targets))
+            if best is None or value > best[0]:
+                best = (value, lab)
+        assert tuple(labels[b]) == best[1]
+        assert total[b] == pytest.approx(best[0], rel=1e-12)
+    for bad, message in [(np.zeros((2, 6)), "2\\*\\*N"), (np.zeros(4), "shape"),
+                         (np.full((1, 4), np.nan), "NaN"), (np.zeros((3, 2**14)), "too many")]:
+        with pytest.raises(ValueError, match=message):
+            best_team_labelling(bad)

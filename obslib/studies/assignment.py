@@ -18,8 +18,8 @@ from itertools import combinations
 
 import numpy as np
 
-from .._validate import check_distinct, check_not_on_targets
-from .._kernels import pair_kernel as _pair_kernel
+from .._kernels import normalise, pair_kernel
+from .._validate import as_u_max, check_distinct, check_not_on_targets
 
 __all__ = [
     "pair_assignments",
@@ -184,16 +184,19 @@ def batch_pair_bounds(sensors, targets, u_max) -> tuple[np.ndarray, np.ndarray]:
         raise ValueError(f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}")
     if not (np.isfinite(S).all() and np.isfinite(T).all()):
         raise ValueError("sensor and target positions must be finite")
+    u = float(as_u_max(u_max))
     n = S.shape[1]
     v = T[:, None, :, :] - S[:, :, None, :]  # (K, N, L, 2), as relative_vectors
     same = (S[:, :, None, :] == S[:, None, :, :]).all(axis=-1) & ~np.eye(n, dtype=bool)
     valid = ~same.any(axis=(1, 2)) & ~(v == 0).all(axis=-1).any(axis=(1, 2))
-    scale = np.sqrt(np.einsum("knlc,knlc->knl", v, v).max(axis=1))  # (K, L), as _normalise
+    k, n_targets = v.shape[0], v.shape[2]
+    # the K instances' targets side by side, (N, K L, 2), normalised as pair_bounds does
     with np.errstate(divide="ignore", invalid="ignore"):
-        v = v / scale[:, None, :, None]
-        u2 = float(u_max) ** 2 / scale**2
+        v, u2 = normalise(v.transpose(1, 0, 2, 3).reshape(n, k * n_targets, 2), u)
+        v = v.reshape(n, k, n_targets, 2).transpose(1, 0, 2, 3)  # (K, N, L, 2)
+        u2 = u2.reshape(k, n_targets)
         x, y = v[..., 0], v[..., 1]  # (K, N, L)
-        W = _pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
+        W = pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
     return W, valid
 
 

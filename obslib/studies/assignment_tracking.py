@@ -46,7 +46,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from ..bounds import _pair_kernel
+from .._kernels import pair_kernel
 
 __all__ = [
     "RULES",
@@ -229,7 +229,7 @@ def bound_weights(sensors, xhat, cov, u_max, metric="mahalanobis") -> np.ndarray
     v = v / scale[:, None, :, None]
     u2 = u_max**2 / scale**2  # (B, L)
     x, y = v[..., 0], v[..., 1]  # (B, N, L)
-    return _pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
+    return pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
 
 
 def info_gain_weights(sensors, xhat, cov_pred, r) -> np.ndarray:
@@ -396,7 +396,7 @@ def _chosen_values(S, x, P, pr, u_max, metric, q, r):
         v = h * np.sqrt(m2 / np.einsum("blpk,blpk->blp", h, h))[..., None]
     scale = np.sqrt(np.einsum("blpk,blpk->blp", v, v).max(axis=-1))
     v = v / scale[..., None, None]
-    bound = _pair_kernel(v[..., 0, 0], v[..., 0, 1], v[..., 1, 0], v[..., 1, 1], u_max**2 / scale**2)
+    bound = pair_kernel(v[..., 0, 0], v[..., 0, 1], v[..., 1, 0], v[..., 1, 1], u_max**2 / scale**2)
     G = h @ (P + q * np.eye(2)) @ np.swapaxes(h, -1, -2) / r  # H Sigma^- H^T / r
     gain = np.log((1 + G[..., 0, 0]) * (1 + G[..., 1, 1]) - G[..., 0, 1] * G[..., 1, 0])
     return bound, gain

@@ -1,4 +1,4 @@
-"""Is the bound the right criterion? The pair bound against the field's standard criteria.
+"""The pair bound against the field's standard criteria: is the bound the right criterion?
 
 Computed once here and shared by notebook 10 and the claims ledger:
 
@@ -33,8 +33,7 @@ import numpy as np
 from scipy import stats
 
 from .. import tracking as tr
-from ..bounds import _pair_kernel
-from ..observability import _inverse_condition
+from .._kernels import inverse_condition, pair_kernel
 from . import assignment_tracking as at
 
 __all__ = [
@@ -148,10 +147,10 @@ def _scores(name, S, x, C, Q, R, u_max, u, metric):
         scale = np.sqrt(d2.max(axis=1))  # (B,), as pair_bounds normalises
         v = v / scale[:, None, None]
         u2 = (u_max**2 / scale**2)[:, None]
-        return _pair_kernel(v[:, ii, 0], v[:, ii, 1], v[:, jj, 0], v[:, jj, 1], u2)
+        return pair_kernel(v[:, ii, 0], v[:, ii, 1], v[:, jj, 0], v[:, jj, 1], u2)
     if name == "exact-icn":
         rows = np.stack([v[:, ii], v[:, jj], np.broadcast_to(u[:, None], v[:, ii].shape)], axis=-2)
-        return _inverse_condition(rows)  # (B, P)
+        return inverse_condition(rows)  # (B, P)
     # J = (Sigma + Q)^{-1} + H^T R^{-1} H entry by entry (2x2 closed forms, no LAPACK calls)
     M = C + Q
     mdet = M[:, 0, 0] * M[:, 1, 1] - M[:, 0, 1] * M[:, 1, 0]

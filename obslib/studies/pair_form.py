@@ -15,7 +15,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._scalars import positive_float, positive_int
+from .._validate import positive_float, positive_int
 from ..bounds import pair_bound_polar, pair_bounds
 from ..pair_form import (
     GridMax,
@@ -24,9 +24,8 @@ from ..pair_form import (
     grid_maximum,
     maximising_alpha,
     maximising_alpha_closed,
-    random_symmetric_2x2,
-    weyl_2x2_slacks,
 )
+from .weyl import WeylAudit, dual_weyl_printed_range, weyl_audit  # the audits of notebook 02 are read here
 
 __all__ = [
     "audit_ratios",
@@ -225,29 +224,6 @@ def fig2_grids(u_max: float, d_io: float, alpha_max: float, paper_step: float,
         Z = bound_surface(a, t, u_max, d_io)
         out[name] = Fig2Grid(a, t, Z, grid_maximum(a, t, Z))
     return out
-
-
-# --- Theorem 1: the printed range of the dual Weyl inequality -------------------------------------
-def dual_weyl_printed_range(r: int = 2) -> list[tuple[int, int, int]]:
-    """Pairs ``(i, j)`` admitted by the appendix's range for the dual Weyl inequality
-    (``i, j >= 1``, ``i + j - r <= r``, indices at most ``r``), with the index ``i + j - r``.
-
-    Returns ``[(i, j, i + j - r), ...]``; entries with index ``< 1`` are meaningless
-    (``lambda_0`` does not exist): the correct range is ``i + j - r >= 1``.
-
-    Examples
-    --------
-    >>> dual_weyl_printed_range(2)
-    [(1, 1, 0), (1, 2, 1), (2, 1, 1), (2, 2, 2)]
-    """
-    r = positive_int("r", r)
-    return [(i, j, i + j - r) for i in range(1, r + 1) for j in range(1, r + 1) if i + j - r <= r]
-
-
-
-_WEYL_NAMES = (
-    "l1 >= l1+l1", "l1 <= l1+l2", "l1 <= l2+l1", "l2 <= l2+l2", "l2 >= l1+l2", "l2 >= l2+l1",
-)
 
 
 # --- audits ------------------------------------------------------------------------------------
@@ -711,47 +687,3 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
     )
     at1 = sy.stationarity_alpha_at_1()
     return AlphaStarAudit(qs, int(theta.size), closed_vs_num, gap, min_dist, q0, root, str(at1))
-
-
-@dataclass(frozen=True)
-class WeylAudit:
-    """The Weyl inequalities of the proof of Theorem 1 for 2x2 symmetric matrices."""
-
-    symbolic_triangle_equal: dict  #: name -> slack - triangle form expands to 0
-    n_pairs: int
-    #: name -> smallest slack / :math:`(\|X\| + \|Y\|)` over random pairs (at least
-    #: :math:`-10^{-15}`)
-    min_relative_slack: dict
-    min_ratio_slack: float  #: Eq. (19) over random PSD pairs
-    printed_range: tuple  #: (i, j, index) admitted by the printed dual-Weyl range for r = 2
-    invalid_indices: tuple  #: those with index < 1
-
-
-@lru_cache(maxsize=4)
-def weyl_audit(n_pairs: int, seed: int) -> WeylAudit:
-    """Symbolic (triangle inequality) and random checks of Eqs. (18)-(19) for 2x2 matrices.
-
-    Examples
-    --------
-    >>> a = weyl_audit(n_pairs=200, seed=0)
-    >>> all(a.symbolic_triangle_equal.values()), min(a.min_relative_slack.values()) >= -1e-14
-    (True, True)
-    >>> a.invalid_indices
-    ((1, 1, 0),)
-    """
-    import sympy as sp
-
-    from .. import symbolic as sy
-
-    n = positive_int("n_pairs", n_pairs)
-    sym = {k: bool(sp.expand(s - t) == 0) for k, (s, t) in sy.weyl_2x2_slacks().items()}
-    X = random_symmetric_2x2(n, seed)
-    Y = random_symmetric_2x2(n, seed + 1)
-    norm = np.abs(np.linalg.eigvalsh(X)).max(axis=-1) + np.abs(np.linalg.eigvalsh(Y)).max(axis=-1)
-    sl = weyl_2x2_slacks(X, Y)
-    rel = {k: float((sl[k] / norm).min()) for k in _WEYL_NAMES}
-    P = random_symmetric_2x2(n, seed + 2, psd=True)
-    R = random_symmetric_2x2(n, seed + 3, psd=True)
-    ratio = weyl_2x2_slacks(P, R)["ratio"]
-    rng_ = tuple(dual_weyl_printed_range(2))
-    return WeylAudit(sym, n, rel, float(np.nanmin(ratio)), rng_, tuple(t for t in rng_ if t[2] < 1))

@@ -14,8 +14,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .._validate import as_eps, check_maximisable
+from ..bounds import relative_vectors
+from ..measures import MEASURES, measure_from_vectors, subset_masks
 from ..sweep import run_sweep
-from ..teams import greedy_team_assignment, greedy_team_counts
+from ..teams import MAXIMISABLE, best_team_labelling, greedy_team_assignment, greedy_team_counts, greedy_team_picks
 
 __all__ = ["fig9_geometry", "fig9_trial", "fig9_trials", "fig9_sweep", "random_spread", "Evenness", "evenness", "greedy_vs_optimal_teams"]
 
@@ -151,12 +154,8 @@ def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets
     >>> ratios.shape, bool(ratios.min() >= 0.5)
     ((5,), True)
     """
-    from ..bounds import relative_vectors
-    from ..measures import measure_from_vectors, subset_masks
-    from ..teams import RANK_RTOL, _assignment_totals, _check_eps, _check_measure, _greedy_teams, _labellings
-
-    e = _check_eps(eps)
-    _check_measure(measure, e)
+    e = as_eps(eps)
+    check_maximisable(measure, e, MEASURES, MAXIMISABLE)
     rng = np.random.default_rng(seed)
     draws = []
     for _ in range(n_instances):
@@ -169,8 +168,9 @@ def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets
         V = np.stack([relative_vectors(draws[k][2], draws[k][3]) for k in idx])  # (K, N, L, 2), validated
         tables = [measure_from_vectors(V[:, :, l, :], subset_masks(n), measure, e) for l in range(L)]  # (K, 2^N)
         bits = 1 << np.arange(n, dtype=np.int64)
-        opt = _assignment_totals(tables, _labellings(n, L)[1]).max(axis=1)
-        picks_i, picks_l = _greedy_teams(V, None, measure, e, RANK_RTOL)
+        opt = best_team_labelling(np.stack(tables))[1]
+        picks_i, picks_l = greedy_team_picks(np.stack([draws[k][2] for k in idx]),
+                                             np.stack([draws[k][3] for k in idx]), measure, e)
         g = np.zeros(len(idx))
         for l in range(L):
             g += np.take_along_axis(tables[l], (np.where(picks_l == l, bits[picks_i], 0)).sum(axis=1)[:, None], 1)[:, 0]

@@ -84,6 +84,20 @@ def test_batch_greedy_and_weights_equal_the_single_instance_functions():
         np.testing.assert_array_equal(st.greedy_values(W[2:]), [ob.greedy_pair_assignment(w).value for w in W[2:]])
 
 
+@pytest.mark.parametrize("c", [1e-200, 1e200, 2.0**1000])
+def test_batch_weights_do_not_depend_on_the_unit(c):
+    # pair bounds are homogeneous of degree 0 in (coordinates, u_max); at these scales the squared
+    # lengths leave the float range unless the rows are normalised first
+    rng = np.random.default_rng(8)
+    S, T = rng.uniform(0, 1, (4, 5, 2)), rng.uniform(0, 1, (4, 2, 2))
+    with np.errstate(all="raise"):
+        W, valid = st.batch_pair_bounds(S * c, T * c, 0.7 * c)
+    assert valid.all()
+    np.testing.assert_allclose(W, st.batch_pair_bounds(S, T, 0.7)[0], rtol=1e-12, atol=1e-15)
+    for k in range(4):
+        np.testing.assert_array_equal(W[k], ob.pair_bounds(S[k] * c, T[k] * c, 0.7 * c))
+
+
 def test_batch_functions_reject_bad_input():
     with pytest.raises(ValueError, match="N >= 2L"):
         st.optimal_values(np.zeros((1, 3, 3, 2)))
@@ -93,6 +107,8 @@ def test_batch_functions_reject_bad_input():
         st.greedy_values(np.zeros((3, 3, 2)))
     with pytest.raises(ValueError, match="finite"):
         st.batch_pair_bounds(np.full((1, 2, 2), np.nan), np.zeros((1, 1, 2)), 1.0)
+    with pytest.raises(ValueError, match="u_max"):
+        st.batch_pair_bounds(np.zeros((1, 2, 2)), np.ones((1, 1, 2)), -1.0)
 
 
 def test_search_equals_the_sequential_local_search():
