@@ -1,5 +1,5 @@
-"""Claims of the pair closed form: Theorems 4-5, Fig. 2, and the errata of their proofs
-(notebook 02). Sizes come from the notebook's profile (:mod:`obslib.profiles`).
+"""Claims of the pair closed form (Theorems 4-5, Fig. 2 and the printed steps of their proofs),
+checked at the sizes of notebook 02's profile in :mod:`obslib.profiles`.
 """
 
 from __future__ import annotations

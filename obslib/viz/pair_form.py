@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._scalars import positive_float
+from .._validate import positive_float
 
 __all__ = ["plot_fig1", "plot_fig2"]
 
