@@ -46,6 +46,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from .. import tracking as tr
 from .._kernels import pair_kernel
 
 __all__ = [
@@ -218,18 +219,22 @@ def bound_weights(sensors, xhat, cov, u_max, metric="mahalanobis") -> np.ndarray
     or without ``cov`` (Euclidean), up to rounding: the same rescaling and the same kernel.
     ``sensors`` (B, N, 2), ``xhat`` (B, L, 2), ``cov`` (B, L, 2, 2).
     """
-    v = xhat[:, None, :, :] - sensors[:, :, None, :]  # (B, N, L, 2)
-    d2 = np.einsum("bnlk,bnlk->bnl", v, v)
-    if metric == "mahalanobis":
-        prec = np.linalg.inv(cov)  # (B, L, 2, 2)
-        m2 = np.einsum("bnlk,blkm,bnlm->bnl", v, prec, v)
-        v = v * np.sqrt(m2 / d2)[..., None]
-        d2 = m2
-    scale = np.sqrt(d2.max(axis=1))  # (B, L)
-    v = v / scale[:, None, :, None]
-    u2 = u_max**2 / scale**2  # (B, L)
-    x, y = v[..., 0], v[..., 1]  # (B, N, L)
+    B, N, L = sensors.shape[0], sensors.shape[1], xhat.shape[1]
+    v = xhat[:, :, None, :] - sensors[:, None, :, :]  # (B, L, N, 2)
+    x, y, inv = _scaled(v.reshape(B * L, N, 2), cov.reshape(B * L, 2, 2), metric)
+    x = x.reshape(B, L, N).transpose(0, 2, 1)  # (B, N, L)
+    y = y.reshape(B, L, N).transpose(0, 2, 1)
+    u2 = (u_max**2 * inv).reshape(B, L)
     return pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
+
+
+def _scaled(v, cov, metric):
+    """Rows ``v`` ``(M, K, 2)`` scaled as the tracking engine scales the bound's rows
+    (:func:`obslib.tracking.criteria.scaled_rows`): Mahalanobis lengths in ``cov`` ``(M, 2, 2)``
+    when ``metric`` says so, divided by each estimate's longest row."""
+    c = (cov[:, 0, 0], cov[:, 0, 1], cov[:, 1, 0], cov[:, 1, 1])
+    maha = np.full(v.shape[0], metric == "mahalanobis")
+    return tr.criteria.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
 
 
 def info_gain_weights(sensors, xhat, cov_pred, r) -> np.ndarray:
@@ -389,14 +394,9 @@ def _chosen_values(S, x, P, pr, u_max, metric, q, r):
     bb = np.arange(S.shape[0])[:, None]
     ps = S[bb[..., None], pr]  # (B, L, 2, 2)
     h = x[..., None, :] - ps  # rows x - p_i, x - p_j
-    v = h
-    if metric == "mahalanobis":
-        prec = np.linalg.inv(P)
-        m2 = np.einsum("blpk,blkm,blpm->blp", h, prec, h)
-        v = h * np.sqrt(m2 / np.einsum("blpk,blpk->blp", h, h))[..., None]
-    scale = np.sqrt(np.einsum("blpk,blpk->blp", v, v).max(axis=-1))
-    v = v / scale[..., None, None]
-    bound = pair_kernel(v[..., 0, 0], v[..., 0, 1], v[..., 1, 0], v[..., 1, 1], u_max**2 / scale**2)
+    B, L = h.shape[0], h.shape[1]
+    x, y, inv = _scaled(h.reshape(B * L, 2, 2), P.reshape(B * L, 2, 2), metric)
+    bound = pair_kernel(x[:, 0], y[:, 0], x[:, 1], y[:, 1], u_max**2 * inv).reshape(B, L)
     G = h @ (P + q * np.eye(2)) @ np.swapaxes(h, -1, -2) / r  # H Sigma^- H^T / r
     gain = np.log((1 + G[..., 0, 0]) * (1 + G[..., 1, 1]) - G[..., 0, 1] * G[..., 1, 0])
     return bound, gain

@@ -136,18 +136,11 @@ def criterion_scores(name: str, sensors, xhat, cov, Q, R, u_max, control=None,
 def _scores(name, S, x, C, Q, R, u_max, u, metric):
     ii, jj = np.triu_indices(S.shape[0], 1)
     v = x[:, None, :] - S[None, :, :]  # (B, N, 2) rows xhat - p_i
-    if name == "bound":  # Theorem 4 on the pairs only, Mahalanobis lengths in closed form
-        d2 = v[..., 0] ** 2 + v[..., 1] ** 2  # (B, N)
-        if metric == "mahalanobis":
-            cdet = C[:, 0, 0] * C[:, 1, 1] - C[:, 0, 1] * C[:, 1, 0]
-            m2 = (C[:, None, 1, 1] * v[..., 0] ** 2 - 2 * C[:, None, 0, 1] * v[..., 0] * v[..., 1]
-                  + C[:, None, 0, 0] * v[..., 1] ** 2) / cdet[:, None]
-            v = v * np.sqrt(m2 / d2)[..., None]
-            d2 = m2
-        scale = np.sqrt(d2.max(axis=1))  # (B,), as pair_bounds normalises
-        v = v / scale[:, None, None]
-        u2 = (u_max**2 / scale**2)[:, None]
-        return pair_kernel(v[:, ii, 0], v[:, ii, 1], v[:, jj, 0], v[:, jj, 1], u2)
+    if name == "bound":  # Theorem 4 on the pairs only: the tracking engine's row scaling
+        c = (C[:, 0, 0], C[:, 0, 1], C[:, 1, 0], C[:, 1, 1])
+        maha = np.full(x.shape[0], metric == "mahalanobis")
+        vx, vy, inv = tr.criteria.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
+        return pair_kernel(vx[:, ii], vy[:, ii], vx[:, jj], vy[:, jj], (u_max**2 * inv)[:, None])
     if name == "exact-icn":
         rows = np.stack([v[:, ii], v[:, jj], np.broadcast_to(u[:, None], v[:, ii].shape)], axis=-2)
         return inverse_condition(rows)  # (B, P)
