@@ -49,7 +49,7 @@ def test_table_says_where_a_verdict_changes():
     text = rb.robustness_table(rows, link=lambda i: f"[{i}](#claim-{i})",
                                statuses={"a": "refuted"})
     lines = text.splitlines()
-    assert lines[2] == ("| [a](#claim-a) | refuted (partly at the base sizes) | holds | n/a | "
+    assert lines[2] == ("| [a](#claim-a) | refuted (partly at the smaller sizes) | holds | n/a | "
                         "**refuted** at Euclidean | unchanged finding |")
     assert lines[3] == "| [b](#claim-b) | reproduced |" + " fixed by the published run |" * 4
     assert len(lines) == 4 and all(line.count("|") == 7 for line in lines)

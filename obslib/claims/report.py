@@ -34,13 +34,14 @@ Every claim that is partly reproduced or refuted, and every claim of the trackin
 checked again with one parameter of its experiment changed at a time: the speed bound
 $u_{{\\max}}$ and the measurement noise $\\sigma$ scaled by 0.25, 0.5, 2 and 4, the distances of
 the pair bound computed with the other metric (Euclidean instead of Mahalanobis), and the number
-of noise seeds, instances or trials halved and doubled. These reruns keep the paper's other
-parameters but use the smaller Monte Carlo sizes of the profile `{base}`, so that the {n} claims
-with all their variants take minutes, not hours. A cell reads *holds* when the verdict is the same
-at every value tried, *unchanged finding* when not even the numbers depend on the parameter, names
-the verdict where it changes, and reads *n/a* when the experiment has no such parameter. The
-numbers of a published run are not varied in the parameters that run was made with. Rerun with
-`python -m obslib.claims --robustness`.
+of noise seeds, instances or trials halved and doubled. The reruns keep the paper's other
+parameters but start from the smaller Monte Carlo sizes of the profile `{base}`; the verdict
+column is the verdict above, at the paper's sizes, and names the one at the smaller sizes where
+they differ. A cell reads *holds* when the verdict is the same at every value tried, *unchanged
+finding* when not even the numbers change (the check does not use that parameter of its
+experiment), names the verdict where it changes, and reads *n/a* when the experiment has no such
+parameter. The numbers of a published run are not varied in the parameters that run was made
+with. Rerun with `python -m obslib.claims --robustness`.
 """
 
 HEADER = """\

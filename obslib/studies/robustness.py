@@ -201,7 +201,7 @@ def robustness_table(rows, link=None, statuses=None) -> str:
     for r in rows:
         name = link(r["id"]) if link else f"`{r['id']}`"
         shown = (statuses or {}).get(r["id"], r["base"])
-        verdict = shown if shown == r["base"] else f"{shown} ({r['base']} at the base sizes)"
+        verdict = shown if shown == r["base"] else f"{shown} ({r['base']} at the smaller sizes)"
         cells = [_describe(r["base"], r["variants"].get(d), d in r.get("fixed", ())) for d in dims]
         lines.append(f"| {name} | {verdict} | " + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"
