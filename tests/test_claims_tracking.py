@@ -11,6 +11,9 @@ import pytest
 
 import obslib.claims as claims
 import obslib.claims.tracking as ct  # registers the claims of this module
+import obslib.tracking as tr
+from obslib.published_runs import published_run
+from obslib.studies.published import PUBLISHED_CIRCLE
 
 IDS = [
     "fig6-figure-data",
@@ -34,7 +37,7 @@ EXPECTED = {
     "sec5a-s1-best-partner": "partly",
     "fig7-entrapment": "reproduced",
     "fig7-switch-mechanism": "partly",
-    "fig7-figure-data": "partly",
+    "fig7-figure-data": "reproduced",
 }
 
 
@@ -94,10 +97,80 @@ def test_statuses_follow_from_evidence(records):
         assert r.status == ("partly" if e["switch_if_closer"] >= 0.9 else "refuted")
 
     r = records["fig6-figure-data"]
-    rows = r.evidence["rows"].values()
-    within = [v["within"] for row in rows for k, v in row.items() if k != "mc_mean"]
-    half = 2 * sum(within) >= len(within)
-    assert r.status == ("reproduced" if all(within) else "partly" if half else "refuted")
+    e = r.evidence
+    replay_ok = all(d["matches_log"] and all(v["printed_match"] for v in d["printed"].values())
+                    for d in e["replays"].values())
+    typical = e["fixed_pair"]["share_like_published"] >= ct.TYPICAL_SHARE
+    assert r.status == ("refuted" if not replay_ok else "reproduced" if typical else "partly")
+
+    r = records["fig7-figure-data"]
+    e = r.evidence
+    ok = e["matches_log"] and all(e["printed_match"].values())
+    assert r.status == ("reproduced" if ok else "refuted")
+
+
+def test_figure_data_against_the_published_log(records):
+    # the printed numbers recomputed from the saved runs themselves, not through the replay
+    for name in ("best-pair", "best-partner"):
+        log = published_run(name)
+        rep = records["fig6-figure-data"].evidence["replays"][name]["printed"]
+        assert rep["switches"]["replay"] == log.switches == PUBLISHED_CIRCLE[name]["switches"]
+        assert rep["mean_bound"]["replay"] == pytest.approx(log.bound.mean(), abs=1e-4)
+        assert round(log.error.mean(), 2) == PUBLISHED_CIRCLE[name]["mean_error"]
+        assert round(log.trace_cov.mean(), 3) == PUBLISHED_CIRCLE[name]["mean_trace"]
+    adv = published_run("adversarial")
+    e = records["fig7-figure-data"].evidence
+    assert e["switches"] == adv.switches == 306
+    assert e["mean_bound"] == pytest.approx(adv.bound.mean(), abs=1e-4)
+    assert round(adv.bound.mean(), 2) == 0.79
+
+
+def test_strategy3_share_recounted_from_runs():
+    # the share of our strategy-3 runs like the published one, counted run by run with simulate
+    p = ct.params(ct.NB5, "quick")
+    setup = ct.circle_setup(p)
+    pub = PUBLISHED_CIRCLE["fixed-pair"]
+    n = 6
+    like = 0
+    for seed in range(p["seed"], p["seed"] + n):
+        s = tr.simulate(setup, "fixed-pair", seed=seed).summary()
+        like += all(abs(s[k] - v) <= 0.15 * v if v else s[k] == 0 for k, v in pub.items())
+    p6 = dict(p, n_seeds=n)
+    mc = ct._mc(ct.circle_setup(p6), n, p["seed"])
+    r3 = mc["fixed-pair"]
+    vals = {"switches": r3.switches, "mean_bound": r3.bound.mean(1), "mean_error": r3.error.mean(1),
+            "mean_trace": r3.trace_cov.mean(1)}
+    ours = sum(all(abs(vals[k][i] - v) <= 0.15 * v if v else vals[k][i] == 0
+                   for k, v in pub.items()) for i in range(n))
+    assert ours == like
+
+
+def test_printed_match_rounds_at_the_printed_precision():
+    assert ct.printed_match(0.7263, 0.73, "mean_bound")
+    assert not ct.printed_match(0.7249, 0.73, "mean_bound")
+    assert ct.printed_match(0.13975, 0.140, "mean_trace")
+    assert not ct.printed_match(0.1394, 0.140, "mean_trace")
+    assert ct.printed_match(306, 306, "switches") and not ct.printed_match(305, 306, "switches")
+
+
+def test_fig7_figure_data_refuted_when_the_replay_misses(monkeypatch):
+    # the check has teeth: a replay that differs from the log by more than its rounding
+    import dataclasses
+
+    good = ct.rp.compare_replay("adversarial")
+    bad = dataclasses.replace(good, max_abs_diff=dict(good.max_abs_diff, bound=1e-3))
+    monkeypatch.setattr(ct.rp, "compare_replay", lambda name: bad)
+    (r,) = claims.evaluate("quick", ["fig7-figure-data"])
+    assert r.status == "refuted" and "not reproduced" in r.ours
+
+
+def test_fig7_figure_data_reports_typicality_shared_with_published_replay(records):
+    (pr,) = claims.evaluate("quick", ["published-replay"])
+    t, u = records["fig7-figure-data"].evidence["typicality"], pr.evidence["typicality"]
+    assert t["n_seeds"] == u["n_seeds"]
+    assert t["within_tolerance"] == pytest.approx(u["within_tolerance"])
+    assert t["percentile"] == pytest.approx(u["percentile"])
+    assert t["median"] == pytest.approx(u["quantiles"][50], abs=1e-4)
 
 
 def test_statuses_as_found(records):

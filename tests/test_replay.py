@@ -81,3 +81,16 @@ def test_published_replay_claim():
     (r,) = claims.evaluate("quick", ids=["published-replay"])
     assert r.status == "reproduced"
     assert r.evidence["runs"]["fixed-pair"]["steps"] == 1
+
+
+def test_seed_typicality_share_within_tolerance_and_cache():
+    t = rp.seed_typicality(30, 0)
+    m, pub = t["per_run"], t["published"]
+    near = [abs(x - pub) <= 0.15 * pub for x in m.tolist()]
+    assert t["within_tolerance"] == pytest.approx(sum(near) / len(near))
+    # computed once: a second call returns the same runs, which nobody can alter
+    assert rp.seed_typicality(30, 0)["per_run"] is m
+    with pytest.raises(ValueError):
+        m[0] = 0.0
+    assert rp.compare_replay("adversarial") is rp.compare_replay("adversarial")
+    assert rp.compare_replay("adversarial").matches

@@ -3,6 +3,7 @@
 import pytest
 
 from obslib import claims
+from obslib.claims import report as REPORT
 from obslib.profiles import PROFILES, params
 from obslib.studies import robustness as rb
 
@@ -13,7 +14,8 @@ def test_identity_variation_reproduces_the_base_verdict(monkeypatch):
     (row,) = rb.verdict_robustness(["thm7-case2"], dimensions=["u_max"])
     (rec,) = claims.evaluate("quick", ids=["thm7-case2"])
     assert row["base"] == rec.status
-    assert row["variants"] == {"u_max": [("x1", rec.status)]}
+    # and the very same finding, which the row records
+    assert row["variants"] == {"u_max": [("x1", rec.status, True)]}
     assert rb._TMP not in PROFILES  # the temporary profile is gone
 
 
@@ -38,10 +40,85 @@ def test_dimensions_follow_the_notebook_parameters():
 
 
 def test_table_says_where_a_verdict_changes():
-    rows = [{"id": "a", "base": "partly", "variants": {"u_max": [("x2", "partly")],
-                                                        "metric": [("euclidean", "refuted")]}}]
-    text = rb.robustness_table(rows)
-    assert "| `a` | partly | holds (x2) | n/a | changes at euclidean: refuted | n/a |" in text
+    rows = [{"id": "a", "base": "partly",
+             "variants": {"u_max": [("x2", "partly", False)],
+                          "metric": [("euclidean", "refuted", False)],
+                          "size": [("n_seeds x0.5", "partly", True), ("n_seeds x2", "partly", True)]}},
+            {"id": "b", "base": "reproduced", "fixed": ["u_max", "noise_std", "metric", "size"],
+             "variants": {}}]
+    text = rb.robustness_table(rows, link=lambda i: f"[{i}](#claim-{i})",
+                               statuses={"a": "refuted"})
+    lines = text.splitlines()
+    assert lines[2] == ("| [a](#claim-a) | refuted (partly at the smaller sizes) | holds | n/a | "
+                        "**refuted** at Euclidean | unchanged finding |")
+    assert lines[3] == "| [b](#claim-b) | reproduced |" + " fixed by the published run |" * 4
+    assert len(lines) == 4 and all(line.count("|") == 7 for line in lines)
+
+
+def test_published_run_claims_are_not_varied_in_their_run_parameters():
+    (row,) = rb.verdict_robustness(["fig7-figure-data"])
+    assert row["variants"] == {} and row["fixed"] == list(rb.DIMENSIONS)
+    (row,) = rb.verdict_robustness(["fig6-figure-data"], dimensions=["noise_std", "size"])
+    assert row["fixed"] == ["noise_std"] and set(row["variants"]) == {"size"}
+
+
+# ----------------------------------------------------------------------- the stored data
+
+
+@pytest.fixture(scope="module")
+def stored():
+    return rb.read_json(REPORT.ROBUSTNESS_FILE)
+
+
+def test_stored_robustness_covers_the_current_ledger(stored):
+    # same claims, same base verdicts, same dimensions as a fresh evaluation: else rerun
+    # python -m obslib.claims --robustness --write book/data/robustness.json
+    base = stored["base"]
+    assert stored["dimensions"] == {k: list(v) for k, v in rb.DIMENSIONS.items()}
+    recs = {r.id: r.status for r in claims.evaluate(base)}
+    assert [r["id"] for r in stored["rows"]] == rb.default_ids(base)
+    assert {r["id"]: r["base"] for r in stored["rows"]} == {
+        r["id"]: recs[r["id"]] for r in stored["rows"]}
+
+
+@pytest.mark.parametrize("cid, dim", [("fig7-switch-mechanism", "metric"),
+                                      ("fig5-switching-k50", "metric"),
+                                      ("thm7-case2", "u_max"),
+                                      ("fig7-entrapment", "u_max")])
+def test_stored_robustness_agrees_with_a_fresh_recomputation(stored, cid, dim):
+    (row,) = [r for r in stored["rows"] if r["id"] == cid]
+    (fresh,) = rb.verdict_robustness([cid], base=stored["base"], dimensions=[dim])
+    assert [list(v) for v in fresh["variants"][dim]] == row["variants"][dim]
+
+
+def test_report_section_from_the_stored_data(stored):
+    recs = claims.evaluate("quick", ids=["fig7-switch-mechanism", "thm1"])
+    text = claims.render_report(recs, "quick", labels=set(), robustness=stored)
+    sec = text.split("## How robust are the verdicts?")[1].split("## Claims in detail")[0]
+    rows = [line for line in sec.splitlines() if line.startswith("| [")]
+    # only the claims of the report that the data covers, each linking to its entry
+    assert rows == [line for line in rows if "(#claim-fig7-switch-mechanism)" in line]
+    assert len(rows) == 1 and "**refuted** at Euclidean" in rows[0]
+    assert "How robust" not in claims.render_report(recs, "quick", labels=set())
+
+
+def test_read_json_rejects_other_files(tmp_path):
+    bad = tmp_path / "x.json"
+    bad.write_text("[1, 2]")
+    with pytest.raises(ValueError, match="not a robustness data file"):
+        rb.read_json(bad)
+    with pytest.raises(ValueError, match="not a robustness data file"):
+        rb.read_json(tmp_path / "missing.json")
+
+
+def test_cli_robustness_write_needs_json(capsys, tmp_path):
+    from obslib.claims.__main__ import parse_args
+
+    with pytest.raises(SystemExit) as exc:
+        parse_args(["--robustness", "--write", str(tmp_path / "r.md")])
+    assert exc.value.code == 2 and "must end in .json" in capsys.readouterr().err
+    assert parse_args(["--robustness"]).profile == "quick"
+    assert parse_args([]).profile == "paper"
 
 
 def test_bad_input():

@@ -15,7 +15,7 @@ from pathlib import Path
 
 from ._ledger import ALIASES, REQUIRED_IDS, STATUSES, Record
 
-__all__ = ["render_report", "notebook_labels", "typeset", "MARKERS"]
+__all__ = ["render_report", "notebook_labels", "typeset", "MARKERS", "ROBUSTNESS_FILE"]
 
 #: Marker comments around the parts of the report that the introduction includes.
 MARKERS = {
@@ -25,6 +25,24 @@ MARKERS = {
 }
 
 NOTEBOOKS = Path(__file__).resolve().parents[2] / "notebooks"
+
+#: The stored robustness of the verdicts (``python -m obslib.claims --robustness --write ...``).
+ROBUSTNESS_FILE = Path(__file__).resolve().parents[2] / "book" / "data" / "robustness.json"
+
+ROBUSTNESS_INTRO = """\
+Every claim that is partly reproduced or refuted, and every claim of the tracking experiments, is
+checked again with one parameter of its experiment changed at a time: the speed bound
+$u_{{\\max}}$ and the measurement noise $\\sigma$ scaled by 0.25, 0.5, 2 and 4, the distances of
+the pair bound computed with the other metric (Euclidean instead of Mahalanobis), and the number
+of noise seeds, instances or trials halved and doubled. The reruns keep the paper's other
+parameters but start from the smaller Monte Carlo sizes of the profile `{base}`; the verdict
+column is the verdict above, at the paper's sizes, and names the one at the smaller sizes where
+they differ. A cell reads *holds* when the verdict is the same at every value tried, *unchanged
+finding* when not even the numbers change (the check does not use that parameter of its
+experiment), names the verdict where it changes, and reads *n/a* when the experiment has no such
+parameter. The numbers of a published run are not varied in the parameters that run was made
+with. Rerun with `python -m obslib.claims --robustness`.
+"""
 
 HEADER = """\
 # Reproduction report
@@ -166,7 +184,22 @@ def _verdict(r: Record) -> str:
     return f"**{r.status}**" if r.status != "reproduced" else r.status
 
 
-def render_report(records: list[Record], profile: str = "paper", labels=None) -> str:
+def robustness_section(records: list[Record], robustness: dict) -> list:
+    """Lines of the section "How robust are the verdicts?" from the stored robustness data."""
+    from ..studies.robustness import robustness_table
+
+    have = {r.id: r.status for r in records}
+    rows = [r for r in robustness["rows"] if r["id"] in have]
+    if not rows:
+        return []
+    intro = ROBUSTNESS_INTRO.format(base=robustness["base"], n=len(rows))
+    table = robustness_table(rows, link=lambda i: f"[`{i}`](#claim-{i})", statuses=have)
+    return ["## How robust are the verdicts?", "", " ".join(intro.split()), "",
+            table.rstrip("\n"), ""]
+
+
+def render_report(records: list[Record], profile: str = "paper", labels=None,
+                  robustness=None) -> str:
     """MyST Markdown for the report page.
 
     A summary by verdict, the verdict table (one line per claim: its one-line statement, what
@@ -184,6 +217,10 @@ def render_report(records: list[Record], profile: str = "paper", labels=None) ->
         The MyST targets that exist in the notebooks (default: read from ``notebooks/``). The
         evidence link of a claim goes to its ``label`` when that target exists, else to the top
         of its notebook.
+    robustness : dict, optional
+        The stored robustness of the verdicts (:func:`obslib.studies.robustness.read_json`);
+        when given, the section "How robust are the verdicts?" follows the claims that do not
+        hold as printed.
     """
     if labels is None:
         labels = notebook_labels()
@@ -238,7 +275,10 @@ def render_report(records: list[Record], profile: str = "paper", labels=None) ->
             )
     if not bad:
         lines.append("Every claim holds as stated.")
-    lines += [MARKERS["exceptions"][1], "", "## Claims in detail", ""]
+    lines += [MARKERS["exceptions"][1], ""]
+    if robustness:
+        lines += robustness_section(records, robustness)
+    lines += ["## Claims in detail", ""]
 
     for r in records:
         lines += [f"(claim-{old})=" for old in aliases.get(r.id, [])]

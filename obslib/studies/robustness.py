@@ -2,25 +2,35 @@
 
 For a claim, :func:`verdict_robustness` re-evaluates its check with one parameter of its notebook
 changed at a time, through the parameter profiles of :mod:`obslib.profiles`: a temporary
-profile equal to a base profile (``quick`` by default) with that one change, removed afterwards.
-The dimensions are the target's speed bound ``u_max``, the measurement noise ``noise_std``, the
-distance metric of the pair bound (``metric``) and the Monte Carlo size (the notebook's number of
-seeds, instances or trials). A dimension applies to a claim when its notebook has that
-parameter (the metric: the tracking notebooks 05 and 06).
+profile equal to a base profile (``quick`` by default: the paper's parameters with smaller Monte
+Carlo sizes) with that one change, removed afterwards. The dimensions are the target's speed
+bound ``u_max``, the measurement noise ``noise_std``, the distance metric of the pair bound
+(``metric``) and the Monte Carlo size (the notebook's number of seeds, instances or trials). A
+dimension applies to a claim when its notebook has that parameter (the metric: the tracking
+notebooks 05 and 06). Claims about the numbers of one published run are not varied in the
+parameters that run was made with (:data:`FIXED_BY_PUBLISHED_RUN`).
 
-:func:`robustness_table` renders the result as one Markdown row per claim, saying over which
-range each verdict holds.
+Each variant records its status and whether the whole finding (the sentence and the evidence) is
+the base's: a verdict that *holds* was earned again by different numbers; an *unchanged* finding
+does not depend on the parameter at all.
+
+:func:`robustness_table` renders the result as one MyST row per claim, saying over which range
+each verdict holds. The result is stored as data (:func:`write_json`, :func:`read_json`) by
+``python -m obslib.claims --robustness --write book/data/robustness.json`` and read by the
+report, since recomputing it takes longer than the rest of the report.
 """
 
 from __future__ import annotations
 
 import copy
+import json
 from contextlib import contextmanager
+from pathlib import Path
 
 from ..profiles import PROFILES, params, profile_names
 
-__all__ = ["DIMENSIONS", "SIZE_KEYS", "TRACKING_NOTEBOOKS", "default_ids", "verdict_robustness",
-           "robustness_table"]
+__all__ = ["DIMENSIONS", "SIZE_KEYS", "TRACKING_NOTEBOOKS", "FIXED_BY_PUBLISHED_RUN", "HEADERS",
+           "default_ids", "verdict_robustness", "robustness_table", "write_json", "read_json"]
 
 #: Per dimension: the factors applied to the default (numbers) or the values tried (metric).
 DIMENSIONS = {
@@ -35,6 +45,14 @@ SIZE_KEYS = ("n_seeds", "n_instances", "trials", "n_scenes")
 
 #: Notebooks of the tracking experiments (Sections V-A and V-B).
 TRACKING_NOTEBOOKS = ("05_two_sensors_tracking", "06_adversarial_target")
+
+#: Claims about the numbers of one published run -> the dimensions fixed by that run (its own
+#: speed bound, noise and metric: a run made with other values is another run).
+#: ``fig7-figure-data`` is decided by the replay alone, so no parameter of its notebook enters.
+FIXED_BY_PUBLISHED_RUN = {
+    "fig6-figure-data": ("u_max", "noise_std", "metric"),
+    "fig7-figure-data": ("u_max", "noise_std", "metric", "size"),
+}
 
 _TMP = "_robustness"
 
@@ -77,6 +95,11 @@ def _variants(p: dict, notebook: str) -> dict:
     return out
 
 
+def _finding(rec) -> str:
+    """The whole finding of a record as text (sentence and evidence), to tell unchanged ones."""
+    return rec.ours + "\n" + json.dumps(rec.evidence, sort_keys=True, default=repr)
+
+
 def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[dict]:
     """Re-evaluate claims with one parameter changed at a time.
 
@@ -92,9 +115,11 @@ def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[d
     Returns
     -------
     list of dict
-        Per claim: ``id``, ``notebook``, ``base`` (its status at ``base``) and ``variants``:
-        dimension -> list of ``(label, status)``. Claims whose notebook has no parameters in the
-        profiles get no variants.
+        Per claim: ``id``, ``notebook``, ``base`` (its status at ``base``), ``variants``:
+        dimension -> list of ``(label, status, unchanged)`` (``unchanged``: the whole finding is
+        the base's), and ``fixed``: the dimensions not varied because the claim is about a
+        published run made with them (:data:`FIXED_BY_PUBLISHED_RUN`). Claims whose notebook
+        has no parameters in the profiles get no variants.
     """
     from ..claims import evaluate, registry
 
@@ -113,35 +138,92 @@ def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[d
     for cid in ids:
         nb = reg[cid].notebook
         (rec,) = evaluate(base, ids=[cid])
-        row = {"id": cid, "notebook": nb, "base": rec.status, "variants": {}}
+        fixed = [d for d in FIXED_BY_PUBLISHED_RUN.get(cid, ()) if d in dims]
+        row = {"id": cid, "notebook": nb, "base": rec.status, "variants": {}, "fixed": fixed}
         if nb in PROFILES["paper"]:
             for dim, options in _variants(params(nb, base), nb).items():
-                if dim not in dims:
+                if dim not in dims or dim in fixed:
                     continue
                 got = []
                 for label, key, value in options:
                     with _profile_with(base, nb, key, value) as name:
                         (r,) = evaluate(name, ids=[cid])
-                    got.append((label, r.status))
+                    got.append((label, r.status, _finding(r) == _finding(rec)))
                 row["variants"][dim] = got
         rows.append(row)
     return rows
 
 
-def _describe(base: str, got: list) -> str:
-    changed = [f"{label}: {status}" for label, status in got if status != base]
+#: Column headers of :func:`robustness_table`: what is varied and the values tried.
+HEADERS = {
+    "u_max": r"$u_{\max}$ $\times$ 0.25, 0.5, 2, 4",
+    "noise_std": r"noise $\sigma$ $\times$ 0.25, 0.5, 2, 4",
+    "metric": "distances: the other metric",
+    "size": r"seeds or instances $\times$ 0.5, 2",
+}
+
+
+def _value(label: str) -> str:
+    """A variant's label as typeset text: ``x0.25`` -> ``×0.25``, ``n_seeds x2`` -> ``×2``,
+    ``euclidean`` -> ``Euclidean``."""
+    last = label.split()[-1]
+    return "×" + last[1:] if last.startswith("x") else last.capitalize()
+
+
+def _describe(base: str, got, fixed: bool = False) -> str:
+    if fixed:
+        return "fixed by the published run"
+    if not got:
+        return "n/a"
+    changed = [(label, status) for label, status, *_ in got if status != base]
     if not changed:
-        return "holds (" + ", ".join(label for label, _ in got) + ")"
-    return "changes at " + "; ".join(changed)
+        same = all(len(g) > 2 and g[2] for g in got)
+        return "unchanged finding" if same else "holds"
+    return "; ".join(f"**{status}** at {_value(label)}" for label, status in changed)
 
 
-def robustness_table(rows) -> str:
-    """Markdown: one row per claim, per dimension whether its verdict holds over the range."""
+def robustness_table(rows, link=None, statuses=None) -> str:
+    """MyST: one row per claim, per dimension whether its verdict holds over the range tried.
+
+    Parameters
+    ----------
+    rows : list of dict
+        :func:`verdict_robustness` (or the ``rows`` of :func:`read_json`).
+    link : callable, optional
+        ``link(id) -> str``, the claim's cell (default: the id as code).
+    statuses : dict, optional
+        id -> the verdict to show (default: the base verdict of ``rows``); where it differs
+        from the base, the cell names both.
+    """
     dims = list(DIMENSIONS)
-    lines = ["| claim | verdict | " + " | ".join(dims) + " |",
+    lines = ["| claim | verdict | " + " | ".join(HEADERS[d] for d in dims) + " |",
              "| --- | --- | " + " | ".join("---" for _ in dims) + " |"]
     for r in rows:
-        cells = [_describe(r["base"], r["variants"][d]) if d in r["variants"] else "n/a"
-                 for d in dims]
-        lines.append(f"| `{r['id']}` | {r['base']} | " + " | ".join(cells) + " |")
+        name = link(r["id"]) if link else f"`{r['id']}`"
+        shown = (statuses or {}).get(r["id"], r["base"])
+        verdict = shown if shown == r["base"] else f"{shown} ({r['base']} at the smaller sizes)"
+        cells = [_describe(r["base"], r["variants"].get(d), d in r.get("fixed", ())) for d in dims]
+        lines.append(f"| {name} | {verdict} | " + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"
+
+
+def write_json(rows, path, base: str = "quick") -> None:
+    """Store :func:`verdict_robustness`'s rows with the base profile and the dimensions tried."""
+    data = {"base": base, "dimensions": {k: list(v) for k, v in DIMENSIONS.items()},
+            "rows": rows}
+    text = json.dumps(data, indent=1) + "\n"
+    path = Path(path)
+    if not path.exists() or path.read_text() != text:
+        path.write_text(text)
+
+
+def read_json(path) -> dict:
+    """The data of :func:`write_json`: ``base``, ``dimensions`` and ``rows``."""
+    path = Path(path)
+    try:
+        data = json.loads(path.read_text())
+    except (OSError, ValueError) as exc:
+        raise ValueError(f"{path}: not a robustness data file ({exc})") from None
+    if not isinstance(data, dict) or not {"base", "dimensions", "rows"} <= set(data):
+        raise ValueError(f"{path}: not a robustness data file (keys base, dimensions, rows)")
+    return data
