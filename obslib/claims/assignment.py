@@ -85,7 +85,7 @@ def _thm6_practice(profile: str) -> Finding:
         f"On random instances yes: the greedy is optimal in {np.mean(r >= 1 - 1e-12):.0%} of "
         f"{r.size} small instances, median {np.median(r):.3f} of the optimum and above "
         f"{q05:.2f} in 95 %. (Geometries built by local search get down to {worst_ratio:.3f}: "
-        "see thm6-tight.)",
+        "see `thm6-tight`.)",
         {"quantile_05": q05, "median": float(np.median(r)),
          "worst_search_ratio": float(worst_ratio)},
     )
