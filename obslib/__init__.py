@@ -46,8 +46,10 @@ viz
 claims
     The claims ledger: one record per claim of the paper, re-checked with ``studies``.
 
-Repository tooling: ``profiles`` (named parameter sets), ``run`` (the papermill runner behind
-``make book``), ``bench`` and ``notebook`` (figure settings every notebook applies).
+The experiments' parameters: ``profiles`` (named parameter sets of the notebooks and the ledger).
+Repository tooling: ``tools`` (the papermill runner behind ``make book`` and the benchmarks, with
+the command lines ``python -m obslib.run`` and ``python -m obslib.bench``) and ``notebook``
+(figure and table settings every notebook applies).
 """
 
 from .assignment import (
@@ -92,7 +94,7 @@ __all__ = [
 
 #: Submodules imported on first attribute access (``obslib.claims.evaluate(...)`` works after a
 #: bare ``import obslib``) rather than at import time, since they pull in SymPy, papermill etc.
-_LAZY = ("claims", "profiles", "run", "bench", "symbolic", "pair_form", "controls", "scenes",
+_LAZY = ("claims", "profiles", "tools", "symbolic", "pair_form", "controls", "scenes",
          "studies", "viz", "sweep")
 
 

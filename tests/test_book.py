@@ -30,8 +30,8 @@ import pytest
 
 import yaml
 
-from obslib import run
-from obslib.run import ROOT
+from obslib.tools import run
+from obslib.tools.run import ROOT
 
 BUILD = ROOT / "_build" / "html"
 SHOTS = ROOT / "_build" / "screenshots"

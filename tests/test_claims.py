@@ -8,7 +8,7 @@ import pytest
 import obslib as ob
 import obslib.studies.section3 as bc
 from obslib import claims
-from obslib.run import NOTEBOOK_DIR, ROOT
+from obslib.tools.run import NOTEBOOK_DIR, ROOT
 
 
 @pytest.fixture(scope="module")

@@ -308,7 +308,7 @@ argv_words = st.sampled_from(["--profile", "paper", "quick", "nosuch", "--id", "
 @settings(max_examples=60, deadline=10_000)
 @given(st.lists(argv_words, max_size=6))
 def test_run_cli_parsing(argv):
-    from obslib import run
+    from obslib.tools import run
 
     ran = []
     with mock.patch.object(run, "execute", lambda *a, **k: ran.append(a) or 0.0), \
@@ -325,7 +325,7 @@ def test_run_cli_parsing(argv):
 @settings(max_examples=60, deadline=10_000)
 @given(st.lists(argv_words, max_size=6))
 def test_claims_and_bench_cli_parsing(argv):
-    from obslib.bench import parse_args as bench_args
+    from obslib.tools.bench import parse_args as bench_args
     from obslib.claims.__main__ import parse_args as claims_args
 
     for parse in (claims_args, bench_args):

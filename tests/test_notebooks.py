@@ -7,7 +7,7 @@ import pytest
 import yaml
 
 from obslib.profiles import PROFILES, params
-from obslib.run import NOTEBOOK_DIR, ROOT, notebooks
+from obslib.tools.run import NOTEBOOK_DIR, ROOT, notebooks
 
 NOTEBOOKS = notebooks()
 

@@ -13,6 +13,7 @@ import re
 from collections import Counter
 from pathlib import Path
 
+from ..tools import ROOT
 from ._ledger import ALIASES, REQUIRED_IDS, STATUSES, Record
 
 __all__ = ["render_report", "notebook_labels", "typeset", "MARKERS", "ROBUSTNESS_FILE"]
@@ -24,10 +25,10 @@ MARKERS = {
     "exceptions": ("% exceptions: start", "% exceptions: end"),
 }
 
-NOTEBOOKS = Path(__file__).resolve().parents[2] / "notebooks"
+NOTEBOOKS = ROOT / "notebooks"
 
 #: The stored robustness of the verdicts (``python -m obslib.claims --robustness --write ...``).
-ROBUSTNESS_FILE = Path(__file__).resolve().parents[2] / "book" / "data" / "robustness.json"
+ROBUSTNESS_FILE = ROOT / "book" / "data" / "robustness.json"
 
 ROBUSTNESS_INTRO = """\
 Every claim that is partly reproduced or refuted, and every claim of the tracking experiments, is

@@ -6,7 +6,7 @@ import nbformat
 import pytest
 from nbformat.v4 import new_code_cell, new_notebook
 
-from obslib import run
+from obslib.tools import run
 
 
 def test_resolve_by_number_and_stem():
@@ -143,7 +143,7 @@ def test_claims_cli_errors_are_argparse_errors(argv, message, capsys):
     (["scaling", "--write", "."], "give a file name"),
 ])
 def test_bench_cli_errors_are_argparse_errors(argv, message, capsys):
-    from obslib.bench import parse_args
+    from obslib.tools.bench import parse_args
 
     with pytest.raises(SystemExit) as exc:
         parse_args(argv)

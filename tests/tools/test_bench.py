@@ -3,7 +3,7 @@
 import numpy as np
 
 from obslib.assignment import greedy_pair_assignment_literal
-from obslib.bench import evaluation_counts, literal_count
+from obslib.tools.bench import evaluation_counts, literal_count
 
 
 def test_literal_count_equals_a_counted_run():
@@ -23,7 +23,7 @@ def test_evaluation_counts_one_pass_and_greedy():
 def test_book_benchmark_rejects_an_unknown_profile_before_running():
     import pytest
 
-    from obslib.bench import bench_book
+    from obslib.tools.bench import bench_book
 
     with pytest.raises(ValueError, match="unknown profile 'nope'"):
         bench_book("nope")

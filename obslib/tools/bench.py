@@ -1,0 +1,365 @@
+"""Benchmarks that print ratios: ``python -m obslib.bench assignment``.
+
+Absolute times depend on the machine; the ratios are what the project tracks. Each benchmark
+prints a few readable lines and, last, one JSON object.
+
+``assignment``
+    ``greedy_over_one_pass``: the greedy (Algorithm 1 from geometry) at ``N = 2000``,
+    ``L = 1000``, over one vectorised evaluation of every pair bound for every target with the
+    same kernel (target <= 2). ``literal_over_greedy``: Algorithm 1 as printed (recomputing all
+    weights each round, vectorised per round) over the greedy at ``N = 400``, ``L = 200``
+    (target >= 100). ``peak_rss_gb``: the process's peak resident memory (target < 4).
+
+``scaling``
+    Wall time of each assignment algorithm against ``N`` (``L = N / 2``), written with the
+    machine's description to ``book/data/scaling_times.json`` (``--write``), which the scaling
+    notebook plots: measured times are committed data, so ``make book`` stays deterministic.
+
+``criteria``
+    Microseconds per pair evaluation of the bound and of each classical criterion of the
+    criteria notebook (:func:`obslib.studies.criteria.criterion_scores`), batched over many
+    estimates and for a single estimate, written with the machine's description to
+    ``book/data/criteria_times.json`` (``--write``), which that notebook reads: measured times
+    are committed data, so ``make book`` stays deterministic.
+
+``book``
+    ``exec_s``: executing every notebook at its default parameters the way ``make book`` does
+    (papermill, one kernel per notebook, into a scratch folder); ``floor_s``: executing the same
+    number of trivial notebooks the same way, the fixed cost of a kernel per notebook, each one
+    just before a notebook; ``exec_over_floor`` their ratio (target <= 3). ``--profile quick``
+    runs the notebooks at the ``quick`` profile's tiny sizes instead: what the same notebooks,
+    figures and derivations cost with almost no computation.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import resource
+import sys
+import time
+
+import numpy as np
+
+__all__ = [
+    "one_pass", "bench_assignment", "bench_book", "bench_criteria", "bench_scaling", "evaluation_counts", "literal_count",
+    "COUNTED",
+    "SCALING_SIZES", "main",
+]
+
+#: Sizes ``N`` at which :func:`bench_scaling` times each algorithm (``L = N / 2``).
+SCALING_SIZES = {
+    "greedy (geometry)": [20, 50, 100, 200, 400, 800, 1600, 2000],
+    "greedy (from W)": [20, 50, 100, 200, 400],
+    "literal Algorithm 1": [20, 50, 100, 200, 400],
+    "relaxed matching": [20, 50, 100, 200, 400],
+    "exact optimum (MILP)": [8, 12, 16, 20],
+}
+
+
+def _timed(fn, repeat: int = 1):
+    best, out = np.inf, None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = fn()
+        best = min(best, time.perf_counter() - t0)
+    return best, out
+
+
+def one_pass(sensors, targets, u_max, chunk: int = 1 << 20) -> float:
+    """Evaluate every pair bound ``i < j`` for every target once, in blocks; return the maximum.
+
+    The reference cost for the greedy: one vectorised sweep of all ``N (N - 1) / 2 * L``
+    weights with the kernel of :func:`obslib.pair_bounds`, without keeping them.
+
+    Examples
+    --------
+    >>> one_pass([[0, 0], [1, 0], [3, 1]], [[1, 1]], 1.0) >= 0  # seconds for one full pass
+    True
+    """
+    from ..assignment import upper_pair_weight_blocks
+
+    return max(float(block.max()) for _, _, block in upper_pair_weight_blocks(sensors, targets, u_max, chunk=chunk))
+
+
+def evaluation_counts(sizes: dict, seed: int = 0) -> dict:
+    """Pair weights computed by each algorithm against ``N`` (``L = N / 2``), uniform instances.
+
+    A machine-independent measure of work (wall time is what :func:`bench_assignment` reports).
+    ``sizes`` maps a name of :data:`COUNTED` to the ``N`` to run it at; returns
+    ``{name: (N array, count array)}``, plus ``"one pass"``, ``N (N - 1) / 2 * L`` at every size.
+    The literal algorithm's work does not depend on the data (every round evaluates all pairs of
+    the remaining sensors for the remaining targets), so it is :func:`literal_count`, exactly.
+
+    Examples
+    --------
+    >>> sorted(evaluation_counts({"N=6, L=2": (6, 2)}))  # doctest: +SKIP
+    ['N=6, L=2']
+    """
+    from .. import assignment as a
+
+    algos = {
+        "greedy (geometry)": lambda S, T: a.greedy_pair_assignment(sensors=S, targets=T, u_max=1.0),
+        "relaxed matching": lambda S, T: a.relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0),
+    }
+    unknown = set(sizes) - set(algos) - {"literal Algorithm 1"}
+    if unknown:
+        raise ValueError(f"unknown algorithm(s) {sorted(unknown)}; known: {list(algos)}")
+    out, every_n = {}, set()
+    for name, ns in sizes.items():
+        if name == "literal Algorithm 1":
+            out[name] = (np.array(ns), np.array([literal_count(n, n // 2) for n in ns]))
+            every_n.update(int(n) for n in ns)
+            continue
+        counts = []
+        for n in ns:
+            rng = np.random.default_rng([seed, n])
+            S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (n // 2, 2))
+            counts.append(algos[name](S, T).n_evaluations)
+            every_n.add(int(n))
+        out[name] = (np.array(ns), np.array(counts))
+    ns = np.array(sorted(every_n))
+    out["one pass"] = (ns, ns * (ns - 1) // 2 * (ns // 2))
+    return out
+
+
+def literal_count(n_sensors: int, n_targets: int) -> int:
+    """Pair weights the literal Algorithm 1 evaluates: ``sum_r C(N - 2r, 2) (L - r)`` over rounds.
+
+    Examples
+    --------
+    >>> literal_count(4, 2)  # round 1: 6 pairs x 2 targets, round 2: 1 pair x 1 target
+    13
+    """
+    return sum((n_sensors - 2 * r) * (n_sensors - 2 * r - 1) // 2 * (n_targets - r) for r in range(n_targets))
+
+
+#: Algorithms :func:`evaluation_counts` can run.
+COUNTED = ("greedy (geometry)", "literal Algorithm 1", "relaxed matching")
+
+
+def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l_small: int = 200,
+                     seed: int = 0) -> dict:
+    """Run the assignment benchmark; returns the JSON-ready dict (see the module docstring).
+
+    Examples
+    --------
+    >>> bench_assignment()  # doctest: +SKIP
+    """
+    from ..assignment import greedy_pair_assignment, greedy_pair_assignment_literal
+
+    rng = np.random.default_rng(seed)
+    S, T = rng.uniform(0, 100, (n_big, 2)), rng.uniform(0, 100, (l_big, 2))
+    greedy_s, g = _timed(lambda: greedy_pair_assignment(sensors=S, targets=T, u_max=1.0), repeat=2)
+    print(f"greedy      N={n_big} L={l_big}: {greedy_s:8.2f} s  (value {g.value:.2f})", flush=True)
+    one_pass_s, _ = _timed(lambda: one_pass(S, T, 1.0))
+    print(f"one pass    N={n_big} L={l_big}: {one_pass_s:8.2f} s", flush=True)
+
+    S2, T2 = rng.uniform(0, 100, (n_small, 2)), rng.uniform(0, 100, (l_small, 2))
+    small_s, g2 = _timed(lambda: greedy_pair_assignment(sensors=S2, targets=T2, u_max=1.0), repeat=3)
+    literal_s, lit = _timed(lambda: greedy_pair_assignment_literal(sensors=S2, targets=T2, u_max=1.0))
+    if lit.triples != g2.triples:
+        raise AssertionError("the greedy and the literal algorithm disagree")
+    print(f"greedy      N={n_small} L={l_small}: {small_s:8.3f} s", flush=True)
+    print(f"literal     N={n_small} L={l_small}: {literal_s:8.2f} s", flush=True)
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024**2  # KiB -> GiB on Linux
+    return {
+        "n_sensors": n_big,
+        "n_targets": l_big,
+        "greedy_s": round(greedy_s, 3),
+        "one_pass_s": round(one_pass_s, 3),
+        "greedy_over_one_pass": round(greedy_s / one_pass_s, 4),
+        "literal_over_greedy": round(literal_s / small_s, 1),
+        "peak_rss_gb": round(peak, 3),
+    }
+
+
+def bench_scaling(seed: int = 0, repeat: int = 3) -> dict:
+    """Best-of-``repeat`` wall time of each algorithm at the sizes of :data:`SCALING_SIZES`.
+
+    Examples
+    --------
+    >>> bench_scaling()  # doctest: +SKIP
+    """
+    from .. import assignment as a
+    from ..bounds import pair_bounds
+
+    algos = {
+        "greedy (geometry)": lambda S, T: a.greedy_pair_assignment(sensors=S, targets=T, u_max=1.0),
+        "greedy (from W)": lambda S, T: a.greedy_pair_assignment(pair_bounds(S, T, 1.0)),
+        "literal Algorithm 1": lambda S, T: a.greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0),
+        "relaxed matching": lambda S, T: a.relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0),
+        "exact optimum (MILP)": lambda S, T: a.optimal_pair_assignment(pair_bounds(S, T, 1.0)),
+    }
+    warm = np.random.default_rng(seed).uniform(0, 100, (8, 2))
+    out = {}
+    for name, ns in SCALING_SIZES.items():
+        algos[name](warm, warm[:4] + 0.5)  # imports and first-call costs are not timed
+        times = []
+        for n in ns:
+            rng = np.random.default_rng([seed, n])
+            S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (n // 2, 2))
+            reps = 1 if name == "literal Algorithm 1" and n >= 400 else repeat
+            times.append(round(_timed(lambda: algos[name](S, T), reps)[0], 6))
+            print(f"{name:22s} N={n:5d} {times[-1]:10.4f} s", flush=True)
+        out[name] = {"N": list(ns), "seconds": times}
+    return {
+        "machine": _machine(),
+        "seed": seed,
+        "repeat": repeat,
+        "times": out,
+    }
+
+
+def _machine() -> str:
+    import os
+    import platform
+
+    return (f"{platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
+            f"numpy {np.__version__}")
+
+
+def bench_criteria(n_timing: int = 1000, seed: int = 0, repeat: int = 3) -> dict:
+    """Cost of one decision per criterion: microseconds per pair, batched over ``n_timing``
+    estimates of the six sensors' 15 pairs, and per decision for a single estimate.
+
+    The estimates, covariances and controls are random draws around the paper's six sensors
+    (Section V-A); each score is timed best of ``repeat``.
+
+    Examples
+    --------
+    >>> bench_criteria(20, repeat=1)["per_pair_us"].keys()  # doctest: +SKIP
+    """
+    import timeit
+
+    from .. import tracking as tr
+    from ..studies import criteria as cs
+
+    rng = np.random.default_rng(seed)
+    S = tr.PAPER_CIRCLE.sensor_array
+    X = rng.uniform(-1.0, 5.0, size=(n_timing, 2))
+    A = rng.normal(0.0, 0.3, size=(n_timing, 2, 2))
+    C = A @ A.transpose(0, 2, 1) + 0.1 * np.eye(2)
+    U = rng.uniform(-2.0, 2.0, size=(n_timing, 2))
+    Q = R = 0.5 * np.eye(2)
+    n_pairs = len(S) * (len(S) - 1) // 2
+    per_pair, per_decision = {}, {}
+    for name in cs.SCORES:
+        def score(b=n_timing, name=name):
+            return cs.criterion_scores(name, S, X[:b], C[:b], Q, R, 3.0, control=U[:b])
+        score(1)  # first-call costs are not timed
+        t_batch = min(timeit.repeat(score, number=5, repeat=repeat)) / 5
+        t_one = min(timeit.repeat(lambda: score(1), number=200, repeat=repeat)) / 200
+        per_pair[name] = round(1e6 * t_batch / (n_timing * n_pairs), 4)
+        per_decision[name] = round(1e6 * t_one, 1)
+        print(f"{name:10s} {per_pair[name]:7.3f} us per pair (batched)"
+              f"  {per_decision[name]:6.0f} us per decision (one estimate)", flush=True)
+    return {"machine": _machine(), "seed": seed, "n_timing": n_timing, "repeat": repeat,
+            "per_pair_us": per_pair, "per_decision_us": per_decision}
+
+
+def bench_book(profile: str = "paper") -> dict:
+    """Run the book benchmark; returns the JSON-ready dict (see the module docstring).
+
+    Each notebook runs right after one trivial notebook, so that the floor and the notebooks see
+    the same machine load (on a shared machine the speed drifts over a minute by tens of
+    percent); ``floor_s`` sums the trivial runs, ``exec_s`` the notebooks. ``profile`` names the
+    parameters (:data:`obslib.profiles.PROFILES`); ``"paper"`` is the notebooks' defaults.
+
+    Examples
+    --------
+    >>> bench_book("quick")  # doctest: +SKIP
+    """
+    import tempfile
+    from pathlib import Path
+
+    import nbformat
+    from nbformat.v4 import new_code_cell, new_notebook
+
+    from ..profiles import params
+    from .run import execute, notebooks, precompile
+
+    nbs = notebooks()
+    # every notebook's parameters first, so that a bad profile fails before anything runs
+    parameters = {nb: params(nb.stem, profile) if profile != "paper" else {} for nb in nbs}
+    precompile()  # as make book does
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        trivial = new_notebook(cells=[new_code_cell("x = 1", metadata={"tags": ["parameters"]}),
+                                      new_code_cell("print(x + 1)")])
+        for k, c in enumerate(trivial.cells):
+            c.id = f"c{k}"
+        trivial.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+        src = tmp / "trivial.ipynb"
+        nbformat.write(trivial, src)
+        exec_s = floor_s = 0.0
+        for k, nb in enumerate(nbs):
+            floor_s += execute(src, tmp / f"trivial_{k}.ipynb")
+            dt = execute(nb, tmp / nb.name, parameters[nb])
+            exec_s += dt
+            print(f"{nb.name:40s} {dt:7.1f} s", flush=True)
+    print(f"{len(nbs)} notebooks {exec_s:.1f} s, {len(nbs)} trivial notebooks {floor_s:.1f} s", flush=True)
+    return {
+        "notebooks": len(nbs),
+        "profile": profile,
+        "exec_s": round(exec_s, 2),
+        "floor_s": round(floor_s, 2),
+        "exec_over_floor": round(exec_s / floor_s, 3),
+    }
+
+
+def parse_args(argv=None) -> argparse.Namespace:
+    """Parse and check the command line; a bad profile or path is an argparse error (exit 2).
+
+    Examples
+    --------
+    >>> parse_args(["book", "--profile", "quick"]).profile
+    'quick'
+    """
+    from pathlib import Path
+
+    from ..profiles import profile_names
+
+    ap = argparse.ArgumentParser(prog="python -m obslib.bench", description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("which", choices=["assignment", "book", "criteria", "scaling"], help="benchmark to run")
+    ap.add_argument("--write", help="scaling, criteria: also write the JSON to this file")
+    ap.add_argument("--profile", default="paper", choices=profile_names(),
+                    help="book: parameter profile of the notebooks (default: paper, their defaults)")
+    args = ap.parse_args(argv)
+    if args.write is not None:
+        if args.which not in ("scaling", "criteria"):
+            ap.error("--write applies to the scaling and criteria benchmarks only")
+        if not args.write or Path(args.write).is_dir():
+            ap.error(f"--write {args.write!r}: give a file name")
+    if args.profile != "paper" and args.which != "book":
+        ap.error("--profile applies to the book benchmark only")
+    return args
+
+
+def main(argv=None) -> int:
+    """Command line entry point: run one benchmark and print its JSON; returns the exit status.
+
+    Examples
+    --------
+    >>> main(["assignment"])  # doctest: +SKIP
+    """
+    args = parse_args(argv)
+    if args.which == "assignment":
+        result = bench_assignment()
+    elif args.which == "book":
+        result = bench_book(args.profile)
+    else:
+        result = bench_scaling() if args.which == "scaling" else bench_criteria()
+        if args.write:
+            from pathlib import Path
+
+            Path(args.write).parent.mkdir(parents=True, exist_ok=True)
+            Path(args.write).write_text(json.dumps(result, indent=1) + "\n")
+    json.dump(result, sys.stdout)
+    print()
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
