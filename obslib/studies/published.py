@@ -18,12 +18,12 @@ THEOREM7_PRINTED_WITNESS = {
 FIG8_PUBLISHED_L20 = {"relaxed": 18.95, "greedy": 16.52}
 
 
-#: The published Figs. 4-6 run: pair changes over 314 transitions and run means, per strategy.
+#: Pair changes over 314 transitions and run means, per strategy, of the published Figs. 4-6 run.
 PUBLISHED_CIRCLE = {
     "best-pair": {"switches": 148, "mean_bound": 0.73, "mean_error": 0.16, "mean_trace": 0.073},
     "best-partner": {"switches": 102, "mean_bound": 0.49, "mean_error": 0.19, "mean_trace": 0.140},
     "fixed-pair": {"switches": 0, "mean_bound": 0.27, "mean_error": 0.22, "mean_trace": 0.217},
 }
 
-#: The published Fig. 7 run: mean bound and pair changes over 314 transitions.
+#: Mean bound and pair changes over 314 transitions of the published Fig. 7 run.
 PUBLISHED_ADVERSARIAL = {"mean_bound": 0.79, "switches": 306, "transitions": 314}

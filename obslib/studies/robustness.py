@@ -22,7 +22,7 @@ from ..profiles import PROFILES, params, profile_names
 __all__ = ["DIMENSIONS", "SIZE_KEYS", "TRACKING_NOTEBOOKS", "default_ids", "verdict_robustness",
            "robustness_table"]
 
-#: Per dimension: the factors applied to the default (numbers) or the values tried (metric).
+#: Per dimension, the factors applied to the default (numbers) or the values tried (metric).
 DIMENSIONS = {
     "u_max": (0.25, 0.5, 2.0, 4.0),
     "noise_std": (0.25, 0.5, 2.0, 4.0),

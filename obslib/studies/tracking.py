@@ -176,8 +176,7 @@ def hot_windows(rate, window=K50_WINDOW, level=None) -> list:
 
 
 def correlations(mc: dict) -> dict:
-    """Spearman correlation of the bound with error and trace (:func:`~obslib.tracking.
-    bound_correlation`): the median over runs per strategy, with the logged bound (``own``) and
+    """Spearman correlation of the bound with error and trace (:func:`~obslib.tracking.bound_correlation`): the median over runs per strategy, with the logged bound (``own``) and
     the Euclidean bound of the same pairs (``euclidean``), and ``pooled``: the correlation of
     the per-step Monte Carlo means pooled over the strategies (steps 2..)."""
     own, eu = {}, {}

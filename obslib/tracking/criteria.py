@@ -85,7 +85,7 @@ __all__ = [
 #: The paper's three strategies (Section V-A).
 STRATEGIES = ("best-pair", "best-partner", "fixed-pair")
 
-#: Other pair choosers (beyond the paper): optimal design on the filter's information, an oracle
+#: Other pair choosers, beyond the paper: optimal design on the filter's information, an oracle
 #: that knows the target's control, and a random pair.
 CRITERIA = ("d-optimal", "a-optimal", "e-optimal", "exact-icn", "random")
 
@@ -193,7 +193,7 @@ class PairChooser:
 
     Runs with a single candidate (the fixed pair) need no scores to choose, and the criteria do
     not compute the bound, so the call leaves their bound out (NaN) (the rows
-    :attr:`deferred`); :meth:`deferred_bounds` evaluates it afterwards over whole runs at once.
+    ``deferred``); :meth:`deferred_bounds` evaluates it afterwards over whole runs at once.
     """
 
     def __init__(self, sensors, cand, maha, u2, kinds=None, Q=None, R=None, draws=None):
@@ -234,7 +234,7 @@ class PairChooser:
         """Pick for every run at estimates ``xx, xy`` with covariance entries ``p00 .. p11``
         (each ``(R,)``); ``control`` ``(R, 2)`` is the targets' control for ``"exact-icn"``
         and ``k`` the step (0-based) for ``"random"``. Returns the pair indices and the bounds
-        (NaN for the rows of :attr:`deferred`)."""
+        (NaN for the rows of ``deferred``)."""
         if self.groups:
             m = self.multi
             vx = xx[m, None] - self.sx
@@ -264,7 +264,7 @@ class PairChooser:
         return self.best.copy(), self.bound.copy()
 
     def deferred_bounds(self, picks, est, cov) -> np.ndarray:
-        """The paper's bound of the picks of the :attr:`deferred` rows (single candidates and
+        """The paper's bound of the picks of the ``deferred`` rows (single candidates and
         criteria) over whole runs: ``picks`` ``(len(deferred), T)`` pair indices, ``est``
         ``(R, T, 2)`` and ``cov`` ``(R, T, 2, 2)`` of all runs in; ``(len(deferred), T)`` out."""
         r = self.deferred

@@ -43,18 +43,26 @@ class TrackingResult:
 
     Attributes
     ----------
-    setup, strategy, seed :
-        What was run (``seed`` is None when an explicit noise table was given).
+    setup : TrackingSetup
+        The parameters of the run.
+    strategy : str
+        The pair chooser.
+    seed : int or None
+        The noise seed (None when an explicit noise table was given).
     noise : (steps, N)
         The noise table used.
     pairs : (steps, 2) int
         The chosen pair, 0-based, ``pairs[:, 0] < pairs[:, 1]``.
     bound : (steps,)
         The chosen pair's bound at the estimate (the setup's metric).
-    error, trace_cov : (steps,)
-        ``||xhat_k - o_k||`` and ``trace(Sigma_k)`` before the step's update.
-    truth, estimate : (steps, 2)
-        ``o_k`` and ``xhat_k`` (before the update).
+    error : (steps,)
+        :math:`\\lVert \\hat x_k - o_k \\rVert` before the step's update.
+    trace_cov : (steps,)
+        :math:`\\operatorname{tr} \\Sigma_k` before the step's update.
+    truth : (steps, 2)
+        :math:`o_k`.
+    estimate : (steps, 2)
+        :math:`\\hat x_k` (before the update).
     cov : (steps, 2, 2)
         ``Sigma_k`` before the update.
     control : (steps, 2)

@@ -182,17 +182,26 @@ class TrackingSetup:
         Number of time steps (at least 1).
     u_max : float
         Speed bound entering the pair bound (and the adversary's default control set).
-    estimate0, cov0 : (x, y), 2x2
-        Initial estimate and covariance of the filter.
-    Q, R : 2x2
-        Process noise of the random-walk prediction and measurement-noise covariance of the
-        filter for the pair's two measurements (a scalar means that multiple of :math:`I`).
+    estimate0 : (x, y)
+        Initial estimate of the filter.
+    cov0 : 2x2
+        Initial covariance of the filter.
+    Q : 2x2
+        Process noise of the random-walk prediction (a scalar means that multiple of :math:`I`).
+    R : 2x2
+        Measurement-noise covariance of the filter for the pair's two measurements (a scalar
+        means that multiple of :math:`I`).
     noise_std : float
         Standard deviation of the true measurement noise :math:`n_i` (may differ from ``R``).
     motion : {"circle", "adversarial"}
         The true target's motion: the circle of Section V-A or the adversary of Section V-B.
-    center, radius, rate : circle parameters
-        :math:`o_k = c + r\\,(\\cos(\\omega (k-1)), \\sin(\\omega (k-1)))`.
+    center : (x, y)
+        Centre :math:`c` of the circle :math:`o_k = c + r\\,(\\cos(\\omega (k-1)),
+        \\sin(\\omega (k-1)))`.
+    radius : float
+        Its radius :math:`r`.
+    rate : float
+        Its angular rate :math:`\\omega` (rad per step).
     start : (x, y) or None
         True start of the adversarial target (``None`` for the circle).
     controls : tuple of (ux, uy) or None
@@ -318,10 +327,10 @@ class TrackingSetup:
         return dataclasses.replace(self, **changes)
 
 
-#: Figs. 4-6: the circle of radius 3 about (2, 3), 0.02 rad per step, u_max = 3.
+#: The setup of Figs. 4-6, the circle of radius 3 about (2, 3), 0.02 rad per step, u_max = 3.
 PAPER_CIRCLE = TrackingSetup()
 
-#: Fig. 7: the adversarial target, u_max = 0.1, true start (2, 2), estimate (2.5, 1.5).
+#: The setup of Fig. 7, the adversarial target, u_max = 0.1, true start (2, 2), estimate (2.5, 1.5).
 PAPER_ADVERSARIAL = TrackingSetup(
     u_max=0.1, estimate0=(2.5, 1.5), motion="adversarial", start=(2.0, 2.0)
 )

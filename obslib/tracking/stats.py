@@ -277,10 +277,15 @@ class Entrapment:
         Radius of the smallest disc about the path's centroid containing the whole path.
     path_length : float
         Total distance travelled.
-    bound_mean, bound_min : float
-        The sensors' pair bound over the run.
-    icn_mean, icn_min : float
-        The exact ``C^{-1}`` the sensors face (``true_icn``), steps 2.. (step 1 has no control).
+    bound_mean : float
+        Mean of the sensors' pair bound over the run.
+    bound_min : float
+        Minimum of the sensors' pair bound over the run.
+    icn_mean : float
+        Mean of the exact :math:`C^{-1}` the sensors face (``true_icn``), steps 2.. (step 1 has
+        no control).
+    icn_min : float
+        Its minimum over the same steps.
     objective_mean : float
         Mean of the value the target aimed at (its minimised ``C^{-1}``).
     switches : int
@@ -288,8 +293,10 @@ class Entrapment:
     switch_gain : float
         Mean of ``true_icn[k+1] - objective[k]`` over transitions where the pair switched: what
         the switch gave back to the sensors.
-    mean_error, mean_trace : float
-        Tracking quality over the run.
+    mean_error : float
+        Mean tracking error over the run.
+    mean_trace : float
+        Mean trace of the filter's covariance over the run.
     """
 
     reach: float
@@ -337,7 +344,7 @@ def entrapment(result: TrackingResult) -> Entrapment:
     )
 
 
-#: What "entrapped" means in this book (fixed before looking at the runs): the target stays
+#: What "entrapped" means in this book (fixed before looking at the runs), the target stays
 #: within ``reach_fraction`` of its reach (``steps * max ||u||``) from its start, the sensors'
 #: bound averages at least ``bound_mean`` and the exact C^-1 they face never drops below
 #: ``icn_min``.
