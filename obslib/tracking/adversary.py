@@ -21,7 +21,15 @@ __all__ = ["control_basis", "adversary_moves"]
 
 
 def control_basis(controls) -> np.ndarray:
-    """Monomials ``1, ux, uy, ux^2, ux uy, uy^2`` of each control, ``(6, K)``."""
+    """Monomials ``1, ux, uy, ux^2, ux uy, uy^2`` of each control, ``(6, K)``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.tracking.adversary import control_basis
+    >>> control_basis(np.array([[1.0, 2.0]])).ravel().tolist()
+    [1.0, 1.0, 2.0, 1.0, 2.0, 4.0]
+    """
     ux, uy = controls[:, 0], controls[:, 1]
     return np.stack([np.ones_like(ux), ux, uy, ux * ux, ux * uy, uy * uy])
 
@@ -48,6 +56,19 @@ def adversary_moves(eval_ps, o, controls, basis=None, barred=None) -> np.ndarray
     ``barred`` (``(R, K)``, 0 or inf, optional) removes controls from a run's set: runs with
     different control sets share one call with the union of the sets, each run's own set a
     contiguous block of it in its own order.
+
+    Examples
+    --------
+    The pick is the first minimiser of :func:`~obslib.tracking.model.target_objective`:
+
+    >>> import numpy as np
+    >>> from obslib.tracking import paper_controls, target_objective
+    >>> from obslib.tracking.adversary import adversary_moves
+    >>> ps = np.array([[[0.0, 0.0], [4.0, 0.0]]])
+    >>> o = np.array([[2.0, 2.0]])
+    >>> ctrl = paper_controls(0.1)
+    >>> int(adversary_moves(ps, o, ctrl)[0]) == int(np.argmin(target_objective(ps[0], o[0], ctrl)))
+    True
     """
     if basis is None:
         basis = control_basis(controls)

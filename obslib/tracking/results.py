@@ -23,6 +23,16 @@ def derived_arrays(est, cov, truth_ext) -> dict:
 
     ``truth_ext`` holds ``o_1 .. o_{steps+1}`` (the last is where the target moves after the
     last step).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.tracking.results import derived_arrays
+    >>> truth_ext = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]])
+    >>> est = np.array([[0.0, 0.0], [1.0, 2.0]])
+    >>> d = derived_arrays(est, np.stack([0.5 * np.eye(2)] * 2), truth_ext)
+    >>> d["error"].tolist(), d["trace_cov"].tolist(), d["control"].tolist()
+    ([0.0, 2.0], [1.0, 1.0], [[1.0, 0.0], [0.0, 1.0]])
     """
     control = truth_ext[..., 1:, :] - truth_ext[..., :-1, :]
     cur = truth_ext[..., :-1, :]

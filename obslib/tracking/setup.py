@@ -370,7 +370,18 @@ def setup_from_params(base: TrackingSetup, params: dict) -> TrackingSetup:
 
 
 def check_setup(setup, what: str = "setup") -> "TrackingSetup":
-    """``setup`` if it is a :class:`TrackingSetup`, else a ValueError naming ``what``."""
+    """``setup`` if it is a :class:`TrackingSetup`, else a ValueError naming ``what``.
+
+    Examples
+    --------
+    >>> from obslib.tracking import PAPER_CIRCLE, check_setup
+    >>> check_setup(PAPER_CIRCLE) is PAPER_CIRCLE
+    True
+    >>> check_setup("circle", "base")
+    Traceback (most recent call last):
+    ...
+    ValueError: base must be a TrackingSetup, got str
+    """
     if not isinstance(setup, TrackingSetup):
         raise ValueError(f"{what} must be a TrackingSetup, got {type(setup).__name__}")
     return setup
@@ -394,7 +405,23 @@ def check_seed(seed, name: str = "seed") -> int:
 def check_covariances(cov, n: int, name: str = "cov") -> np.ndarray:
     """Covariances as an ``(n, 2, 2)`` array (one ``(2, 2)`` is shared), each finite, symmetric
     and positive definite at any scale (checked divided by its largest entry, so that a
-    determinant that underflows does not reject it), or a named ValueError."""
+    determinant that underflows does not reject it), or a named ValueError.
+
+    Examples
+    --------
+    A shared covariance is broadcast; a tiny one is accepted; an indefinite one is not:
+
+    >>> import numpy as np
+    >>> from obslib.tracking.setup import check_covariances
+    >>> check_covariances(np.eye(2), 3).shape
+    (3, 2, 2)
+    >>> check_covariances(1e-200 * np.eye(2), 1).shape
+    (1, 2, 2)
+    >>> check_covariances([[1.0, 2.0], [2.0, 1.0]], 1)
+    Traceback (most recent call last):
+    ...
+    ValueError: cov 0 is not positive definite: [[1.0, 2.0], [2.0, 1.0]]
+    """
     c = _real_array(cov, name, "real 2x2 matrices")
     if c.shape == (2, 2):
         c = np.broadcast_to(c, (n, 2, 2))
@@ -413,7 +440,19 @@ def check_covariances(cov, n: int, name: str = "cov") -> np.ndarray:
 
 
 def check_count(value, name: str) -> int:
-    """A count as an ``int`` (an integer of at least 1, not a bool), or a named error."""
+    """A count as an ``int`` (an integer of at least 1, not a bool), or a named error.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.tracking import check_count
+    >>> check_count(np.int64(3), "n_seeds")
+    3
+    >>> check_count(0, "n_seeds")
+    Traceback (most recent call last):
+    ...
+    ValueError: n_seeds must be at least 1, got 0
+    """
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
         raise TypeError(f"{name} must be an integer, got {value!r}")
     if value < 1:
@@ -439,7 +478,23 @@ def noise_table(setup: TrackingSetup, seed: int = 0) -> np.ndarray:
 
 def check_noise(setup: TrackingSetup, noise) -> np.ndarray:
     """A noise table for ``setup`` as a float ``(steps, N)`` array, or a ValueError naming the
-    first non-finite entry or the wrong shape."""
+    first non-finite entry or the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.tracking import PAPER_CIRCLE
+    >>> from obslib.tracking.setup import check_noise
+    >>> setup = PAPER_CIRCLE.replace(steps=2)
+    >>> check_noise(setup, np.zeros((2, 6))).shape
+    (2, 6)
+    >>> table = np.zeros((2, 6))
+    >>> table[1, 3] = np.nan
+    >>> check_noise(setup, table)
+    Traceback (most recent call last):
+    ...
+    ValueError: noise of sensor 3 at step 2 is not finite
+    """
     t = _real_array(noise, "noise", "a real (steps, sensors) table")
     want = (setup.steps, setup.n_sensors)
     if t.shape != want:
