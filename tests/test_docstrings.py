@@ -182,7 +182,7 @@ def _public_functions():
             names = getattr(mod, "__all__", None) or [n for n in vars(mod) if not n.startswith("_")]
         for name in names:
             obj = getattr(mod, name)
-            if not inspect.isfunction(obj):
+            if not inspect.isfunction(inspect.unwrap(obj)):  # functions, also cached ones
                 continue
             if names is not getattr(mod, "__all__", None) and mod is not obslib:
                 if obj.__module__ != mod.__name__:  # imported, documented where defined
