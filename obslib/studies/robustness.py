@@ -52,7 +52,18 @@ def _profile_with(base: str, notebook: str, key: str, value):
 
 
 def default_ids(base: str = "quick") -> list[str]:
-    """Claims whose verdict is partly or refuted at ``base``, and every tracking claim."""
+    """Claims whose verdict is partly or refuted at ``base``, and every tracking claim.
+
+    Examples
+    --------
+    The claim that :math:`\\alpha^* \\ne 1` is judged "partly" at ``quick``
+    (:func:`verdict_robustness` shows it), so it is among them:
+
+    >>> from obslib.studies.robustness import default_ids
+    >>> ids = default_ids("quick")
+    >>> "thm5-alpha-not-1" in ids, len(ids) == len(set(ids))
+    (True, True)
+    """
     from ..claims import evaluate
 
     return [r.id for r in evaluate(base)
@@ -95,6 +106,15 @@ def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[d
         Per claim: ``id``, ``notebook``, ``base`` (its status at ``base``) and ``variants``:
         dimension -> list of ``(label, status)``. Claims whose notebook has no parameters in the
         profiles get no variants.
+
+    Examples
+    --------
+    One claim, one dimension: the four factors of :data:`DIMENSIONS` applied to ``u_max``:
+
+    >>> from obslib.studies.robustness import DIMENSIONS, verdict_robustness
+    >>> row = verdict_robustness(ids=["thm5-alpha-not-1"], dimensions=["u_max"])[0]
+    >>> row["id"], len(row["variants"]["u_max"]) == len(DIMENSIONS["u_max"])
+    ('thm5-alpha-not-1', True)
     """
     from ..claims import evaluate, registry
 
@@ -136,7 +156,19 @@ def _describe(base: str, got: list) -> str:
 
 
 def robustness_table(rows) -> str:
-    """Markdown: one row per claim, per dimension whether its verdict holds over the range."""
+    """Markdown: one row per claim, per dimension whether its verdict holds over the range.
+
+    Examples
+    --------
+    >>> from obslib.studies.robustness import robustness_table
+    >>> rows = [{"id": "c1", "base": "holds",
+    ...          "variants": {"u_max": [("x0.5", "holds"), ("x2", "refuted")]}}]
+    >>> print(robustness_table(rows))
+    | claim | verdict | u_max | noise_std | metric | size |
+    | --- | --- | --- | --- | --- | --- |
+    | `c1` | holds | changes at x2: refuted | n/a | n/a | n/a |
+    <BLANKLINE>
+    """
     dims = list(DIMENSIONS)
     lines = ["| claim | verdict | " + " | ".join(dims) + " |",
              "| --- | --- | " + " | ".join("---" for _ in dims) + " |"]
