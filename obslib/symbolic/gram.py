@@ -1,4 +1,4 @@
-r"""The pair's Gram matrix :math:`O_{ij}^T O_{ij}` and its eigenvalues, derived (proof of Theorem 4).
+r"""The pair's Gram matrix :math:`O_{ij}^T O_{ij}` and its eigenvalues (proof of Theorem 4).
 
 The appendix proves Theorem 4 from :math:`O_{ij}(o)^T O_{ij}(o)` written in Cartesian coordinates
 (Eq. (32)) and in the polar coordinates of Eq. (8), and prints its eigenvalues (Eq. (33)). Each

@@ -126,7 +126,8 @@ def candidates(setup, strategy: str) -> np.ndarray:
 
     >>> from obslib.tracking import PAPER_CIRCLE
     >>> from obslib.tracking.criteria import candidates
-    >>> [int(candidates(PAPER_CIRCLE, s).sum()) for s in ("best-pair", "best-partner", "fixed-pair")]
+    >>> [int(candidates(PAPER_CIRCLE, s).sum())
+    ...  for s in ("best-pair", "best-partner", "fixed-pair")]
     [15, 5, 1]
     """
     ii, jj = pair_index(setup.n_sensors)

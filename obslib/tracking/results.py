@@ -74,19 +74,19 @@ class TrackingResult:
     estimate : (steps, 2)
         :math:`\\hat x_k` (before the update).
     cov : (steps, 2, 2)
-        ``Sigma_k`` before the update.
+        :math:`\\Sigma_k` before the update.
     control : (steps, 2)
-        The target's move after step ``k``: ``u_k = o_{k+1} - o_k``.
+        The target's move after step :math:`k`: :math:`u_k = o_{k+1} - o_k`.
     truth_end : (2,)
-        ``o_{steps+1}``, where the target is after its last move.
+        :math:`o_{\\text{steps}+1}`, where the target is after its last move.
     next_pair : (2,) int
         The pair the sensors would choose after the last step.
     objective : (steps,)
-        ``C^{-1}([o_{k+1} - p_i; o_{k+1} - p_j; u_k])`` with the pair of step ``k``: the value the
-        adversary of Section V-B minimises (computed on first access).
+        :math:`C^{-1}([o_{k+1} - p_i; o_{k+1} - p_j; u_k])` with the pair of step :math:`k`: the
+        value the adversary of Section V-B minimises (computed on first access).
     true_icn : (steps,)
-        The exact ``C^{-1}([o_k - p_i; o_k - p_j; u_{k-1}])`` the sensors face at step ``k``
-        with the pair they chose (``u_0 = 0``; computed on first access).
+        The exact :math:`C^{-1}([o_k - p_i; o_k - p_j; u_{k-1}])` the sensors face at step
+        :math:`k` with the pair they chose (:math:`u_0 = 0`; computed on first access).
     """
 
     setup: TrackingSetup

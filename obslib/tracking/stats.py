@@ -321,9 +321,10 @@ class Entrapment:
     Attributes
     ----------
     reach : float
-        How far the target could go: ``steps * max ||u||`` of its control set.
+        How far the target could go: steps times the largest :math:`\\lVert u \\rVert` of its
+        control set.
     net_displacement : float
-        ``||o_end - o_start||``.
+        :math:`\\lVert o_{\\text{end}} - o_{\\text{start}} \\rVert`.
     max_from_start : float
         Largest distance from the start over the run.
     radius : float
@@ -340,7 +341,7 @@ class Entrapment:
     icn_min : float
         Its minimum over the same steps.
     objective_mean : float
-        Mean of the value the target aimed at (its minimised ``C^{-1}``).
+        Mean of the value the target aimed at (its minimised :math:`C^{-1}`).
     switches : int
         Pair changes over ``steps - 1`` transitions.
     switch_gain : float

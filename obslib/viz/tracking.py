@@ -24,7 +24,8 @@ CHI2_2DOF_9973 = 11.82
 
 
 def cov_ellipse(mean, cov, chi2: float = CHI2_2DOF_9973, n: int = 100) -> np.ndarray:
-    """Boundary of ``{x : (x - mean)^T cov^-1 (x - mean) <= chi2}``, ``(n, 2)`` points.
+    """Boundary of :math:`\\{x : (x - \\mu)^T \\Sigma^{-1} (x - \\mu) \\le \\chi^2\\}` (``mean``,
+    ``cov``, ``chi2``), ``(n, 2)`` points.
 
     The default ``chi2 = 11.82`` is the 99.73 % ellipse of Fig. 4.
 
