@@ -5,7 +5,11 @@ in :mod:`obslib.measures`), while the API page documents the public functions un
 (``obslib.measure_table``), so Sphinx looks for ``obslib.subset_masks`` and finds nothing. This
 handler tries the name in every loaded ``obslib`` module: where the page documents the object,
 the reference becomes a link to it; where the object exists but the page does not list it (a
-private helper, a SymPy derivation), it is set as code. A name that exists nowhere still warns.
+private helper, a SymPy derivation), it is set as code. A name that exists nowhere still warns,
+except a word of a type field (napoleon's ``:vartype:`` for an *Attributes* entry such as
+``noise : (steps, N)`` or ``motion : {"circle", "adversarial"}``): Sphinx makes every word of
+such a type a class reference, but a shape or a set of strings names no object, so those words
+are set as plain text.
 """
 
 import importlib
@@ -57,7 +61,19 @@ def _resolve(app, env, node, contnode):
     for cand in _candidates(target, module):
         if cand.startswith("obslib") and _lookup(cand) is not None:
             return nodes.literal(contnode.astext(), contnode.astext())
+    if _is_type_word(node):
+        return nodes.Text(contnode.astext())
     return None
+
+
+def _is_type_word(node) -> bool:
+    """Whether ``node`` is a word of a docstring's type field rather than a written role.
+
+    Sphinx's type fields mark their references ``refspecific`` with the target as written;
+    a written ``:class:`` role is ``refspecific`` only when its target starts with a dot.
+    """
+    return (node.get("reftype") == "class" and bool(node.get("refspecific"))
+            and not node["reftarget"].startswith("."))
 
 
 def setup(app):

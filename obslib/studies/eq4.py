@@ -61,6 +61,14 @@ def derived_matrix(sensors, target, u) -> np.ndarray:
 
     Rows ``o - p_1, u, o - p_2, u, ..., o - p_N, u``: each sensor's zeroth and first Lie
     derivative gradients (the higher ones are zero). Shape ``(2N, 2)``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.studies import eq4
+    >>> sensors, target = np.array([[0.0, 0.0], [2.0, 0.0]]), np.array([1.0, 1.0])
+    >>> eq4.derived_matrix(sensors, target, [0.5, 0.0]).tolist()
+    [[1.0, 1.0], [0.5, 0.0], [-1.0, 1.0], [0.5, 0.0]]
     """
     rows = relative_rows(sensors, target)
     uu = _control(u)
@@ -70,7 +78,18 @@ def derived_matrix(sensors, target, u) -> np.ndarray:
 
 
 def derived_inverse_condition(sensors, target, u) -> float:
-    """``sigma_min / sigma_max`` of :func:`derived_matrix` (by SVD)."""
+    """``sigma_min / sigma_max`` of :func:`derived_matrix` (by SVD).
+
+    Examples
+    --------
+    Orthogonal rows of equal length and a static target: :math:`C^{-1} = 1`.
+
+    >>> import numpy as np
+    >>> from obslib.studies import eq4
+    >>> sensors, target = np.array([[0.0, 0.0], [2.0, 0.0]]), np.array([1.0, 1.0])
+    >>> round(eq4.derived_inverse_condition(sensors, target, [0.0, 0.0]), 12)
+    1.0
+    """
     sv = np.linalg.svd(derived_matrix(sensors, target, u), compute_uv=False)
     return float(sv[-1] / sv[0]) if sv[0] > 0 else 0.0
 
@@ -80,6 +99,20 @@ def derived_bound(sensors, target, u_max) -> float:
 
     Theorem 1's argument applied to ``O(o)^T O(o) + N u u^T``: ``sqrt(lambda_min / (lambda_max +
     N u_max^2))`` (attained along the principal eigenvector, at full norm).
+
+    Examples
+    --------
+    Here :math:`O^T O = 2 I`, so the bound is :math:`\\\\sqrt{2 / (2 + 2 u_{\\\\max}^2)}`, which the
+    grid search of :func:`worst_derived_on_disc` reaches:
+
+    >>> import numpy as np
+    >>> from obslib.studies import eq4
+    >>> sensors, target = np.array([[0.0, 0.0], [2.0, 0.0]]), np.array([1.0, 1.0])
+    >>> bool(np.isclose(eq4.derived_bound(sensors, target, 1.0), np.sqrt(0.5), rtol=1e-12))
+    True
+    >>> worst, _ = eq4.worst_derived_on_disc(sensors, target, 1.0)
+    >>> bool(np.isclose(worst, np.sqrt(0.5), rtol=1e-12))
+    True
     """
     rows = relative_rows(sensors, target)
     lam = np.linalg.eigvalsh(rows.T @ rows)
@@ -93,6 +126,15 @@ def worst_derived_on_disc(sensors, target, u_max, n_radii: int = 20, n_angles: i
     -------
     (float, ndarray)
         The smallest value found and the control reaching it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.studies import eq4
+    >>> sensors, target = np.array([[0.0, 0.0], [2.0, 0.0]]), np.array([1.0, 1.0])
+    >>> value, u = eq4.worst_derived_on_disc(sensors, target, 1.0, n_radii=4, n_angles=8)
+    >>> round(value, 12) == round(eq4.derived_bound(sensors, target, 1.0), 12), float(np.hypot(*u))
+    (True, 1.0)
     """
     um = _u_max(u_max)
     for name, v in (("n_radii", n_radii), ("n_angles", n_angles)):
@@ -113,7 +155,19 @@ def worst_derived_on_disc(sensors, target, u_max, n_radii: int = 20, n_angles: i
 
 
 def bound_ratio(sensors, target, u_max) -> float:
-    """Worst ``C^{-1}`` of the derived matrix over Theorem 1's bound (Eq. (4)); ``<= 1``."""
+    """Worst ``C^{-1}`` of the derived matrix over Theorem 1's bound (Eq. (4)); ``<= 1``.
+
+    Examples
+    --------
+    With :math:`O^T O = 2 I` and :math:`u_{\\\\max} = 1`: :math:`\\\\sqrt{1/2} / \\\\sqrt{2/3} =
+    \\\\sqrt{3}/2`.
+
+    >>> import numpy as np
+    >>> from obslib.studies import eq4
+    >>> sensors, target = np.array([[0.0, 0.0], [2.0, 0.0]]), np.array([1.0, 1.0])
+    >>> bool(np.isclose(eq4.bound_ratio(sensors, target, 1.0), np.sqrt(3) / 2, rtol=1e-12))
+    True
+    """
     tb = lower_bound(sensors, target, u_max)
     return derived_bound(sensors, target, u_max) / tb if tb > 0 else 1.0
 
@@ -124,6 +178,14 @@ def pair_choice_changes(n_scenes: int, n_sensors: int, u_max: float, seed: int =
     (``u_max``) and the derived matrix (``sqrt(2) u_max``: two sensors, two ``u`` rows).
 
     Sensors and one target uniform in ``[0, side]^2``, Euclidean distances.
+
+    Examples
+    --------
+    >>> from obslib.studies import eq4
+    >>> 0.0 <= eq4.pair_choice_changes(20, 4, 1.0) <= 1.0
+    True
+    >>> eq4.pair_choice_changes(20, 4, 0.0)  # without motion both matrices rank pairs alike
+    0.0
     """
     if isinstance(n_scenes, bool) or not isinstance(n_scenes, (int, np.integer)) or n_scenes < 1:
         raise ValueError(f"n_scenes must be a positive integer, got {n_scenes!r}")

@@ -49,6 +49,17 @@ def literal_logdet_counts(sensors, targets, nan: str = "ignore") -> np.ndarray:
     Returns
     -------
     ndarray of int, shape (L,)
+
+    Examples
+    --------
+    Under ``"ignore"`` every first gain is NaN, the first target gets a sensor, then every
+    further gain on the first target is :math:`+\\\\infty`: all sensors join one team.
+
+    >>> import numpy as np
+    >>> from obslib.studies.fig9_measure import literal_logdet_counts
+    >>> rng = np.random.default_rng(0)
+    >>> literal_logdet_counts(rng.uniform(0, 10, (4, 2)), rng.uniform(0, 10, (2, 2))).tolist()
+    [4, 0]
     """
     if nan not in NAN_RULES:
         raise ValueError(f"nan must be one of {NAN_RULES}, got {nan!r}")
@@ -87,6 +98,13 @@ def literal_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, sid
 
     The geometries are those of :func:`obslib.studies.teams.fig9_sweep` (same seeds), so the two
     measures are compared on the same instances.
+
+    Examples
+    --------
+    >>> from obslib.studies.fig9_measure import literal_fig9_sweep
+    >>> counts = literal_fig9_sweep([6, 8], trials=2, seed=0)
+    >>> counts.shape, counts.sum(axis=2).tolist()
+    ((2, 2, 5), [[6, 6], [8, 8]])
     """
     if nan not in NAN_RULES:
         raise ValueError(f"nan must be one of {NAN_RULES}, got {nan!r}")

@@ -35,6 +35,15 @@ def tight_geometry(n_sensors: int = 6, n_targets: int = 3, seed: int = 0, n_star
     -------
     (float, ndarray, ndarray)
         Greedy / optimum there, the sensors ``(N, 2)`` and the targets ``(L, 2)``.
+
+    Examples
+    --------
+    Theorem 6 guarantees at least 1/3 of the optimum:
+
+    >>> from obslib.studies.greedy_tightness import tight_geometry
+    >>> ratio, sensors, targets = tight_geometry(n_starts=1, n_steps=5)
+    >>> sensors.shape, targets.shape, 1 / 3 <= ratio <= 1
+    ((6, 2), (3, 2), True)
     """
     for name, v in (("n_sensors", n_sensors), ("n_targets", n_targets), ("n_starts", n_starts)):
         if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
@@ -47,7 +56,16 @@ def tight_geometry(n_sensors: int = 6, n_targets: int = 3, seed: int = 0, n_star
 
 
 def spread(sensors, targets) -> float:
-    """Root mean square distance of all points (sensors and targets) from their centroid."""
+    """Root mean square distance of all points (sensors and targets) from their centroid.
+
+    Examples
+    --------
+    Points at distances 1, 1 and 0 from their centroid:
+
+    >>> from obslib.studies.greedy_tightness import spread
+    >>> round(spread([[0.0, 0.0], [2.0, 0.0]], [[1.0, 0.0]]) ** 2, 12)
+    0.666666666667
+    """
     P = np.vstack([np.asarray(sensors, float), np.asarray(targets, float)])
     return float(np.sqrt(((P - P.mean(axis=0)) ** 2).sum(axis=1).mean()))
 
@@ -61,6 +79,17 @@ def first_pick_margin(sensors, targets, u_max: float = 1.0) -> dict:
         ``pick`` and ``w`` (the greedy's first triple and weight), ``blocked`` (the optimal
         triples sharing a sensor or the target with it) and their weights ``blocked_w``,
         ``relative_margin`` ``(w - max(blocked_w)) / w``, ``ratio`` greedy / optimum.
+
+    Examples
+    --------
+    The greedy takes the heaviest triple first, so the margin is not negative:
+
+    >>> import numpy as np
+    >>> from obslib.studies.greedy_tightness import first_pick_margin
+    >>> rng = np.random.default_rng(1)
+    >>> m = first_pick_margin(rng.uniform(0, 10, (6, 2)), rng.uniform(0, 10, (3, 2)))
+    >>> m["relative_margin"] >= 0, 1 / 3 <= m["ratio"] <= 1
+    (True, True)
     """
     W = pair_bounds(sensors, targets, u_max)
     g, o = greedy_pair_assignment(W), optimal_pair_assignment(W)
@@ -101,6 +130,18 @@ def jitter_ratios(sensors, targets, fractions, n_draws: int, seed: int = 0, u_ma
     -------
     ndarray, shape (len(fractions), n_draws)
         The ratio per draw (NaN for the zero-probability draws where points coincide).
+
+    Examples
+    --------
+    Without jitter every draw is the ratio of the geometry itself:
+
+    >>> import numpy as np
+    >>> from obslib.studies.greedy_tightness import first_pick_margin, jitter_ratios
+    >>> rng = np.random.default_rng(1)
+    >>> S, T = rng.uniform(0, 10, (6, 2)), rng.uniform(0, 10, (3, 2))
+    >>> r = jitter_ratios(S, T, [0.0, 0.1], n_draws=3)
+    >>> r.shape, bool(np.allclose(r[0], first_pick_margin(S, T)["ratio"]))
+    ((2, 3), True)
     """
     S = np.asarray(sensors, dtype=float)
     T = np.asarray(targets, dtype=float)
@@ -129,7 +170,15 @@ def jitter_ratios(sensors, targets, fractions, n_draws: int, seed: int = 0, u_ma
 
 
 def jitter_summary(ratios, fractions) -> list[dict]:
-    """Per fraction: median, 5 % and 95 % quantiles, min, and the share of draws below 1/2."""
+    """Per fraction: median, 5 % and 95 % quantiles, min, and the share of draws below 1/2.
+
+    Examples
+    --------
+    >>> from obslib.studies.greedy_tightness import jitter_summary
+    >>> row = jitter_summary([[0.5, 1.0, 0.75]], [0.1])[0]
+    >>> row["median"], row["min"], row["below_half"], round(row["q05"], 12)
+    (0.75, 0.5, 0.0, 0.525)
+    """
     r = np.asarray(ratios, dtype=float)
     rows = []
     for frac, row in zip(fractions, r):

@@ -58,6 +58,13 @@ def three_dm_weights(q: int, triples) -> np.ndarray:
 
     Sensors ``0..q-1`` are ``X``, sensors ``q..2q-1`` are ``Y``, targets are ``Z``;
     ``W[x, q + y, z] = W[q + y, x, z] = 1`` for each triple ``(x, y, z)``, 0 elsewhere.
+
+    Examples
+    --------
+    >>> from obslib.studies.hardness import three_dm_weights
+    >>> W = three_dm_weights(2, [(0, 1, 1)])
+    >>> W.shape, float(W[0, 3, 1]), float(W[3, 0, 1]), float(W.sum())
+    ((4, 4, 2), 1.0, 1.0, 2.0)
     """
     q, ts = _check_3dm(q, triples)
     W = np.zeros((2 * q, 2 * q, q))
@@ -67,7 +74,16 @@ def three_dm_weights(q: int, triples) -> np.ndarray:
 
 
 def has_perfect_matching(q: int, triples) -> bool:
-    """Whether ``q`` pairwise disjoint triples exist (brute force over ``q``-subsets)."""
+    """Whether ``q`` pairwise disjoint triples exist (brute force over ``q``-subsets).
+
+    Examples
+    --------
+    >>> from obslib.studies.hardness import has_perfect_matching
+    >>> has_perfect_matching(2, [(0, 0, 0), (1, 1, 1)])
+    True
+    >>> has_perfect_matching(2, [(0, 0, 0), (1, 1, 0)])  # both use z = 0
+    False
+    """
     q, ts = _check_3dm(q, triples)
     ts = sorted(set(ts))
     for combo in itertools.combinations(ts, q):
@@ -77,7 +93,16 @@ def has_perfect_matching(q: int, triples) -> bool:
 
 
 def random_3dm(q: int, n_triples: int, rng) -> list:
-    """``n_triples`` distinct random triples over ``q``-element sets (a random 3DM instance)."""
+    """``n_triples`` distinct random triples over ``q``-element sets (a random 3DM instance).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.studies.hardness import random_3dm
+    >>> t = random_3dm(2, 5, np.random.default_rng(0))
+    >>> len(t), len(set(t)), all(0 <= v < 2 for triple in t for v in triple)
+    (5, 5, True)
+    """
     q, _ = _check_3dm(q, [])
     total = q**3
     if (isinstance(n_triples, bool) or not isinstance(n_triples, (int, np.integer))
@@ -97,6 +122,13 @@ def reduction_check(n_instances: int, seed: int = 0, q_values=(2, 3, 4)) -> dict
     -------
     dict
         ``n``, ``agree`` (instances where both sides agree), ``with_matching``.
+
+    Examples
+    --------
+    >>> from obslib.studies.hardness import reduction_check
+    >>> r = reduction_check(6, q_values=(2,))
+    >>> r["n"], r["agree"]
+    (6, 6)
     """
     if (isinstance(n_instances, bool) or not isinstance(n_instances, (int, np.integer))
             or n_instances < 1):
@@ -125,6 +157,15 @@ def exact_solver_reach(L_values, time_budget: float, seed: int = 0, u_max: float
     list of dict
         Per size tried: ``L``, ``N``, ``solved``, ``seconds``, and when solved ``optimum``,
         ``greedy`` and ``relaxed`` (Problem 3) values.
+
+    Examples
+    --------
+    >>> from obslib.studies.hardness import exact_solver_reach
+    >>> rows = exact_solver_reach([2, 3], time_budget=30.0)
+    >>> [(r["L"], r["N"], r["solved"]) for r in rows]
+    [(2, 4, True), (3, 6, True)]
+    >>> all(r["greedy"] <= r["optimum"] + 1e-12 for r in rows)
+    True
     """
     try:
         budget = float(time_budget)

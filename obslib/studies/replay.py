@@ -47,7 +47,19 @@ def _check_name(name) -> str:
 
 
 def replay_setup(name: str) -> tr.TrackingSetup:
-    """The experiments' setup of a published run (Sec. V-A: the circle; Sec. V-B: the adversary)."""
+    """The experiments' setup of a published run (Sec. V-A: the circle; Sec. V-B: the adversary).
+
+    Examples
+    --------
+    >>> from obslib.tracking import PAPER_ADVERSARIAL
+    >>> from obslib.studies.replay import replay_setup
+    >>> replay_setup("adversarial") is PAPER_ADVERSARIAL
+    True
+    >>> replay_setup("spiral")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: unknown published run 'spiral'; accepted names: ...
+    """
     name = _check_name(name)
     return tr.PAPER_ADVERSARIAL if name == "adversarial" else tr.PAPER_CIRCLE
 
@@ -100,6 +112,16 @@ def replay(name: str, fill: float = REPLAY_FILLS[0]) -> tr.TrackingResult:
     TrackingResult
         315 steps; for ``"fixed-pair"`` only the first steps are determined by the table
         (``compare_replay(name).steps`` of them).
+
+    Examples
+    --------
+    The replayed pairs are the logged ones:
+
+    >>> from obslib.published_runs import published_run
+    >>> from obslib.studies.replay import replay
+    >>> r = replay("best-pair")
+    >>> r.steps, bool((r.pairs == published_run("best-pair").pairs).all())
+    (315, True)
     """
     name = _check_name(name)
     try:
@@ -178,6 +200,13 @@ def compare_replay(name: str) -> ReplayComparison:
     -------
     ReplayComparison
         Computed once per run and kept (the ledger's claims and the notebooks share it).
+
+    Examples
+    --------
+    >>> from obslib.studies.replay import compare_replay
+    >>> c = compare_replay("adversarial")
+    >>> c.pair_mismatches, c.fills_agree
+    (0, True)
     """
     return _compare_replay(_check_name(name))
 
@@ -234,6 +263,13 @@ def seed_typicality(n_seeds: int, first_seed: int = 0) -> dict:
         ``at_least`` (share of seeds at or above it), ``within_tolerance`` (share of seeds within
         :data:`~obslib.studies.tracking.FIGURE_TOLERANCE`, relative, of the published value),
         ``quantiles`` (5, 25, 50, 75, 95 %), ``switches`` (per seed, read-only).
+
+    Examples
+    --------
+    >>> from obslib.studies.replay import seed_typicality
+    >>> s = seed_typicality(3)
+    >>> round(s["published"], 3), len(s["per_run"]), 0.0 <= s["percentile"] <= 100.0
+    (0.788, 3, True)
     """
     if isinstance(n_seeds, bool) or not isinstance(n_seeds, (int, np.integer)) or n_seeds < 1:
         raise ValueError(f"n_seeds must be a positive integer, got {n_seeds!r}")

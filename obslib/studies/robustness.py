@@ -32,7 +32,7 @@ from ..profiles import PROFILES, params, profile_names
 __all__ = ["DIMENSIONS", "SIZE_KEYS", "TRACKING_NOTEBOOKS", "FIXED_BY_PUBLISHED_RUN", "HEADERS",
            "default_ids", "verdict_robustness", "robustness_table", "write_json", "read_json"]
 
-#: Per dimension: the factors applied to the default (numbers) or the values tried (metric).
+#: Per dimension, the factors applied to the default (numbers) or the values tried (metric).
 DIMENSIONS = {
     "u_max": (0.25, 0.5, 2.0, 4.0),
     "noise_std": (0.25, 0.5, 2.0, 4.0),
@@ -70,7 +70,18 @@ def _profile_with(base: str, notebook: str, key: str, value):
 
 
 def default_ids(base: str = "quick") -> list[str]:
-    """Claims whose verdict is partly or refuted at ``base``, and every tracking claim."""
+    """Claims whose verdict is partly or refuted at ``base``, and every tracking claim.
+
+    Examples
+    --------
+    The claim that :math:`\\alpha^* \\ne 1` is judged "partly" at ``quick``
+    (:func:`verdict_robustness` shows it), so it is among them:
+
+    >>> from obslib.studies.robustness import default_ids
+    >>> ids = default_ids("quick")
+    >>> "thm5-alpha-not-1" in ids, len(ids) == len(set(ids))
+    (True, True)
+    """
     from ..claims import evaluate
 
     return [r.id for r in evaluate(base)
@@ -120,6 +131,15 @@ def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[d
         the base's), and ``fixed``: the dimensions not varied because the claim is about a
         published run made with them (:data:`FIXED_BY_PUBLISHED_RUN`). Claims whose notebook
         has no parameters in the profiles get no variants.
+
+    Examples
+    --------
+    One claim, one dimension: the four factors of :data:`DIMENSIONS` applied to ``u_max``:
+
+    >>> from obslib.studies.robustness import DIMENSIONS, verdict_robustness
+    >>> row = verdict_robustness(ids=["thm5-alpha-not-1"], dimensions=["u_max"])[0]
+    >>> row["id"], len(row["variants"]["u_max"]) == len(DIMENSIONS["u_max"])
+    ('thm5-alpha-not-1', True)
     """
     from ..claims import evaluate, registry
 
@@ -194,6 +214,14 @@ def robustness_table(rows, link=None, statuses=None) -> str:
     statuses : dict, optional
         id -> the verdict to show (default: the base verdict of ``rows``); where it differs
         from the base, the cell names both.
+
+    Examples
+    --------
+    >>> from obslib.studies.robustness import robustness_table
+    >>> rows = [{"id": "c1", "base": "partly",
+    ...          "variants": {"u_max": [("x0.5", "partly"), ("x2", "refuted")]}}]
+    >>> robustness_table(rows).splitlines()[2]
+    '| `c1` | partly | **refuted** at ×2 | n/a | n/a | n/a |'
     """
     dims = list(DIMENSIONS)
     lines = ["| claim | verdict | " + " | ".join(HEADERS[d] for d in dims) + " |",

@@ -62,7 +62,18 @@ def near_published(ours, published, rtol: float = FIGURE_TOLERANCE):
 
 def partner_arms(setup: TrackingSetup) -> dict:
     """Strategy (3) with each partner ``j`` of the anchor: ``{j: (setup, "fixed-pair")}``, for
-    :func:`~obslib.tracking.simulate_many` (the arms of :func:`partner_study`)."""
+    :func:`~obslib.tracking.simulate_many` (the arms of :func:`partner_study`).
+
+    Examples
+    --------
+    The anchor is sensor 1 (the paper's :math:`s_2`); its partners are the five others:
+
+    >>> from obslib.tracking import PAPER_CIRCLE
+    >>> from obslib.studies.tracking import partner_arms
+    >>> arms = partner_arms(PAPER_CIRCLE)
+    >>> sorted(arms), arms[0][0].fixed_pair, arms[0][1]
+    ([0, 2, 3, 4, 5], (1, 0), 'fixed-pair')
+    """
     return {
         j: (setup.replace(fixed_pair=(setup.anchor, j)), "fixed-pair")
         for j in range(setup.n_sensors)
@@ -72,7 +83,17 @@ def partner_arms(setup: TrackingSetup) -> dict:
 
 def partner_summary(runs: dict) -> dict:
     """Monte Carlo means per partner from the runs of :func:`partner_arms` (see
-    :func:`partner_study`)."""
+    :func:`partner_study`).
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> from obslib.studies.tracking import partner_arms, partner_summary
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> s = partner_summary(tracking.simulate_many(partner_arms(setup), seeds=[0, 1]))
+    >>> sorted(s), sorted(s[0])
+    ([0, 2, 3, 4, 5], ['lost', 'mean_bound', 'mean_error', 'mean_trace', 'median_error'])
+    """
     out = {}
     for j, r in runs.items():
         run_err = r.error[:, 1:].mean(axis=1)
@@ -101,6 +122,19 @@ def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> di
         ``{partner: {"mean_bound", "mean_error", "median_error", "mean_trace", "lost"}}`` with
         ``partner`` 0-based and ``lost`` the fraction of runs of
         :func:`~obslib.tracking.track_loss`.
+
+    Examples
+    --------
+    Partner 0 agrees with a Monte Carlo run of that fixed pair alone:
+
+    >>> import numpy as np
+    >>> from obslib import tracking
+    >>> from obslib.studies.tracking import partner_study
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> ps = partner_study(setup, n_seeds=2)
+    >>> mc = tracking.monte_carlo(setup.replace(fixed_pair=(1, 0)), 2, ["fixed-pair"])
+    >>> bool(np.isclose(ps[0]["mean_error"], mc["fixed-pair"].error[:, 1:].mean(), rtol=1e-9))
+    True
     """
     tr.check_setup(setup)
     n_seeds = tr.check_count(n_seeds, "n_seeds")
@@ -112,7 +146,18 @@ def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> di
 def best_partners(ps: dict) -> dict:
     """Which partner of :func:`partner_study` is best by each measure: the lowest
     ``mean_trace``, ``mean_error``, ``median_error`` and ``lost``, and the highest
-    ``mean_bound``; ``{measure: partner}`` (0-based; the first in index order on a tie)."""
+    ``mean_bound``; ``{measure: partner}`` (0-based; the first in index order on a tie).
+
+    Examples
+    --------
+    >>> from obslib.studies.tracking import best_partners
+    >>> ps = {0: {"mean_trace": 1.0, "mean_error": 2.0, "median_error": 2.0, "lost": 0.0,
+    ...           "mean_bound": 0.5},
+    ...       2: {"mean_trace": 0.5, "mean_error": 3.0, "median_error": 1.0, "lost": 0.0,
+    ...           "mean_bound": 0.7}}
+    >>> best_partners(ps)
+    {'mean_trace': 2, 'mean_error': 0, 'median_error': 2, 'lost': 0, 'mean_bound': 2}
+    """
     best = {key: min(ps, key=lambda j: ps[j][key])
             for key in ("mean_trace", "mean_error", "median_error", "lost")}
     best["mean_bound"] = max(ps, key=lambda j: ps[j]["mean_bound"])
@@ -164,7 +209,21 @@ def window_rates(switched, window=K50_WINDOW) -> tuple:
 def hot_windows(rate, window=K50_WINDOW, level=None) -> list:
     """Other windows of the width of ``window`` whose mean ``rate`` reaches ``level`` (default:
     the rate inside ``window``), not overlapping it: :func:`stretches` of their first
-    transitions ``k``."""
+    transitions ``k``.
+
+    Examples
+    --------
+    A second burst of switches at transitions 120-159; windows of width 40 whose mean rate
+    reaches 0.46 start at :math:`k = 99, \\\\dots, 141`:
+
+    >>> import numpy as np
+    >>> from obslib.studies.tracking import hot_windows
+    >>> rate = np.zeros(200)
+    >>> rate[29:69] = 1.0
+    >>> rate[119:159] = 1.0
+    >>> hot_windows(rate, (30, 70), level=0.46)
+    [(99, 141)]
+    """
     lo, hi = window
     width = hi - lo
     rate = np.asarray(rate, dtype=float)
@@ -176,10 +235,23 @@ def hot_windows(rate, window=K50_WINDOW, level=None) -> list:
 
 
 def correlations(mc: dict) -> dict:
-    """Spearman correlation of the bound with error and trace (:func:`~obslib.tracking.
-    bound_correlation`): the median over runs per strategy, with the logged bound (``own``) and
-    the Euclidean bound of the same pairs (``euclidean``), and ``pooled``: the correlation of
-    the per-step Monte Carlo means pooled over the strategies (steps 2..)."""
+    """Spearman correlation of the bound with error and trace
+    (:func:`~obslib.tracking.bound_correlation`): the median over runs per strategy, with the
+    logged bound (``own``) and the Euclidean bound of the same pairs (``euclidean``), and
+    ``pooled``: the correlation of the per-step Monte Carlo means pooled over the strategies
+    (steps 2..).
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> from obslib.studies.tracking import correlations
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> mc = {s: tracking.simulate_batch(setup, s, seeds=[0, 1, 2])
+    ...       for s in ("best-pair", "fixed-pair")}
+    >>> c = correlations(mc)
+    >>> sorted(c), sorted(c["own"]), -1 <= c["pooled"]["error"] <= 1
+    (['euclidean', 'own', 'pooled'], ['best-pair', 'fixed-pair'], True)
+    """
     own, eu = {}, {}
     for name, r in mc.items():
         own[name] = {k: float(np.median(v)) for k, v in tr.bound_correlation(r, "own").items()}
@@ -198,7 +270,15 @@ def correlations(mc: dict) -> dict:
 def least_run_wins(cmp: dict) -> float:
     """The smallest fraction of runs in which the reference of
     :func:`~obslib.tracking.compare_strategies` has the lower run-mean error or trace, over
-    the other strategies."""
+    the other strategies.
+
+    Examples
+    --------
+    >>> from obslib.studies.tracking import least_run_wins
+    >>> least_run_wins({"wins": {"a": {"run_error": 0.7, "run_trace": 0.6},
+    ...                          "b": {"run_error": 0.9, "run_trace": 0.8}}})
+    0.6
+    """
     return min(w[k] for w in cmp["wins"].values() for k in ("run_error", "run_trace"))
 
 
@@ -213,6 +293,14 @@ def adversary_variants(setup: TrackingSetup, n_radii: int, n_angles: int) -> dic
     ``"paper"``: the setup as given; ``"next-pair"``: the target knows the pair the sensors
     will use next; ``"disc"``: controls on a polar grid of the whole disc ``||u|| <= u_max``
     (``1 + n_radii * n_angles`` controls, :func:`disc_controls`); ``"disc, next-pair"``: both.
+
+    Examples
+    --------
+    >>> from obslib.tracking import PAPER_ADVERSARIAL
+    >>> from obslib.studies.tracking import adversary_variants
+    >>> v = adversary_variants(PAPER_ADVERSARIAL, n_radii=2, n_angles=4)
+    >>> list(v), len(v["disc"].controls), v["disc, next-pair"].adversary
+    (['paper', 'next-pair', 'disc', 'disc, next-pair'], 9, 'next-pair')
     """
     tr.check_setup(setup)
     disc = disc_controls(setup.u_max, tr.check_count(n_radii, "n_radii"),
@@ -236,6 +324,16 @@ def entrapment_summary(batch: BatchResult) -> dict:
         ``max_from_start``, ``reach``, the mean and range of the per-run mean bound, the
         smallest ``icn_min``, the mean ``icn_mean``, mean ``switches`` and ``mean_error``, and
         ``runs`` (the list of :class:`~obslib.tracking.Entrapment`).
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> from obslib.studies.tracking import entrapment_summary
+    >>> batch = tracking.simulate_batch(tracking.PAPER_ADVERSARIAL.replace(steps=20), "best-pair",
+    ...                                 seeds=[0, 1])
+    >>> s = entrapment_summary(batch)
+    >>> len(s["runs"]), 0.0 <= s["entrapped"] <= 1.0, s["max_from_start"] <= s["reach"]
+    (2, True, True)
     """
     batch.true_icn, batch.objective  # computed once for all runs
     es = [tr.entrapment(batch.run(b)) for b in range(batch.n_runs)]
@@ -268,6 +366,15 @@ def switch_mechanism(result: TrackingResult) -> dict:
         ``switch_if_closer`` and ``switch_if_not`` (switch rates), ``switches``,
         ``raised`` (fraction of switches with ``true_icn[k+1] > objective[k]``) and
         ``mean_gain`` (mean of ``true_icn[k+1] - objective[k]`` over switches).
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> from obslib.studies.tracking import switch_mechanism
+    >>> r = tracking.simulate(tracking.PAPER_ADVERSARIAL.replace(steps=20), "best-pair", seed=0)
+    >>> m = switch_mechanism(r)
+    >>> m["transitions"], m["switches"] == int(r.switched.sum()), 0 <= m["closer"] <= 19
+    (19, True, True)
     """
     s = result.setup.sensor_array
     ps = s[result.pairs]
@@ -299,6 +406,16 @@ def pooled_switch_mechanism(batch: BatchResult) -> dict:
         ``switch_fraction`` (all switches over all transitions), ``switches``, ``raised``
         (fraction of switches that leave a higher exact C^-1 than the target aimed at) and
         ``mean_gain``.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> from obslib.studies.tracking import pooled_switch_mechanism
+    >>> batch = tracking.simulate_batch(tracking.PAPER_ADVERSARIAL.replace(steps=20), "best-pair",
+    ...                                 seeds=[0, 1])
+    >>> p = pooled_switch_mechanism(batch)
+    >>> p["transitions"], p["switches"] == int(batch.switched.sum())
+    (38, True)
     """
     ms = [switch_mechanism(batch.run(b)) for b in range(batch.n_runs)]
     trans = sum(m["transitions"] for m in ms)

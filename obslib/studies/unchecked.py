@@ -14,7 +14,15 @@ __all__ = ["NOTEBOOK", "notebook_params"]
 NOTEBOOK = "11_unchecked_statements"
 
 def notebook_params(profile: str = "paper") -> dict:
-    """Parameters of the notebook under ``profile`` (:func:`obslib.profiles.params`)."""
+    """Parameters of the notebook under ``profile`` (:func:`obslib.profiles.params`).
+
+    Examples
+    --------
+    >>> from obslib.profiles import params
+    >>> from obslib.studies.unchecked import NOTEBOOK, notebook_params
+    >>> notebook_params("quick") == params(NOTEBOOK, "quick")
+    True
+    """
     from ..profiles import params
 
     return params(NOTEBOOK, profile)

@@ -21,7 +21,15 @@ __all__ = ["control_basis", "adversary_moves"]
 
 
 def control_basis(controls) -> np.ndarray:
-    """Monomials ``1, ux, uy, ux^2, ux uy, uy^2`` of each control, ``(6, K)``."""
+    """Monomials :math:`1, u_x, u_y, u_x^2, u_x u_y, u_y^2` of each control, ``(6, K)``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.tracking.adversary import control_basis
+    >>> control_basis(np.array([[1.0, 2.0]])).ravel().tolist()
+    [1.0, 1.0, 2.0, 1.0, 2.0, 4.0]
+    """
     ux, uy = controls[:, 0], controls[:, 1]
     return np.stack([np.ones_like(ux), ux, uy, ux * ux, ux * uy, uy * uy])
 
@@ -33,21 +41,37 @@ def adversary_moves(eval_ps, o, controls, basis=None, barred=None) -> np.ndarray
     ``eval_ps`` ``(R, 2, 2)`` holds the pair each run's target evaluates, ``o`` ``(R, 2)`` the
     targets' positions, ``controls`` ``(K, 2)`` the control set.
 
-    With ``a = o - p_i``, ``b = o - p_j`` and the rows ``a + u``, ``b + u``, ``u`` of the matrix
-    ``M``, the three 2 x 2 minors of ``M`` are affine in ``u`` (``a x b + (a - b) x u``,
-    ``a x u``, ``b x u``), so ``det(M^T M)`` (their sum of squares, Cauchy-Binet) and
-    ``tr(M^T M)`` are quadratics in ``u``: one matrix product with the monomials of the controls
-    (:func:`control_basis`) gives both for all runs and controls. ``C^{-1}(M)`` is an
-    increasing function of ``t = 4 det / tr^2`` (``C^{-2} = l_min / l_max`` and
-    ``t = 4 l_min l_max / (l_min + l_max)^2``), so the controls whose ``det / tr^2`` is within
-    ``1e-11`` of the run's minimum contain the exact minimiser (the screen's rounding error is
-    some 1e-15). Those few candidates (usually one) are evaluated with
-    :func:`target_objective`'s own arithmetic and the first exact minimiser is taken, so the
-    pick equals ``argmin`` of :func:`target_objective` over the whole set (tests check it).
+    With :math:`a = o - p_i`, :math:`b = o - p_j` and the rows :math:`a + u`, :math:`b + u`,
+    :math:`u` of the matrix :math:`M`, the three 2 x 2 minors of :math:`M` are affine in :math:`u`
+    (:math:`a \\times b + (a - b) \\times u`, :math:`a \\times u`, :math:`b \\times u`), so
+    :math:`\\det(M^T M)` (their sum of squares, Cauchy-Binet) and :math:`\\operatorname{tr}(M^T M)`
+    are quadratics in :math:`u`: one matrix product with the monomials of the controls
+    (:func:`control_basis`) gives both for all runs and controls. :math:`C^{-1}(M)` is an
+    increasing function of :math:`t = 4 \\det / \\operatorname{tr}^2` (:math:`C^{-2} =
+    \\lambda_{\\min} / \\lambda_{\\max}` and :math:`t = 4 \\lambda_{\\min} \\lambda_{\\max} /
+    (\\lambda_{\\min} + \\lambda_{\\max})^2`), so the controls whose
+    :math:`\\det / \\operatorname{tr}^2` is within ``1e-11`` of the run's minimum contain the
+    exact minimiser (the screen's rounding error is some 1e-15). Those few candidates (usually
+    one) are evaluated with :func:`target_objective`'s own arithmetic and the first exact
+    minimiser is taken, so the pick equals ``argmin`` of :func:`target_objective` over the whole
+    set (tests check it).
 
     ``barred`` (``(R, K)``, 0 or inf, optional) removes controls from a run's set: runs with
     different control sets share one call with the union of the sets, each run's own set a
     contiguous block of it in its own order.
+
+    Examples
+    --------
+    The pick is the first minimiser of :func:`~obslib.tracking.model.target_objective`:
+
+    >>> import numpy as np
+    >>> from obslib.tracking import paper_controls, target_objective
+    >>> from obslib.tracking.adversary import adversary_moves
+    >>> ps = np.array([[[0.0, 0.0], [4.0, 0.0]]])
+    >>> o = np.array([[2.0, 2.0]])
+    >>> ctrl = paper_controls(0.1)
+    >>> int(adversary_moves(ps, o, ctrl)[0]) == int(np.argmin(target_objective(ps[0], o[0], ctrl)))
+    True
     """
     if basis is None:
         basis = control_basis(controls)

@@ -85,7 +85,7 @@ __all__ = [
 #: The paper's three strategies (Section V-A).
 STRATEGIES = ("best-pair", "best-partner", "fixed-pair")
 
-#: Other pair choosers (beyond the paper): optimal design on the filter's information, an oracle
+#: Other pair choosers, beyond the paper: optimal design on the filter's information, an oracle
 #: that knows the target's control, and a random pair.
 CRITERIA = ("d-optimal", "a-optimal", "e-optimal", "exact-icn", "random")
 
@@ -94,7 +94,18 @@ NAMES = STRATEGIES + CRITERIA
 
 
 def check_strategy(strategy, known=NAMES) -> str:
-    """``strategy`` if it is one of ``known``, else a ValueError (TypeError for a non-string)."""
+    """``strategy`` if it is one of ``known``, else a ValueError (TypeError for a non-string).
+
+    Examples
+    --------
+    >>> from obslib.tracking.criteria import check_strategy
+    >>> check_strategy("d-optimal")
+    'd-optimal'
+    >>> check_strategy("worst-pair")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: unknown strategy 'worst-pair'; known: ...
+    """
     if not isinstance(strategy, str):
         raise TypeError(f"strategy must be a string, one of {known}; got {strategy!r}")
     if strategy not in known:
@@ -108,6 +119,16 @@ def candidates(setup, strategy: str) -> np.ndarray:
 
     Best pair and the :data:`CRITERIA`: all; best partner: the pairs containing the anchor (in
     the order of the partner's index); fixed pair: that pair alone.
+
+    Examples
+    --------
+    Of the 15 pairs of six sensors, the anchor is in 5:
+
+    >>> from obslib.tracking import PAPER_CIRCLE
+    >>> from obslib.tracking.criteria import candidates
+    >>> [int(candidates(PAPER_CIRCLE, s).sum())
+    ...  for s in ("best-pair", "best-partner", "fixed-pair")]
+    [15, 5, 1]
     """
     ii, jj = pair_index(setup.n_sensors)
     if strategy == "fixed-pair":
@@ -126,6 +147,14 @@ def mahalanobis_sq(vx, vy, p00, p01, p10, p11):
     Where :math:`\\det \\Sigma` is not a normal floating-point number (a covariance of scale
     1e-160 has a determinant that underflows), numerator and determinant are evaluated with
     :math:`\\Sigma` divided by its largest entry, which leaves the ratio unchanged.
+
+    Examples
+    --------
+    :math:`\\Sigma = \\operatorname{diag}(4, 1)`, :math:`v = (2, 1)`: :math:`4/4 + 1/1 = 2`.
+
+    >>> from obslib.tracking.criteria import mahalanobis_sq
+    >>> float(mahalanobis_sq(2.0, 1.0, 4.0, 0.0, 0.0, 1.0))
+    2.0
     """
     dm2 = p11 * (vx * vx)
     dm2 -= (p01 + p10) * (vx * vy)
@@ -157,6 +186,18 @@ def scaled_rows(vx, vy, c, maha):
     vx, vy : ndarray, shape (M, K)
     inv : ndarray, shape (M,)
         :math:`1 / \\text{scale}^2`, the factor of :math:`u_{\\max}^2`.
+
+    Examples
+    --------
+    Euclidean rows :math:`(3, 4)` and :math:`(0, 1)` are divided by the longer one's length 5:
+
+    >>> import numpy as np
+    >>> from obslib.tracking.criteria import scaled_rows
+    >>> vx, vy = np.array([[3.0, 0.0]]), np.array([[4.0, 1.0]])
+    >>> c = (np.ones(1), np.zeros(1), np.zeros(1), np.ones(1))
+    >>> vx, vy, inv = scaled_rows(vx, vy, c, np.array([False]))
+    >>> vx.round(12).tolist(), vy.round(12).tolist(), inv.round(12).tolist()
+    ([[0.6, 0.0]], [[0.8, 0.2]], [0.04])
     """
     e2 = vx * vx + vy * vy
     if not (e2 > 0).all():
@@ -193,7 +234,7 @@ class PairChooser:
 
     Runs with a single candidate (the fixed pair) need no scores to choose, and the criteria do
     not compute the bound, so the call leaves their bound out (NaN) (the rows
-    :attr:`deferred`); :meth:`deferred_bounds` evaluates it afterwards over whole runs at once.
+    ``deferred``); :meth:`deferred_bounds` evaluates it afterwards over whole runs at once.
     """
 
     def __init__(self, sensors, cand, maha, u2, kinds=None, Q=None, R=None, draws=None):
@@ -234,7 +275,7 @@ class PairChooser:
         """Pick for every run at estimates ``xx, xy`` with covariance entries ``p00 .. p11``
         (each ``(R,)``); ``control`` ``(R, 2)`` is the targets' control for ``"exact-icn"``
         and ``k`` the step (0-based) for ``"random"``. Returns the pair indices and the bounds
-        (NaN for the rows of :attr:`deferred`)."""
+        (NaN for the rows of ``deferred``)."""
         if self.groups:
             m = self.multi
             vx = xx[m, None] - self.sx
@@ -264,7 +305,7 @@ class PairChooser:
         return self.best.copy(), self.bound.copy()
 
     def deferred_bounds(self, picks, est, cov) -> np.ndarray:
-        """The paper's bound of the picks of the :attr:`deferred` rows (single candidates and
+        """The paper's bound of the picks of the ``deferred`` rows (single candidates and
         criteria) over whole runs: ``picks`` ``(len(deferred), T)`` pair indices, ``est``
         ``(R, T, 2)`` and ``cov`` ``(R, T, 2, 2)`` of all runs in; ``(len(deferred), T)`` out."""
         r = self.deferred
@@ -279,7 +320,22 @@ class PairChooser:
 def fixed_pair_bound(sx, sy, i, j, u2, x, c, maha) -> np.ndarray:
     """Theorem 4's bound of the pair ``(i[m], j[m])`` at estimate ``x[m]`` (covariance ``c[m]``,
     Mahalanobis where ``maha[m]``), ``(M,)``: the rows of :func:`scaled_rows` for the pair's two
-    sensors only, in chunks that stay in cache."""
+    sensors only, in chunks that stay in cache.
+
+    Examples
+    --------
+    With Euclidean distances it is :func:`obslib.pair_bounds` of the pair:
+
+    >>> import numpy as np
+    >>> import obslib as ob
+    >>> from obslib.tracking.criteria import fixed_pair_bound
+    >>> sensors = np.array([[0.0, 0.0], [4.0, 0.0], [1.0, 3.0]])
+    >>> x = np.array([[2.0, 1.0]])
+    >>> b = fixed_pair_bound(sensors[:, 0], sensors[:, 1], np.array([0]), np.array([2]), 0.25,
+    ...                      x, np.eye(2)[None], np.array([False]))
+    >>> bool(np.isclose(b[0], ob.pair_bounds(sensors, x, 0.5)[0, 2, 0], rtol=1e-12))
+    True
+    """
     out = np.empty(x.shape[0])
     step = 1 << 14
     for a in range(0, x.shape[0], step):
@@ -320,6 +376,19 @@ def information_scores(name: str, hx, hy, pp, W, ii, jj) -> np.ndarray:
     (row 0 for the pair's sensor ``i``, row 1 for ``j``). Closed forms for 2 x 2 matrices:
     :math:`J = (\\Sigma^-)^{-1} + H^T W H` from the adjugate, then its determinant, trace and
     smallest eigenvalue.
+
+    Examples
+    --------
+    Prior :math:`\\Sigma^- = I`, unit noise and orthogonal rows give :math:`J = 2 I`:
+
+    >>> import numpy as np
+    >>> from obslib.tracking.criteria import information_scores
+    >>> hx, hy = np.array([[1.0, 0.0]]), np.array([[0.0, 1.0]])
+    >>> pp = (np.ones(1), np.zeros(1), np.zeros(1), np.ones(1))
+    >>> ii, jj = np.array([0]), np.array([1])
+    >>> [float(information_scores(name, hx, hy, pp, np.eye(2), ii, jj)[0, 0])
+    ...  for name in ("d-optimal", "a-optimal", "e-optimal")]
+    [4.0, -1.0, 2.0]
     """
     p00, p01, p10, p11 = (x[:, None] for x in pp)
     det_p = p00 * p11 - p01 * p10
@@ -342,7 +411,19 @@ def information_scores(name: str, hx, hy, pp, W, ii, jj) -> np.ndarray:
 
 def icn_scores(hx, hy, control, ii, jj) -> np.ndarray:
     """The exact :math:`C^{-1}` of :math:`[(\\hat x - p_i)^T; (\\hat x - p_j)^T; u^T]` for every
-    pair ``(ii[p], jj[p])``, ``(M, P)``: rows ``hx, hy`` ``(M, N)``, controls ``(M, 2)``."""
+    pair ``(ii[p], jj[p])``, ``(M, P)``: rows ``hx, hy`` ``(M, N)``, controls ``(M, 2)``.
+
+    Examples
+    --------
+    Orthogonal unit rows and a static target: :math:`C^{-1} = 1`; parallel rows: 0.
+
+    >>> import numpy as np
+    >>> from obslib.tracking.criteria import icn_scores
+    >>> hx, hy = np.array([[1.0, 0.0, 2.0]]), np.array([[0.0, 1.0, 0.0]])
+    >>> ii, jj = np.array([0, 0]), np.array([1, 2])
+    >>> icn_scores(hx, hy, np.zeros((1, 2)), ii, jj).round(12).tolist()
+    [[1.0, 0.0]]
+    """
     M, P = hx.shape[0], ii.size
     stack = np.empty((M, P, 3, 2))
     stack[:, :, 0, 0], stack[:, :, 0, 1] = hx[:, ii], hy[:, ii]

@@ -5,7 +5,7 @@ The filter
 ----------
 Static (random-walk) prediction :math:`x \\leftarrow x`, :math:`P \\leftarrow P + Q`; measurement
 Jacobian rows :math:`H_i = (\\hat x - p_i)^T`. The update is
-:meth:`filterpy.kalman.ExtendedKalmanFilter.update`, which in filterpy 2.0.0 already uses the
+``filterpy.kalman.ExtendedKalmanFilter.update``, which in filterpy 2.0.0 already uses the
 Joseph form
 
 .. math::

@@ -132,7 +132,15 @@ def pair_bound_series(setup, points, pairs, cov=None) -> np.ndarray:
 def inverse_condition(rows) -> np.ndarray:
     """Exact :math:`C^{-1} = \\sigma_{\\min} / \\sigma_{\\max}` of each stacked ``(m, 2)`` matrix
     of ``rows`` ``(..., m, 2)`` (the closed form of :func:`obslib.inverse_condition_number`,
-    without validation)."""
+    without validation).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.tracking.model import inverse_condition
+    >>> inverse_condition([[[1.0, 0.0], [0.0, 2.0]], [[1.0, 1.0], [2.0, 2.0]]]).round(12).tolist()
+    [0.5, 0.0]
+    """
     return _kernels.inverse_condition(np.asarray(rows, dtype=float))
 
 

@@ -23,6 +23,16 @@ def derived_arrays(est, cov, truth_ext) -> dict:
 
     ``truth_ext`` holds ``o_1 .. o_{steps+1}`` (the last is where the target moves after the
     last step).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.tracking.results import derived_arrays
+    >>> truth_ext = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]])
+    >>> est = np.array([[0.0, 0.0], [1.0, 2.0]])
+    >>> d = derived_arrays(est, np.stack([0.5 * np.eye(2)] * 2), truth_ext)
+    >>> d["error"].tolist(), d["trace_cov"].tolist(), d["control"].tolist()
+    ([0.0, 2.0], [1.0, 1.0], [[1.0, 0.0], [0.0, 1.0]])
     """
     control = truth_ext[..., 1:, :] - truth_ext[..., :-1, :]
     cur = truth_ext[..., :-1, :]
@@ -43,32 +53,40 @@ class TrackingResult:
 
     Attributes
     ----------
-    setup, strategy, seed :
-        What was run (``seed`` is None when an explicit noise table was given).
+    setup : TrackingSetup
+        The parameters of the run.
+    strategy : str
+        The pair chooser.
+    seed : int or None
+        The noise seed (None when an explicit noise table was given).
     noise : (steps, N)
         The noise table used.
     pairs : (steps, 2) int
         The chosen pair, 0-based, ``pairs[:, 0] < pairs[:, 1]``.
     bound : (steps,)
         The chosen pair's bound at the estimate (the setup's metric).
-    error, trace_cov : (steps,)
-        ``||xhat_k - o_k||`` and ``trace(Sigma_k)`` before the step's update.
-    truth, estimate : (steps, 2)
-        ``o_k`` and ``xhat_k`` (before the update).
+    error : (steps,)
+        :math:`\\lVert \\hat x_k - o_k \\rVert` before the step's update.
+    trace_cov : (steps,)
+        :math:`\\operatorname{tr} \\Sigma_k` before the step's update.
+    truth : (steps, 2)
+        :math:`o_k`.
+    estimate : (steps, 2)
+        :math:`\\hat x_k` (before the update).
     cov : (steps, 2, 2)
-        ``Sigma_k`` before the update.
+        :math:`\\Sigma_k` before the update.
     control : (steps, 2)
-        The target's move after step ``k``: ``u_k = o_{k+1} - o_k``.
+        The target's move after step :math:`k`: :math:`u_k = o_{k+1} - o_k`.
     truth_end : (2,)
-        ``o_{steps+1}``, where the target is after its last move.
+        :math:`o_{\\text{steps}+1}`, where the target is after its last move.
     next_pair : (2,) int
         The pair the sensors would choose after the last step.
     objective : (steps,)
-        ``C^{-1}([o_{k+1} - p_i; o_{k+1} - p_j; u_k])`` with the pair of step ``k``: the value the
-        adversary of Section V-B minimises (computed on first access).
+        :math:`C^{-1}([o_{k+1} - p_i; o_{k+1} - p_j; u_k])` with the pair of step :math:`k`: the
+        value the adversary of Section V-B minimises (computed on first access).
     true_icn : (steps,)
-        The exact ``C^{-1}([o_k - p_i; o_k - p_j; u_{k-1}])`` the sensors face at step ``k``
-        with the pair they chose (``u_0 = 0``; computed on first access).
+        The exact :math:`C^{-1}([o_k - p_i; o_k - p_j; u_{k-1}])` the sensors face at step
+        :math:`k` with the pair they chose (:math:`u_0 = 0`; computed on first access).
     """
 
     setup: TrackingSetup

@@ -182,17 +182,26 @@ class TrackingSetup:
         Number of time steps (at least 1).
     u_max : float
         Speed bound entering the pair bound (and the adversary's default control set).
-    estimate0, cov0 : (x, y), 2x2
-        Initial estimate and covariance of the filter.
-    Q, R : 2x2
-        Process noise of the random-walk prediction and measurement-noise covariance of the
-        filter for the pair's two measurements (a scalar means that multiple of :math:`I`).
+    estimate0 : (x, y)
+        Initial estimate of the filter.
+    cov0 : 2x2
+        Initial covariance of the filter.
+    Q : 2x2
+        Process noise of the random-walk prediction (a scalar means that multiple of :math:`I`).
+    R : 2x2
+        Measurement-noise covariance of the filter for the pair's two measurements (a scalar
+        means that multiple of :math:`I`).
     noise_std : float
         Standard deviation of the true measurement noise :math:`n_i` (may differ from ``R``).
     motion : {"circle", "adversarial"}
         The true target's motion: the circle of Section V-A or the adversary of Section V-B.
-    center, radius, rate : circle parameters
-        :math:`o_k = c + r\\,(\\cos(\\omega (k-1)), \\sin(\\omega (k-1)))`.
+    center : (x, y)
+        Centre :math:`c` of the circle :math:`o_k = c + r\\,(\\cos(\\omega (k-1)),
+        \\sin(\\omega (k-1)))`.
+    radius : float
+        Its radius :math:`r`.
+    rate : float
+        Its angular rate :math:`\\omega` (rad per step).
     start : (x, y) or None
         True start of the adversarial target (``None`` for the circle).
     controls : tuple of (ux, uy) or None
@@ -318,10 +327,10 @@ class TrackingSetup:
         return dataclasses.replace(self, **changes)
 
 
-#: Figs. 4-6: the circle of radius 3 about (2, 3), 0.02 rad per step, u_max = 3.
+#: The setup of Figs. 4-6, the circle of radius 3 about (2, 3), 0.02 rad per step, u_max = 3.
 PAPER_CIRCLE = TrackingSetup()
 
-#: Fig. 7: the adversarial target, u_max = 0.1, true start (2, 2), estimate (2.5, 1.5).
+#: The setup of Fig. 7, the adversarial target, u_max = 0.1, true start (2, 2), estimate (2.5, 1.5).
 PAPER_ADVERSARIAL = TrackingSetup(
     u_max=0.1, estimate0=(2.5, 1.5), motion="adversarial", start=(2.0, 2.0)
 )
@@ -361,7 +370,18 @@ def setup_from_params(base: TrackingSetup, params: dict) -> TrackingSetup:
 
 
 def check_setup(setup, what: str = "setup") -> "TrackingSetup":
-    """``setup`` if it is a :class:`TrackingSetup`, else a ValueError naming ``what``."""
+    """``setup`` if it is a :class:`TrackingSetup`, else a ValueError naming ``what``.
+
+    Examples
+    --------
+    >>> from obslib.tracking import PAPER_CIRCLE, check_setup
+    >>> check_setup(PAPER_CIRCLE) is PAPER_CIRCLE
+    True
+    >>> check_setup("circle", "base")
+    Traceback (most recent call last):
+    ...
+    ValueError: base must be a TrackingSetup, got str
+    """
     if not isinstance(setup, TrackingSetup):
         raise ValueError(f"{what} must be a TrackingSetup, got {type(setup).__name__}")
     return setup
@@ -385,7 +405,23 @@ def check_seed(seed, name: str = "seed") -> int:
 def check_covariances(cov, n: int, name: str = "cov") -> np.ndarray:
     """Covariances as an ``(n, 2, 2)`` array (one ``(2, 2)`` is shared), each finite, symmetric
     and positive definite at any scale (checked divided by its largest entry, so that a
-    determinant that underflows does not reject it), or a named ValueError."""
+    determinant that underflows does not reject it), or a named ValueError.
+
+    Examples
+    --------
+    A shared covariance is broadcast; a tiny one is accepted; an indefinite one is not:
+
+    >>> import numpy as np
+    >>> from obslib.tracking.setup import check_covariances
+    >>> check_covariances(np.eye(2), 3).shape
+    (3, 2, 2)
+    >>> check_covariances(1e-200 * np.eye(2), 1).shape
+    (1, 2, 2)
+    >>> check_covariances([[1.0, 2.0], [2.0, 1.0]], 1)
+    Traceback (most recent call last):
+    ...
+    ValueError: cov 0 is not positive definite: [[1.0, 2.0], [2.0, 1.0]]
+    """
     c = _real_array(cov, name, "real 2x2 matrices")
     if c.shape == (2, 2):
         c = np.broadcast_to(c, (n, 2, 2))
@@ -404,7 +440,19 @@ def check_covariances(cov, n: int, name: str = "cov") -> np.ndarray:
 
 
 def check_count(value, name: str) -> int:
-    """A count as an ``int`` (an integer of at least 1, not a bool), or a named error."""
+    """A count as an ``int`` (an integer of at least 1, not a bool), or a named error.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.tracking import check_count
+    >>> check_count(np.int64(3), "n_seeds")
+    3
+    >>> check_count(0, "n_seeds")
+    Traceback (most recent call last):
+    ...
+    ValueError: n_seeds must be at least 1, got 0
+    """
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
         raise TypeError(f"{name} must be an integer, got {value!r}")
     if value < 1:
@@ -430,7 +478,23 @@ def noise_table(setup: TrackingSetup, seed: int = 0) -> np.ndarray:
 
 def check_noise(setup: TrackingSetup, noise) -> np.ndarray:
     """A noise table for ``setup`` as a float ``(steps, N)`` array, or a ValueError naming the
-    first non-finite entry or the wrong shape."""
+    first non-finite entry or the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.tracking import PAPER_CIRCLE
+    >>> from obslib.tracking.setup import check_noise
+    >>> setup = PAPER_CIRCLE.replace(steps=2)
+    >>> check_noise(setup, np.zeros((2, 6))).shape
+    (2, 6)
+    >>> table = np.zeros((2, 6))
+    >>> table[1, 3] = np.nan
+    >>> check_noise(setup, table)
+    Traceback (most recent call last):
+    ...
+    ValueError: noise of sensor 3 at step 2 is not finite
+    """
     t = _real_array(noise, "noise", "a real (steps, sensors) table")
     want = (setup.steps, setup.n_sensors)
     if t.shape != want:

@@ -86,6 +86,20 @@ def compare_strategies(mc: dict, reference: str = "best-pair", skip_first: bool 
         ``run_trace``, the fraction of runs with the reference's run mean lower. Lower and higher
         mean by more than :data:`TIE_RTOL` relatively (:func:`clearly_lower`): ties count for
         neither.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> mc = {name: tracking.simulate_batch(setup, name, seeds=[0, 1])
+    ...       for name in ("best-pair", "fixed-pair")}
+    >>> c = tracking.compare_strategies(mc)
+    >>> sorted(c["strategies"]), list(c["wins"])
+    (['best-pair', 'fixed-pair'], ['fixed-pair'])
+    >>> c["strategies"]["fixed-pair"]["switches"]  # a fixed pair never changes
+    0.0
+    >>> 0 <= c["wins"]["fixed-pair"]["error_pointwise"] <= 1
+    True
     """
     if not isinstance(mc, dict) or not mc:
         raise ValueError("mc must be a non-empty dict {strategy: BatchResult}")
@@ -171,6 +185,16 @@ def switch_back_fraction(batch: BatchResult) -> float:
     Over all runs of ``batch`` and the transitions ``k -> k + 1`` with ``k >= 2``: a switch
     (``pairs[k + 1] != pairs[k]``) counts as going back when ``pairs[k + 1] == pairs[k - 1]``.
     Chattering between two nearly equal pairs shows as a high fraction.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> tracking.switch_back_fraction(tracking.simulate_batch(setup, "fixed-pair", seeds=[0, 1]))
+    0.0
+    >>> b = tracking.simulate_batch(setup, "best-pair", seeds=[0, 1])
+    >>> 0.0 <= tracking.switch_back_fraction(b) <= 1.0
+    True
     """
     sw = _batch(batch).switched[:, 1:]
     back = (batch.pairs[:, 2:] == batch.pairs[:, :-2]).all(axis=2) & sw
@@ -178,7 +202,16 @@ def switch_back_fraction(batch: BatchResult) -> float:
 
 
 def switch_rate(batch: BatchResult) -> np.ndarray:
-    """Fraction of runs whose pair changes at each transition ``k -> k + 1``, ``(steps - 1,)``."""
+    """Fraction of runs whose pair changes at each transition ``k -> k + 1``, ``(steps - 1,)``.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> rate = tracking.switch_rate(tracking.simulate_batch(setup, "fixed-pair", seeds=[0, 1]))
+    >>> rate.shape, float(rate.max())
+    ((19,), 0.0)
+    """
     return _batch(batch).switched.mean(axis=0)
 
 
@@ -194,6 +227,16 @@ def bound_correlation(batch: BatchResult, bound: str = "own", skip_first: bool =
     -------
     dict
         ``error`` and ``trace``: per-run correlations ``(B,)``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib import tracking
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> b = tracking.simulate_batch(setup, "best-pair", seeds=[0, 1, 2])
+    >>> rho = tracking.bound_correlation(b, "euclidean")
+    >>> {k: v.shape for k, v in rho.items()}, bool((np.abs(rho["error"]) <= 1).all())
+    ({'error': (3,), 'trace': (3,)}, True)
     """
     _batch(batch)
     sl = slice(1, None) if skip_first else slice(None)
@@ -241,6 +284,16 @@ def track_loss(batch: BatchResult, threshold: float = 0.5) -> dict:
     -------
     dict
         ``lost`` (B,) bool, ``mirrored`` (B,) bool, ``flip_step`` (B,) int (1-based; 0 if never).
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> b = tracking.simulate_batch(setup, "fixed-pair", seeds=[0, 1])
+    >>> tracking.track_loss(b, threshold=1e9)["lost"].tolist()
+    [False, False]
+    >>> tracking.track_loss(b, threshold=-1.0)["lost"].tolist()
+    [True, True]
     """
     _batch(batch)
     real = isinstance(threshold, (int, float, np.integer, np.floating))
@@ -268,28 +321,36 @@ class Entrapment:
     Attributes
     ----------
     reach : float
-        How far the target could go: ``steps * max ||u||`` of its control set.
+        How far the target could go: steps times the largest :math:`\\lVert u \\rVert` of its
+        control set.
     net_displacement : float
-        ``||o_end - o_start||``.
+        :math:`\\lVert o_{\\text{end}} - o_{\\text{start}} \\rVert`.
     max_from_start : float
         Largest distance from the start over the run.
     radius : float
         Radius of the smallest disc about the path's centroid containing the whole path.
     path_length : float
         Total distance travelled.
-    bound_mean, bound_min : float
-        The sensors' pair bound over the run.
-    icn_mean, icn_min : float
-        The exact ``C^{-1}`` the sensors face (``true_icn``), steps 2.. (step 1 has no control).
+    bound_mean : float
+        Mean of the sensors' pair bound over the run.
+    bound_min : float
+        Minimum of the sensors' pair bound over the run.
+    icn_mean : float
+        Mean of the exact :math:`C^{-1}` the sensors face (``true_icn``), steps 2.. (step 1 has
+        no control).
+    icn_min : float
+        Its minimum over the same steps.
     objective_mean : float
-        Mean of the value the target aimed at (its minimised ``C^{-1}``).
+        Mean of the value the target aimed at (its minimised :math:`C^{-1}`).
     switches : int
         Pair changes over ``steps - 1`` transitions.
     switch_gain : float
         Mean of ``true_icn[k+1] - objective[k]`` over transitions where the pair switched: what
         the switch gave back to the sensors.
-    mean_error, mean_trace : float
-        Tracking quality over the run.
+    mean_error : float
+        Mean tracking error over the run.
+    mean_trace : float
+        Mean trace of the filter's covariance over the run.
     """
 
     reach: float
@@ -310,7 +371,16 @@ class Entrapment:
 
 
 def entrapment(result: TrackingResult) -> Entrapment:
-    """Measure how well the adversarial target of Fig. 7 escapes (:class:`Entrapment`)."""
+    """Measure how well the adversarial target of Fig. 7 escapes (:class:`Entrapment`).
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> r = tracking.simulate(tracking.PAPER_ADVERSARIAL.replace(steps=20), "best-pair", seed=0)
+    >>> e = tracking.entrapment(r)
+    >>> e.transitions, e.max_from_start <= e.reach, 0 <= e.switches <= 19
+    (19, True, True)
+    """
     _result(result)
     path = np.vstack([result.truth, result.truth[-1] + result.control[-1]])
     c = path.mean(axis=0)
@@ -337,7 +407,7 @@ def entrapment(result: TrackingResult) -> Entrapment:
     )
 
 
-#: What "entrapped" means in this book (fixed before looking at the runs): the target stays
+#: What "entrapped" means in this book (fixed before looking at the runs), the target stays
 #: within ``reach_fraction`` of its reach (``steps * max ||u||``) from its start, the sensors'
 #: bound averages at least ``bound_mean`` and the exact C^-1 they face never drops below
 #: ``icn_min``.
@@ -345,7 +415,20 @@ ENTRAPMENT_CRITERIA = {"reach_fraction": 0.2, "bound_mean": 0.5, "icn_min": 0.1}
 
 
 def is_entrapped(e: Entrapment, reach_fraction=None, bound_mean=None, icn_min=None) -> bool:
-    """Whether one adversarial run meets :data:`ENTRAPMENT_CRITERIA` (or the values given)."""
+    """Whether one adversarial run meets :data:`ENTRAPMENT_CRITERIA` (or the values given).
+
+    Examples
+    --------
+    Criteria that every run meets, and a bound no run reaches (:math:`C^{-1} \\le 1`):
+
+    >>> from obslib import tracking
+    >>> r = tracking.simulate(tracking.PAPER_ADVERSARIAL.replace(steps=20), "best-pair", seed=0)
+    >>> e = tracking.entrapment(r)
+    >>> tracking.is_entrapped(e, reach_fraction=1.0, bound_mean=0.0, icn_min=0.0)
+    True
+    >>> tracking.is_entrapped(e, bound_mean=1.5)
+    False
+    """
     c = dict(ENTRAPMENT_CRITERIA)
     given = {"reach_fraction": reach_fraction, "bound_mean": bound_mean, "icn_min": icn_min}
     c.update({k: v for k, v in given.items() if v is not None})

@@ -12,7 +12,28 @@ LABELS = {"bound": "bound\n(Algorithm 1)", "d-optimal": "D-optimal\n(greedy)", "
 def plot_assignment_errors(runs: dict, figsize=(8.5, 3.4)):
     """Per ``L`` (one panel each), box plots over runs of the mean error summed over targets
     after each update, per assignment rule. ``runs`` is
-    :func:`obslib.studies.criteria.assignment_study`'s result. Returns the figure."""
+    :func:`obslib.studies.criteria.assignment_study`'s result. Returns the figure.
+
+    Examples
+    --------
+    Any object with ``run_mean_error()`` and ``setup.n_sensors`` stands for a rule's runs:
+
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")  # no window
+    >>> import matplotlib.pyplot as plt
+    >>> from types import SimpleNamespace
+    >>> import numpy as np
+    >>> from obslib.viz.assignment_tracking import plot_assignment_errors
+    >>> def runs_of(errors, n):
+    ...     return SimpleNamespace(run_mean_error=lambda: np.asarray(errors),
+    ...                            setup=SimpleNamespace(n_sensors=n))
+    >>> runs = {L: {"bound": runs_of([1.0, 2.0], 2 * L), "random": runs_of([2.0, 3.0], 2 * L)}
+    ...         for L in (2, 3)}
+    >>> fig = plot_assignment_errors(runs)
+    >>> [ax.get_title() for ax in fig.axes]
+    ['L = 2 targets, N = 4 sensors', 'L = 3 targets, N = 6 sensors']
+    >>> plt.close(fig)
+    """
     import matplotlib.pyplot as plt
     from matplotlib.ticker import FormatStrFormatter, LogLocator
 

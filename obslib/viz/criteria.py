@@ -23,6 +23,20 @@ def plot_run_errors(study: dict, metric: str = "mahalanobis", figsize=(8.5, 5.6)
     """Box plots of the per-run mean error (steps 2..) of every strategy, one row per setting.
 
     ``study`` is :func:`obslib.studies.criteria.tracking_study`'s result. Returns the figure.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")  # no window
+    >>> import matplotlib.pyplot as plt
+    >>> from obslib import tracking
+    >>> from obslib.viz.criteria import plot_run_errors
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=10)
+    >>> mc = {s: tracking.simulate_batch(setup, s, seeds=[0, 1]) for s in ("best-pair", "random")}
+    >>> fig = plot_run_errors({("circle", "mahalanobis"): mc})
+    >>> len(fig.axes)
+    1
+    >>> plt.close(fig)
     """
     import matplotlib.pyplot as plt
     from matplotlib.ticker import FormatStrFormatter, LogLocator

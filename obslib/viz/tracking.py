@@ -24,9 +24,21 @@ CHI2_2DOF_9973 = 11.82
 
 
 def cov_ellipse(mean, cov, chi2: float = CHI2_2DOF_9973, n: int = 100) -> np.ndarray:
-    """Boundary of ``{x : (x - mean)^T cov^-1 (x - mean) <= chi2}``, ``(n, 2)`` points.
+    """Boundary of :math:`\\{x : (x - \\mu)^T \\Sigma^{-1} (x - \\mu) \\le \\chi^2\\}` (``mean``,
+    ``cov``, ``chi2``), ``(n, 2)`` points.
 
     The default ``chi2 = 11.82`` is the 99.73 % ellipse of Fig. 4.
+
+    Examples
+    --------
+    With :math:`\\\\chi^2 = 1` the points satisfy :math:`x^2/4 + y^2 = 1` for
+    :math:`\\\\Sigma = \\\\operatorname{diag}(4, 1)`:
+
+    >>> import numpy as np
+    >>> from obslib.viz.tracking import cov_ellipse
+    >>> e = cov_ellipse([0.0, 0.0], np.diag([4.0, 1.0]), chi2=1.0, n=50)
+    >>> e.shape, bool(np.allclose(e[:, 0] ** 2 / 4 + e[:, 1] ** 2, 1.0))
+    ((50, 2), True)
     """
     w, v = np.linalg.eigh(np.asarray(cov, dtype=float))
     t = np.linspace(0, 2 * np.pi, n)
@@ -39,12 +51,32 @@ _SUBSCRIPT = str.maketrans("0123456789", "".join(chr(0x2080 + d) for d in range(
 
 def sensor_label(i: int) -> str:
     """``"s"`` with the 1-based index of sensor ``i`` (0-based) as Unicode subscript digits:
-    the figures' sensor names, plain text (no mathtext to parse)."""
+    the figures' sensor names, plain text (no mathtext to parse).
+
+    Examples
+    --------
+    >>> from obslib.viz.tracking import sensor_label
+    >>> sensor_label(0), sensor_label(11)
+    ('s₁', 's₁₂')
+    """
     return "s" + str(int(i) + 1).translate(_SUBSCRIPT)
 
 
 def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
-    """Sensors as blue triangles named ``s1..sN`` (:func:`sensor_label`) on ``ax``."""
+    """Sensors as blue triangles named ``s1..sN`` (:func:`sensor_label`) on ``ax``.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")  # no window
+    >>> import matplotlib.pyplot as plt
+    >>> from obslib.viz.tracking import draw_sensors
+    >>> fig, ax = plt.subplots()
+    >>> draw_sensors(ax, [[0.0, 0.0], [1.0, 1.0]])
+    >>> [t.get_text() for t in ax.texts]
+    ['s₁', 's₂']
+    >>> plt.close(fig)
+    """
     s = np.asarray(sensors, dtype=float)
     ax.plot(*s.T, "^", color="tab:blue", ms=ms, **({} if label is None else {"label": label}))
     for n, p in enumerate(s):
@@ -57,6 +89,20 @@ def draw_snapshot(ax, result, k: int, *, legend: bool = True, ellipse_scale=1.0)
     Sensors (labelled ``s1..sN``), the true path so far and the target, the estimate with its
     99.73 % covariance ellipse (scaled by ``ellipse_scale`` if wanted for visibility) and lines
     from the chosen pair to the estimate. Returns the artists.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")  # no window
+    >>> import matplotlib.pyplot as plt
+    >>> from obslib import tracking
+    >>> from obslib.viz.tracking import draw_snapshot
+    >>> r = tracking.simulate(tracking.PAPER_CIRCLE.replace(steps=5), "best-pair", seed=0)
+    >>> fig, ax = plt.subplots()
+    >>> _ = draw_snapshot(ax, r, 3)
+    >>> ax.get_title().startswith("k = 3"), len(ax.texts)
+    (True, 6)
+    >>> plt.close(fig)
     """
     i = k - 1
     s = result.setup.sensor_array
@@ -185,6 +231,18 @@ def animate(result, every: int = 3, dpi: int = 100, figsize=(7.5, 3.6), interval
     marker at the current step. The default size is 750 px wide (7.5 in at 100 dpi). Show it in
     a notebook with ``IPython.display.HTML(animation_html(anim))``; the figure is closed so that
     it is not also shown as a still.
+
+    Examples
+    --------
+    Every second step and the last:
+
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")  # no window
+    >>> from obslib import tracking
+    >>> from obslib.viz.tracking import animate
+    >>> r = tracking.simulate(tracking.PAPER_CIRCLE.replace(steps=6), "best-pair", seed=0)
+    >>> animate(r, every=2, dpi=30).frames
+    [1, 3, 5, 6]
     """
     import matplotlib.pyplot as plt
 
@@ -253,6 +311,17 @@ def animation_html(anim, uid: str = "anim") -> str:
     buttons. The id is replaced by ``uid`` so the stored notebook does not change from run to
     run, and the external stylesheet is dropped so the page fetches nothing at view time (the
     book's theme ships Font Awesome itself).
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")  # no window
+    >>> from obslib import tracking
+    >>> from obslib.viz.tracking import animate, animation_html
+    >>> r = tracking.simulate(tracking.PAPER_CIRCLE.replace(steps=3), "best-pair", seed=0)
+    >>> html = animation_html(animate(r, dpi=30), uid="demo")
+    >>> 'id="_anim_imgdemo"' in html, "//cdn" in html
+    (True, False)
     """
     import re
 
