@@ -428,8 +428,12 @@ def draw_switch_overlay(ax, published, replay=None, *, y=0.0, color="k", label="
     rep = None if replay is None else np.asarray(replay)
     if rep is not None and (rep.dtype != bool or rep.shape != pub.shape):
         raise ValueError(f"replay must be bool of shape {pub.shape}, got {rep.dtype} {rep.shape}")
-    if not np.isfinite(float(y)):
-        raise ValueError(f"y must be finite, got {y!r}")
+    try:
+        y = float(y)
+    except (TypeError, ValueError):
+        y = np.nan
+    if not np.isfinite(y):
+        raise ValueError("y must be a finite number")
     lab = (lambda w: None) if label is None else (lambda w: f"{label}, {w}")
     sw = np.flatnonzero(pub) + 2
     ax.plot(sw, np.full(sw.size, float(y)), "|", color=color, ms=9, alpha=0.3,

@@ -72,6 +72,8 @@ def test_overlay_rejects_bad_input():
         viz.draw_pair_overlay(_ax(), [1, 2, 3], [1, 2])
     with pytest.raises(ValueError, match="bool"):
         viz.draw_switch_overlay(_ax(), [0, 1])
+    with pytest.raises(ValueError, match="y must"):
+        viz.draw_switch_overlay(_ax(), [True], y="low")
 
 
 def test_switch_ticks_sit_where_the_logged_pair_changes():
