@@ -1,5 +1,7 @@
 """Drawings of tracking runs (Section V): the Fig. 4 snapshot, labelled sensors, covariance
-ellipses and the animation player of a run.
+ellipses, the animation player of a run, and the published runs of Figs. 4-7 drawn under their
+replays (:func:`draw_published_overlay`, :func:`draw_pair_overlay`,
+:func:`draw_switch_overlay`).
 
 Nothing outside :mod:`obslib.viz` imports matplotlib; the functions here import it on first use.
 """
@@ -17,6 +19,11 @@ __all__ = [
     "RunAnimation",
     "animate",
     "animation_html",
+    "PUBLISHED_STYLE",
+    "REPLAY_STYLE",
+    "draw_published_overlay",
+    "draw_pair_overlay",
+    "draw_switch_overlay",
 ]
 
 #: Chi-square quantile, 2 degrees of freedom, 99.73 % (the "3 sigma" ellipse of Fig. 4).
@@ -331,3 +338,176 @@ def animation_html(anim, uid: str = "anim") -> str:
         raise ValueError("not the HTML of matplotlib's to_jshtml: no _anim_img element")
     html = html.replace(m.group(1), uid)
     return re.sub(r'<link[^>]*href="(?:https?:)?//[^"]*"[^>]*>\s*', "", html)
+
+
+#: The published log: a wide, pale line (or large open markers) that the replay is drawn over.
+PUBLISHED_STYLE = {"lw": 4.0, "alpha": 0.3, "solid_capstyle": "round"}
+#: The replay with the published noise: a thin line (or small dots) of the same colour on top.
+REPLAY_STYLE = {"lw": 1.0}
+
+
+def _float_array(name: str, a, ndim: tuple) -> np.ndarray:
+    try:
+        out = np.asarray(a, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be an array of numbers") from None
+    if out.ndim not in ndim:
+        raise ValueError(f"{name} must have {' or '.join(map(str, ndim))} dimensions, "
+                         f"got shape {out.shape}")
+    return out
+
+
+def _check_overlay(published, replay, x):
+    pub = _float_array("published", published, (1, 2))
+    if pub.ndim == 2 and pub.shape[1] != 2:
+        raise ValueError(f"a path must have shape (n, 2), got published {pub.shape}")
+    if pub.ndim == 1 and x is None:
+        raise ValueError("a series (1-D published) needs x, e.g. the steps 1..n")
+    rep = None if replay is None else _float_array("replay", replay, (pub.ndim,))
+    if rep is not None and rep.shape[1:] != pub.shape[1:]:
+        raise ValueError(f"replay {rep.shape} does not match published {pub.shape}")
+    if x is not None:
+        x = _float_array("x", x, (1,))
+        if x.size < max(pub.shape[0], 0 if rep is None else rep.shape[0]):
+            raise ValueError(f"x has {x.size} values, fewer than the series")
+    return pub, rep, x
+
+
+def draw_published_overlay(ax, published, replay=None, *, x=None, color="tab:blue",
+                           label=None):
+    """Draw a published curve (wide and pale) and its replay (thin, same colour) on ``ax``.
+
+    Where the replay with the published noise gives the logged numbers, the thin line runs
+    inside the pale band; a difference shows as the thin line leaving it.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    published : (n,) or (n, 2) array_like
+        A logged series (against ``x``) or a path of points ``(x, y)``.
+    replay : array_like or None
+        The replay's series or path (it may be shorter than ``published``); None draws the
+        published curve alone.
+    x : (n,) array_like, optional
+        Abscissae of a series, e.g. the steps ``k = 1..n``; required for a series.
+    color : color
+        Colour of both curves.
+    label : str, optional
+        Legend entries ``"<label>, published"`` and ``"<label>, replay"``.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Examples
+    --------
+    >>> from matplotlib.figure import Figure
+    >>> ax = Figure().add_subplot()
+    >>> ax = draw_published_overlay(ax, [0.5, 0.7, 0.6], [0.5, 0.7, 0.6], x=[1, 2, 3],
+    ...                             label="bound")
+    >>> [line.get_label() for line in ax.get_lines()]
+    ['bound, published', 'bound, replay']
+    """
+    pub, rep, x = _check_overlay(published, replay, x)
+
+    def xy(a):
+        return (x[: a.shape[0]], a) if a.ndim == 1 else (a[:, 0], a[:, 1])
+
+    lab = (lambda w: None) if label is None else (lambda w: f"{label}, {w}")
+    ax.plot(*xy(pub), "-", color=color, label=lab("published"), **PUBLISHED_STYLE)
+    if rep is not None:
+        ax.plot(*xy(rep), "-", color=color, label=lab("replay"), **REPLAY_STYLE)
+    return ax
+
+
+def _check_codes(name, a, n=None):
+    out = _float_array(name, a, (1,))
+    if n is not None and out.size != n:
+        raise ValueError(f"{name} has {out.size} steps, published has {n}")
+    return out
+
+
+def draw_pair_overlay(ax, published, replay=None, *, color="tab:blue", label=None):
+    """The pair (or partner) chosen at each step, as in Fig. 5: the published choice as large
+    pale open circles, the replay's as small dots of the same colour inside them.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    published, replay : (n,) array_like
+        A code per step ``k = 1..n`` of the chosen pair (e.g. its index in a list of pairs, or
+        the partner sensor); the caller labels the y ticks. ``replay`` may be None.
+    color : color
+    label : str, optional
+        Legend entries ``"<label>, published"`` and ``"<label>, replay"``.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Examples
+    --------
+    >>> from matplotlib.figure import Figure
+    >>> ax = draw_pair_overlay(Figure().add_subplot(), [3, 3, 5], [3, 3, 5])
+    >>> [line.get_ydata().tolist() for line in ax.get_lines()]
+    [[3.0, 3.0, 5.0], [3.0, 3.0, 5.0]]
+    """
+    pub = _check_codes("published", published)
+    rep = None if replay is None else _check_codes("replay", replay, pub.size)
+    k = np.arange(1, pub.size + 1)
+    lab = (lambda w: None) if label is None else (lambda w: f"{label}, {w}")
+    ax.plot(k, pub, "o", mfc="none", mec=color, ms=5, mew=1.0, alpha=0.45,
+            label=lab("published"))
+    if rep is not None:
+        ax.plot(k, rep, ".", color=color, ms=2.5, label=lab("replay"))
+    return ax
+
+
+def draw_switch_overlay(ax, published, replay=None, *, y=0.0, color="k", label="pair switch"):
+    """Pair switches as ticks at height ``y`` (Fig. 7): the published run's as long pale ticks,
+    the replay's as short dark ticks over them.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    published, replay : (n,) array_like of bool
+        Whether the pair changed at transition ``k -> k + 1`` (index ``k - 1``), as
+        :attr:`obslib.tracking.TrackingResult.switched`; a tick is drawn at step ``k + 1``.
+        ``replay`` may be None.
+    y : float
+        Height of the ticks (data units).
+    color : color
+    label : str, optional
+        Legend entries ``"<label>, published"`` and ``"<label>, replay"``.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Examples
+    --------
+    >>> from matplotlib.figure import Figure
+    >>> ax = draw_switch_overlay(Figure().add_subplot(), [True, False, True])
+    >>> ax.get_lines()[0].get_xdata().tolist()
+    [2, 4]
+    """
+    pub = np.asarray(published)
+    if pub.ndim != 1 or pub.dtype != bool:
+        raise ValueError(f"published must be a 1-D array of bool, got {pub.dtype} {pub.shape}")
+    rep = None if replay is None else np.asarray(replay)
+    if rep is not None and (rep.dtype != bool or rep.shape != pub.shape):
+        raise ValueError(f"replay must be bool of shape {pub.shape}, got {rep.dtype} {rep.shape}")
+    try:
+        y = float(y)
+    except (TypeError, ValueError):
+        y = np.nan
+    if not np.isfinite(y):
+        raise ValueError("y must be a finite number")
+    lab = (lambda w: None) if label is None else (lambda w: f"{label}, {w}")
+    sw = np.flatnonzero(pub) + 2
+    ax.plot(sw, np.full(sw.size, float(y)), "|", color=color, ms=9, alpha=0.3,
+            label=lab("published"))
+    if rep is not None:
+        sr = np.flatnonzero(rep) + 2
+        ax.plot(sr, np.full(sr.size, float(y)), "|", color=color, ms=4, label=lab("replay"))
+    return ax
