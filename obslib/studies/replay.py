@@ -92,8 +92,11 @@ def _replayable_steps(name: str) -> int:
 
 @lru_cache(maxsize=16)
 def _replay(name: str, fill: float, steps: int) -> tr.TrackingResult:
+    # The batch engine (the filter's equations as array operations, equal to the filterpy
+    # engine of tracking.simulate to rounding): one run, without importing filterpy and SciPy,
+    # which cost notebooks 05 and 06 about 0.7 s each.
     setup = replay_setup(name).replace(steps=steps)
-    return tr.simulate(setup, _strategy(name), noise=_table(steps, fill))
+    return tr.simulate_batch(setup, _strategy(name), noise=_table(steps, fill)[None]).run(0)
 
 
 def replay(name: str, fill: float = REPLAY_FILLS[0]) -> tr.TrackingResult:
