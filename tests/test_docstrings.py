@@ -18,32 +18,8 @@ import obslib
 
 PACKAGES = ("obslib.tracking", "obslib.symbolic", "obslib.studies", "obslib.viz")
 
-#: Functions without examples yet, as "module.name" (modules being edited elsewhere).
-MISSING = {
-    # modules being edited in another branch now
-    "obslib.studies.assignment_tracking.batch_greedy",
-    "obslib.studies.assignment_tracking.bound_weights",
-    "obslib.studies.assignment_tracking.ekf_step",
-    "obslib.studies.assignment_tracking.info_gain_weights",
-    "obslib.studies.assignment_tracking.random_assignments",
-    "obslib.studies.assignment_tracking.run",
-    "obslib.studies.assignment_tracking.run_all",
-    "obslib.studies.assignment_tracking.scenario",
-    "obslib.studies.criteria.adversary_rows",
-    "obslib.studies.criteria.assignment_rows",
-    "obslib.studies.criteria.assignment_study",
-    "obslib.studies.criteria.available_strategies",
-    "obslib.studies.criteria.criterion_scores",
-    "obslib.studies.criteria.markdown_table",
-    "obslib.studies.criteria.missing_strategies",
-    "obslib.studies.criteria.paired_test",
-    "obslib.studies.criteria.params",
-    "obslib.studies.criteria.relog_bound",
-    "obslib.studies.criteria.significance",
-    "obslib.studies.criteria.summary_rows",
-    "obslib.studies.criteria.tracking_study",
-    "obslib.studies.teams.fig9_geometry",
-}
+#: Functions without examples yet, as "module.name".
+MISSING: set = set()
 
 
 def _modules():
