@@ -84,7 +84,8 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
     --------
     >>> relative_vectors([[0, 0], [2, 0]], [[1, 1]]).tolist()
     [[[1.0, 1.0]], [[-1.0, 1.0]]]
-    >>> relative_vectors([[0, 0], [2, 0]], [[1, 1]], cov=4 * np.eye(2)).tolist()  # lengths / 2
+    >>> # lengths halved by cov = 4 I
+    >>> relative_vectors([[0, 0], [2, 0]], [[1, 1]], cov=4 * np.eye(2)).tolist()
     [[[0.5, 0.5]], [[-0.5, 0.5]]]
     """
     v, unit = validated_vectors(sensors, targets, cov)
@@ -138,7 +139,8 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
 
     Units do not matter (lengths and ``u_max`` scaled together):
 
-    >>> pair_bounds([[0, 0], [2e-150, 0]], [[1e-150, 1e-150]], u_max=1e-150).round(6)[0, 1, 0]
+    >>> W = pair_bounds([[0, 0], [2e-150, 0]], [[1e-150, 1e-150]], u_max=1e-150)
+    >>> W.round(6)[0, 1, 0]
     np.float64(0.816497)
     """
     s = as_points(sensors, "sensors")

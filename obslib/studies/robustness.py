@@ -244,7 +244,7 @@ def write_json(rows, path, base: str = "quick") -> None:
     >>> path = Path(tempfile.mkdtemp()) / "robustness.json"
     >>> write_json([{"claim": "x", "holds": True}], path)
     >>> data = json.loads(path.read_text())
-    >>> data["base"], data["rows"], sorted(data["dimensions"]) == sorted(DIMENSIONS)
+    >>> data["base"], data["rows"], set(data["dimensions"]) == set(DIMENSIONS)
     ('quick', [{'claim': 'x', 'holds': True}], True)
     """
     data = {"base": base, "dimensions": {k: list(v) for k, v in DIMENSIONS.items()},

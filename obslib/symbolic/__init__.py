@@ -38,7 +38,8 @@ remainders), not by the heuristic ``sympy.simplify``: an expansion that returns 
 Examples
 --------
 >>> from obslib import symbolic as sy
->>> sy.theorem4_residuals()["ratio"], sy.max_value_exact(), sy.closed_forms_hold()["dalpha"]
+>>> (sy.theorem4_residuals()["ratio"], sy.max_value_exact(),
+...  sy.closed_forms_hold()["dalpha"])
 (0, 0, True)
 """
 
