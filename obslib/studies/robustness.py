@@ -175,6 +175,9 @@ def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[d
 
 
 #: Column headers of :func:`robustness_table`: what is varied and the values tried.
+#: Each header is Markdown with TeX math, typeset in the table.
+#:
+#: :meta hide-value:
 HEADERS = {
     "u_max": r"$u_{\max}$ $\times$ 0.25, 0.5, 2, 4",
     "noise_std": r"noise $\sigma$ $\times$ 0.25, 0.5, 2, 4",
