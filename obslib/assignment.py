@@ -286,7 +286,7 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     >>> greedy_pair_assignment(sensors=S, targets=T, u_max=1.0).triples
     [(2, 3, 1), (0, 1, 0)]
     >>> from obslib.bounds import pair_bounds
-    >>> greedy_pair_assignment(pair_bounds(S, T, 1.0)).triples  # the same from the weights
+    >>> greedy_pair_assignment(pair_bounds(S, T, 1.0)).triples  # from weights
     [(2, 3, 1), (0, 1, 0)]
     """
     if k is not None:
@@ -377,7 +377,8 @@ def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 <
     Examples
     --------
     >>> S, T = [[0, 0], [1, 0], [10, 0], [11, 0.5]], [[0.5, 1], [10.5, 1]]
-    >>> [(l0, l1, block.shape) for l0, l1, block in upper_pair_weight_blocks(S, T, 1.0, chunk=6)]
+    >>> blocks = upper_pair_weight_blocks(S, T, 1.0, chunk=6)
+    >>> [(l0, l1, block.shape) for l0, l1, block in blocks]
     [(0, 1, (1, 6)), (1, 2, (1, 6))]
     """
     v, u2 = _geometry(sensors, targets, u_max, cov)

@@ -85,7 +85,8 @@ def lower_bound_set_function(sensors, target, u_max) -> Callable[[tuple], float]
 
     Examples
     --------
-    >>> omega = lower_bound_set_function([[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]], [1.0, 1.0], 1.0)
+    >>> omega = lower_bound_set_function([[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]],
+    ...                                  [1.0, 1.0], 1.0)
     >>> round(omega((0, 1)), 4), round(omega((0, 1, 2)), 4)
     (0.8165, 0.6325)
     """

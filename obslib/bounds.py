@@ -1,14 +1,18 @@
 """Theorem 1's lower bound, its two-sensor closed form (Theorem 4) and its worst case.
 
 Theorem 1 bounds the unknown ``C^{-1}(O(o, u_o))`` using only the known part ``O(o)``
-(the rows ``o - p_i``) and the speed bound ``u_max``::
+(the rows ``o - p_i``) and the speed bound ``u_max`` (Eqs. (21), (22)):
 
-    C^{-1}(O(o, u_o)) >= sigma_min(O(o)) / sqrt(sigma_max(O(o))^2 + u_max^2)
-                       = sqrt(lambda_min / (lambda_max + u_max^2))           (Eq. (21), (22))
+.. math::
 
-with ``lambda`` the eigenvalues of ``O(o)^T O(o)``. For two sensors these eigenvalues have a
-closed form (Theorem 4); :func:`pair_bounds` evaluates it for all pairs and all targets at
-once, and :func:`pair_bound_polar` is the paper's polar form in ``alpha`` and ``theta_ji``.
+    C^{-1}(O(o, u_o)) \\geq
+    \\frac{\\sigma_{\\min}(O(o))}{\\sqrt{\\sigma_{\\max}(O(o))^2 + u_{\\max}^2}}
+    = \\sqrt{\\frac{\\lambda_{\\min}}{\\lambda_{\\max} + u_{\\max}^2}},
+
+with :math:`\\lambda` the eigenvalues of :math:`O(o)^T O(o)`. For two sensors these
+eigenvalues have a closed form (Theorem 4); :func:`pair_bounds` evaluates it for all pairs and
+all targets at once, and :func:`pair_bound_polar` is the paper's polar form in ``alpha`` and
+``theta_ji``.
 """
 
 from __future__ import annotations
@@ -84,7 +88,8 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
     --------
     >>> relative_vectors([[0, 0], [2, 0]], [[1, 1]]).tolist()
     [[[1.0, 1.0]], [[-1.0, 1.0]]]
-    >>> relative_vectors([[0, 0], [2, 0]], [[1, 1]], cov=4 * np.eye(2)).tolist()  # lengths / 2
+    >>> # lengths halved by cov = 4 I
+    >>> relative_vectors([[0, 0], [2, 0]], [[1, 1]], cov=4 * np.eye(2)).tolist()
     [[[0.5, 0.5]], [[-0.5, 0.5]]]
     """
     v, unit = validated_vectors(sensors, targets, cov)
@@ -138,7 +143,8 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
 
     Units do not matter (lengths and ``u_max`` scaled together):
 
-    >>> pair_bounds([[0, 0], [2e-150, 0]], [[1e-150, 1e-150]], u_max=1e-150).round(6)[0, 1, 0]
+    >>> W = pair_bounds([[0, 0], [2e-150, 0]], [[1e-150, 1e-150]], u_max=1e-150)
+    >>> W.round(6)[0, 1, 0]
     np.float64(0.816497)
     """
     s = as_points(sensors, "sensors")

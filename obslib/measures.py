@@ -190,7 +190,8 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
 
     Examples
     --------
-    >>> t = measures_from_vectors([[1, 1], [-1, 1]], [[True, True]], ("trace", "rank"))
+    >>> t = measures_from_vectors([[1, 1], [-1, 1]], [[True, True]],
+    ...                           ("trace", "rank"))
     >>> t["trace"], t["rank"]
     (array([4.]), array([2.]))
     """
@@ -306,7 +307,7 @@ def measure(sensors, target, name: str, eps: float = 0.0, u=None,
 
     Examples
     --------
-    >>> measure([[0, 0], [2, 0]], [1, 1], "logdet")  # rows (1, 1), (-1, 1): det = 4
+    >>> measure([[0, 0], [2, 0]], [1, 1], "logdet")  # rows (1, 1), (-1, 1): det 4
     1.3862943611198906
     """
     rows = relative_rows(_sensors_or_empty(sensors), target)

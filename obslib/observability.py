@@ -119,7 +119,9 @@ def inverse_condition_number(sensors, target, u=None):
 
     The answer does not depend on the unit of length:
 
-    >>> round(inverse_condition_number([[0, 0], [2e150, 0]], [1e150, 1e150], u=[1e150, 0]), 6)
+    >>> c = inverse_condition_number([[0, 0], [2e150, 0]], [1e150, 1e150],
+    ...                              u=[1e150, 0])
+    >>> round(c, 6)
     0.816497
     """
     rows = relative_rows(sensors, target)
@@ -207,7 +209,9 @@ def inverse_condition_numbers_polar(rows, radii, angles) -> np.ndarray:
 
     Examples
     --------
-    >>> inverse_condition_numbers_polar([[[1, 1], [-1, 1]]], [[0.0, 1.0]], [0.0]).round(6)
+    >>> c = inverse_condition_numbers_polar([[[1, 1], [-1, 1]]], [[0.0, 1.0]],
+    ...                                     [0.0])
+    >>> c.round(6)
     array([[[1.      ],
             [0.816497]]])
     """

@@ -317,12 +317,13 @@ def check_parameters(notebook: str, values: dict, defaults: dict) -> dict:
 
     Examples
     --------
-    >>> check_parameters("05_two_sensors_tracking", {"n_seeds": 5}, {"n_seeds": 200})
+    >>> nb = "05_two_sensors_tracking"
+    >>> check_parameters(nb, {"n_seeds": 5}, {"n_seeds": 200})
     {'n_seeds': 5}
-    >>> check_parameters("05_two_sensors_tracking", {"n_seeds": -5}, {"n_seeds": 200})
+    >>> check_parameters(nb, {"n_seeds": -5}, {"n_seeds": 200})
     Traceback (most recent call last):
     ...
-    ValueError: notebook 05_two_sensors_tracking: parameter n_seeds = -5 is not accepted; expected an integer >= 1
+    ValueError: ...n_seeds = -5 is not accepted; expected an integer >= 1
     """
     unknown = sorted(set(values) - set(defaults))
     if unknown:

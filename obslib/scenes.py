@@ -45,7 +45,8 @@ class Scene:
 
     Examples
     --------
-    >>> Scene(sensors=np.zeros((1, 2)), target=np.ones(2), u_max=1.0, kind="generic").kind
+    >>> Scene(sensors=np.zeros((1, 2)), target=np.ones(2), u_max=1.0,
+    ...       kind="generic").kind
     'generic'
     """
 

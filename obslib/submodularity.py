@@ -602,7 +602,8 @@ def audit_set_function(ground, f: Callable[[tuple], float] | None = None, *, val
 
     Examples
     --------
-    >>> a = audit_set_function(3, lambda s: float(len(s) >= 2))   # a threshold: not submodular
+    >>> # a threshold: not submodular
+    >>> a = audit_set_function(3, lambda s: float(len(s) >= 2))
     >>> a.monotone_increasing, a.submodular
     (True, False)
     >>> w = a.submodular_witness

@@ -50,9 +50,14 @@ def pair_assignments(n: int, n_targets: int) -> tuple[np.ndarray, np.ndarray]:
     Two targets, four sensors: three ways to split the sensors into two pairs, each in two orders:
 
     >>> P, Q = pair_assignments(4, 2)
-    >>> [list(zip(p, q)) for p, q in zip(P.tolist(), Q.tolist())]  # doctest: +NORMALIZE_WHITESPACE
-    [[(0, 1), (2, 3)], [(0, 2), (1, 3)], [(0, 3), (1, 2)], [(1, 2), (0, 3)], [(1, 3), (0, 2)],
-     [(2, 3), (0, 1)]]
+    >>> for p, q in zip(P.tolist(), Q.tolist()):
+    ...     print(list(zip(p, q)))
+    [(0, 1), (2, 3)]
+    [(0, 2), (1, 3)]
+    [(0, 3), (1, 2)]
+    [(1, 2), (0, 3)]
+    [(1, 3), (0, 2)]
+    [(2, 3), (0, 1)]
     """
     if n < 2 * n_targets or n_targets < 1:
         raise ValueError(f"need L >= 1 and N >= 2L, got N = {n}, L = {n_targets}")
@@ -288,7 +293,8 @@ def worst_instance_search(n_sensors: int, n_targets: int, seed: int, n_starts: i
 
     Examples
     --------
-    >>> ratio, sensors, targets = worst_instance_search(4, 2, seed=0, n_starts=2, n_steps=10)
+    >>> ratio, sensors, targets = worst_instance_search(4, 2, seed=0, n_starts=2,
+    ...                                                 n_steps=10)
     >>> 1 / 3 <= ratio <= 1, sensors.shape, targets.shape
     (True, (4, 2), (2, 2))
     """
@@ -338,7 +344,9 @@ def charging(W, greedy_triples, optimal_triples) -> list[dict]:
 
     >>> import obslib as ob
     >>> W = tight_weights()
-    >>> rounds = charging(W, ob.greedy_pair_assignment(W).triples, ob.optimal_pair_assignment(W).triples)
+    >>> greedy = ob.greedy_pair_assignment(W).triples
+    >>> optimal = ob.optimal_pair_assignment(W).triples
+    >>> rounds = charging(W, greedy, optimal)
     >>> [(r["pick"], len(r["charged"])) for r in rounds]
     [((0, 1, 0), 3), ((2, 3, 1), 0), ((4, 5, 2), 0)]
     """

@@ -69,7 +69,15 @@ REFERENCE = "best-pair"
 SCORES = ("bound", "d-optimal", "a-optimal", "e-optimal", "exact-icn")
 
 def params(profile: str = "paper") -> dict:
-    """Notebook 10's parameters under ``profile`` (:func:`obslib.profiles.params`)."""
+    """Notebook 10's parameters under ``profile`` (:func:`obslib.profiles.params`).
+
+    Examples
+    --------
+    >>> from obslib import profiles
+    >>> p = params("paper")
+    >>> p == profiles.params(NOTEBOOK, "paper"), p["metrics"]
+    (True, ['mahalanobis', 'euclidean'])
+    """
     from ..profiles import params as profile_params
 
     return profile_params(NOTEBOOK, profile)
@@ -82,12 +90,28 @@ def _known() -> tuple:
 
 def available_strategies(names=PAPER_STRATEGIES + CRITERIA) -> list:
     """The ``names`` the tracking engine knows (:data:`obslib.tracking.STRATEGIES` and
-    :data:`obslib.tracking.CRITERIA`), in order."""
+    :data:`obslib.tracking.CRITERIA`), in order.
+
+    Examples
+    --------
+    >>> available_strategies(["random", "no-such-rule", "best-pair"])
+    ['random', 'best-pair']
+    >>> available_strategies() == list(PAPER_STRATEGIES + CRITERIA)  # all known
+    True
+    """
     return [n for n in names if n in _known()]
 
 
 def missing_strategies(names=PAPER_STRATEGIES + CRITERIA) -> list:
-    """The ``names`` the tracking engine does not know."""
+    """The ``names`` the tracking engine does not know.
+
+    Examples
+    --------
+    >>> missing_strategies(["random", "no-such-rule", "best-pair"])
+    ['no-such-rule']
+    >>> missing_strategies()
+    []
+    """
     return [n for n in names if n not in _known()]
 
 
@@ -113,6 +137,28 @@ def criterion_scores(name: str, sensors, xhat, cov, Q, R, u_max, control=None,
     u_max : float, the bound's control bound
     control : (B, 2), the target's actual control (``exact-icn`` only)
     metric : the bound's distances, ``"mahalanobis"`` in ``cov`` or ``"euclidean"``
+
+    Examples
+    --------
+    D-optimality is :math:`\\det J`, here checked for the pair (0, 1) against
+    ``numpy.linalg.det`` of :math:`J` built directly; the bound is
+    :func:`obslib.pair_bounds` with Mahalanobis distances in ``cov``:
+
+    >>> import obslib as ob
+    >>> S = np.array([[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]])
+    >>> x, C = np.array([[1.0, 2.0]]), np.array([[[0.6, 0.1], [0.1, 0.4]]])
+    >>> Q = R = 0.5 * np.eye(2)
+    >>> d = criterion_scores("d-optimal", S, x, C, Q, R, u_max=1.0)
+    >>> d.shape  # one estimate, pairs (0, 1), (0, 2), (1, 2)
+    (1, 3)
+    >>> H = x[0] - S[[0, 1]]  # rows (xhat - p_0)^T, (xhat - p_1)^T
+    >>> J = np.linalg.inv(C[0] + Q) + H.T @ np.linalg.inv(R) @ H
+    >>> bool(np.isclose(d[0, 0], np.linalg.det(J), rtol=1e-12))
+    True
+    >>> b = criterion_scores("bound", S, x, C, Q, R, u_max=1.0)
+    >>> W = ob.pair_bounds(S, x, 1.0, cov=C)[:, :, 0]
+    >>> bool(np.allclose(b[0], W[np.triu_indices(3, 1)], rtol=1e-12))
+    True
     """
     if name not in SCORES:
         raise ValueError(f"unknown criterion {name!r}; known: {SCORES}")
@@ -173,6 +219,18 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
     Returns ``n``, the mean, median and standard deviation of ``other - reference``, the counts of runs
     where each is clearly lower (:func:`obslib.tracking.clearly_lower`) and of ties, the two-sided
     sign-test p-value (ties dropped) and the Wilcoxon signed-rank p-value (``scipy.stats``).
+
+    Examples
+    --------
+    The reference is lower in 3 runs of 4, so the two-sided sign test gives
+    :math:`2 \\cdot 5/16`:
+
+    >>> ref = np.array([1.0, 2.0, 3.0, 4.0])
+    >>> t = paired_test(ref, ref + [0.5, 0.5, -0.1, 0.5])
+    >>> t["n"], t["reference_better"], t["other_better"], t["ties"]
+    (4, 3, 1, 0)
+    >>> round(t["mean_diff"], 12), round(t["median_diff"], 12), t["p_sign"]
+    (0.35, 0.5, 0.625)
     """
     a = np.asarray(reference, dtype=float)
     b = np.asarray(other, dtype=float)
@@ -202,7 +260,19 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
 def significance(row: dict, alpha: float = 0.01) -> str:
     """Verdict of a row's paired test against the reference: ``"better"`` or ``"worse"`` (the
     other strategy, by the sign of the median paired difference, when the Wilcoxon test rejects
-    at ``alpha``) or ``"same"``."""
+    at ``alpha``) or ``"same"``.
+
+    Examples
+    --------
+    >>> significance({"vs_p_wilcoxon": 0.001, "vs_median_diff": -0.2})
+    'better'
+    >>> significance({"vs_p_wilcoxon": 0.001, "vs_median_diff": 0.2})
+    'worse'
+    >>> significance({"vs_p_wilcoxon": 0.05, "vs_median_diff": -0.2})
+    'same'
+    >>> significance({"strategy": "best-pair"})  # the reference: no test
+    'same'
+    """
     if row.get("vs_p_wilcoxon", 1.0) >= alpha:
         return "same"
     return "better" if row["vs_median_diff"] < 0 else "worse"
@@ -222,6 +292,17 @@ def summary_rows(mc: dict, reference: str = REFERENCE, loss_threshold: float = 0
     ``switches`` (mean pair changes per run), ``mean_bound`` (the chosen pairs' bound), and the
     paired test of the run-mean error against ``reference`` (:func:`paired_test`, prefixed
     ``vs_``; empty for the reference itself).
+
+    Examples
+    --------
+    >>> setup = tr.PAPER_CIRCLE.replace(steps=10)
+    >>> mc = tr.monte_carlo(setup, 3, ["best-pair", "random"])
+    >>> rows = summary_rows(mc)
+    >>> [r["strategy"] for r in rows], "vs_n" in rows[0], rows[1]["vs_n"]
+    (['best-pair', 'random'], False, 3)
+    >>> err = mc["random"].error[:, 1:].mean(axis=1)  # run means, step 1 out
+    >>> bool(np.isclose(rows[1]["mean_error"], err.mean(), rtol=1e-12))
+    True
     """
     ref_err = _run_means(mc[reference])[0] if reference in mc else None
     rows = []
@@ -249,6 +330,20 @@ def relog_bound(batch, setup):
     The classical criteria choose without the bound, so their runs do not depend on the
     bound's metric; only the logged bound of the chosen pair does
     (:func:`obslib.tracking.pair_bound_series` at the logged estimates and covariances).
+
+    Examples
+    --------
+    A random run logged under Euclidean distances is the same run as the one
+    simulated with them:
+
+    >>> setup = tr.PAPER_CIRCLE.replace(steps=5)
+    >>> b = tr.simulate_batch(setup, "random", seeds=[0, 1])
+    >>> eu = relog_bound(b, setup.replace(metric="euclidean"))
+    >>> eu.setup.metric, bool((eu.error == b.error).all())
+    ('euclidean', True)
+    >>> direct = tr.simulate_batch(eu.setup, "random", seeds=[0, 1])
+    >>> bool(np.allclose(eu.bound, direct.bound, rtol=1e-9))
+    True
     """
     import dataclasses
 
@@ -286,6 +381,16 @@ def tracking_study(n_seeds: int, seed: int = 0, metrics=("mahalanobis", "euclide
 
     Returns ``{(setting, metric): {strategy: BatchResult}}`` with ``setting`` in
     ``("circle", "adversary")``. Cached: the notebook and the ledger share one computation.
+
+    Examples
+    --------
+    >>> s = tracking_study(2, strategies=("best-pair", "random"))
+    >>> len(s), list(s[("circle", "mahalanobis")])
+    (4, ['best-pair', 'random'])
+    >>> mc = tr.monte_carlo(tr.PAPER_CIRCLE, 2, ["best-pair"], 0)
+    >>> a = s[("circle", "mahalanobis")]["best-pair"].error
+    >>> bool(np.allclose(a, mc["best-pair"].error, rtol=1e-9))
+    True
     """
     if int(n_seeds) < 2:
         raise ValueError(f"n_seeds must be at least 2 for the paired tests, got {n_seeds}")
@@ -307,7 +412,19 @@ def adversary_rows(mc: dict) -> list:
     the fraction of runs that entrap it (:data:`obslib.tracking.ENTRAPMENT_CRITERIA`), its
     largest distance from the start, the exact ``C^{-1}`` the sensors face (mean and minimum),
     the mean bound, mean switches and mean error: the numbers of
-    :func:`obslib.tracking.entrapment_summary`, computed over whole batches at once."""
+    :func:`obslib.tracking.entrapment_summary`, computed over whole batches at once.
+
+    Examples
+    --------
+    >>> from obslib.studies.tracking import entrapment_summary
+    >>> setup = tr.PAPER_ADVERSARIAL.replace(steps=10)
+    >>> mc = tr.monte_carlo(setup, 2, ["best-pair"])
+    >>> row, = adversary_rows(mc)
+    >>> s = entrapment_summary(mc["best-pair"])
+    >>> keys = ("entrapped", "max_from_start", "reach", "mean_error")
+    >>> all(np.isclose(row[k], s[k], rtol=1e-9) for k in keys)
+    True
+    """
     crit = tr.ENTRAPMENT_CRITERIA
     rows = []
     for name, b in mc.items():
@@ -348,6 +465,19 @@ def assignment_study(p: dict, metric: str = "mahalanobis") -> dict:
     """The assignment-by-tracking runs at the parameters ``p`` (:func:`params`), per ``L``.
 
     Returns ``{L: {rule: AssignmentRuns}}`` (cached).
+
+    Examples
+    --------
+    >>> p = dict(params(), assign_targets=[1, 2], assign_seeds=2,
+    ...          assign_steps=5)
+    >>> runs = assignment_study(p)
+    >>> sorted(runs), list(runs[2])
+    ([1, 2], ['bound', 'd-optimal', 'random'])
+    >>> setup = at.AssignmentTrackingSetup(n_targets=2, steps=5)  # p's values
+    >>> direct = at.run(setup, "bound", [0, 1])
+    >>> e = runs[2]["bound"].post_error
+    >>> bool(np.allclose(e, direct.post_error, rtol=1e-9))
+    True
     """
     targets = tuple(int(L) for L in p["assign_targets"])
     return _assignment_study(targets, int(p["assign_seeds"]), int(p["seed"]), int(p["assign_steps"]),
@@ -361,7 +491,19 @@ def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float 
     exceeds ``loss_threshold``), ``lost_mirrored`` (those whose last estimate is nearer the
     target's mirror image across its last pair's baseline than the target), ``switch_rate`` (fraction of steps where a target's pair
     changes), the chosen pairs' bound and information gain summed over targets, and the paired
-    test against ``reference``."""
+    test against ``reference``.
+
+    Examples
+    --------
+    >>> setup = at.AssignmentTrackingSetup(n_targets=2, steps=5)
+    >>> runs = {2: at.run_all(setup, [0, 1, 2])}
+    >>> rows = assignment_rows(runs)
+    >>> [r["rule"] for r in rows], "vs_n" in rows[0], rows[2]["vs_n"]
+    (['bound', 'd-optimal', 'random'], False, 3)
+    >>> e = runs[2]["random"].post_error[:, 1:].sum(axis=-1).mean(axis=1)
+    >>> bool(np.isclose(rows[2]["mean_error"], e.mean(), rtol=1e-12))
+    True
+    """
     rows = []
     for L, by_rule in runs.items():
         ref = by_rule[reference].run_mean_error()
@@ -387,7 +529,19 @@ def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float 
 
 def markdown_table(rows: list, columns: dict) -> str:
     """A Markdown table of ``rows`` (dicts): ``columns`` maps a header to ``(key, format)``,
-    ``format`` a format spec (``".3f"``) or a callable of the row."""
+    ``format`` a format spec (``".3f"``) or a callable of the row.
+
+    Examples
+    --------
+    >>> rows = [{"s": "a", "v": 1.2345}, {"s": "b"}]
+    >>> cols = {"name": ("s", "s"), "value": ("v", ".2f"),
+    ...         "upper": (None, lambda r: r["s"].upper())}
+    >>> print(markdown_table(rows, cols))
+    | name | value | upper |
+    |---|---|---|
+    | a | 1.23 | A |
+    | b |  | B |
+    """
     head = "| " + " | ".join(columns) + " |"
     sep = "|" + "|".join("---" for _ in columns) + "|"
     lines = [head, sep]

@@ -108,7 +108,8 @@ def derived_bound(sensors, target, u_max) -> float:
     >>> import numpy as np
     >>> from obslib.studies import eq4
     >>> sensors, target = np.array([[0.0, 0.0], [2.0, 0.0]]), np.array([1.0, 1.0])
-    >>> bool(np.isclose(eq4.derived_bound(sensors, target, 1.0), np.sqrt(0.5), rtol=1e-12))
+    >>> d = eq4.derived_bound(sensors, target, 1.0)
+    >>> bool(np.isclose(d, np.sqrt(0.5), rtol=1e-12))
     True
     >>> worst, _ = eq4.worst_derived_on_disc(sensors, target, 1.0)
     >>> bool(np.isclose(worst, np.sqrt(0.5), rtol=1e-12))
@@ -132,8 +133,10 @@ def worst_derived_on_disc(sensors, target, u_max, n_radii: int = 20, n_angles: i
     >>> import numpy as np
     >>> from obslib.studies import eq4
     >>> sensors, target = np.array([[0.0, 0.0], [2.0, 0.0]]), np.array([1.0, 1.0])
-    >>> value, u = eq4.worst_derived_on_disc(sensors, target, 1.0, n_radii=4, n_angles=8)
-    >>> round(value, 12) == round(eq4.derived_bound(sensors, target, 1.0), 12), float(np.hypot(*u))
+    >>> value, u = eq4.worst_derived_on_disc(sensors, target, 1.0, n_radii=4,
+    ...                                      n_angles=8)
+    >>> d = eq4.derived_bound(sensors, target, 1.0)
+    >>> round(value, 12) == round(d, 12), float(np.hypot(*u))
     (True, 1.0)
     """
     um = _u_max(u_max)
@@ -165,7 +168,8 @@ def bound_ratio(sensors, target, u_max) -> float:
     >>> import numpy as np
     >>> from obslib.studies import eq4
     >>> sensors, target = np.array([[0.0, 0.0], [2.0, 0.0]]), np.array([1.0, 1.0])
-    >>> bool(np.isclose(eq4.bound_ratio(sensors, target, 1.0), np.sqrt(3) / 2, rtol=1e-12))
+    >>> r = eq4.bound_ratio(sensors, target, 1.0)
+    >>> bool(np.isclose(r, np.sqrt(3) / 2, rtol=1e-12))
     True
     """
     tb = lower_bound(sensors, target, u_max)
@@ -184,7 +188,8 @@ def pair_choice_changes(n_scenes: int, n_sensors: int, u_max: float, seed: int =
     >>> from obslib.studies import eq4
     >>> 0.0 <= eq4.pair_choice_changes(20, 4, 1.0) <= 1.0
     True
-    >>> eq4.pair_choice_changes(20, 4, 0.0)  # without motion both matrices rank pairs alike
+    >>> # without motion both matrices rank pairs alike
+    >>> eq4.pair_choice_changes(20, 4, 0.0)
     0.0
     """
     if isinstance(n_scenes, bool) or not isinstance(n_scenes, (int, np.integer)) or n_scenes < 1:

@@ -70,7 +70,8 @@ def metric_choices(name: str = "best-pair") -> dict:
     --------
     >>> from obslib.studies.experiment_details import metric_choices
     >>> m = metric_choices("best-pair")
-    >>> sorted(m["pairs"]), m["pairs"]["mixed"].shape[1], 0.0 <= m["agree_euclidean"] <= 1.0
+    >>> (sorted(m["pairs"]), m["pairs"]["mixed"].shape[1],
+    ...  0.0 <= m["agree_euclidean"] <= 1.0)
     (['euclidean', 'mixed', 'whitened'], 2, True)
     """
     if name not in ("best-pair", "adversarial"):
@@ -122,7 +123,8 @@ def control_set_gap(n_radii: int = 20, n_angles: int = 360) -> dict:
     >>> import numpy as np
     >>> from obslib.studies.experiment_details import control_set_gap
     >>> g = control_set_gap(n_radii=2, n_angles=8)
-    >>> g["paper"].shape == g["disc"].shape, bool(np.allclose(g["gap"], g["paper"] - g["disc"]))
+    >>> (g["paper"].shape == g["disc"].shape,
+    ...  bool(np.allclose(g["gap"], g["paper"] - g["disc"])))
     (True, True)
     """
     for nm, v in (("n_radii", n_radii), ("n_angles", n_angles)):

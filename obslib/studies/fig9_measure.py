@@ -58,7 +58,8 @@ def literal_logdet_counts(sensors, targets, nan: str = "ignore") -> np.ndarray:
     >>> import numpy as np
     >>> from obslib.studies.fig9_measure import literal_logdet_counts
     >>> rng = np.random.default_rng(0)
-    >>> literal_logdet_counts(rng.uniform(0, 10, (4, 2)), rng.uniform(0, 10, (2, 2))).tolist()
+    >>> S, T = rng.uniform(0, 10, (4, 2)), rng.uniform(0, 10, (2, 2))
+    >>> literal_logdet_counts(S, T).tolist()
     [4, 0]
     """
     if nan not in NAN_RULES:

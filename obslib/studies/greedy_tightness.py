@@ -87,7 +87,8 @@ def first_pick_margin(sensors, targets, u_max: float = 1.0) -> dict:
     >>> import numpy as np
     >>> from obslib.studies.greedy_tightness import first_pick_margin
     >>> rng = np.random.default_rng(1)
-    >>> m = first_pick_margin(rng.uniform(0, 10, (6, 2)), rng.uniform(0, 10, (3, 2)))
+    >>> S, T = rng.uniform(0, 10, (6, 2)), rng.uniform(0, 10, (3, 2))
+    >>> m = first_pick_margin(S, T)
     >>> m["relative_margin"] >= 0, 1 / 3 <= m["ratio"] <= 1
     (True, True)
     """
@@ -136,7 +137,8 @@ def jitter_ratios(sensors, targets, fractions, n_draws: int, seed: int = 0, u_ma
     Without jitter every draw is the ratio of the geometry itself:
 
     >>> import numpy as np
-    >>> from obslib.studies.greedy_tightness import first_pick_margin, jitter_ratios
+    >>> from obslib.studies.greedy_tightness import (first_pick_margin,
+    ...                                              jitter_ratios)
     >>> rng = np.random.default_rng(1)
     >>> S, T = rng.uniform(0, 10, (6, 2)), rng.uniform(0, 10, (3, 2))
     >>> r = jitter_ratios(S, T, [0.0, 0.1], n_draws=3)

@@ -107,7 +107,8 @@ def fig8_summary(sweep: dict) -> Fig8Summary:
     Examples
     --------
     >>> s = fig8_summary(fig8_sweep([1, 2], trials=3, seed=0))
-    >>> s.L.tolist(), round(float(s.ratio[0]), 12), bool((s.mean["greedy"] <= s.mean["relaxed"]).all())
+    >>> (s.L.tolist(), round(float(s.ratio[0]), 12),
+    ...  bool((s.mean["greedy"] <= s.mean["relaxed"]).all()))
     ([1, 2], 1.0, True)
     """
     missing = [k for k in (*FIG8_KEYS, "L") if k not in sweep]

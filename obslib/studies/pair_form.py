@@ -114,8 +114,9 @@ def max_difference_at_rational_points(
     --------
     >>> import sympy as sp
     >>> from obslib import symbolic as sy
-    >>> d = max_difference_at_rational_points(sp.sin(sy.THETA)**2 + sp.cos(sy.THETA)**2, 1,
-    ...                                       {sy.THETA: (0.0, 3.0)}, n_points=5)
+    >>> expr = sp.sin(sy.THETA)**2 + sp.cos(sy.THETA)**2
+    >>> d = max_difference_at_rational_points(expr, 1, {sy.THETA: (0.0, 3.0)},
+    ...                                       n_points=5)
     >>> d < 1e-40
     True
     """
@@ -211,8 +212,8 @@ def fig2_grids(u_max: float, d_io: float, alpha_max: float, paper_step: float,
     On the published grid the maximum misses :math:`1/\sqrt{2}`; on the fine grid it is attained at
     :math:`\alpha = 1`, :math:`\theta = \pm\pi/2`:
 
-    >>> g = fig2_grids(1.0, 1.0, alpha_max=5.0, paper_step=0.1, fine_alpha_per_unit=20,
-    ...                fine_theta_quarter=30)
+    >>> g = fig2_grids(1.0, 1.0, alpha_max=5.0, paper_step=0.1,
+    ...                fine_alpha_per_unit=20, fine_theta_quarter=30)
     >>> round(g["paper"].maximum.value, 4), round(g["fine"].maximum.value, 6)
     (0.7005, 0.707107)
     >>> [(a, round(t / np.pi, 6)) for a, t in g["fine"].maximum.points]
@@ -275,8 +276,10 @@ def theorem4_audit(
 
     Examples
     --------
-    >>> a = theorem4_audit(n_rational_points=3, n_random_points=5, seed=0, digits=20)
-    >>> a.polar_matrix_printed_equal, a.eigenvalues_printed_equal, a.theorem4_ratio_equal
+    >>> a = theorem4_audit(n_rational_points=3, n_random_points=5, seed=0,
+    ...                    digits=20)
+    >>> (a.polar_matrix_printed_equal, a.eigenvalues_printed_equal,
+    ...  a.theorem4_ratio_equal)
     (True, True, True)
     >>> a.max_error_pair_bounds < 1e-12
     True
@@ -416,9 +419,10 @@ def theorem5_audit(
 
     Examples
     --------
-    >>> a = theorem5_audit((0.0, 1.0), alpha_max=2.0, alpha_per_unit=4, theta_quarter=4,
-    ...                    n_rational_points=3)
-    >>> [round(float(v), 6) for v in a.grid_max], [round(float(v), 6) for v in a.predicted_max]
+    >>> a = theorem5_audit((0.0, 1.0), alpha_max=2.0, alpha_per_unit=4,
+    ...                    theta_quarter=4, n_rational_points=3)
+    >>> ([round(float(v), 6) for v in a.grid_max],
+    ...  [round(float(v), 6) for v in a.predicted_max])
     ([1.0, 0.707107], [1.0, 0.707107])
     >>> a.symbolic_max_exact
     True

@@ -271,7 +271,8 @@ def seed_typicality(n_seeds: int, first_seed: int = 0) -> dict:
     --------
     >>> from obslib.studies.replay import seed_typicality
     >>> s = seed_typicality(3)
-    >>> round(s["published"], 3), len(s["per_run"]), 0.0 <= s["percentile"] <= 100.0
+    >>> (round(s["published"], 3), len(s["per_run"]),
+    ...  0.0 <= s["percentile"] <= 100.0)
     (0.788, 3, True)
     """
     if isinstance(n_seeds, bool) or not isinstance(n_seeds, (int, np.integer)) or n_seeds < 1:

@@ -175,6 +175,7 @@ def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[d
 
 
 #: Column headers of :func:`robustness_table`: what is varied and the values tried.
+#: Each header is Markdown with TeX math, typeset in the table.
 #:
 #: :meta hide-value:
 HEADERS = {
@@ -238,7 +239,17 @@ def robustness_table(rows, link=None, statuses=None) -> str:
 
 
 def write_json(rows, path, base: str = "quick") -> None:
-    """Store :func:`verdict_robustness`'s rows with the base profile and the dimensions tried."""
+    """Store :func:`verdict_robustness`'s rows with the base profile and the dimensions tried.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> path = Path(tempfile.mkdtemp()) / "robustness.json"
+    >>> write_json([{"claim": "x", "holds": True}], path)
+    >>> data = json.loads(path.read_text())
+    >>> data["base"], data["rows"], set(data["dimensions"]) == set(DIMENSIONS)
+    ('quick', [{'claim': 'x', 'holds': True}], True)
+    """
     data = {"base": base, "dimensions": {k: list(v) for k, v in DIMENSIONS.items()},
             "rows": rows}
     text = json.dumps(data, indent=1) + "\n"
@@ -248,7 +259,22 @@ def write_json(rows, path, base: str = "quick") -> None:
 
 
 def read_json(path) -> dict:
-    """The data of :func:`write_json`: ``base``, ``dimensions`` and ``rows``."""
+    """The data of :func:`write_json`: ``base``, ``dimensions`` and ``rows``.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> path = Path(tempfile.mkdtemp()) / "robustness.json"
+    >>> write_json([{"claim": "x"}], path, base="paper")
+    >>> data = read_json(path)
+    >>> data["base"], data["rows"]
+    ('paper', [{'claim': 'x'}])
+    >>> _ = path.write_text("[1, 2]")
+    >>> read_json(path)
+    Traceback (most recent call last):
+    ...
+    ValueError: ...: not a robustness data file (keys base, dimensions, rows)
+    """
     path = Path(path)
     try:
         data = json.loads(path.read_text())

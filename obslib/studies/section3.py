@@ -175,7 +175,8 @@ def theorem3_audit(n_trials: int, seed: int) -> Theorem3Audit:
     Examples
     --------
     >>> a = theorem3_audit(n_trials=500, seed=0)
-    >>> a.counts["stated"], a.printed_implies_stated, a.remark2_necessary_violations
+    >>> (a.counts["stated"], a.printed_implies_stated,
+    ...  a.remark2_necessary_violations)
     ((168, 0), True, 0)
     """
     rng = np.random.default_rng(seed)
@@ -253,7 +254,8 @@ def remark1_audit(n_scenes: int, seed: int, n_radii: int = 8, n_angles: int = 64
     Examples
     --------
     >>> a = remark1_audit(n_scenes=50, seed=0)
-    >>> a.max_stationary_error < 1e-12, a.max_moving_error < 1e-12, a.min_over_disc_gap >= -1e-12
+    >>> (a.max_stationary_error < 1e-12, a.max_moving_error < 1e-12,
+    ...  a.min_over_disc_gap >= -1e-12)
     (True, True, True)
     """
     batch = random_scene_batch(n_scenes, seed, kinds=("generic", "spread"))

@@ -303,7 +303,8 @@ def measure_audit(name: str, n_instances: int, n_sensors: int, seed: int, eps: f
 
     Examples
     --------
-    >>> a = measure_audit("logdet", 20, 4, seed=0, eps=1.0, u_max=1.0, config=CONFIGS[0][0])
+    >>> a = measure_audit("logdet", 20, 4, seed=0, eps=1.0, u_max=1.0,
+    ...                   config=CONFIGS[0][0])
     >>> a.n_instances, a.increasing, a.submodular
     (40, True, True)
     """
@@ -324,7 +325,8 @@ def theorem8_audit(n_instances: int, n_sensors: int, seed: int, eps: float,
     Examples
     --------
     >>> rows = theorem8_audit(20, 4, 0, 1.0, 1.0)
-    >>> len(rows) == len(CONFIGS) * 5, sorted({r.measure for r in rows if not r.submodular})
+    >>> (len(rows) == len(CONFIGS) * 5,
+    ...  sorted({r.measure for r in rows if not r.submodular}))
     (True, ['neg_trace_inverse', 'trace_inverse'])
     """
     by_config = {c[0]: _measure_audits(MEASURES, n_instances, n_sensors, seed, eps, u_max, c[0])

@@ -25,7 +25,20 @@ __all__ = ["fig9_geometry", "fig9_trial", "fig9_trials", "fig9_sweep", "random_s
 
 def fig9_geometry(n_sensors, trial, seed, n_targets, side):
     """Sensors and targets of one Fig. 9 trial, uniform in the square of ``side``, seeded by
-    ``(seed, n_sensors, trial)`` so every study of Fig. 9 sees the same geometry."""
+    ``(seed, n_sensors, trial)`` so every study of Fig. 9 sees the same geometry.
+
+    Examples
+    --------
+    >>> S, T = fig9_geometry(10, trial=0, seed=0, n_targets=3, side=100.0)
+    >>> S.shape, T.shape, bool(((S >= 0) & (S <= 100)).all())
+    ((10, 2), (3, 2), True)
+    >>> rng = np.random.default_rng([0, 10, 0])  # sensors first, then targets
+    >>> bool((S == rng.uniform(0, 100, (10, 2))).all())
+    True
+    >>> S1, _ = fig9_geometry(10, trial=1, seed=0, n_targets=3, side=100.0)
+    >>> bool((S1 != S).any())
+    True
+    """
     rng = np.random.default_rng([seed, n_sensors, trial])
     return rng.uniform(0, side, size=(n_sensors, 2)), rng.uniform(0, side, size=(n_targets, 2))
 

@@ -90,9 +90,12 @@ def partner_summary(runs: dict) -> dict:
     >>> from obslib import tracking
     >>> from obslib.studies.tracking import partner_arms, partner_summary
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
-    >>> s = partner_summary(tracking.simulate_many(partner_arms(setup), seeds=[0, 1]))
-    >>> sorted(s), sorted(s[0])
-    ([0, 2, 3, 4, 5], ['lost', 'mean_bound', 'mean_error', 'mean_trace', 'median_error'])
+    >>> runs = tracking.simulate_many(partner_arms(setup), seeds=[0, 1])
+    >>> s = partner_summary(runs)
+    >>> sorted(s)
+    [0, 2, 3, 4, 5]
+    >>> sorted(s[0])
+    ['lost', 'mean_bound', 'mean_error', 'mean_trace', 'median_error']
     """
     out = {}
     for j, r in runs.items():
@@ -132,8 +135,10 @@ def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> di
     >>> from obslib.studies.tracking import partner_study
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
     >>> ps = partner_study(setup, n_seeds=2)
-    >>> mc = tracking.monte_carlo(setup.replace(fixed_pair=(1, 0)), 2, ["fixed-pair"])
-    >>> bool(np.isclose(ps[0]["mean_error"], mc["fixed-pair"].error[:, 1:].mean(), rtol=1e-9))
+    >>> fixed = setup.replace(fixed_pair=(1, 0))
+    >>> mc = tracking.monte_carlo(fixed, 2, ["fixed-pair"])
+    >>> e = mc["fixed-pair"].error[:, 1:].mean()
+    >>> bool(np.isclose(ps[0]["mean_error"], e, rtol=1e-9))
     True
     """
     tr.check_setup(setup)
@@ -151,12 +156,12 @@ def best_partners(ps: dict) -> dict:
     Examples
     --------
     >>> from obslib.studies.tracking import best_partners
-    >>> ps = {0: {"mean_trace": 1.0, "mean_error": 2.0, "median_error": 2.0, "lost": 0.0,
-    ...           "mean_bound": 0.5},
-    ...       2: {"mean_trace": 0.5, "mean_error": 3.0, "median_error": 1.0, "lost": 0.0,
-    ...           "mean_bound": 0.7}}
-    >>> best_partners(ps)
-    {'mean_trace': 2, 'mean_error': 0, 'median_error': 2, 'lost': 0, 'mean_bound': 2}
+    >>> keys = ("mean_trace", "mean_error", "median_error", "lost", "mean_bound")
+    >>> ps = {0: dict(zip(keys, (1.0, 2.0, 2.0, 0.0, 0.5))),
+    ...       2: dict(zip(keys, (0.5, 3.0, 1.0, 0.0, 0.7)))}
+    >>> best = best_partners(ps)
+    >>> list(best) == list(keys), [best[k] for k in keys]
+    (True, [2, 0, 2, 0, 2])
     """
     best = {key: min(ps, key=lambda j: ps[j][key])
             for key in ("mean_trace", "mean_error", "median_error", "lost")}
@@ -329,10 +334,11 @@ def entrapment_summary(batch: BatchResult) -> dict:
     --------
     >>> from obslib import tracking
     >>> from obslib.studies.tracking import entrapment_summary
-    >>> batch = tracking.simulate_batch(tracking.PAPER_ADVERSARIAL.replace(steps=20), "best-pair",
-    ...                                 seeds=[0, 1])
+    >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=20)
+    >>> batch = tracking.simulate_batch(setup, "best-pair", seeds=[0, 1])
     >>> s = entrapment_summary(batch)
-    >>> len(s["runs"]), 0.0 <= s["entrapped"] <= 1.0, s["max_from_start"] <= s["reach"]
+    >>> (len(s["runs"]), 0.0 <= s["entrapped"] <= 1.0,
+    ...  s["max_from_start"] <= s["reach"])
     (2, True, True)
     """
     batch.true_icn, batch.objective  # computed once for all runs
@@ -371,9 +377,11 @@ def switch_mechanism(result: TrackingResult) -> dict:
     --------
     >>> from obslib import tracking
     >>> from obslib.studies.tracking import switch_mechanism
-    >>> r = tracking.simulate(tracking.PAPER_ADVERSARIAL.replace(steps=20), "best-pair", seed=0)
+    >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=20)
+    >>> r = tracking.simulate(setup, "best-pair", seed=0)
     >>> m = switch_mechanism(r)
-    >>> m["transitions"], m["switches"] == int(r.switched.sum()), 0 <= m["closer"] <= 19
+    >>> (m["transitions"], m["switches"] == int(r.switched.sum()),
+    ...  0 <= m["closer"] <= 19)
     (19, True, True)
     """
     s = result.setup.sensor_array
@@ -411,8 +419,8 @@ def pooled_switch_mechanism(batch: BatchResult) -> dict:
     --------
     >>> from obslib import tracking
     >>> from obslib.studies.tracking import pooled_switch_mechanism
-    >>> batch = tracking.simulate_batch(tracking.PAPER_ADVERSARIAL.replace(steps=20), "best-pair",
-    ...                                 seeds=[0, 1])
+    >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=20)
+    >>> batch = tracking.simulate_batch(setup, "best-pair", seeds=[0, 1])
     >>> p = pooled_switch_mechanism(batch)
     >>> p["transitions"], p["switches"] == int(batch.switched.sum())
     (38, True)

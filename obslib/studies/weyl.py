@@ -56,7 +56,8 @@ def weyl_audit(n_pairs: int, seed: int) -> WeylAudit:
     Examples
     --------
     >>> a = weyl_audit(n_pairs=200, seed=0)
-    >>> all(a.symbolic_triangle_equal.values()), min(a.min_relative_slack.values()) >= -1e-14
+    >>> (all(a.symbolic_triangle_equal.values()),
+    ...  min(a.min_relative_slack.values()) >= -1e-14)
     (True, True)
     >>> a.invalid_indices
     ((1, 1, 0),)

@@ -5,7 +5,8 @@ The paper states the pair bound in polar form (Theorem 4, Eq. (9)):
 .. math::
 
    C^{-1}(O_{ij}(o, u_o)) = \sqrt{\frac{1 + \alpha^2 - S}{1 + \alpha^2 + S + 2 u^2 / d_{io}^2}},
-   \quad S = \sqrt{1 + \alpha^4 + 2 \alpha^2 \cos 2\theta_{ji}}, \quad \alpha = d_{jo} / d_{io},
+
+   S = \sqrt{1 + \alpha^4 + 2 \alpha^2 \cos 2\theta_{ji}}, \qquad \alpha = d_{jo} / d_{io},
 
 and proves it (appendix, proof of Theorem 4) from :math:`O_{ij}(o)^T O_{ij}(o)` written in
 Cartesian coordinates (Eq. (32)) and in the polar coordinates of Eq. (8). Theorem 5 locates its
@@ -38,7 +39,8 @@ remainders), not by the heuristic ``sympy.simplify``: an expansion that returns 
 Examples
 --------
 >>> from obslib import symbolic as sy
->>> sy.theorem4_residuals()["ratio"], sy.max_value_exact(), sy.closed_forms_hold()["dalpha"]
+>>> (sy.theorem4_residuals()["ratio"], sy.max_value_exact(),
+...  sy.closed_forms_hold()["dalpha"])
 (0, 0, True)
 """
 

@@ -212,7 +212,8 @@ def polar_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
 
     >>> import sympy as sp
     >>> from obslib import symbolic as sy
-    >>> [sp.expand(a - b) for a, b in zip(sy.polar_eigenvalues(), sy.printed_eigenvalues())]
+    >>> pairs = zip(sy.polar_eigenvalues(), sy.printed_eigenvalues())
+    >>> [sp.expand(a - b) for a, b in pairs]
     [0, 0]
     """
     tr, v0, v1 = _eigen_parts(polar_gram())
@@ -240,9 +241,11 @@ def pythagorean_remainder(expr: sp.Expr) -> sp.Expr:
     --------
     >>> import sympy as sp
     >>> from obslib import symbolic as sy
-    >>> sy.pythagorean_remainder(sp.cos(2 * sy.THETA_I) - 1 + 2 * sp.sin(sy.THETA_I) ** 2)
+    >>> t = sy.THETA_I
+    >>> sy.pythagorean_remainder(sp.cos(2 * t) - 1 + 2 * sp.sin(t) ** 2)
     0
-    >>> sy.pythagorean_remainder(sp.sin(sy.THETA_J) ** 2 + sp.cos(sy.THETA_J) ** 2 - 1 + sy.U)
+    >>> t = sy.THETA_J
+    >>> sy.pythagorean_remainder(sp.sin(t) ** 2 + sp.cos(t) ** 2 - 1 + sy.U)
     u
     """
     ci, si, cj, sj = sp.symbols("c_i s_i c_j s_j", real=True)

@@ -5,7 +5,8 @@ The paper states the pair bound in polar form:
 .. math::
 
    C^{-1}(O_{ij}(o, u_o)) = \sqrt{\frac{1 + \alpha^2 - S}{1 + \alpha^2 + S + 2 u^2 / d_{io}^2}},
-   \quad S = \sqrt{1 + \alpha^4 + 2 \alpha^2 \cos 2\theta_{ji}}, \quad \alpha = d_{jo} / d_{io}.
+
+   S = \sqrt{1 + \alpha^4 + 2 \alpha^2 \cos 2\theta_{ji}}, \qquad \alpha = d_{jo} / d_{io}.
 
 This module writes it in :math:`\alpha`, :math:`\theta = \theta_{ji}` and :math:`q = u / d_{io}`,
 reduces Theorem 1's ratio of the derived eigenvalues to it, and collects every comparison with

@@ -252,7 +252,8 @@ def printed_dbound_dalpha_halfpi() -> sp.Expr:
 
     >>> import sympy as sp
     >>> from obslib import symbolic as sy
-    >>> sy.printed_dbound_dalpha_halfpi().subs({sy.ALPHA: sp.Rational(1, 2), sy.Q: 0})
+    >>> half = sp.Rational(1, 2)
+    >>> sy.printed_dbound_dalpha_halfpi().subs({sy.ALPHA: half, sy.Q: 0})
     3*sqrt(2)/64
     """
     return ALPHA * (1 - ALPHA**2) / (
@@ -271,8 +272,9 @@ def printed_max_halfpi() -> sp.Expr:
 
     >>> import sympy as sp
     >>> from obslib import symbolic as sy
-    >>> [sp.simplify((sy.printed_max_halfpi() - sy.bound_halfpi_piecewise()).subs(
-    ...     {sy.ALPHA: a, sy.Q: sp.Rational(1, 3)})) for a in (sp.Rational(1, 2), 3)]
+    >>> diff = sy.printed_max_halfpi() - sy.bound_halfpi_piecewise()
+    >>> [sp.simplify(diff.subs({sy.ALPHA: a, sy.Q: sp.Rational(1, 3)}))
+    ...  for a in (sp.Rational(1, 2), 3)]
     [0, 0]
     """
     a = sp.Abs(1 - ALPHA**2)

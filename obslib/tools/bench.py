@@ -74,7 +74,7 @@ def one_pass(sensors, targets, u_max, chunk: int = 1 << 20) -> float:
 
     Examples
     --------
-    >>> one_pass([[0, 0], [1, 0], [3, 1]], [[1, 1]], 1.0) >= 0  # seconds for one full pass
+    >>> one_pass([[0, 0], [1, 0], [3, 1]], [[1, 1]], 1.0) >= 0  # in seconds
     True
     """
     from ..assignment import upper_pair_weight_blocks
@@ -128,7 +128,7 @@ def literal_count(n_sensors: int, n_targets: int) -> int:
 
     Examples
     --------
-    >>> literal_count(4, 2)  # round 1: 6 pairs x 2 targets, round 2: 1 pair x 1 target
+    >>> literal_count(4, 2)  # 6 pairs x 2 targets, then 1 pair x 1 target
     13
     """
     return sum((n_sensors - 2 * r) * (n_sensors - 2 * r - 1) // 2 * (n_targets - r) for r in range(n_targets))

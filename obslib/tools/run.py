@@ -117,12 +117,13 @@ def plan(paths, profile: str | None, overrides: dict, in_place: bool) -> list:
 
     Examples
     --------
-    >>> [(nb.stem, params) for nb, _, params in plan(resolve(["05"]), None, {"n_seeds": 3}, False)]
+    >>> steps = plan(resolve(["05"]), None, {"n_seeds": 3}, False)
+    >>> [(nb.stem, params) for nb, _, params in steps]
     [('05_two_sensors_tracking', {'n_seeds': 3})]
     >>> plan(resolve(["05"]), None, {"n_seeds": 2.5}, False)
     Traceback (most recent call last):
     ...
-    ValueError: notebook 05_two_sensors_tracking: parameter n_seeds = 2.5 is not accepted; expected an integer >= 1
+    ValueError: ...n_seeds = 2.5 is not accepted; expected an integer >= 1
     """
     from ..profiles import PROFILES, check_parameters, params
 
@@ -203,7 +204,8 @@ def execute(src: Path, dst: Path, parameters: dict | None = None) -> float:
     --------
     Executing a notebook starts a kernel (seconds), so the example is not run:
 
-    >>> execute(resolve(["01"])[0], RUNS_DIR / "custom" / "01.ipynb", {"n_scenes": 10})  # doctest: +SKIP
+    >>> out = RUNS_DIR / "custom" / "01.ipynb"
+    >>> execute(resolve(["01"])[0], out, {"n_scenes": 10})  # doctest: +SKIP
     3.2
     """
     import papermill as pm

@@ -70,7 +70,8 @@ def adversary_moves(eval_ps, o, controls, basis=None, barred=None) -> np.ndarray
     >>> ps = np.array([[[0.0, 0.0], [4.0, 0.0]]])
     >>> o = np.array([[2.0, 2.0]])
     >>> ctrl = paper_controls(0.1)
-    >>> int(adversary_moves(ps, o, ctrl)[0]) == int(np.argmin(target_objective(ps[0], o[0], ctrl)))
+    >>> best = np.argmin(target_objective(ps[0], o[0], ctrl))
+    >>> int(adversary_moves(ps, o, ctrl)[0]) == int(best)
     True
     """
     if basis is None:

@@ -339,7 +339,8 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=30)
     >>> eu = setup.replace(metric="euclidean")
-    >>> arms = {"bound": (setup, "best-pair"), "eu": (eu, "best-pair"), "d": (setup, "d-optimal")}
+    >>> arms = {"bound": (setup, "best-pair"), "eu": (eu, "best-pair"),
+    ...         "d": (setup, "d-optimal")}
     >>> runs = tracking.simulate_many(arms, seeds=[0, 1, 2])
     >>> runs["eu"].pairs.shape, runs["eu"].seeds
     ((3, 30, 2), (0, 1, 2))
@@ -451,7 +452,8 @@ def monte_carlo(
     ...                           ["best-pair", "d-optimal", "random"])
     >>> {name: r.pairs.shape for name, r in mc.items()}
     {'best-pair': (4, 30, 2), 'd-optimal': (4, 30, 2), 'random': (4, 30, 2)}
-    >>> bool((mc["random"].noise == mc["best-pair"].noise).all())  # common random numbers
+    >>> # common random numbers
+    >>> bool((mc["random"].noise == mc["best-pair"].noise).all())
     True
     """
     n_seeds = check_count(n_seeds, "n_seeds")

@@ -331,9 +331,11 @@ def fixed_pair_bound(sx, sy, i, j, u2, x, c, maha) -> np.ndarray:
     >>> from obslib.tracking.criteria import fixed_pair_bound
     >>> sensors = np.array([[0.0, 0.0], [4.0, 0.0], [1.0, 3.0]])
     >>> x = np.array([[2.0, 1.0]])
-    >>> b = fixed_pair_bound(sensors[:, 0], sensors[:, 1], np.array([0]), np.array([2]), 0.25,
-    ...                      x, np.eye(2)[None], np.array([False]))
-    >>> bool(np.isclose(b[0], ob.pair_bounds(sensors, x, 0.5)[0, 2, 0], rtol=1e-12))
+    >>> b = fixed_pair_bound(sensors[:, 0], sensors[:, 1], np.array([0]),
+    ...                      np.array([2]), 0.25, x, np.eye(2)[None],
+    ...                      np.array([False]))
+    >>> W = ob.pair_bounds(sensors, x, 0.5)
+    >>> bool(np.isclose(b[0], W[0, 2, 0], rtol=1e-12))
     True
     """
     out = np.empty(x.shape[0])
@@ -452,11 +454,13 @@ def choose_pairs(setup, strategy: str, xhat, cov, control=None):
     --------
     >>> import numpy as np
     >>> from obslib.tracking import PAPER_CIRCLE
-    >>> pairs, bound = choose_pairs(PAPER_CIRCLE, "best-pair", [[5.5, 3.5]], [0.5 * np.eye(2)])
+    >>> x, cov = [[5.5, 3.5]], [0.5 * np.eye(2)]
+    >>> pairs, bound = choose_pairs(PAPER_CIRCLE, "best-pair", x, cov)
     >>> pairs.tolist(), bound.round(4).tolist()
     ([[3, 5]], [0.8736])
-    >>> [choose_pairs(PAPER_CIRCLE, name, [[5.5, 3.5]], [0.5 * np.eye(2)])[0][0].tolist()
-    ...  for name in ("d-optimal", "a-optimal", "e-optimal")]  # the criteria disagree here
+    >>> # the criteria disagree here
+    >>> [choose_pairs(PAPER_CIRCLE, name, x, cov)[0][0].tolist()
+    ...  for name in ("d-optimal", "a-optimal", "e-optimal")]
     [[0, 2], [2, 5], [3, 5]]
     """
     from .._validate import as_points

@@ -98,7 +98,8 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
     Examples
     --------
     >>> from obslib import tracking
-    >>> r = tracking.simulate(tracking.PAPER_CIRCLE.replace(steps=20), "best-pair", seed=0)
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> r = tracking.simulate(setup, "best-pair", seed=0)
     >>> r.pairs[:2].tolist(), round(float(r.bound[0]), 4), r.error.shape
     ([[3, 5], [3, 5]], 0.8736, (20,))
     """

@@ -138,7 +138,8 @@ def inverse_condition(rows) -> np.ndarray:
     --------
     >>> import numpy as np
     >>> from obslib.tracking.model import inverse_condition
-    >>> inverse_condition([[[1.0, 0.0], [0.0, 2.0]], [[1.0, 1.0], [2.0, 2.0]]]).round(12).tolist()
+    >>> rows = [[[1.0, 0.0], [0.0, 2.0]], [[1.0, 1.0], [2.0, 2.0]]]
+    >>> inverse_condition(rows).round(12).tolist()
     [0.5, 0.0]
     """
     return _kernels.inverse_condition(np.asarray(rows, dtype=float))
@@ -164,7 +165,8 @@ def target_objective(pair_sensors, position, controls) -> np.ndarray:
 
     Examples
     --------
-    >>> target_objective([[0.0, 0.0], [4.0, 0.0]], [2.0, 2.0], [[0.0, 0.0], [0.1, 0.0]]).round(4)
+    >>> target_objective([[0.0, 0.0], [4.0, 0.0]], [2.0, 2.0],
+    ...                  [[0.0, 0.0], [0.1, 0.0]]).round(4)
     array([1.    , 0.9512])
     """
     ps = np.asarray(pair_sensors, dtype=float)

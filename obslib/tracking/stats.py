@@ -190,7 +190,8 @@ def switch_back_fraction(batch: BatchResult) -> float:
     --------
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
-    >>> tracking.switch_back_fraction(tracking.simulate_batch(setup, "fixed-pair", seeds=[0, 1]))
+    >>> batch = tracking.simulate_batch(setup, "fixed-pair", seeds=[0, 1])
+    >>> tracking.switch_back_fraction(batch)
     0.0
     >>> b = tracking.simulate_batch(setup, "best-pair", seeds=[0, 1])
     >>> 0.0 <= tracking.switch_back_fraction(b) <= 1.0
@@ -208,7 +209,8 @@ def switch_rate(batch: BatchResult) -> np.ndarray:
     --------
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
-    >>> rate = tracking.switch_rate(tracking.simulate_batch(setup, "fixed-pair", seeds=[0, 1]))
+    >>> batch = tracking.simulate_batch(setup, "fixed-pair", seeds=[0, 1])
+    >>> rate = tracking.switch_rate(batch)
     >>> rate.shape, float(rate.max())
     ((19,), 0.0)
     """
@@ -235,7 +237,8 @@ def bound_correlation(batch: BatchResult, bound: str = "own", skip_first: bool =
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
     >>> b = tracking.simulate_batch(setup, "best-pair", seeds=[0, 1, 2])
     >>> rho = tracking.bound_correlation(b, "euclidean")
-    >>> {k: v.shape for k, v in rho.items()}, bool((np.abs(rho["error"]) <= 1).all())
+    >>> ({k: v.shape for k, v in rho.items()},
+    ...  bool((np.abs(rho["error"]) <= 1).all()))
     ({'error': (3,), 'trace': (3,)}, True)
     """
     _batch(batch)
@@ -376,7 +379,8 @@ def entrapment(result: TrackingResult) -> Entrapment:
     Examples
     --------
     >>> from obslib import tracking
-    >>> r = tracking.simulate(tracking.PAPER_ADVERSARIAL.replace(steps=20), "best-pair", seed=0)
+    >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=20)
+    >>> r = tracking.simulate(setup, "best-pair", seed=0)
     >>> e = tracking.entrapment(r)
     >>> e.transitions, e.max_from_start <= e.reach, 0 <= e.switches <= 19
     (19, True, True)
@@ -422,7 +426,8 @@ def is_entrapped(e: Entrapment, reach_fraction=None, bound_mean=None, icn_min=No
     Criteria that every run meets, and a bound no run reaches (:math:`C^{-1} \\le 1`):
 
     >>> from obslib import tracking
-    >>> r = tracking.simulate(tracking.PAPER_ADVERSARIAL.replace(steps=20), "best-pair", seed=0)
+    >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=20)
+    >>> r = tracking.simulate(setup, "best-pair", seed=0)
     >>> e = tracking.entrapment(r)
     >>> tracking.is_entrapped(e, reach_fraction=1.0, bound_mean=0.0, icn_min=0.0)
     True

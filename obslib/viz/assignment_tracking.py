@@ -27,8 +27,8 @@ def plot_assignment_errors(runs: dict, figsize=(8.5, 3.4)):
     >>> def runs_of(errors, n):
     ...     return SimpleNamespace(run_mean_error=lambda: np.asarray(errors),
     ...                            setup=SimpleNamespace(n_sensors=n))
-    >>> runs = {L: {"bound": runs_of([1.0, 2.0], 2 * L), "random": runs_of([2.0, 3.0], 2 * L)}
-    ...         for L in (2, 3)}
+    >>> runs = {L: {"bound": runs_of([1.0, 2.0], 2 * L),
+    ...             "random": runs_of([2.0, 3.0], 2 * L)} for L in (2, 3)}
     >>> fig = plot_assignment_errors(runs)
     >>> [ax.get_title() for ax in fig.axes]
     ['L = 2 targets, N = 4 sensors', 'L = 3 targets, N = 6 sensors']

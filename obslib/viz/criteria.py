@@ -32,7 +32,8 @@ def plot_run_errors(study: dict, metric: str = "mahalanobis", figsize=(8.5, 5.6)
     >>> from obslib import tracking
     >>> from obslib.viz.criteria import plot_run_errors
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=10)
-    >>> mc = {s: tracking.simulate_batch(setup, s, seeds=[0, 1]) for s in ("best-pair", "random")}
+    >>> mc = {s: tracking.simulate_batch(setup, s, seeds=[0, 1])
+    ...       for s in ("best-pair", "random")}
     >>> fig = plot_run_errors({("circle", "mahalanobis"): mc})
     >>> len(fig.axes)
     1

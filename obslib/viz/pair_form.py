@@ -107,7 +107,8 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     >>> from obslib.pair_form import bound_surface, fine_grid, grid_maximum
     >>> alpha, theta = fine_grid(alpha_max=5.0, alpha_per_unit=10, theta_quarter=8)
     >>> Z = bound_surface(alpha, theta, u_max=1.0, d_io=1.0)
-    >>> fig = plot_fig2(alpha, theta, Z, [0.1, 0.3, 0.5, 0.7], mark=grid_maximum(alpha, theta, Z),
+    >>> mark = grid_maximum(alpha, theta, Z)
+    >>> fig = plot_fig2(alpha, theta, Z, [0.1, 0.3, 0.5, 0.7], mark=mark,
     ...                 panels="contour")
     >>> [ax.get_title() for ax in fig.axes]
     ['(b) contour', '(d) contour']

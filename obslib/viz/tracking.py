@@ -104,7 +104,8 @@ def draw_snapshot(ax, result, k: int, *, legend: bool = True, ellipse_scale=1.0)
     >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> from obslib.viz.tracking import draw_snapshot
-    >>> r = tracking.simulate(tracking.PAPER_CIRCLE.replace(steps=5), "best-pair", seed=0)
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=5)
+    >>> r = tracking.simulate(setup, "best-pair", seed=0)
     >>> fig, ax = plt.subplots()
     >>> _ = draw_snapshot(ax, r, 3)
     >>> ax.get_title().startswith("k = 3"), len(ax.texts)
@@ -247,7 +248,8 @@ def animate(result, every: int = 3, dpi: int = 100, figsize=(7.5, 3.6), interval
     >>> matplotlib.use("Agg")  # no window
     >>> from obslib import tracking
     >>> from obslib.viz.tracking import animate
-    >>> r = tracking.simulate(tracking.PAPER_CIRCLE.replace(steps=6), "best-pair", seed=0)
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=6)
+    >>> r = tracking.simulate(setup, "best-pair", seed=0)
     >>> animate(r, every=2, dpi=30).frames
     [1, 3, 5, 6]
     """
@@ -325,7 +327,8 @@ def animation_html(anim, uid: str = "anim") -> str:
     >>> matplotlib.use("Agg")  # no window
     >>> from obslib import tracking
     >>> from obslib.viz.tracking import animate, animation_html
-    >>> r = tracking.simulate(tracking.PAPER_CIRCLE.replace(steps=3), "best-pair", seed=0)
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=3)
+    >>> r = tracking.simulate(setup, "best-pair", seed=0)
     >>> html = animation_html(animate(r, dpi=30), uid="demo")
     >>> 'id="_anim_imgdemo"' in html, "//cdn" in html
     (True, False)
@@ -403,8 +406,8 @@ def draw_published_overlay(ax, published, replay=None, *, x=None, color="tab:blu
     --------
     >>> from matplotlib.figure import Figure
     >>> ax = Figure().add_subplot()
-    >>> ax = draw_published_overlay(ax, [0.5, 0.7, 0.6], [0.5, 0.7, 0.6], x=[1, 2, 3],
-    ...                             label="bound")
+    >>> y = [0.5, 0.7, 0.6]
+    >>> ax = draw_published_overlay(ax, y, y, x=[1, 2, 3], label="bound")
     >>> [line.get_label() for line in ax.get_lines()]
     ['bound, published', 'bound, replay']
     """
