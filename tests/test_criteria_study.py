@@ -8,6 +8,7 @@ from scipy import stats
 import obslib as ob
 from obslib import tracking as tr
 from obslib.studies import criteria as cs
+from obslib.studies import tracking as study
 
 RNG = np.random.default_rng(7)
 S = RNG.uniform(-3, 5, size=(5, 2))
@@ -160,7 +161,7 @@ def test_adversary_rows_equal_entrapment_summary():
     names = ["best-pair", "fixed-pair"] + [c for c in ("d-optimal",) if c in cs.available_strategies()]
     mc = tr.monte_carlo(setup, 4, names)
     for row in cs.adversary_rows(mc):
-        want = tr.entrapment_summary(mc[row["strategy"]])
+        want = study.entrapment_summary(mc[row["strategy"]])
         for key in ("entrapped", "max_from_start", "reach", "icn_mean", "icn_min", "bound_mean",
                     "switches", "mean_error"):
             assert row[key] == pytest.approx(want[key], rel=1e-12, abs=1e-15), key

@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 import obslib.tracking as tr
+from obslib.studies.published import PUBLISHED_ADVERSARIAL, PUBLISHED_CIRCLE
 from obslib.published_runs import RUN_NAMES, published_noise, published_run
 
 
@@ -50,14 +51,14 @@ def test_noise_recovered_independently_from_one_filter_update():
 def test_headline_numbers_of_the_runs():
     for name in ("best-pair", "best-partner", "fixed-pair"):
         r = published_run(name)
-        pub = tr.PUBLISHED_CIRCLE[name]
+        pub = PUBLISHED_CIRCLE[name]
         assert r.switches == pub["switches"]
         assert round(r.bound.mean(), 2) == pub["mean_bound"]
         assert round(r.error.mean(), 2) == pub["mean_error"]
         assert abs(r.trace_cov.mean() - pub["mean_trace"]) < 5e-4
     a = published_run("adversarial")
-    assert a.switches == tr.PUBLISHED_ADVERSARIAL["switches"]
-    assert round(a.bound.mean(), 2) == tr.PUBLISHED_ADVERSARIAL["mean_bound"]
+    assert a.switches == PUBLISHED_ADVERSARIAL["switches"]
+    assert round(a.bound.mean(), 2) == PUBLISHED_ADVERSARIAL["mean_bound"]
 
 
 def test_first_step_is_the_initial_filter_and_truth_follows_the_model():

@@ -11,7 +11,6 @@ from functools import lru_cache
 import numpy as np
 
 from ..studies import greedy_vs_relaxed as ast
-from .. import tracking as tr
 from ..assignment import relaxed_pair_assignment
 from ..studies import eq4, experiment_details as ed, hardness as hd
 from ..studies.unchecked import NOTEBOOK, notebook_params
@@ -25,29 +24,6 @@ def _r(x, n=4):
 # ---------------------------------------------------------------------------------------------
 # Section III: the matrix as derived vs Eq. (4)
 # ---------------------------------------------------------------------------------------------
-
-
-@lru_cache(maxsize=4)
-def _eq4(n_geometries: int, n_refine: int, seed: int, u_max: float):
-    rng = np.random.default_rng(seed)
-    out = {}
-    for side in (1.0, 100.0):
-        ratios = []
-        for _ in range(n_geometries):
-            n = int(rng.integers(2, 7))
-            S, o = rng.uniform(0, side, (n, 2)), rng.uniform(0, side, 2)
-            ratios.append(eq4.bound_ratio(S, o, u_max))
-        out[side] = np.array(ratios)
-    # the closed-form worst case against a grid search of the disc, and against Theorem 1
-    grid_err, below = 0.0, 0
-    for _ in range(n_refine):
-        n = int(rng.integers(2, 7))
-        S, o = rng.uniform(0, 1, (n, 2)), rng.uniform(0, 1, 2)
-        num, _u = eq4.worst_derived_on_disc(S, o, u_max, 10, 360)
-        cf = eq4.derived_bound(S, o, u_max)
-        grid_err = max(grid_err, num - cf)
-        below += int(num < eq4.lower_bound(S, o, u_max) * (1 - 1e-9))
-    return out, grid_err, below
 
 
 @claim(
@@ -66,7 +42,8 @@ def _eq4_collapse(profile: str) -> Finding:
     derived matrix's worst case (closed form, checked by a grid search of the disc) falls below
     it; refuted: not even Eq. (4) (that is ``thm1``)."""
     p = notebook_params(profile)
-    ratios, grid_err, below = _eq4(p["n_geometries"], p["n_refine"], p["seed"], p["u_max"])
+    ratios, grid_err, below = eq4.random_scene_audit(p["n_geometries"], p["n_refine"], p["seed"],
+                                                     p["u_max"])
     holds = below == 0
     status = "reproduced" if holds else "partly"
     small, big = ratios[1.0], ratios[100.0]
@@ -243,14 +220,6 @@ def _mahalanobis(profile: str) -> Finding:
     return Finding(status, ours, ev)
 
 
-@lru_cache(maxsize=4)
-def _disc(n_seeds: int, seed: int, n_radii: int, n_angles: int):
-    v = tr.adversary_variants(tr.PAPER_ADVERSARIAL, n_radii, n_angles)
-    seeds = range(seed, seed + n_seeds)
-    return {k: tr.entrapment_summary(tr.simulate_batch(v[k], "best-pair", seeds=seeds))
-            for k in ("paper", "disc")}
-
-
 @claim(
     id="sec5b-control-ball",
     where="Sec. V-B, Fig. 7",
@@ -268,7 +237,7 @@ def _control_ball(profile: str) -> Finding:
     ball frees the target (a lower entrapped share)."""
     p = notebook_params(profile)
     g = ed.control_set_gap(20, 360)
-    d = _disc(p["n_seeds_disc"], p["seed"], p["n_radii"], p["n_angles"])
+    d = ed.control_set_entrapment(p["n_seeds_disc"], p["seed"], p["n_radii"], p["n_angles"])
     freed = d["disc"]["entrapped"] < d["paper"]["entrapped"]
     status = "refuted" if freed else "partly"
     ours = (

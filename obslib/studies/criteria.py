@@ -412,7 +412,7 @@ def adversary_rows(mc: dict) -> list:
     the fraction of runs that entrap it (:data:`obslib.tracking.ENTRAPMENT_CRITERIA`), its
     largest distance from the start, the exact ``C^{-1}`` the sensors face (mean and minimum),
     the mean bound, mean switches and mean error: the numbers of
-    :func:`obslib.tracking.entrapment_summary`, computed over whole batches at once.
+    :func:`obslib.studies.tracking.entrapment_summary`, computed over whole batches at once.
 
     Examples
     --------

@@ -21,6 +21,8 @@ the two is ``sqrt((lambda_max + u_max^2) / (lambda_max + N u_max^2))``, which te
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 
 from ..bounds import lower_bound, pair_bounds
@@ -33,6 +35,7 @@ __all__ = [
     "worst_derived_on_disc",
     "bound_ratio",
     "pair_choice_changes",
+    "random_scene_audit",
 ]
 
 
@@ -207,3 +210,49 @@ def pair_choice_changes(n_scenes: int, n_sensors: int, u_max: float, seed: int =
         b = pair_bounds(S, o, np.sqrt(2) * um)[ii, jj, 0]
         changed += int(np.argmax(a) != np.argmax(b))
     return changed / int(n_scenes)
+
+
+@lru_cache(maxsize=4)
+def random_scene_audit(n_geometries: int, n_refine: int, seed: int, u_max: float):
+    """The matrix as derived against Eq. (4) on random scenes of 2 to 6 sensors.
+
+    ``n_geometries`` scenes of side 1 and of side 100 give the worst case of the derived matrix
+    over the disc divided by Theorem 1's bound (:func:`bound_ratio`); ``n_refine`` scenes of
+    side 1 check the closed-form worst case against a grid search of the disc and count the
+    scenes where the grid search falls below Theorem 1's bound.
+
+    Returns
+    -------
+    ratios : dict
+        Side (1.0, 100.0) -> ``(n_geometries,)`` ratios.
+    grid_err : float
+        Largest grid minimum minus closed form (non-negative up to the grid).
+    below : int
+        Scenes where the derived matrix's worst case is below Theorem 1's bound.
+
+    Examples
+    --------
+    >>> from obslib.studies.eq4 import random_scene_audit
+    >>> ratios, grid_err, below = random_scene_audit(5, 3, 0, 1.0)
+    >>> sorted(ratios), bool(grid_err >= -1e-12), 0 <= below <= 3
+    ([1.0, 100.0], True, True)
+    """
+    rng = np.random.default_rng(seed)
+    out = {}
+    for side in (1.0, 100.0):
+        ratios = []
+        for _ in range(n_geometries):
+            n = int(rng.integers(2, 7))
+            S, o = rng.uniform(0, side, (n, 2)), rng.uniform(0, side, 2)
+            ratios.append(bound_ratio(S, o, u_max))
+        out[side] = np.array(ratios)
+    # the closed-form worst case against a grid search of the disc, and against Theorem 1
+    grid_err, below = 0.0, 0
+    for _ in range(n_refine):
+        n = int(rng.integers(2, 7))
+        S, o = rng.uniform(0, 1, (n, 2)), rng.uniform(0, 1, 2)
+        num, _u = worst_derived_on_disc(S, o, u_max, 10, 360)
+        cf = derived_bound(S, o, u_max)
+        grid_err = max(grid_err, num - cf)
+        below += int(num < lower_bound(S, o, u_max) * (1 - 1e-9))
+    return out, grid_err, below

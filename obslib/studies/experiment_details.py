@@ -21,11 +21,15 @@ from __future__ import annotations
 
 import numpy as np
 
+from functools import lru_cache
+
 from .. import tracking as tr
 from ..bounds import pair_bounds
+from ..controls import disc_controls
 from ..published_runs import published_run
+from .tracking import adversary_variants, entrapment_summary
 
-__all__ = ["whiten", "metric_choices", "control_set_gap"]
+__all__ = ["whiten", "metric_choices", "control_set_gap", "control_set_entrapment"]
 
 
 def whiten(points, cov) -> np.ndarray:
@@ -109,7 +113,7 @@ def control_set_gap(n_radii: int = 20, n_angles: int = 360) -> dict:
     At every logged step of the adversarial run (its position and the pair that just measured
     it), the minimum of :func:`obslib.tracking.target_objective` over
     :func:`obslib.tracking.paper_controls` and over a polar grid of the disc
-    (:func:`obslib.tracking.disc_controls`).
+    (:func:`obslib.controls.disc_controls`).
 
     Returns
     -------
@@ -134,7 +138,7 @@ def control_set_gap(n_radii: int = 20, n_angles: int = 360) -> dict:
     setup = tr.PAPER_ADVERSARIAL
     ps = setup.sensor_array[run.pairs]  # (steps, 2, 2)
     paper = tr.target_objective(ps, run.truth, tr.paper_controls(setup.u_max)).min(axis=-1)
-    grid = tr.disc_controls(setup.u_max, n_radii, n_angles)
+    grid = disc_controls(setup.u_max, n_radii, n_angles)
     disc = tr.target_objective(ps, run.truth, grid).min(axis=-1)
     return {
         "paper": paper,
@@ -142,3 +146,28 @@ def control_set_gap(n_radii: int = 20, n_angles: int = 360) -> dict:
         "gap": paper - disc,
         "logged_match": float(np.abs(paper - run.objective).max()),
     }
+
+
+@lru_cache(maxsize=4)
+def control_set_entrapment(n_seeds: int, seed: int, n_radii: int, n_angles: int) -> dict:
+    """The adversarial experiment (Sec. V-B) over ``n_seeds`` noise seeds from ``seed``, with the
+    published controls and with a polar grid of the whole disc: does the ball free the target?
+
+    Returns
+    -------
+    dict
+        ``paper`` and ``disc``: :func:`obslib.studies.tracking.entrapment_summary` of the
+        strategy-1 runs with each control set (computed once per arguments, shared by the
+        ledger and the notebook).
+
+    Examples
+    --------
+    >>> from obslib.studies.experiment_details import control_set_entrapment
+    >>> d = control_set_entrapment(2, 0, 2, 8)
+    >>> sorted(d), 0.0 <= d["disc"]["entrapped"] <= 1.0
+    (['disc', 'paper'], True)
+    """
+    variants = adversary_variants(tr.PAPER_ADVERSARIAL, n_radii, n_angles)
+    seeds = range(seed, seed + n_seeds)
+    return {k: entrapment_summary(tr.simulate_batch(variants[k], "best-pair", seeds=seeds))
+            for k in ("paper", "disc")}
