@@ -127,10 +127,10 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     X, Y = A * np.cos(T), A * np.sin(T)
     surfaces = panels == "all"
     if surfaces:  # 3-D panels (a), (c) on the left, contours (b), (d) on the right
-        fig = plt.figure(figsize=(9.0, 8.1))  # at most 9 in: the book column
+        fig = plt.figure(figsize=(8.9, 8.1))  # at most 9 in: the book column
         grid = fig.add_gridspec(2, 2, width_ratios=[1, 1.534])
     else:  # (b) wide, (d) square
-        fig = plt.figure(figsize=(9.0, 4.3))
+        fig = plt.figure(figsize=(8.9, 4.3))
         grid = fig.add_gridspec(1, 2, width_ratios=[1.45, 1])
     rows = (
         ("(a)", A, T, r"$\alpha = d_{jo}/d_{io}$", r"$\theta_{ji}$ (rad)"),
