@@ -52,3 +52,28 @@ def test_adversary_moves_equal_argmin_of_target_objective(controls):
     got = adversary_moves(ps, o, u)
     want = np.argmin(tr.target_objective(ps, o, u), axis=1)
     np.testing.assert_array_equal(got, want)
+
+
+def test_adversary_moves_by_block_equal_the_barred_union():
+    """The batch engine screens runs with different control sets block by block; each pick
+    equals the pick over the union of the sets with the other blocks barred (both against the
+    first minimiser of target_objective over the run's own set)."""
+    rng = np.random.default_rng(5)
+    s = CIRCLE.sensor_array
+    sets = [tr.paper_controls(0.1), disc_controls(0.1, 4, 36), disc_controls(0.3, 2, 12)]
+    union = np.concatenate(sets)
+    edges = np.cumsum([0] + [len(c) for c in sets])
+    n = 90
+    block = rng.integers(0, len(sets), n)
+    ps = s[np.array([rng.choice(6, 2, replace=False) for _ in range(n)])]
+    o = rng.normal([2.0, 2.0], 2.5, size=(n, 2))
+    barred = np.full((n, len(union)), np.inf)
+    for r, b in enumerate(block):
+        barred[r, edges[b] : edges[b + 1]] = 0.0
+    joint = adversary_moves(ps, o, union, barred=barred)
+    for b, c in enumerate(sets):
+        rows = np.flatnonzero(block == b)
+        own = adversary_moves(ps[rows], o[rows], c)
+        np.testing.assert_array_equal(joint[rows], edges[b] + own)
+        want = np.argmin(tr.target_objective(ps[rows], o[rows], c), axis=1)
+        np.testing.assert_array_equal(own, want)
