@@ -165,3 +165,18 @@ def test_adversary_rows_equal_entrapment_summary():
         for key in ("entrapped", "max_from_start", "reach", "icn_mean", "icn_min", "bound_mean",
                     "switches", "mean_error"):
             assert row[key] == pytest.approx(want[key], rel=1e-12, abs=1e-15), key
+
+
+def test_tracking_study_equals_a_monte_carlo_per_metric():
+    """The study runs every metric and strategy in one batched pass per setting; each batch
+    equals the Monte Carlo of that metric alone (same pairs, numbers to rounding)."""
+    names = ("best-pair", "best-partner", "fixed-pair", "d-optimal", "exact-icn", "random")
+    got = cs._tracking_study(3, 5, ("mahalanobis", "euclidean"), names)
+    for (label, metric), runs in got.items():
+        base = tr.PAPER_CIRCLE if label == "circle" else tr.PAPER_ADVERSARIAL
+        for n in names:  # the full 315 steps: the study's length is fixed
+            want = tr.monte_carlo(base.replace(metric=metric), 3, [n], 5)[n]
+            assert np.array_equal(runs[n].pairs, want.pairs), (label, metric, n)
+            for f in ("bound", "estimate", "cov", "truth"):
+                np.testing.assert_allclose(getattr(runs[n], f), getattr(want, f), rtol=0,
+                                           atol=1e-12, err_msg=f"{label} {metric} {n} {f}")

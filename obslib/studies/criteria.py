@@ -355,19 +355,17 @@ def relog_bound(batch, setup):
 
 @lru_cache(maxsize=8)
 def _tracking_study(n_seeds, seed, metrics, strategies):
-    free = [s for s in strategies if s in CRITERIA]  # their choices ignore the bound's metric
+    # one batched pass per setting for every metric and strategy: the runs of a criterion or
+    # of the fixed pair do not depend on the metric, so simulate_many runs them once and only
+    # re-evaluates their logged bound (1.0 s against 2.3 s for four Monte Carlo calls per
+    # metric and exact-icn pass; the runs are the same, the tests check it)
+    seeds = range(seed, seed + n_seeds)
     out = {}
     for label, base in (("circle", tr.PAPER_CIRCLE), ("adversary", tr.PAPER_ADVERSARIAL)):
-        first = None
-        for metric in metrics:
-            setup = base.replace(metric=metric)
-            run = strategies if first is None else [s for s in strategies if s not in free]
-            mc = tr.monte_carlo(setup, n_seeds, run, seed)
-            if first is None:
-                first = mc
-            else:
-                mc.update({s: relog_bound(first[s], setup) for s in free})
-            out[(label, metric)] = {s: mc[s] for s in strategies}
+        arms = {(m, s): (base.replace(metric=m), s) for m in metrics for s in strategies}
+        runs = tr.simulate_many(arms, seeds=seeds)
+        for m in metrics:
+            out[(label, m)] = {s: runs[(m, s)] for s in strategies}
     return out
 
 

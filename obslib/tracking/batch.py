@@ -171,7 +171,9 @@ def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
 
     With an ``"exact-icn"`` run in the pass, the target moves before the next choice (the
     oracle needs the control that brings it to its next position; no run of such a pass may
-    have a ``"next-pair"`` adversary, which needs the choice first)."""
+    have a ``"next-pair"`` adversary, which needs the choice first). The other runs of the pass
+    are the same either way: their next choice depends only on the posterior, and their target
+    (on the circle, or facing the current pair) not on that choice."""
     R_ = cand.shape[0]
     B, steps, n = tables.shape
     s = setup.sensor_array
@@ -345,8 +347,9 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
     arms : mapping
         ``{name: (setup, strategy)}``, ``strategy`` any name of
         :data:`~obslib.tracking.STRATEGIES` or :data:`~obslib.tracking.CRITERIA` (``"random"``
-        needs ``seeds``; ``"exact-icn"`` arms run in a pass of their own, in which the target
-        moves before the next choice).
+        needs ``seeds``; in a pass with an ``"exact-icn"`` arm the target moves before the next
+        choice, so such arms run in a pass of their own when others face a ``"next-pair"``
+        adversary).
     seeds : iterable of int, optional
     noise : array_like, shape (B, steps, N), optional
         Explicit noise tables instead of seeds.
@@ -376,11 +379,18 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
     for name in first.values():
         setup = arms[name][0]
         key = tuple(getattr(setup, f.name) for f in dataclasses.fields(setup)
-                    if f.name not in _ROW_FIELDS) + (arms[name][1] == "exact-icn",)
+                    if f.name not in _ROW_FIELDS)
         groups.setdefault(key, []).append(name)
+    passes = []  # exact-icn arms join the others' pass unless one of them needs the choice first
+    for names in groups.values():
+        icn = [n for n in names if arms[n][1] == "exact-icn"]
+        if icn and any(arms[n][0].adversary == "next-pair" for n in names if n not in icn):
+            passes += [[n for n in names if n not in icn], icn]
+        else:
+            passes.append(names)
     drawn: dict = {}
     out = {}
-    for names in groups.values():
+    for names in passes:
         base = arms[names[0]][0]
         if seeds:
             tkey = (base.steps, base.n_sensors, base.noise_std)

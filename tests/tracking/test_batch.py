@@ -177,3 +177,25 @@ def test_criteria_runs_are_shared_between_metrics_and_log_each_metric_s_bound():
         alone = tr.simulate_batch(eu, n, seeds=[0, 1])  # the same as running it by itself
         np.testing.assert_array_equal(alone.pairs, b.pairs)
         np.testing.assert_allclose(alone.bound, b.bound, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("base", [CIRCLE, ADV], ids=["circle", "adversary"])
+def test_exact_icn_shares_a_pass_without_changing_the_runs(base):
+    """An exact-icn arm runs in the pass of the other arms (the target moves before the next
+    choice, which changes nothing for the others), or in its own pass next to a next-pair
+    adversary; every arm equals its run alone and the filterpy engine's run."""
+    setup = base.replace(steps=40)
+    arms = {s: (setup, s) for s in ("best-pair", "fixed-pair", "exact-icn", "d-optimal")}
+    if base.motion == "adversarial":
+        arms["next"] = (setup.replace(adversary="next-pair"), "best-pair")
+    many = tr.simulate_many(arms, seeds=[3, 4])
+    for key, (su, s) in arms.items():
+        alone = tr.simulate_batch(su, s, seeds=[3, 4])
+        np.testing.assert_array_equal(many[key].pairs, alone.pairs)
+        for f in ("bound", "estimate", "cov", "truth"):
+            np.testing.assert_allclose(getattr(many[key], f), getattr(alone, f), rtol=0,
+                                       atol=1e-12, err_msg=f"{key} {f}")
+        r = tr.simulate(su, s, seed=4)
+        np.testing.assert_array_equal(many[key].pairs[1], r.pairs)
+        np.testing.assert_allclose(many[key].truth[1], r.truth, rtol=0, atol=1e-9)
+        np.testing.assert_allclose(many[key].estimate[1], r.estimate, rtol=0, atol=1e-9)
