@@ -30,7 +30,6 @@ from __future__ import annotations
 from functools import lru_cache
 
 import numpy as np
-from scipy import stats
 
 from .. import tracking as tr
 from .._kernels import inverse_condition, pair_kernel
@@ -232,6 +231,8 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
     >>> round(t["mean_diff"], 12), round(t["median_diff"], 12), t["p_sign"]
     (0.35, 0.5, 0.625)
     """
+    from scipy import stats  # here, not at import: scipy.stats costs about 0.5 s to import
+
     a = np.asarray(reference, dtype=float)
     b = np.asarray(other, dtype=float)
     if a.shape != b.shape or a.ndim != 1 or a.size < 2:
