@@ -224,6 +224,48 @@ def test_mixed_metric_reproduces_the_logged_pairs():
         ed.metric_choices("fixed-pair")
 
 
+@pytest.mark.parametrize("name", ["best-pair", "adversarial"])
+def test_metric_choices_equal_one_pair_bounds_call_per_step(name):
+    """The choices over whole runs at once equal the literal loop: per logged step, pair_bounds
+    of the estimate (mixed and Euclidean) and of the whitened scene."""
+    from obslib.published_runs import published_run
+    from obslib.studies.replay import replay
+    from obslib.tracking import PAPER_ADVERSARIAL, PAPER_CIRCLE
+
+    run = published_run(name)
+    setup = PAPER_ADVERSARIAL if name == "adversarial" else PAPER_CIRCLE
+    S, u = setup.sensor_array, setup.u_max
+    cov = run.cov if run.cov is not None else replay(name).cov
+    ii, jj = np.triu_indices(len(S), 1)
+
+    def best(W):
+        k = int(np.argmax(W[ii, jj, 0]))
+        return [ii[k], jj[k]]
+
+    got = ed.metric_choices(name)["pairs"]
+    for k in range(0, run.steps, 3):
+        x, c = run.estimate[k][None], cov[k]
+        assert got["mixed"][k].tolist() == best(ob.pair_bounds(S, x, u, cov=c[None]))
+        assert got["euclidean"][k].tolist() == best(ob.pair_bounds(S, x, u))
+        assert got["whitened"][k].tolist() == best(ob.pair_bounds(ed.whiten(S, c),
+                                                                  ed.whiten(x, c), u))
+
+
+def test_control_set_gap_minimum_is_that_of_every_control():
+    """The disc's minimum comes from the adversary's screened pick; it equals the minimum of
+    target_objective over every control of the grid."""
+    from obslib import tracking as tr
+    from obslib.controls import disc_controls
+    from obslib.published_runs import published_run
+
+    run = published_run("adversarial")
+    g = ed.control_set_gap(5, 72)
+    ps = tr.PAPER_ADVERSARIAL.sensor_array[run.pairs]
+    grid = disc_controls(tr.PAPER_ADVERSARIAL.u_max, 5, 72)
+    want = tr.target_objective(ps, run.truth, grid).min(axis=-1)
+    np.testing.assert_allclose(g["disc"], want, rtol=1e-13, atol=1e-15)
+
+
 def test_disc_never_does_worse_than_the_published_set_by_more_than_the_grid():
     g = ed.control_set_gap(4, 630)  # the disc grid contains the published angles only roughly
     assert g["logged_match"] < 1e-9

@@ -24,9 +24,12 @@ import numpy as np
 from functools import lru_cache
 
 from .. import tracking as tr
+from .._kernels import normalise, pair_kernel
 from ..bounds import pair_bounds
 from ..controls import disc_controls
 from ..published_runs import published_run
+from ..tracking.adversary import adversary_moves
+from ..tracking.model import inverse_condition
 from .tracking import adversary_variants, entrapment_summary
 
 __all__ = ["whiten", "metric_choices", "control_set_gap", "control_set_entrapment"]
@@ -50,10 +53,24 @@ def whiten(points, cov) -> np.ndarray:
     return np.asarray(points, dtype=float) @ inv_sqrt.T
 
 
-def _best(W) -> tuple[int, int]:
+def _best_per_target(W) -> np.ndarray:
+    """The first best pair ``(i, j)`` (``i < j``, in ``(i, j)`` order) of each target of the
+    weights ``W`` ``(N, N, L)``, ``(L, 2)``."""
     ii, jj = np.triu_indices(W.shape[0], 1)
-    k = int(np.argmax(W[ii, jj, 0]))
-    return int(ii[k]), int(jj[k])
+    k = np.argmax(W[ii, jj], axis=0)
+    return np.stack([ii[k], jj[k]], axis=1)
+
+
+def _bounds_per_scene(sensors, targets, u_max) -> np.ndarray:
+    """``pair_bounds(sensors[l], targets[l][None], u_max)[:, :, 0]`` for every scene ``l``
+    (sensors ``(L, N, 2)``, targets ``(L, 2)``), ``(N, N, L)``: the same vectors, normalisation
+    and kernel, in one call."""
+    v = targets[None, :, :] - sensors.transpose(1, 0, 2)  # (N, L, 2)
+    if not (np.isfinite(v).all() and (np.abs(v).max(axis=2) > 0).all()):
+        raise ValueError("a whitened target is not finite or sits on a sensor")
+    v, u2 = normalise(v, np.full(targets.shape[0], float(u_max)))
+    x, y = v[..., 0], v[..., 1]
+    return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2)
 
 
 def metric_choices(name: str = "best-pair") -> dict:
@@ -92,12 +109,16 @@ def metric_choices(name: str = "best-pair") -> dict:
         from .replay import replay
 
         cov = replay(name).cov
-    out = {k: np.empty((run.steps, 2), dtype=int) for k in ("mixed", "whitened", "euclidean")}
-    for k in range(run.steps):
-        x, c = est[k][None, :], cov[k]
-        out["mixed"][k] = _best(pair_bounds(S, x, u_max, cov=c[None]))
-        out["whitened"][k] = _best(pair_bounds(whiten(S, c), whiten(x, c), u_max))
-        out["euclidean"][k] = _best(pair_bounds(S, x, u_max))
+    # every step at once: pair_bounds evaluates each target on its own, so the bounds are those
+    # of one call per step (0.03 s against 0.27 s per run for 3 x 315 calls)
+    out = {"mixed": _best_per_target(pair_bounds(S, est, u_max, cov=cov)),
+           "euclidean": _best_per_target(pair_bounds(S, est, u_max))}
+    ws = np.empty((run.steps,) + S.shape)
+    wx = np.empty((run.steps, 2))
+    for k in range(run.steps):  # the whitening of each step, as whiten computes it
+        ws[k] = whiten(S, cov[k])
+        wx[k] = whiten(est[k][None, :], cov[k])[0]
+    out["whitened"] = _best_per_target(_bounds_per_scene(ws, wx, u_max))
     same = lambda a, b: float((out[a] == out[b]).all(axis=1).mean())  # noqa: E731
     return {
         "pairs": out,
@@ -105,6 +126,16 @@ def metric_choices(name: str = "best-pair") -> dict:
         "agree_euclidean": same("mixed", "euclidean"),
         "logged_match": float((out["mixed"] == run.pairs).all(axis=1).mean()),
     }
+
+
+def _smallest_objective(ps, o, controls) -> np.ndarray:
+    """``target_objective(ps, o, controls).min(axis=-1)``: the objective at the adversary's
+    pick (:func:`~obslib.tracking.adversary.adversary_moves`, the first minimiser), evaluated
+    with target_objective's arithmetic for that control only (7201 controls x 315 steps:
+    0.013 s against 1.1 s for every control's exact value)."""
+    u = controls[adversary_moves(ps, o, controls)]
+    stack = np.concatenate([(o + u)[:, None, :] - ps, u[:, None, :]], axis=1)
+    return inverse_condition(stack)
 
 
 def control_set_gap(n_radii: int = 20, n_angles: int = 360) -> dict:
@@ -139,7 +170,7 @@ def control_set_gap(n_radii: int = 20, n_angles: int = 360) -> dict:
     ps = setup.sensor_array[run.pairs]  # (steps, 2, 2)
     paper = tr.target_objective(ps, run.truth, tr.paper_controls(setup.u_max)).min(axis=-1)
     grid = disc_controls(setup.u_max, n_radii, n_angles)
-    disc = tr.target_objective(ps, run.truth, grid).min(axis=-1)
+    disc = _smallest_objective(ps, run.truth, grid)
     return {
         "paper": paper,
         "disc": disc,
