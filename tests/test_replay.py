@@ -94,3 +94,19 @@ def test_seed_typicality_share_within_tolerance_and_cache():
         m[0] = 0.0
     assert rp.compare_replay("adversarial") is rp.compare_replay("adversarial")
     assert rp.compare_replay("adversarial").matches
+
+
+@pytest.mark.parametrize("name", ["best-pair", "adversarial"])
+def test_replays_of_both_fills_equal_single_runs(name):
+    """The two fills' replays share one batched pass; each equals the replay run alone."""
+    from obslib.studies import replay as rp
+
+    steps = 40
+    setup = rp.replay_setup(name).replace(steps=steps)
+    for fill in (rp.REPLAY_FILLS[1], 3.5):
+        got = rp._replay(name, fill, steps)
+        alone = tr.simulate_batch(setup, rp._strategy(name), noise=rp._table(steps, fill)[None])
+        np.testing.assert_array_equal(got.pairs, alone.pairs[0])
+        for f in ("bound", "estimate", "cov", "truth"):
+            np.testing.assert_allclose(getattr(got, f), getattr(alone, f)[0], rtol=0,
+                                       atol=1e-12, err_msg=f)
