@@ -210,11 +210,20 @@ def scaled_rows(vx, vy, c, maha):
         vy *= f
     else:
         n2 = e2
-    inv = 1.0 / n2.max(axis=1)  # 1 / scale^2
+    inv = 1.0 / _row_max(n2)  # 1 / scale^2
     sc = np.sqrt(inv)[:, None]
     vx *= sc
     vy *= sc
     return vx, vy, inv
+
+
+def _row_max(a) -> np.ndarray:
+    """``a.max(axis=1)`` for a few columns, as an elementwise maximum over them (the same
+    values; 7 us against 40 us for 1000 rows of 6)."""
+    m = a[:, 0].copy()
+    for c in range(1, a.shape[1]):
+        np.maximum(m, a[:, c], out=m)
+    return m
 
 
 class PairChooser:
