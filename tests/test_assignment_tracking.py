@@ -207,3 +207,32 @@ def test_mirrored_uses_the_reflection_across_the_last_pair():
             assert got[b, l] == (np.hypot(*(x - m)) < np.hypot(*(x - o)))
     assert np.array_equal(r.lost(0.5), r.post_error[:, 1:].mean(axis=1) > 0.5)
     np.testing.assert_allclose(np.hypot(*(r.estimate - r.truth).transpose(3, 0, 1, 2)), r.post_error)
+
+
+@pytest.mark.parametrize("metric", ["mahalanobis", "euclidean"])
+def test_upper_weights_are_the_full_weights_above_the_diagonal(metric):
+    """The runs score only the pairs i < j; those scores are the entries of the full
+    bound_weights and info_gain_weights."""
+    rng = np.random.default_rng(11)
+    B, N, L = 4, 7, 3
+    S, x = rng.uniform(0, 10, (B, N, 2)), rng.uniform(0, 10, (B, L, 2))
+    A = rng.normal(size=(B, L, 2, 2))
+    P = A @ np.swapaxes(A, -1, -2) + 0.1 * np.eye(2)
+    ii, jj = np.triu_indices(N, 1)
+    full = at.bound_weights(S, x, P, 1.3, metric)
+    np.testing.assert_allclose(at._upper_bound_weights(S, x, P, 1.3, metric, ii, jj),
+                               full[:, ii, jj], rtol=1e-14, atol=0)
+    g = at.info_gain_weights(S, x, P, 0.3)
+    np.testing.assert_allclose(at._upper_gain_weights(S, x, P, 0.3, ii, jj), g[:, ii, jj],
+                               rtol=1e-13, atol=0)
+
+
+def test_greedy_on_upper_pairs_equals_batch_greedy():
+    """Same picks as batch_greedy on the full symmetric weights, ties included (integer
+    weights tie often: the first maximum in (i, j, l) order must win in both)."""
+    rng = np.random.default_rng(12)
+    for N, L in ((4, 2), (7, 3), (10, 5)):
+        W = rng.integers(0, 4, size=(30, N, N, L)).astype(float)
+        W = W + W.transpose(0, 2, 1, 3)
+        ii, jj = np.triu_indices(N, 1)
+        np.testing.assert_array_equal(at._greedy_upper(W[:, ii, jj], ii, jj), at.batch_greedy(W))

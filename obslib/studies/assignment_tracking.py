@@ -342,6 +342,50 @@ def batch_greedy(W) -> np.ndarray:
     return out
 
 
+def _upper_bound_weights(sensors, xhat, cov, u_max, metric, ii, jj) -> np.ndarray:
+    """The entries ``W[b, ii[p], jj[p], l]`` of :func:`bound_weights`, ``(B, P, L)``: the same
+    rows and kernel for the pairs ``i < j`` only (half the kernel's work)."""
+    B, N, L = sensors.shape[0], sensors.shape[1], xhat.shape[1]
+    v = xhat[:, :, None, :] - sensors[:, None, :, :]  # (B, L, N, 2)
+    x, y, inv = _scaled(v.reshape(B * L, N, 2), cov.reshape(B * L, 2, 2), metric)
+    x = x.reshape(B, L, N).transpose(0, 2, 1)  # (B, N, L)
+    y = y.reshape(B, L, N).transpose(0, 2, 1)
+    u2 = (u_max**2 * inv).reshape(B, L)
+    return pair_kernel(x[:, ii], y[:, ii], x[:, jj], y[:, jj], u2[:, None, :])
+
+
+def _upper_gain_weights(sensors, xhat, cov_pred, r, ii, jj) -> np.ndarray:
+    """The entries ``G[b, ii[p], jj[p], l]`` of :func:`info_gain_weights`, ``(B, P, L)``, with
+    its arithmetic, for the pairs ``i < j`` only."""
+    h = xhat[:, None, :, :] - sensors[:, :, None, :]  # (B, N, L, 2)
+    hx, hy = h[..., 0] / np.sqrt(r), h[..., 1] / np.sqrt(r)  # (B, N, L)
+    p00, p01, p11 = (cov_pred[:, None, :, a, b] for a, b in ((0, 0), (0, 1), (1, 1)))
+    a = p00 * (hx * hx) + p01 * (hx * hy + hy * hx) + p11 * (hy * hy)  # c_ii, (B, N, L)
+    xi, yi, xj, yj = hx[:, ii], hy[:, ii], hx[:, jj], hy[:, jj]
+    c = p00 * (xi * xj) + p01 * (xi * yj + yi * xj) + p11 * (yi * yj)  # (B, P, L)
+    det = (1 + a[:, ii]) * (1 + a[:, jj]) - c * c
+    return np.log(det)
+
+
+def _greedy_upper(w, ii, jj) -> np.ndarray:
+    """:func:`batch_greedy` on the weights of the pairs ``i < j`` only, ``w`` ``(B, P, L)`` with
+    pair ``p = (ii[p], jj[p])`` in ``(i, j)`` order: the first maximum over ``(p, l)`` is the
+    first over ``(i, j, l)``, so the picks are the same."""
+    w = np.array(w, dtype=float)
+    B, P, L = w.shape
+    rows = np.arange(B)
+    out = np.empty((B, L, 2), dtype=np.int64)
+    for _ in range(L):
+        p, l = np.divmod(np.argmax(w.reshape(B, -1), axis=1), L)
+        i, j = ii[p], jj[p]
+        out[rows, l, 0], out[rows, l, 1] = i, j
+        used = ((ii == i[:, None]) | (jj == i[:, None]) | (ii == j[:, None])
+                | (jj == j[:, None]))  # (B, P): pairs sharing a sensor with the pick
+        w[used] = -np.inf
+        w[rows, :, l] = -np.inf
+    return out
+
+
 def random_assignments(perm, n_targets) -> np.ndarray:
     """Pairs from sensor permutations ``perm`` (B, N): target ``l`` gets ``perm[2l], perm[2l+1]``
     (sorted), shape (B, L, 2).
@@ -511,12 +555,17 @@ def _run(sc: Scenario, rules) -> dict:
     est = np.empty((B, T, L, 2))
     bb = np.arange(B)[:, None]
     pr = np.empty((B, L, 2), dtype=np.int64)
+    # the rules score the pairs i < j only: the greedy never looks at the others (the picks of
+    # bound_weights and info_gain_weights with batch_greedy; 0.25 s against 0.5 s per study)
+    ii, jj = np.triu_indices(S.shape[1], 1)
     for k in range(T):
         for rule, sl in rows.items():
             if rule == "bound":
-                pr[sl] = batch_greedy(bound_weights(S[sl], x[sl], P[sl], st.u_max, st.metric))
+                w = _upper_bound_weights(S[sl], x[sl], P[sl], st.u_max, st.metric, ii, jj)
+                pr[sl] = _greedy_upper(w, ii, jj)
             elif rule == "d-optimal":
-                pr[sl] = batch_greedy(info_gain_weights(S[sl], x[sl], P[sl] + q * np.eye(2), r))
+                w = _upper_gain_weights(S[sl], x[sl], P[sl] + q * np.eye(2), r, ii, jj)
+                pr[sl] = _greedy_upper(w, ii, jj)
             else:
                 pr[sl] = random_assignments(sc.perm[:, k], L)
         pairs[:, k] = pr
