@@ -375,13 +375,13 @@ def _greedy_upper(w, ii, jj) -> np.ndarray:
     B, P, L = w.shape
     rows = np.arange(B)
     out = np.empty((B, L, 2), dtype=np.int64)
+    n = int(jj.max()) + 1 if jj.size else 0
+    touches = (ii == np.arange(n)[:, None]) | (jj == np.arange(n)[:, None])  # (N, P)
     for _ in range(L):
         p, l = np.divmod(np.argmax(w.reshape(B, -1), axis=1), L)
         i, j = ii[p], jj[p]
         out[rows, l, 0], out[rows, l, 1] = i, j
-        used = ((ii == i[:, None]) | (jj == i[:, None]) | (ii == j[:, None])
-                | (jj == j[:, None]))  # (B, P): pairs sharing a sensor with the pick
-        w[used] = -np.inf
+        w[touches[i] | touches[j]] = -np.inf  # the pairs sharing a sensor with the pick
         w[rows, :, l] = -np.inf
     return out
 
