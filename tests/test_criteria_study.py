@@ -75,6 +75,28 @@ def test_paired_test_against_scipy():
         cs.paired_test(a, b[:-1])
 
 
+@pytest.mark.parametrize("n", list(range(1, 41)) + [51, 120, 199, 200, 201])
+def test_sign_test_is_scipys_binomtest(n):
+    """The sign test's p-value, computed without importing scipy.stats, is scipy.stats'
+    (the same special functions in the same order: equal, not only close)."""
+    for k in range(n + 1):
+        assert cs._sign_test(k, n) == stats.binomtest(k, n, 0.5).pvalue, (k, n)
+
+
+def test_wilcoxon_is_scipys():
+    """Beyond 50 differences the normal approximation with tie correction is scipy's to the
+    last bit; up to 50 scipy itself answers. Ties from rounding, signs unbalanced."""
+    rng = np.random.default_rng(8)
+    for t in range(120):
+        n = int(rng.integers(2, 260))
+        d = rng.normal(0.2 * (t % 3), 1.0, size=n)
+        if t % 2:
+            d = np.round(d, 1)
+        d = d[d != 0]
+        if d.size >= 2:
+            assert cs._wilcoxon(d) == stats.wilcoxon(d).pvalue, (t, d.size)
+
+
 def test_summary_rows_match_runs():
     setup = tr.PAPER_CIRCLE.replace(steps=30)
     mc = tr.monte_carlo(setup, 4, ("best-pair", "fixed-pair"))
