@@ -96,9 +96,10 @@ def test_seed_typicality_share_within_tolerance_and_cache():
     assert rp.compare_replay("adversarial").matches
 
 
-@pytest.mark.parametrize("name", ["best-pair", "adversarial"])
+@pytest.mark.parametrize("name", ["best-pair", "best-partner", "adversarial"])
 def test_replays_of_both_fills_equal_single_runs(name):
-    """The two fills' replays share one batched pass; each equals the replay run alone."""
+    """The two fills' replays (and the circle's two strategies) share one batched pass; each
+    equals the replay run alone."""
     from obslib.studies import replay as rp
 
     steps = 40
