@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .model import pair_bound_series
+from .model import _pair_series
 from .results import BatchResult, TrackingResult
 
 __all__ = [
@@ -171,6 +171,11 @@ def spearman(a, b, axis: int = -1) -> np.ndarray:
     """
     ra = np.moveaxis(_rank(np.moveaxis(np.asarray(a, dtype=float), axis, -1)), -1, axis)
     rb = np.moveaxis(_rank(np.moveaxis(np.asarray(b, dtype=float), axis, -1)), -1, axis)
+    return _ranked_correlation(ra, rb, axis)
+
+
+def _ranked_correlation(ra, rb, axis: int = -1) -> np.ndarray:
+    """Pearson correlation of the ranks ``ra`` and ``rb`` along ``axis`` (:func:`spearman`)."""
     ra = ra - ra.mean(axis=axis, keepdims=True)
     rb = rb - rb.mean(axis=axis, keepdims=True)
     num = (ra * rb).sum(axis=axis)
@@ -246,15 +251,19 @@ def bound_correlation(batch: BatchResult, bound: str = "own", skip_first: bool =
     if bound == "own":
         b = batch.bound
     elif bound == "euclidean":
-        shape = batch.bound.shape
-        b = pair_bound_series(
-            batch.setup, batch.estimate.reshape(-1, 2), batch.pairs.reshape(-1, 2)
-        ).reshape(shape)
+        # the engine's estimates are finite and off the sensors (its bound checks them), so
+        # pair_bound_series's worker without the validation, the same numbers (0.02 s of
+        # 0.05 s per 63,000 points)
+        s = batch.setup.sensor_array
+        x = batch.estimate.reshape(-1, 2)
+        b = _pair_series(x[None, :, :] - s[:, None, :], batch.pairs.reshape(-1, 2),
+                         batch.setup.u_max).reshape(batch.bound.shape)
     else:
         raise ValueError(f"bound must be 'own' or 'euclidean', got {bound!r}")
+    rb = _rank(b[:, sl])  # ranked once for both correlations
     return {
-        "error": spearman(b[:, sl], batch.error[:, sl]),
-        "trace": spearman(b[:, sl], batch.trace_cov[:, sl]),
+        "error": _ranked_correlation(rb, _rank(batch.error[:, sl])),
+        "trace": _ranked_correlation(rb, _rank(batch.trace_cov[:, sl])),
     }
 
 

@@ -81,3 +81,18 @@ def test_statistics_name_bad_arguments():
         tr.track_loss(mc["fixed-pair"], threshold="0.5")
     with pytest.raises(ValueError, match="result must be one run"):
         tr.entrapment(mc["best-pair"])
+
+
+def test_bound_correlation_equals_spearman_of_the_public_series():
+    """bound_correlation ranks the bound once and skips pair_bound_series's validation; the
+    correlations are spearman's of the validated series."""
+    setup = tr.PAPER_CIRCLE.replace(steps=40)
+    b = tr.simulate_batch(setup, "best-pair", seeds=[0, 1, 2])
+    eu = tr.pair_bound_series(setup, b.estimate.reshape(-1, 2),
+                              b.pairs.reshape(-1, 2)).reshape(b.bound.shape)
+    for name, bound in (("own", b.bound), ("euclidean", eu)):
+        got = tr.bound_correlation(b, name)
+        np.testing.assert_allclose(got["error"], tr.spearman(bound[:, 1:], b.error[:, 1:]),
+                                   rtol=1e-14)
+        np.testing.assert_allclose(got["trace"],
+                                   tr.spearman(bound[:, 1:], b.trace_cov[:, 1:]), rtol=1e-14)
