@@ -313,7 +313,11 @@ def track_loss(batch: BatchResult, threshold: float = 0.5) -> dict:
         raise ValueError(f"threshold must be a finite real number, got {threshold!r}")
     s = batch.setup.sensor_array
     i, j = batch.pairs[0, 0]
-    m = mirror_point(batch.truth, s[i], s[j])
+    t = batch.truth
+    if t.shape[0] > 1 and t.strides[0] == 0:  # one path for every run (the circle): once
+        m = np.broadcast_to(mirror_point(t[0], s[i], s[j]), t.shape)
+    else:
+        m = mirror_point(t, s[i], s[j])
     dm = np.hypot(*(batch.estimate - m).transpose(2, 0, 1))
     closer = dm < batch.error
     # first step from which the estimate stays closer to the mirror image

@@ -96,3 +96,16 @@ def test_bound_correlation_equals_spearman_of_the_public_series():
                                    rtol=1e-14)
         np.testing.assert_allclose(got["trace"],
                                    tr.spearman(bound[:, 1:], b.trace_cov[:, 1:]), rtol=1e-14)
+
+
+def test_track_loss_of_a_shared_path_equals_per_run_paths():
+    """The circle's runs share one path (a broadcast view): its mirror image is computed once;
+    the losses equal those computed from a copy with one path per run."""
+    import dataclasses
+
+    b = tr.simulate_batch(CIRCLE.replace(steps=60), "fixed-pair", seeds=range(6))
+    assert b.truth.strides[0] == 0
+    own = dataclasses.replace(b, truth=np.ascontiguousarray(b.truth))
+    got, want = tr.track_loss(b, 0.3), tr.track_loss(own, 0.3)
+    for k in want:
+        np.testing.assert_array_equal(got[k], want[k])
