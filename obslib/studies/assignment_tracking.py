@@ -249,13 +249,19 @@ def bound_weights(sensors, xhat, cov, u_max, metric="mahalanobis") -> np.ndarray
     >>> bool(np.allclose(We[0], ob.pair_bounds(S[0], x[0], 1.0)))
     True
     """
+    x, y, u2 = _bound_rows(sensors, xhat, cov, u_max, metric)
+    return pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
+
+
+def _bound_rows(sensors, xhat, cov, u_max, metric):
+    """The scaled rows ``x, y`` ``(B, N, L)`` of :func:`bound_weights` and their ``u_max^2``
+    ``(B, L)``."""
     B, N, L = sensors.shape[0], sensors.shape[1], xhat.shape[1]
     v = xhat[:, :, None, :] - sensors[:, None, :, :]  # (B, L, N, 2)
     x, y, inv = _scaled(v.reshape(B * L, N, 2), cov.reshape(B * L, 2, 2), metric)
     x = x.reshape(B, L, N).transpose(0, 2, 1)  # (B, N, L)
     y = y.reshape(B, L, N).transpose(0, 2, 1)
-    u2 = (u_max**2 * inv).reshape(B, L)
-    return pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
+    return x, y, (u_max**2 * inv).reshape(B, L)
 
 
 def _scaled(v, cov, metric):
@@ -345,12 +351,7 @@ def batch_greedy(W) -> np.ndarray:
 def _upper_bound_weights(sensors, xhat, cov, u_max, metric, ii, jj) -> np.ndarray:
     """The entries ``W[b, ii[p], jj[p], l]`` of :func:`bound_weights`, ``(B, P, L)``: the same
     rows and kernel for the pairs ``i < j`` only (half the kernel's work)."""
-    B, N, L = sensors.shape[0], sensors.shape[1], xhat.shape[1]
-    v = xhat[:, :, None, :] - sensors[:, None, :, :]  # (B, L, N, 2)
-    x, y, inv = _scaled(v.reshape(B * L, N, 2), cov.reshape(B * L, 2, 2), metric)
-    x = x.reshape(B, L, N).transpose(0, 2, 1)  # (B, N, L)
-    y = y.reshape(B, L, N).transpose(0, 2, 1)
-    u2 = (u_max**2 * inv).reshape(B, L)
+    x, y, u2 = _bound_rows(sensors, xhat, cov, u_max, metric)
     return pair_kernel(x[:, ii], y[:, ii], x[:, jj], y[:, jj], u2[:, None, :])
 
 

@@ -15,15 +15,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._kernels import matmul_rows
 from .model import inverse_condition
 
 __all__ = ["control_basis", "adversary_moves"]
-
-#: Multiply-adds per matrix product of the screen. BLAS libraries hand larger products to
-#: threads, whose start-up on a busy machine costs more than the product itself (2000 runs x 64
-#: controls: 2.6 ms as one product, 0.08 ms in products of this size); the values are the same
-#: either way up to rounding, which the screen's margin absorbs.
-_PRODUCT_SIZE = 1 << 17
 
 
 def control_basis(controls) -> np.ndarray:
@@ -38,17 +33,6 @@ def control_basis(controls) -> np.ndarray:
     """
     ux, uy = controls[:, 0], controls[:, 1]
     return np.stack([np.ones_like(ux), ux, uy, ux * ux, ux * uy, uy * uy])
-
-
-def _product(coef, basis) -> np.ndarray:
-    """``coef @ basis`` in row chunks of at most :data:`_PRODUCT_SIZE` multiply-adds."""
-    rows = max(1, _PRODUCT_SIZE // (basis.shape[0] * max(basis.shape[1], 1)))
-    if coef.shape[0] <= rows:
-        return coef @ basis
-    out = np.empty((coef.shape[0], basis.shape[1]))
-    for a in range(0, coef.shape[0], rows):
-        np.matmul(coef[a : a + rows], basis, out=out[a : a + rows])
-    return out
 
 
 def adversary_moves(eval_ps, o, controls, basis=None, barred=None) -> np.ndarray:
@@ -113,7 +97,10 @@ def adversary_moves(eval_ps, o, controls, basis=None, barred=None) -> np.ndarray
     coef[R_:, 3] = 3.0
     coef[R_:, 4] = 0.0
     coef[R_:, 5] = 3.0
-    dt = _product(coef, basis)  # (2R, K): det and trace
+    # (2R, K): det and trace, in products small enough that BLAS does not start threads (2000
+    # runs x 64 controls: 0.08 ms against 2.6 ms on a busy machine; the screen's margin absorbs
+    # the rounding of either)
+    dt = matmul_rows(coef, basis)
     q = dt[:R_]
     q /= dt[R_:] * dt[R_:]
     if barred is not None:
