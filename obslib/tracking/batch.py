@@ -145,11 +145,12 @@ class _Adversaries:
                 self.blocks.append((np.flatnonzero((lo == a) & (hi == b)), a, c,
                                     control_basis(c)))
 
-    def move(self, k, s, pair, next_pair):
-        """Move every target after step ``k`` against its pair (or the sensors' next pair)."""
-        eval_ps = s[pair]
+    def move(self, k, pair_ps, next_ps):
+        """Move every target after step ``k`` against its pair's sensors ``pair_ps``
+        ``(R, 2, 2)`` (or those of the sensors' next pair, ``next_ps``)."""
+        eval_ps = pair_ps
         if self.anynext:
-            eval_ps = np.where(self.nextpair[:, None, None], s[next_pair], eval_ps)
+            eval_ps = np.where(self.nextpair[:, None, None], next_ps, eval_ps)
         o = self.truth[k]
         if self.blocks[0][0] is None:
             _, _, c, basis = self.blocks[0]
@@ -199,6 +200,7 @@ def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
         raise ValueError("an exact-icn run cannot face a next-pair adversary: each needs the "
                          "other's next move first")
     zero = np.zeros((R_, 2))
+    pair_ps = s[np.stack([ii, jj], axis=1)]  # (P, 2, 2): the sensors of each pair
     best, b = chooser(filters.xx, filters.xy, *filters.covariance(), zero, 0)
     for k in range(steps):
         best_log[k], bound[k] = best, b
@@ -208,10 +210,10 @@ def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
         ox, oy = path[k] if circle else (adv.truth[k, :, 0], adv.truth[k, :, 1])
         z0, z1 = _measure(sx, sy, i0, i1, ox, oy, noise[k], cols)
         filters.step(sx[i0], sy[i0], sx[i1], sy[i1], z0, z1, k)
-        pair = np.stack([i0, i1], axis=1)
+        cur = best
         if oracle:  # move first: the oracle knows the control that brings the target to o_{k+1}
             if not circle:
-                adv.move(k, s, pair, None)
+                adv.move(k, pair_ps[cur], None)
             control = (path[k + 1] - path[k]) if circle else adv.truth[k + 1] - adv.truth[k]
             best, b = chooser(filters.xx, filters.xy, *filters.covariance(),
                               np.broadcast_to(control, (R_, 2)), k + 1)
@@ -219,7 +221,7 @@ def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
         # the next choice depends only on the posterior (a "next-pair" adversary may know it)
         best, b = chooser(filters.xx, filters.xy, *filters.covariance(), zero, k + 1)
         if not circle:
-            adv.move(k, s, pair, np.stack([ii[best], jj[best]], axis=1))
+            adv.move(k, pair_ps[cur], pair_ps[best] if adv.anynext else None)
     truth = path[None] if circle else np.ascontiguousarray(adv.truth.transpose(1, 0, 2))
     return _collect(chooser, best_log, bound, est, cov, best, truth)
 
