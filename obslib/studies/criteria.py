@@ -264,7 +264,7 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
 def _binom(k, n, which: str) -> float:
     """``scipy.stats.binom.pmf``, ``cdf`` or ``sf`` of ``k`` at ``p = 1/2``: the support
     checks of ``rv_discrete`` around the same special functions."""
-    from scipy.special import _ufuncs as scu
+    import scipy.special._ufuncs as scu  # the functions behind scipy.stats.binom
 
     if which == "pmf":
         ok = 0 <= k <= n and np.floor(k) == k

@@ -123,15 +123,9 @@ def pair_bound_series(setup, points, pairs, cov=None) -> np.ndarray:
         raise ValueError(f"pairs must be integers of shape ({K}, 2), got {pr.dtype} {pr.shape}")
     if K and (pr.min() < 0 or pr.max() >= n):
         raise ValueError(f"pairs must be sensor indices in 0..{n - 1}")
-    return _pair_series(v, pr, setup.u_max)
-
-
-def _pair_series(v, pairs, u_max) -> np.ndarray:
-    """The worker of :func:`pair_bound_series`: the rows ``v`` ``(N, K, 2)`` (validated, in
-    their unit) normalised, then the kernel of the pair ``pairs[k]`` at each point ``k``."""
-    v, u2 = _kernels.normalise(v, u_max)
-    k = np.arange(v.shape[1])
-    vi, vj = v[pairs[:, 0], k], v[pairs[:, 1], k]
+    v, u2 = _kernels.normalise(v, setup.u_max)
+    k = np.arange(K)
+    vi, vj = v[pr[:, 0], k], v[pr[:, 1], k]
     return _kernels.pair_kernel(vi[:, 0], vi[:, 1], vj[:, 0], vj[:, 1], u2)
 
 
