@@ -305,7 +305,8 @@ class PairChooser:
             hx = xx[r, None] - self.sx  # Jacobian rows (xhat - p_i)^T, (M, N)
             hy = xy[r, None] - self.sy
             if name == "exact-icn":
-                score = icn_scores(hx, hy, control[r], self.ii, self.jj)
+                self.best[r] = _icn_picks(hx, hy, control[r], self.ii, self.jj)
+                continue
             else:
                 q = self.Q
                 pp = (p00[r] + q[0, 0], p01[r] + q[0, 1], p10[r] + q[1, 0], p11[r] + q[1, 1])
@@ -441,6 +442,46 @@ def icn_scores(hx, hy, control, ii, jj) -> np.ndarray:
     stack[:, :, 1, 0], stack[:, :, 1, 1] = hx[:, jj], hy[:, jj]
     stack[:, :, 2, :] = np.asarray(control, dtype=float)[:, None, :]
     return inverse_condition(stack)
+
+
+def _icn_picks(hx, hy, control, ii, jj) -> np.ndarray:
+    """``icn_scores(hx, hy, control, ii, jj).argmax(axis=1)`` without the exact value of every
+    pair: the screen of :func:`~obslib.tracking.adversary.adversary_moves`, maximised.
+
+    :math:`C^{-1}` increases with :math:`\\det G / \\operatorname{tr}^2 G` of the stacked rows,
+    here :math:`(h_i \\times h_j)^2 + (h_i \\times u)^2 + (h_j \\times u)^2` over
+    :math:`(|h_i|^2 + |h_j|^2 + |u|^2)^2` from per-sensor terms; the pairs within ``1e-11`` of
+    a row's largest ratio (the screen's rounding is some 1e-15) contain the exact maximiser,
+    and only they get :func:`icn_scores`'s exact value; the first exact maximum wins, as
+    ``argmax``. Rows with a non-finite ratio or extreme lengths get every pair's exact
+    value. (200 estimates x 15 pairs: 0.3 ms against 1.0 ms.)"""
+    u = np.asarray(control, dtype=float)
+    ux, uy = u[:, 0, None], u[:, 1, None]
+    with np.errstate(all="ignore"):  # extreme scales: such rows take the exact path below
+        cu = hx * uy - hy * ux  # h_k x u, (M, N)
+        nn = hx * hx + hy * hy
+        cross = hx[:, ii] * hy[:, jj] - hy[:, ii] * hx[:, jj]
+        tr = nn[:, ii] + nn[:, jj] + (ux * ux + uy * uy)
+        q = (cross * cross + cu[:, ii] ** 2 + cu[:, jj] ** 2) / (tr * tr)
+    picks = np.empty(hx.shape[0], dtype=int)
+    # far from 1 the squares may under- or overflow: those rows take the exact path
+    bad = ~np.isfinite(q).all(axis=1) | ~((tr > 1e-100) & (tr < 1e100)).all(axis=1)
+    if bad.any():
+        picks[bad] = icn_scores(hx[bad], hy[bad], u[bad], ii, jj).argmax(axis=1)
+    good = np.flatnonzero(~bad)
+    q = q[good]
+    rows, kk = np.nonzero(q >= q.max(axis=1, initial=-np.inf)[:, None] - 1e-11)
+    r = good[rows]
+    stack = np.empty((r.size, 3, 2))
+    stack[:, 0, 0], stack[:, 0, 1] = hx[r, ii[kk]], hy[r, ii[kk]]
+    stack[:, 1, 0], stack[:, 1, 1] = hx[r, jj[kk]], hy[r, jj[kk]]
+    stack[:, 2, :] = u[r]
+    exact = inverse_condition(stack)
+    order = np.lexsort((kk, -exact, r))  # by row, then value (largest first), then pair index
+    first = np.ones(order.size, dtype=bool)
+    first[1:] = r[order][1:] != r[order][:-1]
+    picks[r[order[first]]] = kk[order[first]]
+    return picks
 
 
 def choose_pairs(setup, strategy: str, xhat, cov, control=None):

@@ -295,3 +295,31 @@ def test_choose_pairs_for_a_criterion_is_the_brute_force_optimum(name, random_st
         tr.choose_pairs(setup, "random", x, P)
     with pytest.raises(ValueError, match="exact-icn needs the targets' control"):
         tr.choose_pairs(setup, "exact-icn", x, P)
+
+
+def test_icn_picks_equal_argmax_of_the_exact_scores():
+    """The oracle's screened pick is the first maximiser of icn_scores, also on symmetric
+    scenes (ties), with zero controls, on a baseline, and at extreme scales."""
+    from obslib.tracking.criteria import _icn_picks, icn_scores
+
+    rng = np.random.default_rng(9)
+    s = tr.PAPER_CIRCLE.sensor_array
+    ii, jj = np.triu_indices(len(s), 1)
+    M = 600
+    x = rng.normal([4.0, 3.0], 3.0, size=(M, 2))
+    x[:50] = s[0] + rng.random((50, 1)) * (s[1] - s[0])  # on a baseline
+    x[50:100] = s.mean(axis=0)  # the centre of the scene
+    u = rng.normal(0.0, 0.3, size=(M, 2))
+    u[::3] = 0.0  # the first step has no control
+    hx, hy = x[:, 0, None] - s[:, 0], x[:, 1, None] - s[:, 1]
+    for scale in (1.0, 1e-120, 1e120):
+        got = _icn_picks(hx * scale, hy * scale, u * scale, ii, jj)
+        want = icn_scores(hx * scale, hy * scale, u * scale, ii, jj).argmax(axis=1)
+        np.testing.assert_array_equal(got, want)
+    # a square of sensors seen from its centre: many exact ties, the first pair must win
+    sq = np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])
+    a, b = np.triu_indices(4, 1)
+    hx, hy = 1.0 - sq[:, 0][None], 1.0 - sq[:, 1][None]
+    for ctrl in ([0.0, 0.0], [0.3, 0.0], [0.2, 0.2]):
+        c = np.array([ctrl])
+        assert _icn_picks(hx, hy, c, a, b)[0] == icn_scores(hx, hy, c, a, b).argmax(axis=1)[0]
