@@ -33,6 +33,19 @@ def test_setup_figures_fixes_the_title_height():
         assert mpl.rcParams["axes.titley"] == 1.0
 
 
+def test_setup_figures_freezes_the_objects_alive_for_the_collector():
+    import gc
+
+    before = len(gc.get_objects())  # tracked objects, excluding frozen ones
+    try:
+        with mpl.rc_context():
+            setup_figures()
+        assert gc.get_freeze_count() >= before
+        assert len(gc.get_objects()) < before
+    finally:
+        gc.unfreeze()
+
+
 def test_fixed_title_height_is_where_matplotlib_puts_2d_titles():
     # the book's 2-D axes have no top tick labels and no offset text: same position
     np.testing.assert_array_equal(_title_box(1.0), _title_box(None))

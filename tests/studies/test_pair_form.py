@@ -84,3 +84,18 @@ def test_theorem4_audit_numerics_match_a_per_scene_loop():
     assert a.polar_matrix_printed_equal and a.eigenvalues_printed_equal
     assert a.theorem4_ratio_equal and a.cartesian_discriminant_equal
     assert a.cartesian_max_difference < 1e-20
+
+
+def test_theorem5_audit_grids_match_bound_surface_per_ratio():
+    """The audit evaluates every q in one broadcast call; bound_surface per q gives the same."""
+    qs = (0.0, 0.3, 1.0, 2.5)
+    a5 = pf.theorem5_audit(qs, 3.0, 8, 6, 3)
+    alpha, theta = fine_grid(3.0, 8, 6)
+    on_zero = np.isclose(np.abs(np.sin(theta)), 0.0, atol=1e-15)
+    zero_lines = 0.0
+    for q, gmax, argm in zip(qs, a5.grid_max, a5.argmax):
+        Z = bound_surface(alpha, theta, q, 1.0)
+        m = grid_maximum(alpha, theta, Z)
+        assert gmax == pytest.approx(m.value, rel=1e-15) and argm == m.points
+        zero_lines = max(zero_lines, Z[on_zero].max(), Z[:, alpha == 0].max())
+    assert a5.max_on_zero_lines == pytest.approx(zero_lines, abs=1e-300)

@@ -89,3 +89,41 @@ def test_switch_ticks_sit_where_the_logged_pair_changes():
     assert wide.get_xdata().tolist() == thin.get_xdata().tolist() == steps
     assert len(steps) == pub.switches
     assert set(wide.get_ydata().tolist()) == {-0.03}
+
+
+def _player():
+    """A closed figure's FuncAnimation redrawing mathtext, contour labels and a legend."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.animation import FuncAnimation
+
+    a, t = np.meshgrid(np.linspace(0, 3, 30), np.linspace(-3, 3, 40))
+    fig, ax = plt.subplots(figsize=(3, 2), dpi=40)
+
+    def frame(k):
+        ax.clear()
+        ax.clabel(ax.contour(a, t, np.sin(a * (k + 1)) * np.cos(t)), fontsize=8)
+        ax.plot([1], [1], "r*", label=r"$\alpha^*$")
+        ax.set_title(f"$q = {k}$")
+        ax.legend(loc="upper right")
+
+    player = FuncAnimation(fig, frame, frames=3, interval=100)
+    plt.close(fig)
+    return fig, player
+
+
+def test_animation_html_of_a_closed_figure_is_matplotlibs_player():
+    import re
+
+    fig, player = _player()
+    canvas = fig.canvas
+    html = viz.animation_html(player, uid="t")
+    assert fig.canvas is canvas  # the closed figure's canvas is given back
+    # matplotlib's own to_jshtml on the bare canvas of the closed figure, id replaced
+    ref = _player()[1].to_jshtml()
+    ref = ref.replace(re.search(r'id="_anim_img([0-9a-f]+)"', ref).group(1), "t")
+    ref = re.sub(r'<link[^>]*href="(?:https?:)?//[^"]*"[^>]*>\s*', "", ref)
+    assert html.count("data:image/png;base64") == 3
+    assert html == ref
