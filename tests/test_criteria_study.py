@@ -77,15 +77,17 @@ def test_paired_test_against_scipy():
 
 @pytest.mark.parametrize("n", list(range(1, 41)) + [51, 120, 199, 200, 201])
 def test_sign_test_is_scipys_binomtest(n):
-    """The sign test's p-value, computed without importing scipy.stats, is scipy.stats'
-    (the same special functions in the same order: equal, not only close)."""
+    """The sign test's p-value from the symmetric binomial tail is scipy.stats.binomtest's
+    (computed by a search over the other tail), to rounding."""
     for k in range(n + 1):
-        assert cs._sign_test(k, n) == stats.binomtest(k, n, 0.5).pvalue, (k, n)
+        assert cs._sign_test(k, n) == pytest.approx(stats.binomtest(k, n, 0.5).pvalue,
+                                                    rel=1e-12, abs=1e-300), (k, n)
 
 
 def test_wilcoxon_is_scipys():
-    """Beyond 50 differences the normal approximation with tie correction is scipy's to the
-    last bit; up to 50 scipy itself answers. Ties from rounding, signs unbalanced."""
+    """Beyond 50 differences the normal approximation with tie correction is scipy's (ranked
+    another way), to rounding; up to 50 scipy itself answers. Ties from rounding, signs
+    unbalanced."""
     rng = np.random.default_rng(8)
     for t in range(120):
         n = int(rng.integers(2, 260))
@@ -94,7 +96,8 @@ def test_wilcoxon_is_scipys():
             d = np.round(d, 1)
         d = d[d != 0]
         if d.size >= 2:
-            assert cs._wilcoxon(d) == stats.wilcoxon(d).pvalue, (t, d.size)
+            assert cs._wilcoxon(d) == pytest.approx(stats.wilcoxon(d).pvalue,
+                                                    rel=1e-10, abs=1e-300), (t, d.size)
 
 
 def test_summary_rows_match_runs():
