@@ -793,13 +793,14 @@ def _optimal(arr, deadline) -> PairAssignment:
     try:
         while True:
             search.run(max(floor, best_val))
-            if search.best_val > floor or floor <= best_val:
+            if search.value > floor or floor <= best_val:
                 break
             floor = bound - 1.5 * (bound - floor)
     except _TooLarge:
-        keep = np.flatnonzero(loss.reshape(-1) < bound - search.best_val - tol)
+        # the incumbent's gap (not the floor's) decides which variables may still matter
+        keep = np.flatnonzero(loss.reshape(-1) < bound - search.value - tol)
         alt = _milp(arr, _remaining(deadline), keep)
-        return alt if alt.value > search.best_val else _result(arr, search.best)
+        return alt if alt.value > search.value else _result(arr, search.best)
     return _result(arr, search.best)
 
 
@@ -835,7 +836,8 @@ class _Search:
     def __init__(self, arr, ii, jj, yt, ys, loss, keep, bound, best_val, best, tol, deadline):
         n, n_targets = arr.shape[0], arr.shape[2]
         self.arr, self.bound, self.tol, self.deadline = arr, bound, tol, deadline
-        self.best_val, self.best = best_val, best  # best_val: the pruning floor while searching
+        self.value, self.best = best_val, best  # the incumbent
+        self.best_val = best_val  # the pruning floor: the incumbent's value or above
         self.yt, self.ys = yt.tolist(), ys.tolist()
         self.tops = [[] for _ in range(n_targets)]  # per target, options (loss, l, i, j) by loss
         self.sops = [[] for _ in range(n)]  # per sensor, the same options
@@ -852,19 +854,20 @@ class _Search:
     def run(self, floor):
         """Search for assignments worth more than ``floor`` (at least the incumbent's value)."""
         _remaining(self.deadline)
-        self.best_val = floor
+        self.best_val = max(floor, self.value)
         self._node(frozenset(range(self.n)), frozenset(range(self.n_targets)), 0.0, [])
 
     def _node(self, sfree, tfree, spent, chosen):
         self.nodes += 1
+        if self.nodes > _MAX_NODES:
+            raise _TooLarge
         if self.nodes % 4096 == 0:
-            if self.nodes > _MAX_NODES:
-                raise _TooLarge
             _remaining(self.deadline)
         if not tfree:
             val = float(sum(self.arr[i, j, l] for i, j, l in chosen))
             if val > self.best_val + self.tol:
-                self.best_val, self.best = val, list(chosen)
+                self.best_val = self.value = val
+                self.best = list(chosen)
             return
         limit = self.bound - self.best_val - self.tol - spent  # the rest must lose less
         yt, ys = self.yt, self.ys
