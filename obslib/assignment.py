@@ -760,7 +760,7 @@ def _optimal(arr, deadline) -> PairAssignment:
     starts = [_greedy(_WeightSource(arr), n, n_targets).triples]
     order = np.lexsort((-wmat.reshape(-1), loss.reshape(-1), x < 0.5))
     used_t, used_s, picks = np.zeros(n_targets, bool), np.zeros(n, bool), []
-    for v in order[: 50 * n_targets * n].tolist():
+    for v in order.tolist():
         p, l = divmod(v, n_targets)
         i, j = int(ii[p]), int(jj[p])
         if not (used_t[l] or used_s[i] or used_s[j]):
