@@ -7,6 +7,7 @@ import pytest
 
 import obslib as ob
 from obslib.assignment import (
+    assignment_value,
     greedy_pair_assignment,
     greedy_pair_assignment_literal,
     optimal_pair_assignment,
@@ -212,9 +213,14 @@ def test_exact_solver_equals_brute_force_with_ties_zeros_and_spare_sensors():
         assert opt.value == pytest.approx(brute_force(W), rel=1e-12, abs=1e-12)
 
 
-def test_exact_solver_equals_plain_highs_program():
-    from obslib.assignment import _milp
+def _highs(W):
+    """Value of the plain HiGHS 0-1 program (proven optimum, zero gap)."""
+    from obslib._exact_pairs import milp
 
+    return assignment_value(W, milp(np.asarray(W, float)))
+
+
+def test_exact_solver_equals_plain_highs_program():
     rng = np.random.default_rng(12)
     for k in range(40):
         L, extra = int(rng.integers(4, 11)), int(rng.integers(0, 5))
@@ -225,40 +231,40 @@ def test_exact_solver_equals_plain_highs_program():
             W = _symmetric(rng, n, L, rng.uniform(0, 1, 50))
         else:
             W = _symmetric(rng, n, L, [0.0, 1.0, 1.0, 2.0])
-        opt, ref = optimal_pair_assignment(W), _milp(W)
+        opt = optimal_pair_assignment(W)
         assert _feasible(opt, n, L)
-        assert opt.value == pytest.approx(ref.value, rel=1e-9)
+        assert opt.value == pytest.approx(_highs(W), rel=1e-9)
 
 
 def test_exact_solver_at_the_reach_sizes_equals_highs():
     # the instances of the exact-solver reach study at L = 15 (N = 2L), where HiGHS takes seconds
-    from obslib.assignment import _milp
+    from obslib._exact_pairs import milp
 
     rng = np.random.default_rng([0, 15])
     S, T = rng.uniform(0, 100, (30, 2)), rng.uniform(0, 100, (15, 2))
     W = ob.pair_bounds(S, T, 1.0)
-    opt, ref = optimal_pair_assignment(W), _milp(W)
-    assert opt.value == pytest.approx(ref.value, rel=1e-12)
-    assert opt.triples == ref.triples  # a unique optimum (no ties in random geometry)
+    opt, ref = optimal_pair_assignment(W), milp(W)
+    assert opt.value == pytest.approx(assignment_value(W, ref), rel=1e-12)
+    assert opt.triples == ref  # a unique optimum (no ties in random geometry)
 
 
 def test_exact_solver_hands_large_searches_to_highs(monkeypatch):
-    from obslib import assignment as a
+    from obslib import _exact_pairs as exact
 
-    reference = a._milp
+    reference = exact.milp
     calls = []
 
     def counted(*args, **kwargs):
         calls.append(args)
         return reference(*args, **kwargs)
 
-    monkeypatch.setattr(a, "_MAX_NODES", 0)  # every search that branches goes to HiGHS
-    monkeypatch.setattr(a, "_milp", counted)
+    monkeypatch.setattr(exact, "MAX_NODES", 0)  # every search that branches goes to HiGHS
+    monkeypatch.setattr(exact, "milp", counted)
     rng = np.random.default_rng(13)
     for _ in range(10):
         L, extra = int(rng.integers(2, 6)), int(rng.integers(0, 3))
         _, _, W = random_instance(rng, L, extra)
-        want = brute_force(W) if L <= 3 else reference(W).value
+        want = brute_force(W) if L <= 3 else assignment_value(W, reference(W))
         assert optimal_pair_assignment(W).value == pytest.approx(want, rel=1e-9)
     assert calls  # the hand-over happened
 

@@ -20,7 +20,6 @@ from __future__ import annotations
 import numpy as np
 
 from . import teams as ts
-from ..teams import _batch_vectors
 from ..bounds import relative_vectors
 
 __all__ = ["NAN_RULES", "literal_logdet_counts", "literal_fig9_sweep"]
@@ -136,10 +135,9 @@ def literal_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, sid
     n_max = max(N_values, default=0)
     v = np.zeros((len(N_values), trials, n_max, n_targets, 2))
     for a, n in enumerate(N_values):
-        geoms = [ts.fig9_geometry(n, t, seed, n_targets, side) for t in range(trials)]
-        S = np.array([g[0] for g in geoms]).reshape(trials, n, 2)
-        T = np.array([g[1] for g in geoms]).reshape(trials, n_targets, 2)
-        v[a, :, :n] = _batch_vectors(S, T)  # validated as relative_vectors does
+        for t in range(trials):
+            S, T = ts.fig9_geometry(n, t, seed, n_targets, side)
+            v[a, t, :n] = relative_vectors(S, T)
     n_sensors = np.repeat(np.array(N_values, dtype=int), trials)
     out = _counts(v.reshape(-1, n_max, n_targets, 2), n_sensors, np.full(n_sensors.size, nan == "first"))
     return out.reshape(len(N_values), trials, n_targets)
