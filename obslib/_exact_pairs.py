@@ -314,7 +314,7 @@ class _Search:
             lbt += m
         if lbt >= limit:
             return
-        lbs = 0.0
+        lbs, smin = 0.0, {}
         for i in sfree:
             m = 2.0 * ys[i]
             for opt in self.sops[i]:
@@ -323,34 +323,55 @@ class _Search:
                 if opt[1] in tfree and opt[2] in sfree and opt[3] in sfree:
                     m = opt[0]
                     break
+            smin[i] = m
             lbs += m
         if 0.5 * lbs >= limit:
             return
-        # branch on the open target with the fewest options that fit
+
+        # an option (loss, l, i, j) fits when it keeps both bounds below the limit:
+        # loss + lbt - tmin[l] < limit and loss + (lbs - smin[i] - smin[j]) / 2 < limit
+        half = 0.5 * lbs
+        # branch on the open target or the free sensor with the fewest options that fit
         pick, options = None, None
         for l in tfree:
             room = limit - (lbt - tmin[l])
-            opts = [opt for opt in self._fitting(l, room, sfree)]
+            opts = [o for o in self._fitting(self.tops[l], room, sfree, tfree)
+                    if o[0] + half - 0.5 * (smin[o[2]] + smin[o[3]]) < limit]
             if yt[l] < room:
                 opts.append((yt[l], l, -1, -1))
                 opts.sort()
             if options is None or len(opts) < len(options):
-                pick, options = l, opts
+                options = opts
                 if len(opts) <= 1:
                     break
-        rest = tfree - {pick}
-        base = lbt - tmin[pick]
+        if len(options) > 2:  # a sensor may have fewer (worth the scan only then)
+            for i in sfree:
+                room = 2.0 * limit - (lbs - smin[i])
+                opts = [o for o in self._fitting(self.sops[i], room, sfree, tfree)
+                        if o[0] + lbt - tmin[o[1]] < limit
+                        and o[0] + half - 0.5 * (smin[o[2]] + smin[o[3]]) < limit]
+                if 2.0 * ys[i] < room:  # sensor i unused
+                    opts.append((ys[i], -1, i, -1))
+                    opts.sort()
+                if len(opts) < len(options):
+                    options = opts
+                    if len(opts) <= 2:
+                        break
         for opt in options:
-            if opt[0] + base >= self.bound - self.best_val - self.tol - spent:  # incumbent improved
+            if spent + opt[0] >= self.bound - self.best_val - self.tol:  # incumbent improved
                 break
-            if opt[2] < 0:
-                self._node(sfree, rest, spent + opt[0], chosen)
+            lo, l, i, j = opt
+            if l < 0:  # sensor i left unused
+                self._node(sfree - {i}, tfree, spent + lo, chosen)
+            elif i < 0:  # target l left unassigned
+                self._node(sfree, tfree - {l}, spent + lo, chosen)
             else:
-                self._node(sfree - {opt[2], opt[3]}, rest, spent + opt[0], chosen + [(opt[2], opt[3], pick)])
+                self._node(sfree - {i, j}, tfree - {l}, spent + lo, chosen + [(i, j, l)])
 
-    def _fitting(self, l, room, sfree):
-        for opt in self.tops[l]:
+    def _fitting(self, options, room, sfree, tfree):
+        """The options (sorted by loss) below ``room`` whose target is open and sensors free."""
+        for opt in options:
             if opt[0] >= room:
                 return
-            if opt[2] in sfree and opt[3] in sfree:
+            if opt[1] in tfree and opt[2] in sfree and opt[3] in sfree:
                 yield opt
