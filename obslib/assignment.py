@@ -545,11 +545,13 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
     :math:`\\ell_v = a_v^T y - \\omega_v \\ge 0` (the negated reduced profits). The search starts
     from the better of Algorithm 1 and an LP-guided greedy, improved by re-pairing the sensors of
     two targets, drops every variable whose loss alone exceeds the gap to that incumbent
-    (reduced-cost fixing), and explores the rest target by target, pruning with the smallest
-    remaining loss per target and per sensor. It proves the optimum up to :math:`10^{-10}` of the
-    bound (floating-point noise); if the search grows beyond a fixed node count it hands the
-    reduced model to ``scipy.optimize.milp``. Practical for the sizes of the paper (``L <= 20``,
-    ``N = 2L``).
+    (reduced-cost fixing), and explores the rest depth first, deciding at each node the open
+    target or free sensor with the fewest options that fit, pruning with the smallest remaining
+    loss per target and per sensor. It proves the optimum up to
+    :math:`10^{-10}` of the bound (floating-point noise; HiGHS's default gap is :math:`10^{-4}`);
+    if the search grows beyond a fixed node count it hands the reduced model to
+    ``scipy.optimize.milp``. Fig. 8's random instances at ``L = 20``, ``N = 2L`` take 0.1 to 1 s
+    (one HiGHS 0-1 program: about 4 s).
 
     Parameters
     ----------
