@@ -23,10 +23,12 @@ Among triples of equal weight every algorithm here takes the lexicographically s
 from __future__ import annotations
 
 import heapq
+import time
 from dataclasses import dataclass
 
 import numpy as np
 
+from . import _exact_pairs as exact_pairs
 from ._kernels import normalise, pair_kernel
 from ._validate import ArgumentTypeError, as_bool, as_float_array, as_int, as_points, as_u_max, as_weights, check_pair_sizes, check_weight_memory, validated_vectors
 
@@ -525,11 +527,44 @@ def _relaxed_from_cost(n, ii, jj, cost, ordered, counted) -> PairAssignment:
 
 
 def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignment:
-    """Problem 1 solved exactly: a 0-1 program over pair-target variables (HiGHS via ``milp``).
+    """Problem 1 solved exactly: a 0-1 program over pair-target variables.
 
     Variables ``x[p, l]`` for unordered pairs ``p = (i, j)`` and targets ``l``; each target takes
-    at most one pair and each sensor serves at most one target. Practical for small instances
-    (e.g. ``N <= 20``, ``L <= 8``).
+    at most one pair and each sensor serves at most one target:
+
+    .. math::
+
+        \\max \\sum_{p, l} \\omega_{p l} x_{p l} \\quad\\text{s.t.}\\quad
+        \\sum_p x_{p l} \\le 1,\\quad \\sum_{l} \\sum_{p \\ni i} x_{p l} \\le 1,\\quad
+        x \\in \\{0, 1\\}.
+
+    Solved by branch and bound with the bound of the linear relaxation (LP, HiGHS via
+    ``scipy.optimize.linprog``): with its duals :math:`y \\ge 0`, every assignment :math:`x`
+    satisfies :math:`\\omega^T x = \\mathbf{1}^T y - \\sum_{\\text{rows}} y_r s_r -
+    \\sum_{v \\in x} \\ell_v`, with row slacks :math:`s_r \\in \\{0, 1\\}` and losses
+    :math:`\\ell_v = a_v^T y - \\omega_v \\ge 0` (the negated reduced profits). The search starts
+    from the better of Algorithm 1 and an LP-guided greedy, improved by re-pairing the sensors of
+    two targets, drops every variable whose loss alone exceeds the gap to that incumbent
+    (reduced-cost fixing), and explores the rest depth first, deciding at each node the open
+    target or free sensor with the fewest options that fit, pruning with the smallest remaining
+    loss per target and per sensor. It proves the optimum up to
+    :math:`10^{-10}` of the bound (floating-point noise; HiGHS's default gap is :math:`10^{-4}`);
+    if the search grows beyond a fixed node count it hands the reduced model to
+    ``scipy.optimize.milp``. Fig. 8's random instances at ``L = 20``, ``N = 2L`` take 0.1 to 1 s
+    (one HiGHS 0-1 program: about 4 s).
+
+    Parameters
+    ----------
+    W : array_like, shape (N, N, L)
+        Pair weights: finite, non-negative, symmetric in ``i, j`` (the diagonal is ignored).
+    time_limit : float, optional
+        Seconds after which the call gives up (RuntimeError).
+
+    Returns
+    -------
+    PairAssignment
+        An optimal assignment, ``triples`` sorted by target; where several assignments are
+        optimal (ties, zero weights), which one is returned is unspecified.
 
     Raises
     ------
@@ -543,9 +578,6 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
     >>> optimal_pair_assignment(pair_bounds(S, T, 1.0)).triples
     [(0, 1, 0), (2, 3, 1)]
     """
-    from scipy.optimize import Bounds, LinearConstraint, milp
-    from scipy.sparse import coo_matrix, vstack
-
     arr = as_weights(W)
     n, n_targets = arr.shape[0], arr.shape[2]
     check_pair_sizes(n, n_targets)
@@ -554,34 +586,7 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
             raise ArgumentTypeError(f"time_limit must be a number of seconds or None, got {time_limit!r}")
         if not (np.isfinite(time_limit) and time_limit > 0):
             raise ValueError(f"time_limit must be positive and finite, got {time_limit!r}")
-    ii, jj = np.triu_indices(n, 1)
-    n_pairs = ii.size
-    c = -arr[ii, jj, :].reshape(-1)  # variable index p * L + l
-    top = float(-c.min(initial=0.0))
-    if top == 0.0:  # every weight is 0: assigning nothing is optimal (HiGHS cannot rank zeros)
-        return PairAssignment(triples=[], value=0.0)
-    # HiGHS treats |c| >= 1e20 as infinite and has absolute tolerances near 1e-9: weights far
-    # outside [2**-20, 2**20] are divided by a power of two first (the optimum does not change).
-    if not 2.0**-20 <= top <= 2.0**20:
-        c = c / 2.0 ** (np.frexp(top)[1] - 1)
-    var = np.arange(n_pairs * n_targets)
-    p_of, l_of = var // n_targets, var % n_targets
-    target_rows = coo_matrix((np.ones(var.size), (l_of, var)), shape=(n_targets, var.size))
-    sensor_rows = coo_matrix(
-        (np.ones(2 * var.size), (np.concatenate([ii[p_of], jj[p_of]]), np.concatenate([var, var]))),
-        shape=(n, var.size),
-    )
-    A = vstack([target_rows, sensor_rows]).tocsr()
-    options = {"time_limit": time_limit} if time_limit else {}
-    res = milp(
-        c,
-        constraints=LinearConstraint(A, -np.inf, 1.0),
-        integrality=np.ones(var.size),
-        bounds=Bounds(0, 1),
-        options=options,
-    )
-    if res.status != 0:
-        raise RuntimeError(f"MILP did not reach a proven optimum: {res.message}")
-    chosen = np.flatnonzero(res.x > 0.5)
-    triples = sorted(((int(ii[p_of[v]]), int(jj[p_of[v]]), int(l_of[v])) for v in chosen), key=lambda t: t[2])
+    deadline = None if not time_limit else time.perf_counter() + float(time_limit)
+    start = _greedy(_WeightSource(arr), n, n_targets).triples  # one of the search's incumbents
+    triples = sorted(exact_pairs.solve(arr, deadline, start), key=lambda t: t[2])
     return PairAssignment(triples=triples, value=assignment_value(arr, triples))

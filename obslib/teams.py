@@ -131,8 +131,27 @@ def greedy_team_picks(sensors, targets, measure: str = "logdet", eps: float = 1.
         raise ValueError("there must be at least one target")
     if S.shape[0] == 0:
         return np.zeros((0, S.shape[1]), np.int64), np.zeros((0, S.shape[1]), np.int64)
-    v = np.stack([relative_vectors(s, t) for s, t in zip(S, T)])  # validated, (K, N, L, 2)
+    v = _batch_vectors(S, T)  # validated, (K, N, L, 2)
     return _greedy_teams(v, None, measure, e, rank_rtol)
+
+
+def _batch_vectors(S, T) -> np.ndarray:
+    """``relative_vectors(S[k], T[k])`` of every instance, ``(K, N, L, 2)``.
+
+    The differences of the whole batch at once, and the validation's checks (finite points and
+    differences, distinct sensors, no sensor on a target) as a few array tests; only a batch that
+    fails one goes instance by instance through :func:`obslib.bounds.relative_vectors`, which
+    then raises its message (Fig. 9's 930 scenes: 0.01 s against 0.08 s one by one).
+    """
+    if S.ndim == 3 and T.ndim == 3 and S.shape[2] == 2 and T.shape[2] == 2:
+        with np.errstate(over="ignore", invalid="ignore"):
+            v = T[:, None, :, :] - S[:, :, None, :]
+        n = S.shape[1]
+        if (np.isfinite(S).all() and np.isfinite(T).all() and np.isfinite(v).all()
+                and not (v == 0).all(axis=-1).any()
+                and (S[:, :, None, :] == S[:, None, :, :]).all(axis=-1).sum() == S.shape[0] * n):
+            return v
+    return np.stack([relative_vectors(s, t) for s, t in zip(S, T)])
 
 
 def greedy_team_counts(sensors, targets, measure: str = "logdet", eps: float = 1.0,

@@ -7,6 +7,7 @@ import pytest
 
 import obslib as ob
 from obslib.assignment import (
+    assignment_value,
     greedy_pair_assignment,
     greedy_pair_assignment_literal,
     optimal_pair_assignment,
@@ -168,3 +169,112 @@ def test_pruned_relaxation_skips_most_weights_on_large_instances():
     S, T = rng.uniform(0, 100, (300, 2)), rng.uniform(0, 100, (150, 2))
     res = relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0)
     assert res.n_evaluations < 0.5 * 300 * 299 // 2 * 150
+
+
+# --------------------------------------------------------------------------------------------
+# The exact solver's branch and bound against brute force and the plain HiGHS 0-1 program
+# --------------------------------------------------------------------------------------------
+
+
+def _symmetric(rng, n, L, values):
+    """Random symmetric weights drawn from ``values`` (zeros and exact ties when few values)."""
+    W = rng.choice(values, size=(L, n, n))
+    W = np.triu(W, 1)
+    return (W + W.transpose(0, 2, 1)).transpose(1, 2, 0)
+
+
+def _feasible(result, n, L):
+    used = [s for i, j, _ in result.triples for s in (i, j)]
+    targets = [l for *_, l in result.triples]
+    return (len(used) == len(set(used)) and all(0 <= s < n for s in used)
+            and len(targets) == len(set(targets)) and all(0 <= l < L for l in targets)
+            and all(i < j for i, j, _ in result.triples))
+
+
+def test_exact_solver_equals_brute_force_with_ties_zeros_and_spare_sensors():
+    from obslib.studies.hardness import random_3dm, three_dm_weights
+
+    rng = np.random.default_rng(11)
+    for k in range(120):
+        L, extra = int(rng.integers(1, 4)), int(rng.integers(0, 4))
+        n = 2 * L + extra
+        if k % 4 == 0:
+            _, _, W = random_instance(rng, L, extra)
+        elif k % 4 == 1:
+            _, _, W = random_instance(rng, L, min(extra, 25 - 2 * L), grid=True)
+        elif k % 4 == 2:
+            W = _symmetric(rng, n, L, [0.0, 0.0, 1.0, 2.0, 3.0])
+        else:
+            q = L + 1
+            W = three_dm_weights(q, random_3dm(q, int(rng.integers(q, 3 * q + 1)), rng))
+        opt = optimal_pair_assignment(W)
+        assert _feasible(opt, W.shape[0], W.shape[2])
+        assert opt.value == sum(W[i, j, l] for i, j, l in opt.triples)
+        assert opt.value == pytest.approx(brute_force(W), rel=1e-12, abs=1e-12)
+
+
+def _highs(W):
+    """Value of the plain HiGHS 0-1 program (proven optimum, zero gap)."""
+    from obslib._exact_pairs import milp
+
+    return assignment_value(W, milp(np.asarray(W, float)))
+
+
+def test_exact_solver_equals_plain_highs_program():
+    rng = np.random.default_rng(12)
+    for k in range(40):
+        L, extra = int(rng.integers(4, 11)), int(rng.integers(0, 5))
+        n = 2 * L + extra
+        if k % 3 == 0:
+            _, _, W = random_instance(rng, L, extra)
+        elif k % 3 == 1:
+            W = _symmetric(rng, n, L, rng.uniform(0, 1, 50))
+        else:
+            W = _symmetric(rng, n, L, [0.0, 1.0, 1.0, 2.0])
+        opt = optimal_pair_assignment(W)
+        assert _feasible(opt, n, L)
+        assert opt.value == pytest.approx(_highs(W), rel=1e-9)
+
+
+def test_exact_solver_at_the_reach_sizes_equals_highs():
+    # the instances of the exact-solver reach study at L = 15 (N = 2L), where HiGHS takes seconds
+    from obslib._exact_pairs import milp
+
+    rng = np.random.default_rng([0, 15])
+    S, T = rng.uniform(0, 100, (30, 2)), rng.uniform(0, 100, (15, 2))
+    W = ob.pair_bounds(S, T, 1.0)
+    opt, ref = optimal_pair_assignment(W), milp(W)
+    assert opt.value == pytest.approx(assignment_value(W, ref), rel=1e-12)
+    assert opt.triples == ref  # a unique optimum (no ties in random geometry)
+
+
+def test_exact_solver_hands_large_searches_to_highs(monkeypatch):
+    from obslib import _exact_pairs as exact
+
+    reference = exact.milp
+    calls = []
+
+    def counted(*args, **kwargs):
+        calls.append(args)
+        return reference(*args, **kwargs)
+
+    monkeypatch.setattr(exact, "MAX_NODES", 0)  # every search that branches goes to HiGHS
+    monkeypatch.setattr(exact, "milp", counted)
+    rng = np.random.default_rng(13)
+    for _ in range(10):
+        L, extra = int(rng.integers(2, 6)), int(rng.integers(0, 3))
+        _, _, W = random_instance(rng, L, extra)
+        want = brute_force(W) if L <= 3 else assignment_value(W, reference(W))
+        assert optimal_pair_assignment(W).value == pytest.approx(want, rel=1e-9)
+    assert calls  # the hand-over happened
+
+
+def test_exact_solver_time_limit_and_zero_weights():
+    rng = np.random.default_rng([0, 20])
+    W = ob.pair_bounds(rng.uniform(0, 100, (40, 2)), rng.uniform(0, 100, (20, 2)), 1.0)
+    with pytest.raises(RuntimeError, match="proven optimum"):
+        optimal_pair_assignment(W, time_limit=1e-6)
+    for bad in (0, -1.0, float("inf")):
+        with pytest.raises(ValueError, match="time_limit"):
+            optimal_pair_assignment(W, time_limit=bad)
+    assert optimal_pair_assignment(np.zeros((4, 4, 2))).triples == []

@@ -142,3 +142,23 @@ def test_best_labelling_equals_a_loop_over_all_labellings():
                          (np.full((1, 4), np.nan), "NaN"), (np.zeros((3, 2**14)), "too many")]:
         with pytest.raises(ValueError, match=message):
             best_team_labelling(bad)
+
+
+def test_batch_vectors_equal_relative_vectors_and_raise_the_same_errors():
+    from obslib.bounds import relative_vectors
+    from obslib.teams import _batch_vectors
+
+    rng = np.random.default_rng(30)
+    S, T = rng.uniform(0, 100, (7, 9, 2)), rng.uniform(0, 100, (7, 3, 2))
+    np.testing.assert_array_equal(_batch_vectors(S, T), np.stack([relative_vectors(s, t) for s, t in zip(S, T)]))
+    bad = [(S.copy(), T.copy()) for _ in range(3)]
+    bad[0][0][4, 2] = bad[0][0][4, 5]  # two sensors coincide in instance 4
+    bad[1][0][2, 1] = T[2, 0]  # a sensor on a target
+    bad[2][0][6, 0, 0], bad[2][1][6, 1, 0] = 1.7e308, -1.7e308  # a difference overflows
+    for bs, bt in bad:
+        with pytest.raises(ValueError) as got:
+            _batch_vectors(bs, bt)
+        k = next(k for k in range(7) if (bs[k] != S[k]).any())
+        with pytest.raises(ValueError) as want:
+            relative_vectors(bs[k], bt[k])
+        assert str(got.value) == str(want.value)

@@ -65,6 +65,65 @@ def test_literal_greedy_matches_exact_rational_reference(nan):
         np.testing.assert_array_equal(fm.literal_logdet_counts(S.astype(float), T, nan), want)
 
 
+def _float_literal(S, T, nan):
+    """The literal greedy one instance at a time in floating point, every gain recomputed from
+    ``det`` and the Cauchy-Binet increments each round (the loop the batched sweep replaced)."""
+    v = np.asarray(T, float)[None, :, :] - np.asarray(S, float)[:, None, :]
+    n, L = v.shape[0], v.shape[1]
+
+    def value(det):
+        with np.errstate(divide="ignore"):
+            return np.where(det > 0, np.log(np.where(det > 0, det, 1.0)), -np.inf)
+
+    det, C = np.zeros(L), np.zeros((n, L))
+    free, counts = np.ones(n, dtype=bool), np.zeros(L, dtype=int)
+    for _ in range(n):
+        with np.errstate(invalid="ignore"):
+            g = value(det[None, :] + C) - value(det)[None, :]
+        g[~free] = -np.inf
+        gains = [(float(x), k) for k, x in enumerate(g.reshape(-1))]
+        nans = [k for x, k in gains if math.isnan(x)]
+        real = [(x, k) for x, k in gains if not math.isnan(x)]
+        top = max(x for x, _ in real) if real else -math.inf
+        if nans and (nan == "first" or top == -math.inf):
+            k = nans[0]
+        else:
+            k = min(k for x, k in real if x == top)  # the first of the largest
+        i, l = divmod(k, L)
+        free[i] = False
+        counts[l] += 1
+        det[l] += C[i, l]
+        cross = v[:, l, 0] * v[i, l, 1] - v[:, l, 1] * v[i, l, 0]
+        C[:, l] += cross * cross
+    return counts
+
+
+@pytest.mark.parametrize("nan", fm.NAN_RULES)
+def test_batched_literal_sweep_equals_one_instance_at_a_time(nan):
+    # the sweep runs all (N, trial) greedies together, padded to the largest N
+    Ns, trials, seed, L = [3, 4, 7, 12], 6, 11, 4
+    lit = fm.literal_fig9_sweep(Ns, trials, seed, L, nan=nan)
+    for a, n in enumerate(Ns):
+        for t in range(trials):
+            S, T = ts.fig9_geometry(n, t, seed, L, 100.0)
+            np.testing.assert_array_equal(lit[a, t], _float_literal(S, T, nan))
+
+
+@pytest.mark.parametrize("nan", fm.NAN_RULES)
+def test_literal_counts_equal_float_loop_with_collinear_rows(nan):
+    # integer points, targets on the lines of some sensors: zero determinants and NaN gains
+    # beyond the first round
+    rng = np.random.default_rng(8)
+    for _ in range(40):
+        n, L = int(rng.integers(1, 9)), int(rng.integers(1, 4))
+        S = rng.choice(36, size=n, replace=False)
+        S = np.c_[S // 6, S % 6].astype(float)
+        T = rng.integers(0, 6, size=(L, 2)) + 0.5 * rng.integers(0, 2, size=(L, 1))
+        if (T[None] == S[:, None]).all(axis=2).any():
+            continue
+        np.testing.assert_array_equal(fm.literal_logdet_counts(S, T, nan), _float_literal(S, T, nan))
+
+
 def test_literal_greedy_matlab_rule_gives_every_sensor_to_target_1():
     # first pick (s1, t1) by the all-NaN rule, then +inf for t1's second sensor, then only t1
     # has finite gains

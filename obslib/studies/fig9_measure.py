@@ -65,31 +65,52 @@ def literal_logdet_counts(sensors, targets, nan: str = "ignore") -> np.ndarray:
     if nan not in NAN_RULES:
         raise ValueError(f"nan must be one of {NAN_RULES}, got {nan!r}")
     v = relative_vectors(sensors, targets)  # validated, (N, L, 2)
-    n, n_targets = v.shape[0], v.shape[1]
-    if n_targets < 1:
+    if v.shape[1] < 1:
         raise ValueError("there must be at least one target")
-    det = np.zeros(n_targets)
-    C = np.zeros((n, n_targets))  # Cauchy-Binet increment of adding sensor i to team l
-    free = np.ones(n, dtype=bool)
-    counts = np.zeros(n_targets, dtype=int)
-    for _ in range(n):
+    return _counts(v[None], np.array([v.shape[0]]), np.array([nan == "first"]))[0]
+
+
+def _counts(v, n_sensors, first) -> np.ndarray:
+    """:func:`literal_logdet_counts` of ``B`` instances at once, ``(B, L)``.
+
+    ``v`` is ``(B, N_max, L, 2)``, instance ``b`` using its first ``n_sensors[b]`` rows (the rest
+    start as taken and are never chosen); ``first[b]`` selects the ``"first"`` NaN rule. Round by
+    round every instance does what the single-instance greedy does, on the same elementwise
+    values in the same (sensor, target) order, so the counts are those of one instance at a time
+    (the 1860 greedies of Fig. 9's two literal sweeps in 0.25 s against 3.4 s one by one).
+    """
+    B, n_max, n_targets = v.shape[0], v.shape[1], v.shape[2]
+    rows = np.arange(B)
+    det = np.zeros((B, n_targets))
+    C = np.zeros((B, n_max, n_targets))  # Cauchy-Binet increment of adding sensor i to team l
+    vdet = _value(det)  # (B, L)
+    vnew = _value(C)  # _value(det + C), kept column by column as teams change
+    free = np.arange(n_max)[None, :] < n_sensors[:, None]
+    counts = np.zeros((B, n_targets), dtype=int)
+    for r in range(int(n_sensors.max(initial=0))):
         with np.errstate(invalid="ignore"):
-            g = _value(det[None, :] + C) - _value(det)[None, :]  # (N, L); -inf - -inf = NaN
+            g = vnew - vdet[:, None, :]  # (B, N, L); -inf - -inf = NaN
         g[~free] = -np.inf
-        flat = g.reshape(-1)
+        flat = g.reshape(B, -1)
         isnan = np.isnan(flat)
-        if nan == "first" and isnan.any():
-            k = int(np.flatnonzero(isnan)[0])
-        elif (~isnan & (flat > -np.inf)).any() or not isnan.any():
-            k = int(np.argmax(np.where(isnan, -np.inf, flat)))
-        else:  # every gain of a free sensor is NaN: the first free (sensor, target)
-            k = int(np.flatnonzero(isnan)[0])
-        i, l = divmod(k, n_targets)
-        free[i] = False
-        counts[l] += 1
-        det[l] += C[i, l]
-        cross = v[:, l, 0] * v[i, l, 1] - v[:, l, 1] * v[i, l, 0]
-        C[:, l] += cross * cross
+        any_nan = isnan.any(axis=1)
+        first_nan = np.argmax(isnan, axis=1)
+        masked = np.where(isnan, -np.inf, flat)
+        best = np.argmax(masked, axis=1)
+        any_real = (masked > -np.inf).any(axis=1)
+        # "first": the first NaN if any; "ignore": the largest real gain, else the first NaN
+        k = np.where(np.where(first, any_nan, ~any_real & any_nan), first_nan, best)
+        act = rows[r < n_sensors]  # instances still choosing
+        i, l = np.divmod(k[act], n_targets)
+        free[act, i] = False
+        counts[act, l] += 1
+        det[act, l] += C[act, i, l]
+        vl = v[act, :, l, :]  # (B', N, 2): team l's rows of each instance
+        vi = v[act, i, l, :]  # (B', 2): the chosen row
+        cross = vl[..., 0] * vi[:, None, 1] - vl[..., 1] * vi[:, None, 0]
+        C[act, :, l] += cross * cross
+        vdet[act, l] = _value(det[act, l])
+        vnew[act, :, l] = _value(det[act, l][:, None] + C[act, :, l])
     return counts
 
 
@@ -110,9 +131,13 @@ def literal_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, sid
     if nan not in NAN_RULES:
         raise ValueError(f"nan must be one of {NAN_RULES}, got {nan!r}")
     N_values = [int(n) for n in N_values]
-    out = np.empty((len(N_values), int(trials), int(n_targets)), dtype=int)
+    trials, n_targets = int(trials), int(n_targets)
+    n_max = max(N_values, default=0)
+    v = np.zeros((len(N_values), trials, n_max, n_targets, 2))
     for a, n in enumerate(N_values):
-        for t in range(int(trials)):
+        for t in range(trials):
             S, T = ts.fig9_geometry(n, t, seed, n_targets, side)
-            out[a, t] = literal_logdet_counts(S, T, nan)
-    return out
+            v[a, t, :n] = relative_vectors(S, T)
+    n_sensors = np.repeat(np.array(N_values, dtype=int), trials)
+    out = _counts(v.reshape(-1, n_max, n_targets, 2), n_sensors, np.full(n_sensors.size, nan == "first"))
+    return out.reshape(len(N_values), trials, n_targets)
