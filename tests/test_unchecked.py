@@ -184,6 +184,25 @@ def test_derived_worst_case_closed_form_against_grid_and_theorem1():
         assert eq4.bound_ratio(S, o, 1.0) >= 1 / np.sqrt(n)
 
 
+@pytest.mark.parametrize("side", [1.0, 3.0, 100.0, 1e-5])
+def test_batched_bound_ratios_are_the_per_scene_ones(side):
+    """random_scenes draws as the per-scene loop does; bound_ratios (batched eigenvalues and
+    lower_bounds' batched SVD of zero-padded rows) equals bound_ratio scene by scene."""
+    rows, counts = eq4.random_scenes(300, np.random.default_rng(5), side)
+    rng = np.random.default_rng(5)
+    ref, lam_ref = [], []
+    for _ in range(300):
+        n = int(rng.integers(2, 7))
+        S, o = rng.uniform(0, side, (n, 2)), rng.uniform(0, side, 2)
+        ref.append(eq4.bound_ratio(S, o, 1.0))
+        lam_ref.append(np.linalg.eigvalsh((o - S).T @ (o - S))[1])
+    assert counts.tolist() == [int(np.count_nonzero(np.abs(r).sum(axis=1))) for r in rows]
+    ratios, lam = eq4.bound_ratios(rows, counts, 1.0)
+    np.testing.assert_allclose(ratios, ref, rtol=1e-12)
+    np.testing.assert_allclose(lam, lam_ref, rtol=1e-12)
+    assert np.all(ratios >= 1 / np.sqrt(counts) - 1e-12)
+
+
 def test_eq4_bad_input():
     with pytest.raises(ValueError, match="u_max"):
         eq4.derived_bound([[0, 0], [1, 0]], [0, 1], -1)
@@ -191,6 +210,12 @@ def test_eq4_bad_input():
         eq4.derived_matrix([[0, 0], [1, 0]], [0, 1], [1, 2, 3])
     with pytest.raises(ValueError, match="n_scenes"):
         eq4.pair_choice_changes(0, 6, 1.0)
+    with pytest.raises(ValueError, match="n_scenes"):
+        eq4.random_scenes(0, np.random.default_rng(0))
+    with pytest.raises(ValueError, match="rng"):
+        eq4.random_scenes(3, 0)
+    with pytest.raises(ValueError, match="rows"):
+        eq4.bound_ratios(np.zeros((2, 6, 3)), [2, 2], 1.0)
 
 
 # --------------------------------------------------------------------------------------------

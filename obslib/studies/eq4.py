@@ -25,7 +25,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..bounds import lower_bound, pair_bounds
+from ..bounds import lower_bound, lower_bounds, pair_bounds
 from ..observability import relative_rows
 
 __all__ = [
@@ -34,6 +34,8 @@ __all__ = [
     "derived_bound",
     "worst_derived_on_disc",
     "bound_ratio",
+    "random_scenes",
+    "bound_ratios",
     "pair_choice_changes",
     "random_scene_audit",
 ]
@@ -179,6 +181,74 @@ def bound_ratio(sensors, target, u_max) -> float:
     return derived_bound(sensors, target, u_max) / tb if tb > 0 else 1.0
 
 
+def random_scenes(n_scenes: int, rng, side: float = 1.0):
+    """``n_scenes`` random scenes of 2 to 6 sensors and one target, uniform in ``[0, side]^2``.
+
+    Each scene is drawn from ``rng`` (a ``numpy.random.Generator``) in turn: its number of
+    sensors ``n`` (``rng.integers(2, 7)``), the sensors (``rng.uniform(0, side, (n, 2))``), then
+    the target (``rng.uniform(0, side, 2)``).
+
+    Returns
+    -------
+    rows : ndarray, shape (n_scenes, 6, 2)
+        The rows ``o - p_i`` of each scene, padded with zero rows (which change no singular
+        value).
+    counts : ndarray, shape (n_scenes,)
+        The number of sensors of each scene.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.studies import eq4
+    >>> rows, counts = eq4.random_scenes(3, np.random.default_rng(0))
+    >>> rows.shape, bool(np.all((counts >= 2) & (counts <= 6)))
+    ((3, 6, 2), True)
+    """
+    if isinstance(n_scenes, bool) or not isinstance(n_scenes, (int, np.integer)) or n_scenes < 1:
+        raise ValueError(f"n_scenes must be a positive integer, got {n_scenes!r}")
+    if not isinstance(rng, np.random.Generator):
+        raise ValueError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
+    rows, counts = np.zeros((int(n_scenes), 6, 2)), np.empty(int(n_scenes), dtype=int)
+    for k in range(int(n_scenes)):
+        n = int(rng.integers(2, 7))
+        S, o = rng.uniform(0, side, (n, 2)), rng.uniform(0, side, 2)
+        rows[k, :n], counts[k] = o - S, n
+    return rows, counts
+
+
+def bound_ratios(rows, counts, u_max) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`bound_ratio` of a stack of scenes, and the ``lambda_max`` of each.
+
+    ``rows`` and ``counts`` as :func:`random_scenes` returns them. The derived matrix's worst
+    case ``sqrt(lambda_min / (lambda_max + N u_max^2))`` from the batched eigenvalues of
+    ``O(o)^T O(o)``, over Theorem 1's bound by :func:`obslib.lower_bounds` (batched SVD of
+    ``O(o)``); 1 where that bound is 0, as :func:`bound_ratio`.
+
+    Returns
+    -------
+    ratios, lambda_max : ndarray, shape (n_scenes,)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from obslib.studies import eq4
+    >>> rows, counts = eq4.random_scenes(50, np.random.default_rng(1))
+    >>> ratios, lam = eq4.bound_ratios(rows, counts, 1.0)
+    >>> bool(np.all(ratios <= 1) and np.all(ratios >= 1 / np.sqrt(counts)))
+    True
+    """
+    um = _u_max(u_max)
+    r = np.asarray(rows, dtype=float)
+    n = np.asarray(counts)
+    if r.ndim != 3 or r.shape[-1] != 2 or n.shape != r.shape[:1] or not np.isfinite(r).all():
+        raise ValueError(f"rows must be finite (n_scenes, rows, 2) with one count per scene, "
+                         f"got {r.shape} and {n.shape}")
+    lam = np.linalg.eigvalsh(np.swapaxes(r, -1, -2) @ r)
+    derived = np.sqrt(np.maximum(lam[:, 0], 0.0) / (lam[:, 1] + n * um**2))
+    tb = lower_bounds(r, um)
+    return np.where(tb > 0, derived / np.where(tb > 0, tb, 1.0), 1.0), lam[:, 1]
+
+
 def pair_choice_changes(n_scenes: int, n_sensors: int, u_max: float, seed: int = 0,
                         side: float = 10.0) -> float:
     """Share of random scenes where the best pair by Theorem 4 differs between Eq. (4)
@@ -238,14 +308,8 @@ def random_scene_audit(n_geometries: int, n_refine: int, seed: int, u_max: float
     ([1.0, 100.0], True, True)
     """
     rng = np.random.default_rng(seed)
-    out = {}
-    for side in (1.0, 100.0):
-        ratios = []
-        for _ in range(n_geometries):
-            n = int(rng.integers(2, 7))
-            S, o = rng.uniform(0, side, (n, 2)), rng.uniform(0, side, 2)
-            ratios.append(bound_ratio(S, o, u_max))
-        out[side] = np.array(ratios)
+    out = {side: bound_ratios(*random_scenes(n_geometries, rng, side), u_max)[0]
+           for side in (1.0, 100.0)}
     # the closed-form worst case against a grid search of the disc, and against Theorem 1
     grid_err, below = 0.0, 0
     for _ in range(n_refine):
