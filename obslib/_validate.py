@@ -36,6 +36,7 @@ __all__ = [
     "as_stack",
     "as_u_max_stack",
     "validated_vectors",
+    "vectors_between",
     "MAX_WEIGHT_BYTES",
 ]
 
@@ -86,9 +87,8 @@ def as_points(points, name: str = "sensors", *, min_count: int = 0) -> np.ndarra
         raise ValueError(f"{name} must have shape (n, 2), got {arr.shape}")
     if arr.shape[0] < min_count:
         raise ValueError(f"{name} needs at least {min_count} point(s), got {arr.shape[0]}")
-    bad = ~np.isfinite(arr).all(axis=1)
-    if bad.any():
-        k = int(np.flatnonzero(bad)[0])
+    if not np.isfinite(arr).all():  # one reduction; the offending row is looked up on failure only
+        k = int(np.flatnonzero(~np.isfinite(arr).all(axis=1))[0])
         singular = name[:-1] if name.endswith("s") else name
         raise ValueError(f"{singular} {k} has a non-finite coordinate: {arr[k].tolist()}")
     return arr
@@ -372,8 +372,12 @@ def validated_vectors(sensors, targets, cov=None):
     The true vectors are ``v[:, l] * unit[l]``; ``unit`` is 1 except for a covariance or scene
     outside the safe range (see :func:`obslib._kernels.mahalanobis_rescale`).
     """
-    s = as_points(sensors, "sensors")
-    t = as_points(targets, "targets")
+    return vectors_between(as_points(sensors, "sensors"), as_points(targets, "targets"), cov)
+
+
+def vectors_between(s: np.ndarray, t: np.ndarray, cov=None):
+    """:func:`validated_vectors` for points that already passed :func:`as_points`: the checks of
+    the scene (distinct sensors, finite nonzero differences) and of ``cov``, each done once."""
     check_distinct(s)
     with np.errstate(over="ignore", invalid="ignore"):
         v = t[None, :, :] - s[:, None, :]

@@ -28,6 +28,7 @@ from ._validate import (
     as_u_max_stack,
     check_weight_memory,
     validated_vectors,
+    vectors_between,
 )
 from .observability import relative_rows
 
@@ -72,7 +73,7 @@ def lower_bound(sensors, target, u_max) -> float:
     >>> lower_bound([[0, 0]], [1, 1], u_max=1.0)  # one sensor: rank 1 (Theorem 2)
     0.0
     """
-    return float(lower_bounds(relative_rows(sensors, target), float(as_u_max(u_max))))
+    return float(_lower_bounds(relative_rows(sensors, target), as_u_max(u_max)))
 
 
 def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
@@ -150,8 +151,13 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
     s = as_points(sensors, "sensors")
     t = as_points(targets, "targets")
     check_weight_memory(s.shape[0], t.shape[0])
-    v, unit = validated_vectors(s, t, cov)
-    v, u2 = normalise(v, as_u_max(u_max, v.shape[1]) / unit)
+    v, unit = vectors_between(s, t, cov)  # each input is checked once
+    return _pair_bounds(v, as_u_max(u_max, t.shape[0]) / unit)
+
+
+def _pair_bounds(v: np.ndarray, u) -> np.ndarray:
+    """:func:`pair_bounds` of validated vectors ``v`` ``(N, L, 2)`` and speed bounds ``u`` in their unit."""
+    v, u2 = normalise(v, u)
     x, y = v[..., 0], v[..., 1]  # (N, L)
     return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2)
 
@@ -230,7 +236,7 @@ def worst_case_control(sensors, target, u_max) -> np.ndarray:
     >>> worst_case_control([[0, 0], [4, 0]], [2, 1], u_max=1.0)
     array([1., 0.])
     """
-    return worst_case_controls(relative_rows(sensors, target), float(as_u_max(u_max)))
+    return _worst_case_controls(relative_rows(sensors, target), as_u_max(u_max))
 
 
 def lower_bounds(rows, u_max) -> np.ndarray:
@@ -257,7 +263,11 @@ def lower_bounds(rows, u_max) -> np.ndarray:
     array([0.816497])
     """
     r = as_stack(rows, "rows", 2)
-    u = as_u_max_stack(u_max, r.shape[:-2])
+    return _lower_bounds(r, as_u_max_stack(u_max, r.shape[:-2]))
+
+
+def _lower_bounds(r: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """:func:`lower_bounds` of validated rows ``r`` and speed bounds ``u`` of shape ``r.shape[:-2]``."""
     if r.shape[-2] < 2:
         return np.zeros(r.shape[:-2])
     # the bound does not depend on the unit: bring each scene into the safe range (exact)
@@ -282,7 +292,11 @@ def worst_case_controls(rows, u_max) -> np.ndarray:
     array([[1., 0.]])
     """
     r = as_stack(rows, "rows", 2)
-    u = as_u_max_stack(u_max, r.shape[:-2])
+    return _worst_case_controls(r, as_u_max_stack(u_max, r.shape[:-2]))
+
+
+def _worst_case_controls(r: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """:func:`worst_case_controls` of validated rows ``r`` and speed bounds ``u`` (``r.shape[:-2]``)."""
     if r.shape[-2]:  # the direction does not depend on the unit: into the safe range (exact)
         r = rescale(r, pow2_scale(np.abs(r).max(axis=(-2, -1)))[..., None, None])
     _, vecs = np.linalg.eigh(np.swapaxes(r, -1, -2) @ r)

@@ -202,19 +202,13 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
     e = as_eps(eps)
     r = as_rank_rtol(rank_rtol)
     v = as_float_array(vectors, "vectors")
-    m = np.asarray(masks)
-    if m.dtype.kind not in "biuf":
-        raise ArgumentTypeError(f"masks must be booleans (or 0/1), got dtype {m.dtype}")
-    if m.dtype.kind != "b":
-        if not np.isin(m, (0, 1)).all():
-            raise ValueError("masks must hold only booleans or 0/1")
-        m = m.astype(bool)
+    m = _mask_booleans(masks)
     if v.ndim < 2 or v.shape[-1] != 2:
         raise ValueError(f"vectors must have shape (..., N, 2), got {v.shape}")
     if not np.isfinite(v).all():
         raise ValueError("vectors have a non-finite coordinate")
-    if m.ndim != 2 or m.shape[1] != v.shape[-2]:
-        raise ValueError(f"masks must have shape (K, {v.shape[-2]}), got {m.shape}")
+    _check_mask_shape(m, v.shape[-2])
+    uu = None
     if u is not None:
         uu = as_float_array(u, "u")
         if not np.isfinite(uu).all():
@@ -223,6 +217,31 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
             uu = np.broadcast_to(uu, v.shape[:-2] + (2,))
         except ValueError:
             raise ValueError(f"u must have shape (2,) or {v.shape[:-2] + (2,)}, got {uu.shape}") from None
+    return _measures(v, m, names, e, r, uu)
+
+
+def _mask_booleans(masks) -> np.ndarray:
+    """Subset memberships as booleans (0/1 accepted)."""
+    m = np.asarray(masks)
+    if m.dtype.kind not in "biuf":
+        raise ArgumentTypeError(f"masks must be booleans (or 0/1), got dtype {m.dtype}")
+    if m.dtype.kind != "b":
+        if not np.isin(m, (0, 1)).all():
+            raise ValueError("masks must hold only booleans or 0/1")
+        m = m.astype(bool)
+    return m
+
+
+def _check_mask_shape(m: np.ndarray, n: int) -> None:
+    if m.ndim != 2 or m.shape[1] != n:
+        raise ValueError(f"masks must have shape (K, {n}), got {m.shape}")
+
+
+def _measures(v: np.ndarray, m: np.ndarray, names, e: float, r: float, uu=None) -> dict:
+    """:func:`measures_from_vectors` of validated input: vectors ``v`` ``(..., N, 2)``, boolean
+    masks ``m`` ``(K, N)``, measure names, ``eps``, ``rank_rtol`` and the control rows ``uu``
+    ``(..., 2)`` or ``None``."""
+    if uu is not None:
         v = np.concatenate([v, uu[..., None, :]], axis=-2)
         m = np.concatenate([m, np.ones((m.shape[0], 1), dtype=bool)], axis=1)
     # Scenes outside the safe range are computed in a unit of a power of two (exact) and
@@ -275,7 +294,11 @@ def measure_table(sensors, target, name: str, eps: float = 0.0, u=None, masks=No
     if masks is None:
         masks = subset_masks(rows.shape[0])
     uu = None if u is None else as_point(u, "u")
-    return measure_from_vectors(rows, masks, name, eps, uu, rank_rtol)
+    _check_name(name)
+    e, r = as_eps(eps), as_rank_rtol(rank_rtol)
+    m = _mask_booleans(masks)
+    _check_mask_shape(m, rows.shape[0])
+    return _measures(rows, m, (name,), e, r, uu)[name]
 
 
 def measure(sensors, target, name: str, eps: float = 0.0, u=None,
@@ -312,5 +335,7 @@ def measure(sensors, target, name: str, eps: float = 0.0, u=None,
     """
     rows = relative_rows(_sensors_or_empty(sensors), target)
     uu = None if u is None else as_point(u, "u")
+    _check_name(name)
+    e, r = as_eps(eps), as_rank_rtol(rank_rtol)
     mask = np.ones((1, rows.shape[0]), dtype=bool)
-    return float(measure_from_vectors(rows, mask, name, eps, uu, rank_rtol)[0])
+    return float(_measures(rows, mask, (name,), e, r, uu)[name][0])

@@ -172,6 +172,11 @@ def stationarity_alpha(alpha, theta, u_over_d):
         raise ValueError("alpha, theta and u_over_d must be finite")
     if (a < 0).any() or (q < 0).any():
         raise ValueError("alpha and u_over_d must be non-negative")
+    return _stationarity(a, th, q)
+
+
+def _stationarity(a: np.ndarray, th: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """:func:`stationarity_alpha` of validated arrays (the bisection's inner step)."""
     a2 = a * a
     c = np.cos(2 * th)
     s = np.hypot(1.0 - a2, 2.0 * a * np.cos(th))
@@ -222,20 +227,21 @@ def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):
     shape = th.shape
     th, q = th.ravel(), q.ravel()
     out = np.ones(th.size)
-    inner = stationarity_alpha(np.ones(th.size), th, q) > 0.0  # else alpha* = 1
+    # theta and q checked once above; the bisection's own alphas are finite and >= 1
+    inner = _stationarity(np.ones(th.size), th, q) > 0.0  # else alpha* = 1
     th, q = th[inner], q[inner]
     lo, hi = np.ones(th.size), np.full(th.size, 2.0)
-    up = stationarity_alpha(hi, th, q) > 0.0
+    up = _stationarity(hi, th, q) > 0.0
     while up.any():  # double the bracket where g is still positive at its top
         lo[up], hi[up] = hi[up], 2.0 * hi[up]
-        up[up] = stationarity_alpha(hi[up], th[up], q[up]) > 0.0
+        up[up] = _stationarity(hi[up], th[up], q[up]) > 0.0
     eps = np.finfo(float).eps
     for _ in range(2100):  # bounds the float halvings of any bracket
         mid = 0.5 * (lo + hi)
         live = (hi - lo > xtol + 4 * eps * mid) & (mid > lo) & (mid < hi)
         if not live.any():
             break
-        pos = stationarity_alpha(mid[live], th[live], q[live]) > 0.0
+        pos = _stationarity(mid[live], th[live], q[live]) > 0.0
         idx = np.flatnonzero(live)
         lo[idx[pos]], hi[idx[~pos]] = mid[idx[pos]], mid[idx[~pos]]
     out[inner] = 0.5 * (lo + hi)

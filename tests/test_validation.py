@@ -97,3 +97,36 @@ def test_no_nan_from_legal_degenerate_input():
     W = ob.pair_bounds(line, [[2.0, 0.0], [2.0, 1.0]], 0.0)
     assert np.isfinite(W).all() and np.all(W[:, :, 0] == 0)
     assert ob.inverse_condition_number(line, [2.0, 0.0], [0.0, 0.0]) == 0.0
+
+
+def test_each_check_runs_in_one_place_in_the_same_order():
+    """The public functions validate once and hand validated arrays to private workers; the first
+    fault of an input with several is still the one the argument order names (sensors before
+    targets before u_max; vectors' dtype, then masks' dtype, then their shapes)."""
+    bad_s, bad_t = np.array([[0.0, 0.0], [np.nan, 1.0]]), np.array([[np.inf, 1.0]])
+    with pytest.raises(ValueError, match="sensor 1 has a non-finite"):
+        ob.pair_bounds(bad_s, bad_t, -1.0, cov=-np.eye(2))
+    with pytest.raises(ValueError, match="target 0 has a non-finite"):
+        ob.pair_bounds(S, bad_t, -1.0, cov=-np.eye(2))
+    with pytest.raises(ValueError, match="cov of target 0"):  # the scene and cov before u_max
+        ob.pair_bounds(S, T, -1.0, cov=-np.eye(2))
+    with pytest.raises(ValueError, match="masks must be booleans"):
+        ob.measures.measures_from_vectors(np.zeros(3), [["a"]], ("trace",))
+    with pytest.raises(ValueError, match="vectors must have shape"):
+        ob.measures.measures_from_vectors(np.zeros(3), [[1, 0]], ("trace",))
+    with pytest.raises(ValueError, match="unknown measure"):
+        ob.measure_table(S, O, "nope", eps=-1.0, masks=[["a"]])
+    with pytest.raises(ValueError, match="eps"):
+        ob.measure_table(S, O, "trace", eps=-1.0, masks=[["a"]])
+    with pytest.raises(ValueError, match="masks must have shape"):
+        ob.measure_table(S, O, "trace", masks=[[True, False]])
+    # the private route gives the public result bit for bit
+    from obslib._validate import as_points, validated_vectors, vectors_between
+
+    rng = np.random.default_rng(3)
+    for _ in range(20):
+        s, t = rng.normal(size=(5, 2)), rng.normal(size=(3, 2)) + 4
+        cov = np.array([[2.0, 0.3], [0.3, 1.0]])
+        a = validated_vectors(s, t, cov)
+        b = vectors_between(as_points(s), as_points(t, "targets"), cov)
+        assert all(np.array_equal(x, y) for x, y in zip(a, b))
