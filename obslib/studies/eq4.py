@@ -221,7 +221,7 @@ def bound_ratios(rows, counts, u_max) -> tuple[np.ndarray, np.ndarray]:
 
     ``rows`` and ``counts`` as :func:`random_scenes` returns them. The derived matrix's worst
     case ``sqrt(lambda_min / (lambda_max + N u_max^2))`` from the batched eigenvalues of
-    ``O(o)^T O(o)``, over Theorem 1's bound by :func:`obslib.lower_bounds` (batched SVD of
+    ``O(o)^T O(o)``, over Theorem 1's bound by :func:`obslib.bounds.lower_bounds` (batched SVD of
     ``O(o)``); 1 where that bound is 0, as :func:`bound_ratio`.
 
     Returns
