@@ -127,6 +127,16 @@ def normalise(v: np.ndarray, u) -> tuple:
     return v / scale[None, :, None], u2
 
 
+def pair_series(v: np.ndarray, pairs: np.ndarray, u) -> np.ndarray:
+    """Theorem 4's bound of the pair ``pairs[k]`` at each point ``k``, ``(K,)``, from the rows
+    ``v`` ``(N, K, 2)`` of every sensor to every point (validated by the caller): each point's
+    rows normalised by :func:`normalise`, then :func:`pair_kernel` of its pair only."""
+    v, u2 = normalise(v, u)
+    k = np.arange(v.shape[1])
+    vi, vj = v[pairs[:, 0], k], v[pairs[:, 1], k]
+    return pair_kernel(vi[:, 0], vi[:, 1], vj[:, 0], vj[:, 1], u2)
+
+
 def mahalanobis_rescale(v: np.ndarray, cov: np.ndarray) -> tuple:
     """Vectors of ``v`` ``(N, L, 2)`` with their Euclidean direction and Mahalanobis length.
 

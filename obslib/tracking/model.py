@@ -123,10 +123,7 @@ def pair_bound_series(setup, points, pairs, cov=None) -> np.ndarray:
         raise ValueError(f"pairs must be integers of shape ({K}, 2), got {pr.dtype} {pr.shape}")
     if K and (pr.min() < 0 or pr.max() >= n):
         raise ValueError(f"pairs must be sensor indices in 0..{n - 1}")
-    v, u2 = _kernels.normalise(v, setup.u_max)
-    k = np.arange(K)
-    vi, vj = v[pr[:, 0], k], v[pr[:, 1], k]
-    return _kernels.pair_kernel(vi[:, 0], vi[:, 1], vj[:, 0], vj[:, 1], u2)
+    return _kernels.pair_series(v, pr, setup.u_max)
 
 
 def inverse_condition(rows) -> np.ndarray:
