@@ -28,28 +28,20 @@ def setup_figures() -> None:
       figures are byte-identical either way; ``tests/test_notebook.py``). 3-D axes are placed
       differently and keep the default (:func:`obslib.pair_form.plot_fig2`); a new figure with
       top tick labels must set its title's height itself.
-    - The objects imported so far are frozen out of the garbage collector's full passes
-      (:func:`_freeze_imports`), which otherwise walk them again and again.
+    - The objects imported so far (the modules and their tables, alive as long as the kernel)
+      are moved to the garbage collector's permanent generation (``gc.freeze()``). Python's
+      automatic full collections walk every tracked object: after importing SymPy, pandas and
+      matplotlib each took about 70 ms, and notebook 02 triggers several (0.44 s of full
+      collections against 0.14 s frozen). Nothing is computed differently; garbage made later
+      is collected as before.
     """
+    import gc
+
     import matplotlib as mpl
     from matplotlib_inline.backend_inline import set_matplotlib_formats
 
     set_matplotlib_formats("png", bbox_inches=None)
     mpl.rcParams["axes.titley"] = 1.0
-    _freeze_imports()
-
-
-def _freeze_imports() -> None:
-    """Move every object alive now (the modules just imported and their tables) to the garbage
-    collector's permanent generation (:func:`gc.freeze`).
-
-    They live as long as the kernel anyway, but Python's automatic full collections walk every
-    tracked object: after importing SymPy, pandas and matplotlib each one took about 70 ms, and
-    notebook 02 triggers several (0.44 s of full collections against 0.14 s frozen). Nothing is
-    computed differently; garbage made later is collected as before.
-    """
-    import gc
-
     gc.freeze()
 
 
