@@ -26,9 +26,12 @@ prints a few readable lines and, last, one JSON object.
     ``exec_s``: executing every notebook at its default parameters the way ``make book`` does
     (papermill, one kernel per notebook, into a scratch folder); ``floor_s``: executing the same
     number of trivial notebooks the same way, the fixed cost of a kernel per notebook, each one
-    just before a notebook; ``exec_over_floor`` their ratio (target <= 3). ``--profile quick``
-    runs the notebooks at the ``quick`` profile's tiny sizes instead: what the same notebooks,
-    figures and derivations cost with almost no computation.
+    just before a notebook; ``exec_over_floor`` their ratio (target <= 3). ``stack_floor_s``:
+    as many minimal notebooks of this book, each importing the stack every notebook starts with
+    (matplotlib, NumPy, pandas, myst-nb's ``glue``, ``obslib``, :func:`obslib.notebook.setup_figures`)
+    and showing one small figure; ``stack_over_floor`` is what that start costs before any
+    content. ``--profile quick`` runs the notebooks at the ``quick`` profile's tiny sizes
+    instead: what the same notebooks, figures and derivations cost with almost no computation.
 """
 
 from __future__ import annotations
@@ -291,29 +294,58 @@ def bench_book(profile: str = "paper") -> dict:
     # every notebook's parameters first, so that a bad profile fails before anything runs
     parameters = {nb: params(nb.stem, profile) if profile != "paper" else {} for nb in nbs}
     precompile()  # as make book does
+    def scratch(path, code):
+        nb = new_notebook(cells=[new_code_cell("x = 1", metadata={"tags": ["parameters"]}),
+                                 new_code_cell(code)])
+        for k, c in enumerate(nb.cells):
+            c.id = f"c{k}"
+        nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+        nbformat.write(nb, path)
+        return path
+
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        trivial = new_notebook(cells=[new_code_cell("x = 1", metadata={"tags": ["parameters"]}),
-                                      new_code_cell("print(x + 1)")])
-        for k, c in enumerate(trivial.cells):
-            c.id = f"c{k}"
-        trivial.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
-        src = tmp / "trivial.ipynb"
-        nbformat.write(trivial, src)
-        exec_s = floor_s = 0.0
+        trivial = scratch(tmp / "trivial.ipynb", "print(x + 1)")
+        stack = scratch(tmp / "stack.ipynb", _STACK_NOTEBOOK)
+        exec_s = floor_s = stack_s = 0.0
         for k, nb in enumerate(nbs):
-            floor_s += execute(src, tmp / f"trivial_{k}.ipynb")
+            floor_s += execute(trivial, tmp / f"trivial_{k}.ipynb")
+            stack_s += execute(stack, tmp / f"stack_{k}.ipynb")
             dt = execute(nb, tmp / nb.name, parameters[nb])
             exec_s += dt
             print(f"{nb.name:40s} {dt:7.1f} s", flush=True)
-    print(f"{len(nbs)} notebooks {exec_s:.1f} s, {len(nbs)} trivial notebooks {floor_s:.1f} s", flush=True)
+    n = len(nbs)
+    print(f"{n} notebooks {exec_s:.1f} s, {n} trivial notebooks {floor_s:.1f} s, "
+          f"{n} minimal notebooks of the book's stack {stack_s:.1f} s", flush=True)
     return {
-        "notebooks": len(nbs),
+        "notebooks": n,
         "profile": profile,
         "exec_s": round(exec_s, 2),
         "floor_s": round(floor_s, 2),
         "exec_over_floor": round(exec_s / floor_s, 3),
+        "stack_floor_s": round(stack_s, 2),
+        "stack_over_floor": round(stack_s / floor_s, 3),
     }
+
+
+#: The smallest notebook of this book: the imports every notebook starts with, and one figure.
+_STACK_NOTEBOOK = """\
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+from myst_nb import glue
+
+import obslib
+from obslib.notebook import setup_figures
+
+setup_figures()
+fig, ax = plt.subplots(figsize=(6, 3))
+ax.plot(np.arange(x + 9), label="x")
+ax.set_xlabel("step")
+ax.set_ylabel("value (m)")
+ax.legend()
+plt.show()
+"""
 
 
 def parse_args(argv=None) -> argparse.Namespace:
