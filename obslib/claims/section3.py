@@ -106,8 +106,9 @@ def _thm3(profile: str) -> Finding:
     return Finding(
         "reproduced" if bad == 0 else "refuted",
         f"Both conditions met in {n} of {a.n_trials} random before/after configurations; the "
-        f"bound decreased in {bad}. Neither condition suffices alone: with only the ratio up it "
-        rf"decreased in {rbad} of {rn}, with only $\sigma_{{\min}}$ up in {sbad} of {sn}.",
+        f"bound decreased in {bad} of them. Neither condition suffices alone: with only the "
+        rf"ratio up it decreased in {rbad} of {rn}, with only $\sigma_{{\min}}$ up in {sbad} of "
+        f"{sn}.",
         {"counts": a.counts, "witnesses": a.witnesses, "n_trials": a.n_trials},
     )
 
@@ -177,8 +178,8 @@ def _remark2(profile: str) -> Finding:
     ok = bad == 0 and a.remark2_necessary_violations == 0
     return Finding(
         "reproduced" if ok else "refuted",
-        f"Remark 2's condition met in {n} of {a.n_trials} trials, the bound decreased in {bad}; "
-        f"it is also necessary (bound clearly increased while it failed: "
-        f"{a.remark2_necessary_violations} trials), as the numerator of Eq. (29) shows.",
+        f"Remark 2's condition met in {n} of {a.n_trials} trials, the bound decreased in {bad} "
+        "of them. It is also necessary, as the numerator of Eq. (29) shows: where it failed, "
+        f"the bound clearly increased in {a.remark2_necessary_violations} trials.",
         {"counts": a.counts, "necessary_violations": a.remark2_necessary_violations},
     )
