@@ -56,6 +56,20 @@ def test_committed_with_outputs_and_no_errors(path):
     assert "papermill" not in meta and "version" not in meta.get("language_info", {})
 
 
+#: Widest code line a reader sees without scrolling sideways in the book's column.
+VISIBLE_WIDTH = 88
+#: Cell tags that keep a cell's code off the page (hidden behind a toggle, or removed).
+HIDDEN = {"remove-input", "hide-input", "remove-cell"}
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_visible_code_fits_the_column(path):
+    wide = [(i, len(line)) for i, c in enumerate(code_cells(path))
+            if not HIDDEN & set(c["metadata"].get("tags", []))
+            for line in "".join(c["source"]).splitlines() if len(line) > VISIBLE_WIDTH]
+    assert not wide, f"{path.name}: (code cell, characters) of lines over {VISIBLE_WIDTH}: {wide}"
+
+
 def test_profiles_only_override_known_parameters():
     for name, table in PROFILES.items():
         for stem, values in table.items():
