@@ -284,9 +284,6 @@ def bench_book(profile: str = "paper") -> dict:
     import tempfile
     from pathlib import Path
 
-    import nbformat
-    from nbformat.v4 import new_code_cell, new_notebook
-
     from ..profiles import params
     from .run import execute, notebooks, precompile
 
@@ -294,19 +291,10 @@ def bench_book(profile: str = "paper") -> dict:
     # every notebook's parameters first, so that a bad profile fails before anything runs
     parameters = {nb: params(nb.stem, profile) if profile != "paper" else {} for nb in nbs}
     precompile()  # as make book does
-    def scratch(path, code):
-        nb = new_notebook(cells=[new_code_cell("x = 1", metadata={"tags": ["parameters"]}),
-                                 new_code_cell(code)])
-        for k, c in enumerate(nb.cells):
-            c.id = f"c{k}"
-        nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
-        nbformat.write(nb, path)
-        return path
-
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        trivial = scratch(tmp / "trivial.ipynb", "print(x + 1)")
-        stack = scratch(tmp / "stack.ipynb", _STACK_NOTEBOOK)
+        trivial = _scratch_notebook(tmp / "trivial.ipynb", "print(x + 1)")
+        stack = _scratch_notebook(tmp / "stack.ipynb", _STACK_NOTEBOOK)
         exec_s = floor_s = stack_s = 0.0
         for k, nb in enumerate(nbs):
             floor_s += execute(trivial, tmp / f"trivial_{k}.ipynb")
@@ -326,6 +314,22 @@ def bench_book(profile: str = "paper") -> dict:
         "stack_floor_s": round(stack_s, 2),
         "stack_over_floor": round(stack_s / floor_s, 3),
     }
+
+
+def _scratch_notebook(path, code: str):
+    """Write a notebook of a ``parameters`` cell (``x = 1``) and ``code`` to ``path``; return it."""
+    import nbformat
+    from nbformat.v4 import new_code_cell, new_notebook
+
+    from .run import KERNEL
+
+    nb = new_notebook(cells=[new_code_cell("x = 1", metadata={"tags": ["parameters"]}),
+                             new_code_cell(code)])
+    for k, c in enumerate(nb.cells):
+        c.id = f"c{k}"
+    nb.metadata["kernelspec"] = {"name": KERNEL, "display_name": "Python 3", "language": "python"}
+    nbformat.write(nb, path)
+    return path
 
 
 #: The smallest notebook of this book: the imports every notebook starts with, and one figure.
