@@ -1,0 +1,11 @@
+"""obsbook: what only the book needs, kept beside it (as Labbe keeps ``kf_book/`` beside his
+notebooks): figure setup, glue and table helpers for the notebooks, and the rendering of the
+reproduction report. It calls :mod:`obslib`; :mod:`obslib` never imports it.
+
+Numbers read the same everywhere because every page formats them with the library's one formatter,
+re-exported here (:func:`number`, :func:`count`, :func:`small`, :func:`percent`, :func:`span`).
+"""
+
+from obslib._format import count, number, percent, small, span
+
+__all__ = ["number", "count", "small", "percent", "span"]
