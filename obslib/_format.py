@@ -1,4 +1,4 @@
-"""How a number reads in the book's prose and tables: one formatter for notebooks, ledger and report.
+"""How a number reads in the book's prose and tables: one formatter for notebooks, ledger, report.
 
 The rules, in the order they apply:
 

@@ -1,4 +1,4 @@
-"""Writing a command's output file safely, and refusing a path that cannot be written before any work.
+"""Writing a command's output file safely; refusing, before any work, a path that cannot be written.
 
 Every command line of the package that takes an output path (``--write``) calls
 :func:`check_output_path` while it parses its arguments, so an impossible path is a command-line
@@ -31,10 +31,10 @@ def check_output_path(path) -> Path:
 
     Examples
     --------
-    >>> check_output_path("/nonexistent-dir/out.json")
+    >>> check_output_path("/no-dir/x.json")
     Traceback (most recent call last):
     ...
-    obslib._io.OutputPathError: /nonexistent-dir/out.json: directory /nonexistent-dir does not exist
+    obslib._io.OutputPathError: /no-dir/x.json: directory /no-dir does not exist
     """
     if path is None or str(path) == "":
         raise OutputPathError("the output path is empty; give a file name")

@@ -262,7 +262,8 @@ def _measures(v: np.ndarray, m: np.ndarray, names, e: float, r: float, uu=None) 
             if key not in cache:
                 cache[key] = tr_det(v / p[..., None, None], m)
             pp = p[..., None]
-            out[name] = measure_from_tr_det(name, *cache[key], e / (pp * pp), r, pp)
+            # e / p / p, not e / (p * p): p * p underflows to 0 for p near 2**-1000
+            out[name] = measure_from_tr_det(name, *cache[key], e / pp / pp, r, pp)
     return out
 
 
