@@ -19,7 +19,8 @@ from contextlib import contextmanager
 from io import BytesIO
 
 __all__ = ["COLUMN_PX", "DPI", "MIN_PT", "MAX_WIDTH_IN", "RC", "METADATA_KEY", "setup",
-           "render", "pack", "unpack", "png_with_texts", "overlaps", "small_texts", "outside_texts", "problems"]
+           "render", "pack", "unpack", "png_with_texts", "overlaps", "displayed_scale",
+           "small_texts", "outside_texts", "problems"]
 
 #: Widest image the book's column shows unscaled (px), measured in Chromium at 1400 px.
 COLUMN_PX = 756
@@ -157,9 +158,9 @@ def _entry(text, renderer) -> dict:
         t = math.radians(text.get_rotation())
         c, s = math.cos(t), math.sin(t)
         cx, cy = (box.x0 + box.x1) / 2, (box.y0 + box.y1) / 2
+        w, h = ub.width / 2, ub.height / 2
         out["quad"] = [[round(cx + c * dx - s * dy, 1), round(height - (cy + s * dx + c * dy), 1)]
-                       for dx, dy in ((-ub.width / 2, -ub.height / 2), (ub.width / 2, -ub.height / 2),
-                                      (ub.width / 2, ub.height / 2), (-ub.width / 2, ub.height / 2))]
+                       for dx, dy in ((-w, -h), (w, -h), (w, h), (-w, h))]
     return out
 
 

@@ -109,5 +109,6 @@ def test_obslib_never_imports_obsbook():
         for node in ast.walk(ast.parse(path.read_text())):
             names = ([a.name for a in node.names] if isinstance(node, ast.Import)
                      else [node.module or ""] if isinstance(node, ast.ImportFrom) else [])
-            found += [f"{path.relative_to(root)}: {n}" for n in names if n.split(".")[0] == "obsbook"]
+            found += [f"{path.relative_to(root)}: {n}" for n in names
+                      if n.split(".")[0] == "obsbook"]
     assert not found, found

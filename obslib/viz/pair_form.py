@@ -109,9 +109,9 @@ def _label_along_ray(ax, cs, start, direction, box_in, fontsize: float = 10.0,
 
     A label is left out where it would come within about its own size (along the ray) of the
     previous one, or within 6 pt of the mark (``mark_pt`` across), distances in inches with the
-    axes taken as ``box_in`` = (width, height) in inches; the nested lines it would name lie between labelled ones. Levels
-    the ray never crosses, or crosses less than a text height from the axes' edge, are labelled
-    where matplotlib puts them.
+    axes taken as ``box_in`` = (width, height) in inches; the nested lines it would name lie
+    between labelled ones. Levels the ray never crosses, or crosses less than a text height
+    from the axes' edge, are labelled where matplotlib puts them.
     """
     start = np.asarray(start, dtype=float)
     d = np.asarray(direction, dtype=float) / np.hypot(*direction)

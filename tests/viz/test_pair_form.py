@@ -62,5 +62,5 @@ def test_fig2_text_is_clear_of_other_text_and_of_the_maxima(panels):
             for x, y in centres:
                 dx = max(b.x0 - x, 0, x - b.x1)
                 dy = max(b.y0 - y, 0, y - b.y1)
-                assert np.hypot(dx, dy) > 8.3 + 4, f"label {text.get_text()} at the star {x, height - y}"
+                assert np.hypot(dx, dy) > 8.3 + 4, f"{text.get_text()} at {x, height - y}"
     plt.close(fig)
