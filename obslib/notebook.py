@@ -1,5 +1,8 @@
 """What the book's notebooks share: how figures are drawn inline, how numbers print.
 
+Superseded by :mod:`obsbook` beside the book (``obsbook.setup``, ``obsbook.formatted_table``):
+kept as it is for the notebooks not yet moved there, and removed when none imports it.
+
 Every notebook calls :func:`setup_figures` in its import cell, so the nine notebooks draw their
 figures the same way and each figure is drawn once. :func:`format_small` prints a
 rounding-level number as a bound, so stored outputs are the same on every machine.

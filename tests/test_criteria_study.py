@@ -129,11 +129,6 @@ def test_tracking_study_validates():
         cs.tracking_study(5, strategies=["best-pair", "nope"])
 
 
-def test_markdown_table():
-    t = cs.markdown_table([{"a": 1.23456, "b": "x"}], {"A": ("a", ".2f"), "B": ("b", "s")})
-    assert t.splitlines() == ["| A | B |", "|---|---|", "| 1.23 | x |"]
-
-
 def test_params_profiles():
     p, q = cs.params("paper"), cs.params("quick")
     assert q["n_seeds"] < p["n_seeds"] and p["n_seeds"] >= 200 and p["assign_seeds"] >= 100

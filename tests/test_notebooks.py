@@ -37,11 +37,12 @@ def test_parameters_cell_equals_paper_profile(path):
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_figures_set_up_before_the_first_figure(path):
-    # obslib.notebook.setup_figures in the import cell (the one after the parameters), so every
-    # figure is drawn once and the same way
+    # obsbook.setup (or obslib.notebook.setup_figures, which it replaces) in the import cell
+    # (the one after the parameters), so every figure is drawn once and the same way
     sources = ["".join(c["source"]) for c in code_cells(path)]
-    calls = [k for k, s in enumerate(sources) if "setup_figures()" in s]
-    assert calls == [1], f"{path.name}: setup_figures() must be called once, in the import cell"
+    calls = [k for k, s in enumerate(sources) for call in ("setup_figures()", "obsbook.setup()")
+             if call in s]
+    assert calls == [1], f"{path.name}: obsbook.setup() must be called once, in the import cell"
     assert "set_matplotlib_formats" not in "".join(sources)
 
 

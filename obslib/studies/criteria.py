@@ -53,7 +53,6 @@ __all__ = [
     "assignment_study",
     "assignment_rows",
     "significance",
-    "markdown_table",
 ]
 
 NOTEBOOK = "10_criteria"
@@ -570,33 +569,3 @@ def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float 
                 row.update({f"vs_{k}": v for k, v in paired_test(ref, e).items()})
             rows.append(row)
     return rows
-
-
-def markdown_table(rows: list, columns: dict) -> str:
-    """A Markdown table of ``rows`` (dicts): ``columns`` maps a header to ``(key, format)``,
-    ``format`` a format spec (``".3f"``) or a callable of the row.
-
-    Examples
-    --------
-    >>> rows = [{"s": "a", "v": 1.2345}, {"s": "b"}]
-    >>> cols = {"name": ("s", "s"), "value": ("v", ".2f"),
-    ...         "upper": (None, lambda r: r["s"].upper())}
-    >>> print(markdown_table(rows, cols))
-    | name | value | upper |
-    |---|---|---|
-    | a | 1.23 | A |
-    | b |  | B |
-    """
-    head = "| " + " | ".join(columns) + " |"
-    sep = "|" + "|".join("---" for _ in columns) + "|"
-    lines = [head, sep]
-    for r in rows:
-        cells = []
-        for key, fmt in columns.values():
-            if callable(fmt):
-                cells.append(fmt(r))
-            else:
-                v = r.get(key)
-                cells.append("" if v is None else format(v, fmt))
-        lines.append("| " + " | ".join(cells) + " |")
-    return "\n".join(lines)

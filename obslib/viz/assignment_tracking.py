@@ -2,17 +2,20 @@
 
 from __future__ import annotations
 
-import numpy as np
+from .criteria import draw_boxes
 
 __all__ = ["plot_assignment_errors"]
 
 LABELS = {"bound": "bound\n(Algorithm 1)", "d-optimal": "D-optimal\n(greedy)", "random": "random"}
+#: The looks (obslib.viz.style) of the rules: the bound's rule is Algorithm 1, the greedy.
+LOOKS = {"bound": "greedy"}
 
 
-def plot_assignment_errors(runs: dict, figsize=(8.5, 3.4)):
+def plot_assignment_errors(runs: dict, figsize=(7.5, 3.6)):
     """Per ``L`` (one panel each), box plots over runs of the mean error summed over targets
-    after each update, per assignment rule. ``runs`` is
-    :func:`obslib.studies.criteria.assignment_study`'s result. Returns the figure.
+    after each update, per assignment rule (as :func:`obslib.viz.criteria.plot_run_errors`).
+    ``runs`` is :func:`obslib.studies.criteria.assignment_study`'s result. Returns the figure
+    (constrained layout).
 
     Examples
     --------
@@ -35,25 +38,15 @@ def plot_assignment_errors(runs: dict, figsize=(8.5, 3.4)):
     >>> plt.close(fig)
     """
     import matplotlib.pyplot as plt
-    from matplotlib.ticker import FormatStrFormatter, LogLocator
 
     if not runs:
         raise ValueError("no assignment runs to plot")
     Ls = list(runs)
-    fig, axes = plt.subplots(1, len(Ls), figsize=figsize, squeeze=False)
+    fig, axes = plt.subplots(1, len(Ls), figsize=figsize, squeeze=False, layout="constrained")
     for ax, L in zip(axes[0], Ls):
         rules = list(runs[L])
-        data = [runs[L][r].run_mean_error() for r in rules]
-        ax.boxplot(data, whis=(5, 95), flierprops={"ms": 2}, medianprops={"color": "C3"})
-        ax.set_xticks(np.arange(1, len(rules) + 1), [LABELS.get(r, r) for r in rules], fontsize=9)
-        ax.set_yscale("log")
-        ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
-        ax.yaxis.set_minor_locator(LogLocator(subs=(2.0, 5.0)))
-        ax.yaxis.set_minor_formatter(FormatStrFormatter("%g"))
-        ax.tick_params(axis="y", which="minor", labelsize=9)
+        draw_boxes(ax, [runs[L][r].run_mean_error() for r in rules], rules, LABELS, LOOKS)
         n = runs[L][rules[0]].setup.n_sensors
-        ax.set_title(f"L = {L} targets, N = {n} sensors", fontsize=10)
-        ax.grid(axis="y", alpha=0.3)
+        ax.set_title(f"L = {L} targets, N = {n} sensors")
     axes[0, 0].set_ylabel("error summed over targets\n(length units)")
-    fig.subplots_adjust(left=0.1, right=0.99, bottom=0.2, top=0.9, wspace=0.22)
     return fig

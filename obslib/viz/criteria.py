@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["LABELS", "plot_run_errors"]
+from .style import GREY, LOOKS
+
+__all__ = ["LABELS", "draw_boxes", "plot_run_errors"]
 
 #: Axis labels of the strategies.
 LABELS = {
@@ -19,10 +21,48 @@ LABELS = {
 }
 
 
-def plot_run_errors(study: dict, metric: str = "mahalanobis", figsize=(8.5, 5.6)):
+def draw_boxes(ax, data, names, labels=None, looks=None):
+    """Box plots of ``data`` (one array per name of ``names``) on a log axis: whiskers at the
+    5th and 95th percentiles, each box filled in the colour of its name's look
+    (:mod:`obslib.viz.style`; ``looks`` maps a name to the look's name where they differ), the
+    x ticks named by ``labels`` (default: the names). Returns the axes.
+
+    Examples
+    --------
+    >>> from matplotlib.figure import Figure
+    >>> ax = Figure().add_subplot()
+    >>> ax = draw_boxes(ax, [[1.0, 2.0], [2.0, 4.0]], ["best-pair", "random"],
+    ...                 labels={"best-pair": "bound"})
+    >>> [t.get_text() for t in ax.get_xticklabels()], ax.get_yscale()
+    (['bound', 'random'], 'log')
+    """
+    from matplotlib.colors import to_rgba
+    from matplotlib.ticker import FormatStrFormatter, LogLocator
+
+    labels, looks = dict(labels or {}), dict(looks or {})
+    parts = ax.boxplot(data, whis=(5, 95), patch_artist=True, flierprops={"ms": 2},
+                       medianprops={"color": "k"})
+    for box, flier, name in zip(parts["boxes"], parts["fliers"], names):
+        key = looks.get(name, name)
+        color = LOOKS[key].color if key in LOOKS else GREY
+        box.set_facecolor(to_rgba(color, 0.45))
+        box.set_edgecolor(color)
+        flier.set_markeredgecolor(color)
+    ax.set_xticks(np.arange(1, len(names) + 1), [labels.get(n, n) for n in names])
+    ax.set_yscale("log")
+    ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
+    ax.yaxis.set_minor_locator(LogLocator(subs=(2.0, 5.0)))
+    ax.yaxis.set_minor_formatter(FormatStrFormatter("%g"))
+    ax.grid(axis="y", alpha=0.3)
+    return ax
+
+
+def plot_run_errors(study: dict, metric: str = "mahalanobis", figsize=(7.5, 6.0)):
     """Box plots of the per-run mean error (steps 2..) of every strategy, one row per setting.
 
-    ``study`` is :func:`obslib.studies.criteria.tracking_study`'s result. Returns the figure.
+    ``study`` is :func:`obslib.studies.criteria.tracking_study`'s result. Returns the figure
+    (constrained layout). A box spans the middle half of the runs, its line is the median, the
+    whiskers reach the 5th and 95th percentiles, and dots are the runs beyond them.
 
     Examples
     --------
@@ -40,27 +80,17 @@ def plot_run_errors(study: dict, metric: str = "mahalanobis", figsize=(8.5, 5.6)
     >>> plt.close(fig)
     """
     import matplotlib.pyplot as plt
-    from matplotlib.ticker import FormatStrFormatter, LogLocator
 
     settings = [s for s in ("circle", "adversary") if (s, metric) in study]
     if not settings:
         raise ValueError(f"the study has no runs with metric {metric!r}")
-    fig, axes = plt.subplots(len(settings), 1, figsize=figsize, squeeze=False)
+    fig, axes = plt.subplots(len(settings), 1, figsize=figsize, squeeze=False,
+                             layout="constrained")
     titles = {"circle": "circle (Sec. V-A)", "adversary": "adversary (Sec. V-B)"}
     for ax, setting in zip(axes[:, 0], settings):
         mc = study[(setting, metric)]
         names = list(mc)
-        data = [mc[n].error[:, 1:].mean(axis=1) for n in names]
-        ax.boxplot(data, whis=(5, 95), showfliers=True, flierprops={"ms": 2},
-                   medianprops={"color": "C3"})
-        ax.set_xticks(np.arange(1, len(names) + 1), [LABELS.get(n, n) for n in names], fontsize=9)
+        draw_boxes(ax, [mc[n].error[:, 1:].mean(axis=1) for n in names], names, LABELS)
         ax.set_ylabel("per-run mean error\n(length units)")
-        ax.set_yscale("log")
-        ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
-        ax.yaxis.set_minor_locator(LogLocator(subs=(2.0, 5.0)))
-        ax.yaxis.set_minor_formatter(FormatStrFormatter("%g"))
-        ax.tick_params(axis="y", which="minor", labelsize=9)
-        ax.set_title(f"{titles[setting]}, {metric}", fontsize=10)
-        ax.grid(axis="y", alpha=0.3)
-    fig.subplots_adjust(left=0.1, right=0.99, bottom=0.1, top=0.95, hspace=0.55)
+        ax.set_title(f"{titles[setting]}, {metric}")
     return fig

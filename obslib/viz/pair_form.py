@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from .._validate import positive_float
+from .style import OKABE_ITO, SEQUENTIAL, look
 
 __all__ = ["plot_fig1", "plot_fig2"]
 
@@ -32,23 +33,23 @@ def plot_fig1(
     d_jo = positive_float("d_jo", d_jo)
     if not (np.isfinite(theta_i) and np.isfinite(theta_j)):
         raise ValueError("theta_i and theta_j must be finite")
-    if ax is None:  # the frame's aspect is always 2 : 1.45, so one written-down layout fits it
-        fig, ax = plt.subplots(figsize=(4.1, 3))
-        fig.subplots_adjust(left=0.024, right=0.976, bottom=0.028, top=0.972)
+    if ax is None:
+        fig, ax = plt.subplots(figsize=(4.1, 3), layout="constrained")
     pi_ = d_io * np.array([np.cos(theta_i), np.sin(theta_i)])
     pj_ = d_jo * np.array([np.cos(theta_j), np.sin(theta_j)])
     lim = 1.25 * max(d_io, d_jo)
+    sensor, target = look("sensor"), look("target")
     ax.axhline(0, color="0.6", lw=0.8, ls="--")
-    for p, th, name, d, col, side in ((pi_, theta_i, "i", "d_{io}", "C0", -1.0),
-                                      (pj_, theta_j, "j", "d_{jo}", "C1", 1.0)):
+    for p, th, name, d, col, side in ((pi_, theta_i, "i", "d_{io}", OKABE_ITO["blue"], -1.0),
+                                      (pj_, theta_j, "j", "d_{jo}", OKABE_ITO["vermillion"], 1.0)):
         ax.plot([0, p[0]], [0, p[1]], color=col, lw=1.5)
-        ax.plot(*p, marker="^", ms=12, color=col, ls="none")
+        ax.plot(*p, **sensor.kw(color=col, label=None, ms=12))
         ax.annotate(f"sensor ${name}$: $p_{name}$", p, xytext=(6, 6), textcoords="offset points")
         normal = side * np.array([-np.sin(th), np.cos(th)])
         ax.text(*(0.7 * p + 0.09 * lim * normal), f"${d}$", color=col, ha="center", va="center")
     for r, t0, t1, label, col in (
-        (0.22 * lim, 0.0, theta_i, r"$\theta_i$", "C0"),
-        (0.34 * lim, 0.0, theta_j, r"$\theta_j$", "C1"),
+        (0.22 * lim, 0.0, theta_i, r"$\theta_i$", OKABE_ITO["blue"]),
+        (0.34 * lim, 0.0, theta_j, r"$\theta_j$", OKABE_ITO["vermillion"]),
         (0.5 * lim, theta_i, theta_j, r"$\theta_{ji}$", "k"),
     ):
         t = np.linspace(t0, t1, 60)
@@ -56,7 +57,7 @@ def plot_fig1(
         tm = t0 + 0.55 * (t1 - t0) if label != r"$\theta_i$" else t1 + 0.25
         rr = 1.15 * r if label != r"$\theta_i$" else 0.8 * r
         ax.text(rr * np.cos(tm), rr * np.sin(tm), label, color=col, ha="center", va="center")
-    ax.plot(0, 0, marker="*", ms=16, color="k", ls="none")
+    ax.plot(0, 0, **target.kw(label=None, ms=16))
     ax.annotate("target $o$", (0, 0), xytext=(6, -14), textcoords="offset points")
     ax.set_xlim(-lim, lim)
     ax.set_ylim(-0.45 * lim, lim)
@@ -78,9 +79,83 @@ def _even_stride(n: int, most: int = 80) -> int:
     return int(np.ceil(cells / most))
 
 
+def _ray_hits(cs, start, direction) -> list:
+    """For each level of the contour set ``cs``, the distance along the ray from ``start`` in
+    the unit ``direction`` (data units) to its first crossing of that level's lines, or None
+    where the ray never crosses them."""
+    d = np.asarray(direction, dtype=float)
+    hits = []
+    for path in cs.get_paths():
+        best = None
+        for poly in path.to_polygons(closed_only=False):
+            p, e = poly[:-1], np.diff(poly, axis=0)
+            w = p - start
+            den = d[0] * e[:, 1] - d[1] * e[:, 0]  # start + s d = p + t e, by cross products
+            with np.errstate(divide="ignore", invalid="ignore"):
+                s = (w[:, 0] * e[:, 1] - w[:, 1] * e[:, 0]) / den
+                t = (w[:, 0] * d[1] - w[:, 1] * d[0]) / den
+            ok = (den != 0) & (t >= 0) & (t <= 1) & (s > 0)
+            if ok.any():
+                best = min(float(s[ok].min()), np.inf if best is None else best)
+        hits.append(best)
+    return hits
+
+
+def _label_along_ray(ax, cs, start, direction, box_in, fontsize: float = 10.0,
+                     mark_pt: float = 12.0):
+    """Label the contour lines of ``cs`` where a ray from ``start`` (a marked maximum) in
+    ``direction`` first crosses them, so that the labels stand in a row beside the mark instead
+    of piling up around it; the labels are upright, on a white ground that hides the line.
+
+    A label is left out where it would come within about its own size (along the ray) of the
+    previous one, or within 6 pt of the mark (``mark_pt`` across), distances in inches with the
+    axes taken as ``box_in`` = (width, height) in inches; the nested lines it would name lie
+    between labelled ones. Levels the ray never crosses, or crosses less than a text height
+    from the axes' edge, are labelled where matplotlib puts them.
+    """
+    start = np.asarray(start, dtype=float)
+    d = np.asarray(direction, dtype=float) / np.hypot(*direction)
+    x0, x1 = ax.get_xlim()
+    y0, y1 = ax.get_ylim()
+    per_unit = np.array([box_in[0] / (x1 - x0), box_in[1] / (y1 - y0)])  # inches per data unit
+    step = np.hypot(*(d * per_unit))  # inches per unit along the ray
+    along = np.abs(d * per_unit) / step  # the ray's direction on paper
+    gap = (along[0] * 2.0 + along[1] * 1.4) * fontsize / 72  # a label "0.5": 2 em by 1.4 em
+
+    def inside(p):  # at least one text height from every edge of the axes
+        return min(p[0] - x0, x1 - p[0], p[1] - y0, y1 - p[1]) >= 0 and min(
+            min(p[0] - x0, x1 - p[0]) * per_unit[0],
+            min(p[1] - y0, y1 - p[1]) * per_unit[1]) >= fontsize / 72
+
+    keep, rest, last = [], [], 0.0
+    clear = gap / 2 + (mark_pt / 2 + 6) / 72  # the first label's centre from the mark's
+    for level, s in sorted(zip(cs.levels, _ray_hits(cs, start, d)),
+                           key=lambda h: np.inf if h[1] is None else h[1]):
+        if s is None or not inside(start + s * d):
+            rest.append(level)
+        elif (s - last) * step >= (gap if keep else clear):
+            keep.append((level, start + s * d))
+            last = s
+    texts = []
+    if keep:
+        texts += ax.clabel(cs, [lv for lv, _ in keep], manual=[tuple(p) for _, p in keep],
+                           inline=False, fontsize=fontsize, fmt="%.1f")
+    if rest:
+        texts += ax.clabel(cs, rest, inline=False, fontsize=fontsize, fmt="%.1f")
+    for text in texts:
+        text.set_rotation(0)
+        text.set_bbox({"boxstyle": "square,pad=0.1", "fc": "white", "ec": "none"})
+
+
 def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str = "all"):
     r"""Fig. 2's four panels: surface (a) and contour (b) over :math:`(\alpha, \theta)`, surface (c)
     and contour (d) over :math:`(\alpha \cos\theta, \alpha \sin\theta)`.
+
+    The contour labels stand upright in a row beside the upper maximum (along
+    :math:`\theta = \theta^*` in (b), straight up in (d)); where the lines crowd near the
+    maximum some are left unlabelled, and they take their values in order between the labelled
+    ones. The figure is
+    7.5 in wide, laid out by matplotlib's constrained layout.
 
     Parameters
     ----------
@@ -91,7 +166,7 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     title : str
         Figure title.
     mark : GridMax, optional
-        Grid maxima to mark with red stars.
+        Grid maxima to mark with stars (the look ``maximum`` of :mod:`obslib.viz.style`).
     panels : {"all", "contour"}
         ``"contour"`` draws only the contour panels (b) and (d), side by side (the 3D surfaces
         take most of the rendering time and show nothing the contours do not).
@@ -115,6 +190,7 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     """
     import matplotlib as mpl
     import matplotlib.pyplot as plt
+    from matplotlib.ticker import MaxNLocator
 
     if panels not in ("all", "contour"):
         raise ValueError(f"panels must be 'all' or 'contour', got {panels!r}")
@@ -125,51 +201,55 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
         raise ValueError(f"Z must have shape {(t.size, a.size)}, got {Z.shape}")
     A, T = np.meshgrid(a, t)
     X, Y = A * np.cos(T), A * np.sin(T)
+    if mark is not None:
+        pts = np.array(mark.points, dtype=float)
+    else:
+        k = np.unravel_index(np.argmax(Z), Z.shape)
+        pts = np.array([[a[k[1]], t[k[0]]]])
+    top = pts[np.argmax(pts[:, 1])]  # the labels stand beside the upper maximum
     surfaces = panels == "all"
+    width = 7.5  # the book's rule: at most 7.5 in wide (obsbook.figures)
     if surfaces:  # 3-D panels (a), (c) on the left, contours (b), (d) on the right
-        fig = plt.figure(figsize=(8.9, 8.1))  # at most 9 in: the book column
-        grid = fig.add_gridspec(2, 2, width_ratios=[1, 1.534])
+        fig = plt.figure(figsize=(width, 7.6), layout="constrained")
+        grid = fig.add_gridspec(2, 2, width_ratios=[1, 1.15])
+        boxes = ((3.3, 2.9), (2.9, 2.9))  # the contour axes' size, about (in)
     else:  # (b) wide, (d) square
-        fig = plt.figure(figsize=(8.9, 4.3))
+        fig = plt.figure(figsize=(width, 3.7), layout="constrained")
         grid = fig.add_gridspec(1, 2, width_ratios=[1.45, 1])
+        boxes = ((3.9, 2.9), (2.8, 2.8))
     rows = (
-        ("(a)", A, T, r"$\alpha = d_{jo}/d_{io}$", r"$\theta_{ji}$ (rad)"),
-        ("(c)", X, Y, r"$\alpha\cos\theta_{ji}$", r"$\alpha\sin\theta_{ji}$"),
+        ("(a)", A, T, r"$\alpha = d_{jo}/d_{io}$", r"$\theta_{ji}$ (rad)", top, (1.0, 0.0)),
+        ("(c)", X, Y, r"$\alpha\cos\theta_{ji}$", r"$\alpha\sin\theta_{ji}$",
+         top[0] * np.array([np.cos(top[1]), np.sin(top[1])]), (0.0, 1.0)),
     )
-    for row, (tag, P, R, xl, yl) in enumerate(rows):
+    star = look("maximum").kw(label=None, ms=12, mec="white", mew=0.8, zorder=5)
+    for row, (tag, P, R, xl, yl, start, ray) in enumerate(rows):
         if surfaces:
             # 3-D axes keep Matplotlib's automatic title height (it clears the rotated box),
-            # whatever axes.titley says (obslib.notebook.setup_figures fixes it for 2-D axes)
+            # whatever axes.titley says (obsbook.setup fixes it for 2-D axes)
             with mpl.rc_context({"axes.titley": None}):
                 ax3 = fig.add_subplot(grid[row, 0], projection="3d")
-                ax3.set_title(f"{tag} surface")
-            ax3.plot_surface(P, R, Z, cmap="viridis", rstride=_even_stride(t.size),
+                ax3.set_title(f"{tag} surface of " + r"$\underline{C}^{-1}$")
+            ax3.plot_surface(P, R, Z, cmap=SEQUENTIAL, rstride=_even_stride(t.size),
                              cstride=_even_stride(a.size), linewidth=0)
             ax3.set_xlabel(xl)
             ax3.set_ylabel(yl)
-            ax3.set_zlabel(r"$\underline{C}^{-1}$")
+            for axis in (ax3.xaxis, ax3.yaxis, ax3.zaxis):  # few ticks: the axes are foreshortened
+                axis.set_major_locator(MaxNLocator(4, steps=[1, 2, 5, 10]))
+            # no z label: constrained layout leaves no room for the z label of 3-D axes, which
+            # then runs into the contour panel's y label; the title names the quantity
         ax2 = fig.add_subplot(grid[row, 1] if surfaces else grid[0, row])
-        cs = ax2.contour(P, R, Z, levels=list(levels), cmap="viridis")
-        ax2.clabel(cs, fontsize=9, fmt="%.1f")
+        cs = ax2.contour(P, R, Z, levels=list(levels), cmap=SEQUENTIAL)
         ax2.set_xlabel(xl)
         ax2.set_ylabel(yl)
         ax2.set_title(f"({'b' if row == 0 else 'd'}) contour")
         if row == 1:
             ax2.set_aspect("equal")
-        if mark is not None:
-            pts = np.array(mark.points)
-            if row == 0:
-                ax2.plot(pts[:, 0], pts[:, 1], "r*", ms=10)
-            else:
-                ax2.plot(pts[:, 0] * np.cos(pts[:, 1]), pts[:, 0] * np.sin(pts[:, 1]), "r*", ms=10)
+        _label_along_ray(ax2, cs, start, ray, boxes[row])
+        if row == 0:
+            ax2.plot(pts[:, 0], pts[:, 1], **star)
+        else:
+            ax2.plot(pts[:, 0] * np.cos(pts[:, 1]), pts[:, 0] * np.sin(pts[:, 1]), **star)
     if title:
         fig.suptitle(title)
-    # The layout is written down (found once with tight_layout; the 3-D panels' margins by eye):
-    # tight_layout or bbox_inches="tight" would draw the figure once more just to measure it.
-    if surfaces:
-        fig.subplots_adjust(left=0.005, right=0.985, bottom=0.070, top=0.921 if title else 0.955,
-                            wspace=0.266, hspace=0.243)
-    else:
-        fig.subplots_adjust(left=0.067, right=0.986, bottom=0.131, top=0.851 if title else 0.932,
-                            wspace=0.185)
     return fig

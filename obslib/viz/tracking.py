@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .style import LOOKS, PUBLISHED_STYLE, REPLAY_STYLE, look
+
 __all__ = [
     "CHI2_2DOF_9973",
     "cov_ellipse",
@@ -70,7 +72,12 @@ def sensor_label(i: int) -> str:
 
 
 def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
-    """Sensors as blue triangles named ``s1..sN`` (:func:`sensor_label`) on ``ax``.
+    """Sensors as triangles (the look ``sensor`` of :mod:`obslib.viz.style`) named
+    ``s1..sN`` (:func:`sensor_label`) on ``ax``; ``label`` is their legend entry (none if None).
+
+    The names stand above and right of the triangles, so the axes keep at least 12 % of their
+    data height free above the highest point (``ax.set_ymargin``): the top sensor's name stays
+    inside the axes, clear of the title.
 
     Examples
     --------
@@ -85,9 +92,10 @@ def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
     >>> plt.close(fig)
     """
     s = np.asarray(sensors, dtype=float)
-    ax.plot(*s.T, "^", color="tab:blue", ms=ms, **({} if label is None else {"label": label}))
+    ax.plot(*s.T, **look("sensor").kw(ms=ms, label=label or "_sensors"))
+    ax.set_ymargin(max(ax.get_ymargin(), 0.12))
     for n, p in enumerate(s):
-        ax.annotate(sensor_label(n), p, textcoords="offset points", xytext=(4, 4), fontsize=9)
+        ax.annotate(sensor_label(n), p, textcoords="offset points", xytext=(4, 4), fontsize=10)
 
 
 def draw_snapshot(ax, result, k: int, *, legend: bool = True, ellipse_scale=1.0):
@@ -95,7 +103,8 @@ def draw_snapshot(ax, result, k: int, *, legend: bool = True, ellipse_scale=1.0)
 
     Sensors (labelled ``s1..sN``), the true path so far and the target, the estimate with its
     99.73 % covariance ellipse (scaled by ``ellipse_scale`` if wanted for visibility) and lines
-    from the chosen pair to the estimate. Returns the artists.
+    from the chosen pair to the estimate, each in its look of :mod:`obslib.viz.style` and each
+    with a legend entry. Returns the axes.
 
     Examples
     --------
@@ -115,18 +124,18 @@ def draw_snapshot(ax, result, k: int, *, legend: bool = True, ellipse_scale=1.0)
     i = k - 1
     s = result.setup.sensor_array
     draw_sensors(ax, s, label="sensors")
-    for j in result.pairs[i]:
-        ax.plot(*np.array([s[j], result.estimate[i]]).T, "-", color="tab:green", lw=1)
-    ax.plot(*result.truth[: i + 1].T, "-", color="0.6", lw=1, label="true path")
-    ax.plot(*result.truth[i], "o", color="k", ms=5, label="target o\u2096")
-    ax.plot(*result.estimate[i], "x", color="tab:red", ms=7, label="estimate \u00f4\u2096")
-    e = cov_ellipse(result.estimate[i], ellipse_scale**2 * result.cov[i])
-    ax.plot(*e.T, "-", color="tab:red", lw=1, label="99.73 % ellipse")
+    a, b = s[result.pairs[i]]
+    e = result.estimate[i]
+    ax.plot([a[0], e[0], b[0]], [a[1], e[1], b[1]], **look("chosen-pair").kw(lw=1))
+    ax.plot(*result.truth[: i + 1].T, **look("truth").kw(lw=1))
+    ax.plot(*result.truth[i], **look("target").kw(ms=9, label="target o\u2096"))
+    ax.plot(*e, **look("estimate").kw(ms=7, label="estimate \u00f4\u2096"))
+    ax.plot(*cov_ellipse(e, ellipse_scale**2 * result.cov[i]).T, **look("ellipse").kw(lw=1))
     ax.set_aspect("equal")
     i0, j0 = result.pairs[i]
-    ax.set_title(f"k = {k}, pair ({sensor_label(i0)}, {sensor_label(j0)})", fontsize=9)
+    ax.set_title(f"k = {k}, pair ({sensor_label(i0)}, {sensor_label(j0)})", fontsize=10)
     if legend:
-        ax.legend(fontsize=9, loc="lower left")
+        ax.legend(loc="lower left")
     return ax
 
 
@@ -236,7 +245,8 @@ def animate(result, every: int = 3, dpi: int = 100, figsize=(7.5, 3.6), interval
     to the estimate, the true path so far and the target, the estimate and its 99.73 %
     covariance ellipse, with the step and pair as the title. Right, the lower bound on
     :math:`C^{-1}` of the chosen pair over the whole run (faint), the part played so far and a
-    marker at the current step. The default size is 750 px wide (7.5 in at 100 dpi). Show it in
+    marker at the current step, in the colour of the run's strategy. The default size is 750 px
+    wide (7.5 in at 100 dpi), laid out by constrained layout. Show it in
     a notebook with ``IPython.display.HTML(animation_html(anim))``; the figure is closed so that
     it is not also shown as a still.
 
@@ -260,35 +270,34 @@ def animate(result, every: int = 3, dpi: int = 100, figsize=(7.5, 3.6), interval
     if not dpi > 0:
         raise ValueError(f"dpi must be positive, got {dpi}")
     s = result.setup.sensor_array
-    fig, (ax, axb) = plt.subplots(1, 2, figsize=figsize, dpi=dpi,
+    fig, (ax, axb) = plt.subplots(1, 2, figsize=figsize, dpi=dpi, layout="constrained",
                                   gridspec_kw={"width_ratios": [1, 1.15]})
-    fig.subplots_adjust(left=0.08, right=0.985, bottom=0.14, top=0.9, wspace=0.28)
     pts = np.vstack([s, result.truth, result.estimate])
     lo, hi = pts.min(axis=0) - 1.0, pts.max(axis=0) + 1.0
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal")
-    ax.set_xlabel("x (length unit)", fontsize=9)
-    ax.set_ylabel("y (length unit)", fontsize=9)
-    ax.tick_params(labelsize=9)
+    ax.set_xlabel("x (length unit)")
+    ax.set_ylabel("y (length unit)")
     draw_sensors(ax, s, ms=7)
-    (links,) = ax.plot([], [], "-", color="tab:green", lw=1)
-    (path,) = ax.plot([], [], "-", color="0.6", lw=1)
-    (target,) = ax.plot([], [], "o", color="k", ms=4)
-    (est,) = ax.plot([], [], "x", color="tab:red", ms=6)
-    (ell,) = ax.plot([], [], "-", color="tab:red", lw=1)
-    title = ax.set_title(" ", fontsize=10)
+    (links,) = ax.plot([], [], **look("chosen-pair").kw(lw=1))
+    (path,) = ax.plot([], [], **look("truth").kw(lw=1))
+    (target,) = ax.plot([], [], **look("target").kw(ms=8))
+    (est,) = ax.plot([], [], **look("estimate").kw(ms=6))
+    (ell,) = ax.plot([], [], **look("ellipse").kw(lw=1))
+    title = ax.set_title(" ")
     steps = np.arange(1, result.steps + 1)
     bound = np.asarray(result.bound, dtype=float)
-    axb.plot(steps, bound, "-", color="tab:blue", lw=0.8, alpha=0.25)
-    (played,) = axb.plot([], [], "-", color="tab:blue", lw=1)
-    (now,) = axb.plot([], [], "o", color="tab:blue", ms=6)
+    strategy = getattr(result, "strategy", None)
+    color = LOOKS[strategy].color if strategy in LOOKS else None
+    (whole,) = axb.plot(steps, bound, "-", color=color, lw=0.8, alpha=0.25)
+    (played,) = axb.plot([], [], "-", color=whole.get_color(), lw=1)
+    (now,) = axb.plot([], [], "o", color=whole.get_color(), ms=6)
     axb.set_xlim(0, result.steps + 1)
     axb.set_ylim(0, 1.05 * max(1.0, float(np.nanmax(bound))))
-    axb.set_xlabel("step k", fontsize=9)
-    axb.set_ylabel("lower bound on C\u207b\u00b9", fontsize=9)
-    axb.tick_params(labelsize=9)
-    axb.set_title("bound of the chosen pair", fontsize=10)
+    axb.set_xlabel("step k")
+    axb.set_ylabel("lower bound on C\u207b\u00b9")
+    axb.set_title("bound of the chosen pair")
     frames = list(range(1, result.steps + 1, int(every)))
     if frames[-1] != result.steps:
         frames.append(result.steps)
@@ -362,12 +371,6 @@ def animation_html(anim, uid: str = "anim") -> str:
     return re.sub(r'<link[^>]*href="(?:https?:)?//[^"]*"[^>]*>\s*', "", html)
 
 
-#: The published log: a wide, pale line (or large open markers) that the replay is drawn over.
-PUBLISHED_STYLE = {"lw": 4.0, "alpha": 0.3, "solid_capstyle": "round"}
-#: The replay with the published noise: a thin line (or small dots) of the same colour on top.
-REPLAY_STYLE = {"lw": 1.0}
-
-
 def _float_array(name: str, a, ndim: tuple) -> np.ndarray:
     try:
         out = np.asarray(a, dtype=float)
@@ -395,8 +398,7 @@ def _check_overlay(published, replay, x):
     return pub, rep, x
 
 
-def draw_published_overlay(ax, published, replay=None, *, x=None, color="tab:blue",
-                           label=None):
+def draw_published_overlay(ax, published, replay=None, *, x=None, color=None, label=None):
     """Draw a published curve (wide and pale) and its replay (thin, same colour) on ``ax``.
 
     Where the replay with the published noise gives the logged numbers, the thin line runs
@@ -412,8 +414,8 @@ def draw_published_overlay(ax, published, replay=None, *, x=None, color="tab:blu
         published curve alone.
     x : (n,) array_like, optional
         Abscissae of a series, e.g. the steps ``k = 1..n``; required for a series.
-    color : color
-        Colour of both curves.
+    color : color, optional
+        Colour of both curves (default: the axes' next colour).
     label : str, optional
         Legend entries ``"<label>, published"`` and ``"<label>, replay"``.
 
@@ -436,9 +438,9 @@ def draw_published_overlay(ax, published, replay=None, *, x=None, color="tab:blu
         return (x[: a.shape[0]], a) if a.ndim == 1 else (a[:, 0], a[:, 1])
 
     lab = (lambda w: None) if label is None else (lambda w: f"{label}, {w}")
-    ax.plot(*xy(pub), "-", color=color, label=lab("published"), **PUBLISHED_STYLE)
+    (wide,) = ax.plot(*xy(pub), "-", color=color, label=lab("published"), **PUBLISHED_STYLE)
     if rep is not None:
-        ax.plot(*xy(rep), "-", color=color, label=lab("replay"), **REPLAY_STYLE)
+        ax.plot(*xy(rep), "-", color=wide.get_color(), label=lab("replay"), **REPLAY_STYLE)
     return ax
 
 
@@ -449,7 +451,7 @@ def _check_codes(name, a, n=None):
     return out
 
 
-def draw_pair_overlay(ax, published, replay=None, *, color="tab:blue", label=None):
+def draw_pair_overlay(ax, published, replay=None, *, color=None, label=None):
     """The pair (or partner) chosen at each step, as in Fig. 5: the published choice as large
     pale open circles, the replay's as small dots of the same colour inside them.
 
@@ -459,7 +461,8 @@ def draw_pair_overlay(ax, published, replay=None, *, color="tab:blue", label=Non
     published, replay : (n,) array_like
         A code per step ``k = 1..n`` of the chosen pair (e.g. its index in a list of pairs, or
         the partner sensor); the caller labels the y ticks. ``replay`` may be None.
-    color : color
+    color : color, optional
+        Default: the look ``best-pair`` of :mod:`obslib.viz.style`.
     label : str, optional
         Legend entries ``"<label>, published"`` and ``"<label>, replay"``.
 
@@ -477,6 +480,7 @@ def draw_pair_overlay(ax, published, replay=None, *, color="tab:blue", label=Non
     pub = _check_codes("published", published)
     rep = None if replay is None else _check_codes("replay", replay, pub.size)
     k = np.arange(1, pub.size + 1)
+    color = look("best-pair").color if color is None else color
     lab = (lambda w: None) if label is None else (lambda w: f"{label}, {w}")
     ax.plot(k, pub, "o", mfc="none", mec=color, ms=5, mew=1.0, alpha=0.45,
             label=lab("published"))
