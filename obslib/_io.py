@@ -31,10 +31,10 @@ def check_output_path(path) -> Path:
 
     Examples
     --------
-    >>> check_output_path("/nonexistent-dir/out.json")
+    >>> check_output_path("/no-dir/o.json")
     Traceback (most recent call last):
     ...
-    obslib._io.OutputPathError: /nonexistent-dir/out.json: directory /nonexistent-dir does not exist
+    obslib._io.OutputPathError: /no-dir/o.json: directory /no-dir does not exist
     """
     if path is None or str(path) == "":
         raise OutputPathError("the output path is empty; give a file name")
