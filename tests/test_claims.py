@@ -397,6 +397,20 @@ def test_notebook_targets_read_labels_and_their_sections(tmp_path):
         "d": ("x", "The chapter")}
 
 
+def test_report_command_line_errors_exit_2(tmp_path, capsys):
+    for argv, msg in ((["--write", str(tmp_path / "no" / "r.md")], "does not exist"),
+                      (["--notebooks", str(tmp_path / "none")], "not a directory"),
+                      (["--profile", "nope"], "invalid choice")):
+        with pytest.raises(SystemExit) as exc:
+            rep.main(argv)
+        assert exc.value.code == 2 and msg in capsys.readouterr().err
+    bad = tmp_path / "r.json"
+    bad.write_text("[1]")
+    with pytest.raises(SystemExit) as exc:
+        rep.main(["--robustness", str(bad), "--write", str(tmp_path / "r.md")])
+    assert exc.value.code == 2 and "not a robustness data file" in capsys.readouterr().err
+
+
 def test_list_table_formats_numbers_with_the_book_formatter():
     lines = rep.list_table("Numbers.", ["a", "b"], [[12345, 2.5e-7], [0.25, "none"]], name="t")
     assert "* - 12,345" in lines and r"  - $2.50 \times 10^{-7}$" in lines

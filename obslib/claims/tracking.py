@@ -480,8 +480,8 @@ def _fig7_entrapment(profile: str) -> Finding:
     ours = (f"The best pair entraps the paper's adversary in {held}: the target stays near its "
             r"start, the bound stays high and the exact $C^{-1}$ the sensors face stays away "
             r"from $0$, while against the fixed pair $(s_2, s_1)$ the same target drives "
-            r"$C^{-1}$ to nearly $0$; stronger adversaries are entrapped too"
-            + (" in every run." if all(d["entrapped"] == 1 for d in strong.values()) else
+            r"$C^{-1}$ to nearly $0$; stronger adversaries are entrapped"
+            + (" in every run too." if all(d["entrapped"] == 1 for d in strong.values()) else
                ", but not always."))
 
     def row(name, runs, d):

@@ -210,7 +210,7 @@ def _np_complete(profile: str) -> Finding:
     spread = _spread(top, float(p["time_budget"]), p["seed"], p["u_max"]) if top else np.array([])
     done = spread[np.isfinite(spread)]
     ours = (
-        "NP-complete it is, for the arbitrary weights Problem 1 is posed with, by a reduction "
+        "It is NP-complete for the arbitrary weights Problem 1 is posed with, by a reduction "
         "from 3-dimensional matching that brute force confirms on random instances; for the "
         "paper's geometric weights no hardness proof is known. But the optimum can be computed "
         "at the paper's sizes: an exact 0-1 program solves Fig. 8's instances up to the largest "
