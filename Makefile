@@ -17,7 +17,7 @@ $(STAMP): requirements.txt pyproject.toml
 
 book: $(STAMP)
 	$(BIN)/python -m obslib.run --in-place
-	$(BIN)/python -m obslib.claims --profile paper --write book/report.md
+	$(BIN)/python -m obsbook.report --profile paper --write book/report.md
 	$(BIN)/jupyter-book build . --builder html --warningiserror --nitpick --keep-going
 
 test: $(STAMP)

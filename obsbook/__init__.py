@@ -3,17 +3,18 @@ notebooks): figure setup, glue and table helpers for the notebooks, and the rend
 reproduction report. It calls :mod:`obslib`; :mod:`obslib` never imports it.
 
 Numbers read the same everywhere because every page formats them with the library's one formatter,
-re-exported here (:func:`number`, :func:`count`, :func:`small`, :func:`percent`, :func:`span`),
+re-exported here (:func:`number`, :func:`count`, :func:`small`, :func:`percent`, :func:`span`,
+:func:`setting`, :func:`listing`),
 and glues them as formatted text (:func:`glue_number`, :func:`glue_text`). A notebook calls
 :func:`setup` in its import cell: figures at most 7.5 in wide, text at least 10 pt, constrained
 layout (:mod:`obsbook.figures`). Tables are numbered, caption above (:func:`numbered_table`).
 """
 
-from obslib._format import count, number, percent, small, span
+from obslib._format import count, listing, number, percent, setting, small, span
 
 from .figures import setup
 from .glue import glue_number, glue_text
 from .tables import formatted_table, markdown_table, numbered_table
 
-__all__ = ["number", "count", "small", "percent", "span", "setup", "glue_number", "glue_text",
+__all__ = ["number", "count", "small", "percent", "span", "setting", "listing", "setup", "glue_number", "glue_text",
            "formatted_table", "markdown_table", "numbered_table"]

@@ -10,7 +10,10 @@ The rules, in the order they apply:
   (``3.00``, ``0.485``, ``12.5``); values of ``1000`` and more read rounded to an integer with
   separators (``1,421``); smaller or larger ones as a power of ten (``$1.23 \\times 10^{-5}$``);
 - fractions read as percentages with at most one decimal (``94.3%``, ``100%``), ranges as
-  ``between 3.00 and 1,421``.
+  ``between 3.00 and 1,421``;
+- a value set beside one the paper prints keeps the paper's decimals (:func:`fixed`);
+- a parameter value reads as it is set, without padding zeros (:func:`setting`: ``0.25``,
+  ``1``, ``$10^{-6}$``), and a list of them in words (:func:`listing`: ``0.25, 0.5 and 1``).
 
 Every function returns MyST Markdown (math in ``$...$``) by default; ``math=False`` gives plain
 text for figure labels and printed tables (``1.23e-05`` is never produced: ``1.23×10⁻⁵``).
@@ -22,7 +25,8 @@ import math
 import math as _math
 import numbers
 
-__all__ = ["number", "count", "small", "percent", "span", "format_small"]
+__all__ = ["number", "count", "small", "percent", "span", "setting", "listing", "fixed",
+           "format_small"]
 
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
@@ -157,6 +161,59 @@ def span(lo, hi, sig: int = 3, *, math: bool = True) -> str:
     """A range in words: ``span(3.0, 1420.8) == "between 3.00 and 1,421"``; equal ends read once."""
     a, b = number(lo, sig, math=math), number(hi, sig, math=math)
     return a if a == b else f"between {a} and {b}"
+
+
+def setting(x, *, math: bool = True) -> str:
+    """A parameter value as it is set: at most three significant digits and no padding zeros.
+
+    Examples
+    --------
+    >>> setting(0.25), setting(1.0), setting(2), setting(20000), setting(1e-6)
+    ('0.25', '1', '2', '20,000', '$10^{-6}$')
+    """
+    if isinstance(x, numbers.Integral) and not isinstance(x, bool):
+        return number(x)
+    x = _real(x)
+    if x == 0:
+        return "0"
+    if float(x).is_integer() and abs(x) < 1e6:
+        return f"{int(x):,}"
+    a = abs(x)
+    if 1e-3 <= a < 1000:
+        return f"{float(f'{x:.2e}'):g}"
+    mantissa, exponent = f"{x:.2e}".split("e")
+    m = mantissa.rstrip("0").rstrip(".")
+    return _power(m, int(exponent), math)
+
+
+def fixed(x, decimals: int) -> str:
+    """``x`` to a fixed number of decimals, to set beside a value printed with that precision
+    (the paper's ``0.5345``): ``fixed(0.09906, 4) == "0.0991"``.
+
+    Examples
+    --------
+    >>> fixed(0.099061, 4), fixed(-0.0493, 4), fixed(1234.5, 1)
+    ('0.0991', '-0.0493', '1,234.5')
+    """
+    x = _real(x)
+    if isinstance(decimals, bool) or not isinstance(decimals, numbers.Integral) or decimals < 0:
+        raise ValueError(f"decimals must be a non-negative integer, got {decimals!r}")
+    text = f"{x:,.{int(decimals)}f}"
+    return "0" + text[2:] if text.startswith("-0") and float(text.replace(",", "")) == 0 else text
+
+
+def listing(items, conjunction: str = "and") -> str:
+    """Items (text, or numbers read by :func:`setting`) in words: ``a, b and c``.
+
+    Examples
+    --------
+    >>> listing([0.25, 0.5, 1.0, 2.0]), listing(["D", "A"], "or"), listing([3])
+    ('0.25, 0.5, 1 and 2', 'D or A', '3')
+    """
+    words = [x if isinstance(x, str) else setting(x) for x in items]
+    if not words:
+        raise ValueError("nothing to list")
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + f" {conjunction} " + words[-1]
 
 
 def format_small(x: float, floor: float = 1e-12, fmt: str = ".3g") -> str:

@@ -24,7 +24,8 @@ from importlib import resources
 
 import numpy as np
 
-__all__ = ["RUN_NAMES", "STEPS", "N_SENSORS", "PublishedRun", "published_noise", "published_run"]
+__all__ = ["RUN_NAMES", "STEPS", "N_SENSORS", "PublishedRun", "published_noise", "noise_sources",
+           "published_run"]
 
 #: Names accepted by :func:`published_run`.
 RUN_NAMES = ("best-pair", "best-partner", "fixed-pair", "adversarial")
@@ -159,6 +160,46 @@ def _noise() -> np.ndarray:
     table[k - 1, s - 1] = data[:, col["noise"]]
     table.setflags(write=False)
     return table
+
+
+#: The noise table's names of the runs an entry was recovered from -> names of :data:`RUN_NAMES`.
+_SOURCE_RUNS = {"flex": "best-pair", "partner": "best-partner", "entrap": "adversarial"}
+
+
+def noise_sources() -> np.ndarray:
+    """Which published run each entry of :func:`published_noise` was recovered from.
+
+    Returns
+    -------
+    ndarray of str, shape (315, 6)
+        A name of :data:`RUN_NAMES` (``"best-pair"``, ``"best-partner"`` or ``"adversarial"``),
+        or ``""`` where no run measured the sensor at that step.
+
+    Examples
+    --------
+    >>> from obslib.published_runs import noise_sources, published_noise
+    >>> src = noise_sources()
+    >>> bool(((src != "") == np.isfinite(published_noise())).all())
+    True
+    """
+    return _sources().copy()
+
+
+@lru_cache(maxsize=1)
+def _sources() -> np.ndarray:
+    path = resources.files("obslib").joinpath("data", "published_runs", _FILES["noise"])
+    lines = path.read_text(encoding="utf-8").splitlines()
+    col = {name: i for i, name in enumerate(lines[0].split(","))}
+    out = np.full((STEPS, N_SENSORS), "", dtype=object)
+    for line in lines[1:]:
+        if line.strip():
+            f = line.split(",")
+            run = f[col["source_run"]]
+            if run not in _SOURCE_RUNS:
+                raise RuntimeError(f"noise table: unknown source run {run!r}")
+            out[int(f[col["k"]]) - 1, int(f[col["sensor_id"]]) - 1] = _SOURCE_RUNS[run]
+    out.setflags(write=False)
+    return out
 
 
 def _pairs(first, second) -> np.ndarray:

@@ -1,5 +1,8 @@
-"""The claims ledger: structure, and each Section III status against recomputed evidence."""
+"""The claims ledger: structure, kinds, the findings as prose, profile-independent statuses, the
+report rendered from it (obsbook.report) and the layers it sits in; each Section III status against
+recomputed evidence."""
 
+import json
 import re
 
 import numpy as np
@@ -19,7 +22,8 @@ def records():
 def test_records_are_complete(records):
     assert records, "the ledger is empty"
     for r in records.values():
-        assert r.status in claims.STATUSES
+        assert r.kind in claims.KINDS
+        assert r.status in claims.STATUS_WORDS[r.kind]
         for field in ("id", "where", "statement", "paper", "ours", "notebook"):
             assert getattr(r, field).strip(), f"{r.id}: empty {field}"
         assert (NOTEBOOK_DIR / f"{r.notebook}.ipynb").exists(), f"{r.id}: no notebook {r.notebook}"
@@ -32,9 +36,11 @@ def test_unknown_profile_and_id_are_rejected():
         claims.evaluate("quick", ids=["thm99"])
 
 
-def test_finding_rejects_a_status_outside_the_four():
+def test_finding_rejects_a_status_outside_the_words():
     with pytest.raises(ValueError, match="status"):
         claims.Finding("mostly", "x")
+    with pytest.raises(ValueError, match="table"):
+        claims.Finding("reproduced", "x", {}, table=[("a", 1)])
 
 
 def test_section3_statuses(records):
@@ -94,20 +100,7 @@ def test_proof_condition_is_stronger_than_stated(records):
     assert 0 < counts["printed"][0] < counts["stated"][0]
 
 
-def test_report_lists_every_claim(records):
-    text = claims.render_report(list(records.values()), "quick")
-    committed = (ROOT / "book" / "report.md").read_text()
-    for cid in records:
-        assert f"`{cid}`" in text
-        assert f"`{cid}`" in committed, f"book/report.md is stale: no {cid} (run make book)"
-    for cid in claims.REQUIRED_IDS:
-        assert f"`{cid}`" in committed, f"required id {cid} neither in the table nor listed as missing"
 
-
-# ------------------------------------------------------------------ the report as a reader sees it
-
-from obslib.claims import report as rep  # noqa: E402
-from obslib.claims._ledger import ALIASES  # noqa: E402
 
 #: ASCII stand-ins for mathematics that the ledger's texts must not contain outside ``$...$``.
 ASCII_MATH = re.compile(
@@ -122,7 +115,7 @@ def _outside_math(text):
 
 def test_ledger_texts_are_myst_with_math_in_dollars(records):
     for r in records.values():
-        for field in ("title", "where", "statement", "paper", "ours"):
+        for field in ("title", "where", "statement", "paper", "ours", "later"):
             text = getattr(r, field)
             assert text.count("$") % 2 == 0, f"{r.id}.{field}: unbalanced $ in {text!r}"
             plain = _outside_math(text)
@@ -141,6 +134,239 @@ def test_every_claim_has_a_one_line_title_and_an_evidence_label(records):
         assert re.fullmatch(r"[a-z0-9-]+", r.label), r.label
 
 
+# ------------------------------------------------------------------ kinds and status words
+
+def test_beyond_entries_are_findings_never_verdicts_on_the_paper(records):
+    beyond = {i for i, r in records.items() if r.kind == "beyond"}
+    assert beyond == {i for i in records if i.startswith("beyond-")} and beyond
+    for i in beyond:
+        assert records[i].status in claims.BEYOND_STATUSES
+        assert records[i].status not in claims.STATUSES
+    for r in records.values():
+        if r.kind == "paper":
+            assert r.status in claims.STATUSES
+
+
+def test_a_status_word_of_the_other_kind_is_an_error(monkeypatch):
+    from obslib.claims import _ledger
+
+    bad = claims.Claim("probe", "nowhere", "a question", "not asked", "10_criteria",
+                       lambda profile: claims.Finding("refuted", "x"), "A question?", "probe",
+                       "beyond")
+    monkeypatch.setitem(_ledger._REGISTRY, "probe", bad)
+    with pytest.raises(ValueError, match="beyond entry takes one of"):
+        claims.evaluate("quick", ids=["probe"])
+    with pytest.raises(ValueError, match="kind must be one of"):
+        claims.claim(id="probe2", where="", statement="", paper="", notebook="", kind="ours")
+
+
+def test_new_entries_exist_with_their_verdicts(records):
+    want = {"sec5b-control-ball": "reproduced", "intro-vs-problem2": "partly",
+            "footnote1-two-sensors": "partly", "sec5d-logdet-measure": "partly",
+            "code-link": "partly", "thm6-tight": "reproduced"}
+    assert {i: records[i].status for i in want} == want
+
+
+@pytest.fixture(scope="module")
+def paper_records():
+    """The ledger at the paper's sizes (about 25 s on a quiet two-core machine)."""
+    return {r.id: r for r in claims.evaluate("paper")}
+
+
+def test_statuses_do_not_depend_on_the_profile(records, paper_records):
+    assert list(records) == list(paper_records)
+    differ = {i: (records[i].status, paper_records[i].status) for i in records
+              if records[i].status != paper_records[i].status}
+    assert not differ, f"status depends on the profile (quick, paper): {differ}"
+
+
+def test_thm6_tight_rests_on_the_stored_witness(records, paper_records):
+    from obslib.claims.assignment import NEAR_THIRD
+
+    for recs in (records, paper_records):
+        ev = recs["thm6-tight"].evidence
+        assert ev["near_third"] == NEAR_THIRD and ev["witness_ratio"] <= NEAR_THIRD
+    assert records["thm6-tight"].evidence["witness_ratio"] == pytest.approx(
+        paper_records["thm6-tight"].evidence["witness_ratio"], rel=1e-12)
+
+
+# ------------------------------------------------------------------ the command line
+
+def test_json_carries_every_field_and_the_kind(capsys):
+    from obslib.claims.__main__ import main
+
+    assert main(["--json", "--id", "thm1", "--id", "beyond-criteria", "--profile", "quick"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert [(d["id"], d["kind"]) for d in out] == [("thm1", "paper"), ("beyond-criteria", "beyond")]
+    assert out[0]["table"]["columns"] and out[1]["status"] in claims.BEYOND_STATUSES
+
+
+def test_cli_write_goes_through_the_safe_writer(tmp_path, capsys):
+    from obslib.claims.__main__ import main, parse_args
+
+    path = tmp_path / "ledger.json"
+    assert main(["--id", "thm2", "--profile", "quick", "--write", str(path)]) == 0
+    assert json.loads(path.read_text())[0]["id"] == "thm2"
+    mtime = path.stat().st_mtime_ns
+    main(["--id", "thm2", "--profile", "quick", "--write", str(path)])
+    assert path.stat().st_mtime_ns == mtime  # unchanged data: the file is left alone
+    for bad, msg in ((tmp_path / "missing" / "x.json", "does not exist"),
+                     (tmp_path, "is a directory"), (tmp_path / "x.md", "must end in .json")):
+        with pytest.raises(SystemExit) as exc:
+            parse_args(["--write", str(bad)])
+        assert exc.value.code == 2 and msg in capsys.readouterr().err
+    with pytest.raises(SystemExit) as exc:
+        parse_args(["--id", "erratum-thm4-matrix"])  # former ids are gone
+    assert exc.value.code == 2
+
+
+# ------------------------------------------------------------------ findings a person would write
+
+#: What generated text looks like: Python reprs, machine notation, counts of zero in digits.
+MACHINE = re.compile(
+    r"\b(True|False|None)\b|\[\s*[-\d.(]|\(\d+, \d+\)|\b\d+(\.\d+)?e[+-]?\d+\b|"
+    r"(?<![\d.])0 of\b|\bin 0\b|(?<![\d.])0\.0+(?![\d])|\bnan\b|\binf\b"
+)
+
+
+def _texts(r):
+    yield "ours", r.ours
+    if r.table is not None:
+        yield "caption", r.table.caption
+        for row in r.table.rows:
+            for cell in row:
+                if isinstance(cell, str):
+                    yield "cell", cell
+    if r.later:
+        yield "later", r.later
+
+
+def test_findings_read_as_prose(records, paper_records):
+    for recs in (records, paper_records):
+        for r in recs.values():
+            for where, text in _texts(r):
+                assert not re.search(r"[\x00-\x1f]", text), f"{r.id} {where}: control character"
+                assert text.count("$") % 2 == 0, f"{r.id} {where}: unbalanced $"
+                plain = _outside_math(text)
+                bad = MACHINE.search(plain)
+                assert not bad, f"{r.id} {where}: {bad.group(0)!r} in {plain!r}"
+            # one or two sentences (three at most where a sentence cites a later fact)
+            ends = re.findall(r"[.;:]?\.(?=\s+[A-Z(])", _outside_math(r.ours).replace("Eq.", "Eq")
+                              .replace("Fig.", "Fig").replace("Sec.", "Sec").replace("Figs.", "Figs"))
+            assert len(ends) <= 2, f"{r.id}: {len(ends) + 1} sentences: {r.ours!r}"
+            assert len(r.ours) < 700, f"{r.id}: the finding is {len(r.ours)} characters"
+
+
+def test_finding_tables_are_small_and_well_formed(records):
+    for r in records.values():
+        if r.table is None:
+            continue
+        t = r.table
+        assert 1 <= len(t.columns) <= 8 and t.rows, r.id
+        assert all(len(row) == len(t.columns) for row in t.rows), r.id
+        assert t.caption.endswith("."), f"{r.id}: caption {t.caption!r}"
+
+
+# ------------------------------------------------------------------ evidence links
+
+def _labels_of(notebook):
+    """The MyST targets ``(name)=`` that open a line of a markdown cell of ``notebook``."""
+    nb = json.loads((NOTEBOOK_DIR / f"{notebook}.ipynb").read_text())
+    return {m for c in nb["cells"] if c["cell_type"] == "markdown"
+            for m in re.findall(r"^\(([^()\s]+)\)=$", "".join(c["source"]), re.M)}
+
+
+def test_every_evidence_link_lands_on_a_label_of_its_notebook(records):
+    missing = [f"{r.id}: ({r.label})= in {r.notebook}" for r in records.values()
+               if r.label not in _labels_of(r.notebook)]
+    assert not missing, "\n".join(missing)
+
+
+def test_committed_report_links_every_entry_to_its_section():
+    committed = (ROOT / "book" / "report.md").read_text()
+    for cid, c in claims.registry().items():
+        entry = committed.split(f"\n(claim-{cid})=\n", 1)[1].split("\n(claim-", 1)[0]
+        assert f"](#{c.label})" in entry, f"{cid}: no link to ({c.label})= in its entry"
+    assert "](../notebooks/" not in committed  # no link to the top of a chapter
+
+
+# ------------------------------------------------------------------ the report
+
+from obsbook import report as rep  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def stored_robustness():
+    from obslib.claims.robustness import read_json
+
+    return read_json(ROOT / "book" / "data" / "robustness.json")
+
+
+def test_committed_report_is_the_ledger_at_the_paper_profile(paper_records, stored_robustness):
+    text = rep.render_report(list(paper_records.values()), "paper", robustness=stored_robustness)
+    committed = (ROOT / "book" / "report.md").read_text()
+    assert committed == text, "book/report.md is stale: run python -m obsbook.report --write ..."
+
+
+def test_counts_are_of_the_paper_claims_and_add_up(records):
+    recs = list(records.values())
+    sentence = rep.counts_sentence(recs)
+    n_paper = sum(r.kind == "paper" for r in recs)
+    numbers = [int(x.replace(",", "")) for x in re.findall(r"\d[\d,]*", sentence)]
+    assert numbers[0] == n_paper and sum(numbers[1:]) == n_paper, sentence
+    for s in claims.BEYOND_STATUSES:
+        assert s not in sentence
+    text = rep.render_report(recs, "quick", targets={}, robustness=None)
+    counts = text.split(":name: tab-report-counts", 1)[1].split(":::", 1)[0]
+    cells = re.findall(r"^  - ([\d,]+)$", counts, re.M)
+    assert int(cells[-1]) == n_paper and sum(map(int, cells[:-1])) == n_paper
+
+
+def test_report_structure(records):
+    recs = list(records.values())
+    text = rep.render_report(recs, "quick", targets={recs[0].label: (recs[0].notebook, "Sec")})
+    for r in recs:
+        assert text.count(f"\n(claim-{r.id})=\n") == 1
+        assert f"](#claim-{r.id})" in text  # a table links to the entry
+    assert f"[Sec](#{recs[0].label})" in text
+    assert f"](../notebooks/{recs[1].notebook}.ipynb)" in text  # label unknown: the chapter
+    for start, end in rep.MARKERS.values():
+        assert text.count(start) == 1 and text.count(end) == 1
+        assert text.index(start) < text.index(end)
+    claims_table = text.split(":name: tab-report-claims", 1)[1].split(":::", 1)[0]
+    beyond = [r for r in recs if r.kind == "beyond"]
+    assert beyond and not any(f"(#claim-{r.id})" in claims_table for r in beyond)
+    assert text.index("## Beyond the paper") > text.index("## The claims one by one")
+    names = re.findall(r"^:name: (\S+)$", text, re.M)
+    assert len(names) == len(set(names))
+    # a table's caption is above it (the directive's argument), never a paragraph below
+    for m in re.finditer(r"^:::\{list-table\}(.*)$", text, re.M):
+        assert m.group(1).strip(), "a table without caption"
+    # no paragraph line that Markdown would read as a list item or a heading by accident
+    body = text.split("## The claims one by one", 1)[1]
+    for line in body.splitlines():
+        if line.startswith(("* - ", "  - ")):
+            continue
+        assert not re.match(r"^\s*([+*]|-(?!\s\*))\s", line), line
+
+
+def test_report_never_mentions_how_it_was_made(records):
+    text = rep.render_report(list(records.values()), "quick", targets={})
+    plain = _outside_math(text).lower()
+    for words in ("the tests", "unit test", "pytest", "budget", "commit", ".py", "source file",
+                  "notebook 1"):
+        assert words not in plain, words
+
+
+def test_intro_includes_the_report_markers():
+    committed = (ROOT / "book" / "report.md").read_text()
+    intro = (ROOT / "book" / "intro.md").read_text()
+    for start, end in rep.MARKERS.values():
+        assert start in committed and end in committed
+    start, end = rep.MARKERS["counts"]
+    assert f':start-after: "{start}"' in intro and f':end-before: "{end}"' in intro
+
+
 def test_typeset_numbers_sets_and_long_formulas():
     assert rep.typeset("difference < 1e-12.") == "difference $< 10^{-12}$."
     assert rep.typeset("ranges over [4.5e-07, 0.99]") == r"ranges over [$4.5 \times 10^{-7}$, 0.99]"
@@ -149,73 +375,71 @@ def test_typeset_numbers_sets_and_long_formulas():
     pieces = re.findall(r"\$[^$]+\$", rep.typeset(long))
     assert len(pieces) > 2 and pieces[-2:] == ["$= 0.3310 - 0.5345$", "$= -0.2035$"]
     assert all(len(p) < 45 for p in pieces)
-    # the pieces put back together are the formula
     joined = " ".join(p[1:-1].replace("{} ", "") for p in pieces)
-    assert joined.split() == long[1:-1].split()
-    # never split inside braces or an environment
+    assert joined.split() == long[1:-1].split()  # the pieces put back together are the formula
     frac = r"$\dfrac{a = b}{c}$"
-    assert rep.typeset(frac) == frac
+    assert rep.typeset(frac) == frac  # never split inside braces or an environment
     assert rep.typeset(r"$|x|$ and a | b") == r"$\vert x\vert $ and a \| b"
     assert rep.typeset("`s1 < 1e-12` and s1") == "`s1 < 1e-12` and $s_1$"  # code stays code
 
 
-def test_committed_report_links_to_every_label_the_notebooks_define(records):
-    committed = (ROOT / "book" / "report.md").read_text()
-    defined = rep.notebook_labels()
-    for r in records.values():
-        if r.label in defined:
-            assert f"](#{r.label})" in committed, f"book/report.md is stale for {r.label}"
-        else:
-            assert f"](../notebooks/{r.notebook}.ipynb)" in committed
-
-
-def test_report_anchors_links_and_markers(records):
-    recs = list(records.values())
-    some = recs[0]
-    text = claims.render_report(recs, "quick", labels={some.label})
-    for r in recs:
-        assert f"\n(claim-{r.id})=\n" in text
-        assert f"](#claim-{r.id})" in text  # the table links to the entry
-    for old in ALIASES:
-        assert f"\n(claim-{old})=\n" in text, "a renamed id keeps its anchor"
-    # the evidence goes to the label when the notebook defines it, else to the notebook
-    assert f"](#{some.label})" in text
-    other = recs[1]
-    assert f"](#{other.label})" not in text
-    assert f"](../notebooks/{other.notebook}.ipynb)" in text
-    for start, end in rep.MARKERS.values():
-        assert text.count(start) == 1 and text.count(end) == 1
-        assert text.index(start) < text.index(end)
-    # no paragraph line that Markdown would read as a list item, a heading or bold by accident
-    body = text.split("## Claims in detail", 1)[1]
-    for line in body.splitlines():
-        assert not re.match(r"^\s*([+*]|-(?!\s\*))\s", line), line
-        assert "**" not in _outside_math(line).replace("**Claim.**", "").replace(
-            "**The paper.**", "").replace("**Ours.**", "").replace(f"**{'partly'}**", "").replace(
-            "**refuted**", "").replace("**untestable**", ""), line
-
-
-def test_aliases_resolve_to_the_renamed_claims():
-    for old, new in ALIASES.items():
-        assert [r.id for r in claims.evaluate("quick", ids=[old])] == [new]
-
-
-def test_committed_report_is_the_paper_profile_and_the_intro_includes_it():
-    committed = (ROOT / "book" / "report.md").read_text()
-    assert "(profile `paper`)" in committed
-    intro = (ROOT / "book" / "intro.md").read_text()
-    for start, end in rep.MARKERS.values():
-        assert start in committed and end in committed
-        assert f':start-after: "{start}"' in intro and f':end-before: "{end}"' in intro
-
-
-def test_notebook_labels_reads_myst_targets_of_markdown_cells(tmp_path):
-    import json
-
+def test_notebook_targets_read_labels_and_their_sections(tmp_path):
     nb = {"cells": [
+        {"cell_type": "markdown", "source": ["# The chapter\n"]},
         {"cell_type": "markdown", "source": ["(thm1-evidence)=\n", "## Audit\n", "text (not)= here\n"]},
         {"cell_type": "code", "source": ["(code-label)=\n"]},
-        {"cell_type": "markdown", "source": "(a-b)=\n(c)=\n### H"},
+        {"cell_type": "markdown", "source": "(a-b)=\n(c)=\n### H $x$\n"},
+        {"cell_type": "markdown", "source": "(d)=\n**Misprints** (no heading)\n"},
     ]}
     (tmp_path / "x.ipynb").write_text(json.dumps(nb))
-    assert rep.notebook_labels(tmp_path) == {"thm1-evidence", "a-b", "c"}
+    assert rep.notebook_targets(tmp_path) == {
+        "thm1-evidence": ("x", "Audit"), "a-b": ("x", "H $x$"), "c": ("x", "H $x$"),
+        "d": ("x", "The chapter")}
+
+
+def test_report_command_line_errors_exit_2(tmp_path, capsys):
+    for argv, msg in ((["--write", str(tmp_path / "no" / "r.md")], "does not exist"),
+                      (["--notebooks", str(tmp_path / "none")], "not a directory"),
+                      (["--profile", "nope"], "invalid choice")):
+        with pytest.raises(SystemExit) as exc:
+            rep.main(argv)
+        assert exc.value.code == 2 and msg in capsys.readouterr().err
+    bad = tmp_path / "r.json"
+    bad.write_text("[1]")
+    with pytest.raises(SystemExit) as exc:
+        rep.main(["--robustness", str(bad), "--write", str(tmp_path / "r.md")])
+    assert exc.value.code == 2 and "not a robustness data file" in capsys.readouterr().err
+
+
+def test_list_table_formats_numbers_with_the_book_formatter():
+    lines = rep.list_table("Numbers.", ["a", "b"], [[12345, 2.5e-7], [0.25, "none"]], name="t")
+    assert "* - 12,345" in lines and r"  - $2.50 \times 10^{-7}$" in lines
+    assert lines[0] == ":::{list-table} Numbers." and lines[-1] == ":::"
+
+
+# ------------------------------------------------------------------ layers
+
+def test_claims_sit_above_the_studies_and_below_the_book():
+    import ast
+
+    import warnings
+
+    pkg = ROOT / "obslib"
+    for path in sorted((pkg / "claims").glob("*.py")):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # an invalid escape such as "\p" in TeX is a bug
+            tree = ast.parse(path.read_text(), str(path))
+        for node in ast.walk(tree):
+            if isinstance(node, (ast.Import, ast.ImportFrom)):
+                names = [a.name for a in node.names] if isinstance(node, ast.Import) else [
+                    ("." * node.level) + (node.module or "")]
+                for name in names:
+                    assert "tools" not in name.split("."), f"{path.name} imports {name}"
+                    assert not name.startswith("obsbook"), f"{path.name} imports {name}"
+    for path in sorted(pkg.rglob("*.py")):
+        text = path.read_text()
+        assert "obsbook" not in re.sub(r"#.*|\"\"\"[\s\S]*?\"\"\"", "", text), \
+            f"{path.relative_to(ROOT)} refers to obsbook"
+        if path.parent.name == "studies":
+            assert not re.search(r"^\s*(from|import) [.\w]*claims", text, re.M), \
+                f"{path.name}: the studies must not import the ledger"

@@ -15,8 +15,8 @@ def _read_back(text: str) -> float:
     """The value a reader takes from ``text`` (MyST math or plain)."""
     t = text.replace(",", "").replace("$", "").strip()
     m = re.fullmatch(r"(-?[\d.]+) \\times 10\^\{(-?\d+)\}", t)
-    if m:
-        return float(m.group(1)) * 10.0 ** int(m.group(2))
+    if m:  # as one literal, so that subnormal values do not underflow on the way
+        return float(f"{m.group(1)}e{m.group(2)}")
     return float(t)
 
 
@@ -65,3 +65,31 @@ def test_bad_numbers_are_named_errors(bad):
 def test_bad_arguments_are_named_errors(call):
     with pytest.raises(ValueError):
         call()
+
+
+@given(hs.floats(min_value=1e-3, max_value=999, allow_nan=False))
+def test_setting_reads_back_to_three_significant_digits_without_padding(x):
+    text = F.setting(x)
+    assert math.isclose(float(text.replace(",", "")), x, rel_tol=5e-3)
+    assert not (("." in text) and text.endswith("0")), text  # no padding zeros
+
+
+def test_settings_and_lists_of_them():
+    assert [F.setting(v) for v in (0.25, 1.0, 2, 1e-6, 1e4, 0.0)] == [
+        "0.25", "1", "2", "$10^{-6}$", "10,000", "0"]
+    assert F.setting(2.5e-7, math=False) == "2.5×10⁻⁷"
+    assert F.listing([0.0, 0.25, 0.5, 1.0, 2.0]) == "0, 0.25, 0.5, 1 and 2"
+    assert F.listing(["D-optimal", "A-optimal"], "or") == "D-optimal or A-optimal"
+    with pytest.raises(ValueError):
+        F.listing([])
+    with pytest.raises(ValueError):
+        F.setting(True)
+
+
+def test_fixed_decimals_beside_printed_values():
+    assert F.fixed(0.0990614, 4) == "0.0991"
+    assert F.fixed(-0.00001, 2) == "0.00"  # no negative zero
+    assert F.fixed(12345.678, 1) == "12,345.7"
+    assert float(F.fixed(0.53452248, 4)) == 0.5345
+    with pytest.raises(ValueError):
+        F.fixed(1.0, -1)

@@ -1,11 +1,15 @@
-"""Verdict robustness (obslib.studies.robustness): variations go through temporary profiles."""
+"""Verdict robustness (obslib.claims.robustness): variations go through temporary profiles."""
+
+import json
 
 import pytest
 
+from obsbook import report as REPORT
 from obslib import claims
-from obslib.claims import report as REPORT
+from obslib.claims import robustness as rb
 from obslib.profiles import PROFILES, params
-from obslib.studies import robustness as rb
+
+ROBUSTNESS_FILE = REPORT.ROOT / "book" / "data" / "robustness.json"
 
 
 def test_identity_variation_reproduces_the_base_verdict(monkeypatch):
@@ -46,13 +50,13 @@ def test_table_says_where_a_verdict_changes():
                           "size": [("n_seeds x0.5", "partly", True), ("n_seeds x2", "partly", True)]}},
             {"id": "b", "base": "reproduced", "fixed": ["u_max", "noise_std", "metric", "size"],
              "variants": {}}]
-    text = rb.robustness_table(rows, link=lambda i: f"[{i}](#claim-{i})",
-                               statuses={"a": "refuted"})
-    lines = text.splitlines()
-    assert lines[2] == ("| [a](#claim-a) | refuted (partly at the smaller sizes) | holds | n/a | "
-                        "**refuted** at Euclidean | unchanged finding |")
-    assert lines[3] == "| [b](#claim-b) | reproduced |" + " fixed by the published run |" * 4
-    assert len(lines) == 4 and all(line.count("|") == 7 for line in lines)
+    assert rb.describe(rows[0], "refuted") == (
+        "refuted (partly at the smaller sizes)",
+        ["holds", "n/a", "refuted at Euclidean", "unchanged finding"])
+    assert rb.describe(rows[1]) == ("reproduced", ["fixed by the published run"] * 4)
+    lines = rb.robustness_table(rows, statuses={"a": "refuted"}).splitlines()
+    assert len(lines) == 3 and lines[1].split()[:2] == ["a", "refuted"]
+    assert "refuted at Euclidean" in lines[1] and lines[2].count("fixed by the published run") == 4
 
 
 def test_published_run_claims_are_not_varied_in_their_run_parameters():
@@ -67,7 +71,7 @@ def test_published_run_claims_are_not_varied_in_their_run_parameters():
 
 @pytest.fixture(scope="module")
 def stored():
-    return rb.read_json(REPORT.ROBUSTNESS_FILE)
+    return rb.read_json(ROBUSTNESS_FILE)
 
 
 def test_stored_robustness_covers_the_current_ledger(stored):
@@ -92,14 +96,18 @@ def test_stored_robustness_agrees_with_a_fresh_recomputation(stored, cid, dim):
 
 
 def test_report_section_from_the_stored_data(stored):
-    recs = claims.evaluate("quick", ids=["fig7-switch-mechanism", "thm1"])
-    text = claims.render_report(recs, "quick", labels=set(), robustness=stored)
-    sec = text.split("## How robust are the verdicts?")[1].split("## Claims in detail")[0]
-    rows = [line for line in sec.splitlines() if line.startswith("| [")]
+    recs = claims.evaluate("quick", ids=["fig7-switch-mechanism", "thm1", "beyond-criteria"])
+    text = REPORT.render_report(recs, "quick", targets={}, robustness=stored)
+    sec = text.split("## How robust are the verdicts?")[1]
+    rows = [line for line in sec.splitlines() if line.startswith("* - [")]
     # only the claims of the report that the data covers, each linking to its entry
-    assert rows == [line for line in rows if "(#claim-fig7-switch-mechanism)" in line]
-    assert len(rows) == 1 and "**refuted** at Euclidean" in rows[0]
-    assert "How robust" not in claims.render_report(recs, "quick", labels=set())
+    assert len(rows) == 1 and "(#claim-fig7-switch-mechanism)" in rows[0]
+    assert "  - refuted at Euclidean" in sec.splitlines()
+    assert "How robust" not in REPORT.render_report(recs, "quick", targets={})
+
+
+def test_beyond_entries_are_not_varied():
+    assert not [i for i in rb.default_ids("quick") if claims.registry()[i].kind != "paper"]
 
 
 def test_read_json_rejects_other_files(tmp_path):
@@ -112,13 +120,18 @@ def test_read_json_rejects_other_files(tmp_path):
 
 
 def test_cli_robustness_write_needs_json(capsys, tmp_path):
-    from obslib.claims.__main__ import parse_args
+    from obslib.claims.__main__ import main, parse_args
 
     with pytest.raises(SystemExit) as exc:
         parse_args(["--robustness", "--write", str(tmp_path / "r.md")])
     assert exc.value.code == 2 and "must end in .json" in capsys.readouterr().err
     assert parse_args(["--robustness"]).profile == "quick"
     assert parse_args([]).profile == "paper"
+    out = tmp_path / "r.json"
+    assert main(["--robustness", "--id", "thm7-case2", "--write", str(out)]) == 0
+    data = rb.read_json(out)
+    assert [r["id"] for r in data["rows"]] == ["thm7-case2"] and data["base"] == "quick"
+    assert json.loads(out.read_text()) == json.loads(rb.to_json(data["rows"], "quick"))
 
 
 def test_bad_input():

@@ -17,28 +17,30 @@ from obslib.studies import fig9_measure as fm
 # --------------------------------------------------------------------------------------------
 
 
+def _exact_logdet(rows):
+    """log det of the sum of r r^T over rational rows, exactly; -inf where it is singular."""
+    a = sum((x * x for x, _ in rows), Fraction(0))
+    b = sum((x * y for x, y in rows), Fraction(0))
+    c = sum((y * y for _, y in rows), Fraction(0))
+    d = a * c - b * b
+    return math.log(d) if d > 0 else -math.inf
+
+
+def _exact_row(S, T, i, l):
+    return (Fraction(T[l][0]) - Fraction(S[i][0]), Fraction(T[l][1]) - Fraction(S[i][1]))
+
+
 def _reference_literal(S, T, nan):
     """The literal greedy with exact rational determinants, recomputed from scratch each round."""
     n, L = len(S), len(T)
     teams = [[] for _ in range(L)]
     free = list(range(n))
-
-    def logdet(rows):
-        a = sum((x * x for x, _ in rows), Fraction(0))
-        b = sum((x * y for x, y in rows), Fraction(0))
-        c = sum((y * y for _, y in rows), Fraction(0))
-        d = a * c - b * b
-        return math.log(d) if d > 0 else -math.inf
-
-    def row(i, l):
-        return (Fraction(T[l][0]) - S[i][0], Fraction(T[l][1]) - S[i][1])
-
     for _ in range(n):
         best, pick, first_nan = None, None, None
         for i in free:
             for l in range(L):
-                old = logdet([row(j, l) for j in teams[l]])
-                new = logdet([row(j, l) for j in teams[l]] + [row(i, l)])
+                base = [_exact_row(S, T, j, l) for j in teams[l]]
+                old, new = _exact_logdet(base), _exact_logdet(base + [_exact_row(S, T, i, l)])
                 g = math.nan if old == new == -math.inf else new - old
                 if math.isnan(g):
                     first_nan = first_nan or (i, l)
@@ -370,3 +372,159 @@ def test_unchecked_statuses_follow_the_evidence():
     assert recs["problem3-ordered"].status == ("partly" if p3["share_larger"] > 0 else "reproduced")
     for r in recs.values():
         assert r.notebook == "11_unchecked_statements"
+
+
+# --------------------------------------------------------------------------------------------
+# Footnote 1, Sec. I against Problem 2, the measure Sec. V-D names, the exact optimum's spread
+# --------------------------------------------------------------------------------------------
+
+from obslib.studies import unchecked as uc  # noqa: E402
+
+
+def test_one_sensor_best_control_against_a_grid_of_the_disc():
+    """min(u_max, d)/d is the largest one-sensor C^-1 over the disc: a polar grid of controls,
+    each evaluated by SVD, never beats it and comes within the grid's resolution."""
+    rng = np.random.default_rng(3)
+    phi = np.linspace(0, 2 * np.pi, 361)[None, :]
+    for _ in range(20):
+        p, o, u_max = rng.uniform(0, 3, (1, 2)), rng.uniform(0, 3, 2), rng.uniform(0.2, 3)
+        rows = o - p[0]
+        # radii of the disc, with the one the closed form says is best among them
+        r = np.append(np.linspace(0, u_max, 41), min(u_max, np.hypot(*rows)))[:, None]
+        U = np.stack([r * np.cos(phi), r * np.sin(phi)], -1).reshape(-1, 2)
+        sv = np.linalg.svd(np.stack([np.stack([rows, u]) for u in U]), compute_uv=False)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            grid = np.nan_to_num(sv[:, 1] / sv[:, 0]).max()
+        best = uc.one_sensor_best(np.hypot(*rows), u_max)
+        assert grid <= best + 1e-12 and best - grid < 2e-2
+
+
+def test_one_sensor_conditioning_draws_and_bad_input():
+    r = uc.one_sensor_conditioning(100, seed=2)
+    assert r["exact"].shape == (100,) and (r["exact"] <= r["best"] + 1e-12).all()
+    assert r["share_above_half"] == float(np.mean(r["exact"] > 0.5))
+    with pytest.raises(ValueError, match="n_scenes"):
+        uc.one_sensor_conditioning(0)
+    with pytest.raises(ValueError, match="distances"):
+        uc.one_sensor_best([0.0], 1.0)
+
+
+def test_team_constraint_recomputed_from_the_greedy_teams():
+    from obslib import greedy_team_assignment
+
+    r = uc.team_constraint([9], trials=2, seed=4, n_targets=3, eps=2.0, side=10.0)
+    con, unc = [], []
+    for t in range(2):
+        S, T = ts.fig9_geometry(9, t, 4, 3, 10.0)
+        teams = greedy_team_assignment(S, T, "logdet", 2.0)
+        assert sorted(i for team in teams for i in team) == list(range(9))  # one target each
+
+        def logdet(rows):
+            G = 2.0 * np.eye(2) + sum((np.outer(v, v) for v in rows), np.zeros((2, 2)))
+            return math.log(G[0, 0] * G[1, 1] - G[0, 1] ** 2)
+
+        con.append(sum(logdet([T[l] - S[i] for i in team]) for l, team in enumerate(teams)))
+        unc.append(sum(logdet([T[l] - s for s in S]) for l in range(3)))
+    assert r["targets_per_sensor"] == [1]
+    assert r["constrained"][0] == pytest.approx(np.mean(con), rel=1e-12)
+    assert r["unconstrained"][0] == pytest.approx(np.mean(unc), rel=1e-12)
+    assert r["constrained"][0] < r["unconstrained"][0]
+
+
+def _reference_control_row(S, T, U):
+    """The greedy of Fig. 9 with a control row in every team, exact rational determinants,
+    every gain recomputed from scratch; +inf gains tie, the first (sensor, target) wins."""
+    n, L = len(S), len(T)
+    teams = [[] for _ in range(L)]
+    free = list(range(n))
+    for _ in range(n):
+        best, pick = None, None
+        for i in free:
+            for l in range(L):
+                u = (Fraction(U[l][0]), Fraction(U[l][1]))
+                base = [u] + [_exact_row(S, T, j, l) for j in teams[l]]
+                old, new = _exact_logdet(base), _exact_logdet(base + [_exact_row(S, T, i, l)])
+                g = math.inf if old == -math.inf and new > -math.inf else new - old
+                if best is None or g > best:
+                    best, pick = g, (i, l)
+        i, l = pick
+        teams[l].append(i)
+        free.remove(i)
+    return np.array([len(t) for t in teams])
+
+
+def test_control_row_sweep_matches_an_exact_reference():
+    Ns, trials, seed, L = [4, 7, 10], 3, 5, 3
+    got = fm.control_row_fig9_sweep(Ns, trials, seed, L, side=20.0, u_max=2.0)
+    for a, n in enumerate(Ns):
+        for t in range(trials):
+            S, T = ts.fig9_geometry(n, t, seed, L, 20.0)
+            phi = np.random.default_rng([seed, n, t, 1]).uniform(0, 2 * np.pi, L)
+            U = 2.0 * np.column_stack([np.cos(phi), np.sin(phi)])
+            want = _reference_control_row(S.tolist(), T.tolist(), U.tolist())
+            np.testing.assert_array_equal(got[a, t], want)
+
+
+def test_control_row_bad_input():
+    with pytest.raises(ValueError, match="u_max"):
+        fm.control_row_fig9_sweep([5], 1, 0, u_max=0.0)
+
+
+def test_exact_ratio_spread_against_brute_force():
+    from obslib import greedy_pair_assignment, pair_bounds
+    from obslib.studies.assignment import pair_assignments
+
+    r = hd.exact_ratio_spread(3, 3, time_budget=30.0, seed=2)
+    for k in range(3):
+        rng = np.random.default_rng([2, 3, k])
+        S, T = rng.uniform(0, 100, (6, 2)), rng.uniform(0, 100, (3, 2))
+        W = pair_bounds(S, T, 1.0)
+        P, Q = pair_assignments(6, 3)
+        opt = W[P, Q, np.arange(3)].sum(axis=1).max()  # every assignment enumerated
+        assert r[k] == pytest.approx(greedy_pair_assignment(W).value / opt, rel=1e-9)
+    with pytest.raises(ValueError, match="n_instances"):
+        hd.exact_ratio_spread(3, 0, 1.0)
+    with pytest.raises(ValueError, match="time_budget"):
+        hd.exact_ratio_spread(3, 1, -1.0)
+
+
+def test_random_scene_audit_covers_three_scales():
+    ratios, _, _ = eq4.random_scene_audit(50, 2, 0, 1.0)
+    assert sorted(ratios) == list(eq4.AUDIT_SIDES)
+    med = [np.median(ratios[s]) for s in sorted(ratios)]
+    assert med[0] < med[1] < med[2] <= 1  # the shortfall shrinks as the scene grows
+
+
+# --------------------------------------------------------------------------------------------
+# What the replays test
+# --------------------------------------------------------------------------------------------
+
+from obslib.published_runs import noise_sources, published_noise  # noqa: E402
+from obslib.studies import replay as rp  # noqa: E402
+
+
+def test_noise_sources_read_from_the_data_file():
+    from importlib import resources
+
+    src = noise_sources()
+    assert ((src != "") == np.isfinite(published_noise())).all()
+    text = resources.files("obslib").joinpath(
+        "data", "published_runs", "inferred_measurement_noise.csv").read_text()
+    names = {"flex": "best-pair", "partner": "best-partner", "entrap": "adversarial"}
+    for line in text.splitlines()[1:6]:
+        k, i, _, run, _ = line.split(",")
+        assert src[int(k) - 1, int(i) - 1] == names[run]
+
+
+def test_independent_checks_count_what_the_noise_does_not_fix():
+    for name in ("best-pair", "best-partner", "adversarial"):
+        c, k = rp.compare_replay(name), rp.independent_checks(name)
+        assert k["pairs"] == c.steps == 315
+        assert sum(k[g] for g in rp.CHECK_GROUPS) == c.total_values
+        # the noise entries read: each step but the last, on the run's logged pair
+        pairs = rp.published_run(name).pairs[:314]
+        read = noise_sources()[np.arange(314)[:, None], pairs]
+        assert k["read_noise"] == read.size == 628
+        assert k["shared_noise"] == int(((read != name) & (read != "")).sum())
+    assert rp.independent_checks("best-pair")["shared_noise"] == 0  # its own entries first
+    assert rp.independent_checks("best-partner")["shared_noise"] > 0

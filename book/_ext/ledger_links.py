@@ -1,9 +1,8 @@
 """Sphinx extension: every ledger id written as inline code links to its entry in the report.
 
 A page that names a claim of the ledger as ```thm1``` (inline code whose whole text is a claim
-id, or a former id of a renamed claim) gets that code wrapped in a link to the claim's entry in
-the reproduction report (anchor ``claim-<id>``, which the report defines for current and former
-ids alike). Code already inside a link, code blocks, and the report itself are left alone.
+id) gets that code wrapped in a link to the claim's entry in the reproduction report (anchor
+``claim-<id>``). Code already inside a link, code blocks, and the report itself are left alone.
 """
 
 from docutils import nodes
@@ -13,9 +12,8 @@ REPORT = "book/report"
 
 def _ids() -> frozenset:
     from obslib.claims import registry
-    from obslib.claims._ledger import ALIASES
 
-    return frozenset(registry()) | frozenset(ALIASES)
+    return frozenset(registry())
 
 
 def _link_ids(app, doctree, docname):

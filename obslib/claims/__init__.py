@@ -1,20 +1,24 @@
-"""The claims ledger: one record per claim of the paper, each with a function that re-checks it.
+"""The claims ledger: one entry per claim of the paper (and per question of this book beyond the
+paper), each with a function that re-checks it.
 
 >>> import obslib.claims as claims
 >>> records = claims.evaluate(profile="quick")          # doctest: +SKIP
 >>> {r.id: r.status for r in records}["thm1"]            # doctest: +SKIP
 'reproduced'
 
-Each record has ``id``, ``where``, ``statement``, ``paper``, ``ours``, ``status`` (one of
-``reproduced``, ``partly``, ``refuted``, ``untestable``), ``notebook`` and ``evidence``.
-The book's reproduction report is rendered from :func:`evaluate` at the ``paper`` profile
-(``python -m obslib.claims --profile paper --write book/report.md``).
+Each record has ``id``, ``kind`` (``"paper"`` or ``"beyond"``), ``where``, ``title``,
+``statement``, ``paper``, ``ours``, ``status``, ``notebook``, ``label``, ``evidence`` and
+``table``. A claim of the paper has a verdict of :data:`STATUSES`; an entry beyond the paper a
+status word of :data:`BEYOND_STATUSES` (see :mod:`obslib.claims._ledger`). A status never
+depends on the profile. The book's reproduction report is rendered from :func:`evaluate` at the
+``paper`` profile by the book's own tooling (``python -m obsbook.report``);
+:mod:`obslib.claims.robustness` varies the experiments' parameters one at a time.
 
-Claims live in one submodule per section of the paper, imported below in paper order.
+Entries live in one submodule per section of the paper, imported below in paper order.
 """
 
-from ._ledger import REQUIRED_IDS, STATUSES, Claim, Finding, Record, claim, evaluate, registry
-from .report import render_report
+from ._ledger import (BEYOND_STATUSES, KINDS, REQUIRED_IDS, STATUS_WORDS, STATUSES, Claim,
+                      Finding, Record, Table, claim, evaluate, registry)
 
 # Registration order is paper order.
 from . import section3  # noqa: E402,F401  Sec. II-III: Theorems 1-3, Remarks 1-2
@@ -29,13 +33,32 @@ from . import unchecked  # noqa: E402,F401  statements the paper does not check
 from . import criteria  # noqa: E402,F401  beyond the paper: the bound against classical criteria
 
 __all__ = [
+    "KINDS",
     "STATUSES",
+    "BEYOND_STATUSES",
+    "STATUS_WORDS",
     "REQUIRED_IDS",
     "Claim",
     "Finding",
     "Record",
+    "Table",
     "claim",
     "evaluate",
     "registry",
-    "render_report",
+    "as_json",
 ]
+
+
+def as_json(records) -> list[dict]:
+    """The records as JSON-ready dicts (what ``python -m obslib.claims --json`` prints): every
+    field, the table as ``{"caption", "columns", "rows"}`` or ``None``.
+
+    Examples
+    --------
+    >>> (d,) = as_json(evaluate("quick", ids=["thm1"]))
+    >>> d["id"], d["kind"], d["status"]
+    ('thm1', 'paper', 'reproduced')
+    """
+    from dataclasses import asdict
+
+    return [asdict(r) for r in records]

@@ -1,9 +1,12 @@
-"""Command line: ``python -m obslib.claims [--profile P] [--id ID ...] [--write FILE | --json]``.
+"""Command line: ``python -m obslib.claims [--profile P] [--id ID ...] [--json] [--write FILE]``.
 
-With ``--robustness`` it re-evaluates the claims with one parameter changed at a time
-(:func:`obslib.studies.robustness.verdict_robustness`, from the profile ``quick`` unless
+Prints one line per entry of the ledger (id, kind, status, finding), or with ``--json`` every
+field of every entry. ``--write FILE`` stores the JSON there instead of printing it.
+
+With ``--robustness`` it re-evaluates the claims of the paper with one parameter changed at a
+time (:func:`obslib.claims.robustness.verdict_robustness`, from the profile ``quick`` unless
 ``--profile`` says otherwise) and prints the table, or stores the data with ``--write FILE.json``
-(the report reads ``book/data/robustness.json``).
+(the book's report reads ``book/data/robustness.json``).
 """
 
 from __future__ import annotations
@@ -11,13 +14,11 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-from dataclasses import asdict
-from pathlib import Path
 
-from . import evaluate, registry, render_report
+from . import as_json, evaluate, registry
+from . import robustness as rb
+from .._io import OutputPathError, check_output_path, write_output
 from ..profiles import profile_names
-from ..studies import robustness as rb
-from .report import ROBUSTNESS_FILE
 
 
 def parse_args(argv=None) -> argparse.Namespace:
@@ -28,15 +29,16 @@ def parse_args(argv=None) -> argparse.Namespace:
     >>> parse_args(["--id", "thm1"]).ids
     ['thm1']
     """
-    ap = argparse.ArgumentParser(prog="python -m obslib.claims", description=__doc__)
+    ap = argparse.ArgumentParser(prog="python -m obslib.claims", description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--profile", default=None, choices=profile_names(),
                     help="parameter profile (default: paper; quick with --robustness)")
-    ap.add_argument("--id", action="append", dest="ids", help="only this claim (repeatable)")
-    ap.add_argument("--write", type=Path, help="write the report page (MyST Markdown) here")
-    ap.add_argument("--json", action="store_true", help="print the records as JSON")
+    ap.add_argument("--id", action="append", dest="ids", help="only this entry (repeatable)")
+    ap.add_argument("--json", action="store_true", help="print every field as JSON")
+    ap.add_argument("--write", help="store the JSON (or with --robustness the data) in this file")
     ap.add_argument("--robustness", action="store_true",
                     help="vary u_max, noise, metric and sizes one at a time for the claims that "
-                    "are partly or refuted and the tracking claims; --write stores JSON")
+                    "are partly or refuted and the tracking claims")
     args = ap.parse_args(argv)
     if args.profile is None:
         args.profile = "quick" if args.robustness else "paper"
@@ -46,20 +48,18 @@ def parse_args(argv=None) -> argparse.Namespace:
         if unknown:
             ap.error(f"unknown claim id(s) {unknown}; known: {', '.join(known)}")
     if args.write is not None:
-        if args.write.is_dir():
-            ap.error(f"--write {args.write}: is a directory, give a file name")
-        parent = args.write.parent
-        if not parent.is_dir():
-            ap.error(f"--write {args.write}: directory {parent} does not exist")
-    if args.write is not None and args.json:
-        ap.error("give --write or --json, not both")
-    if args.robustness and args.write is not None and args.write.suffix != ".json":
-        ap.error(f"--robustness --write {args.write}: the data file must end in .json")
+        try:
+            args.write = check_output_path(args.write)
+        except OutputPathError as exc:
+            ap.error(f"--write {exc}")
+        regular = args.write.is_file() or not args.write.exists()  # not /dev/stdout, a FIFO...
+        if regular and args.write.suffix != ".json":
+            ap.error(f"--write {args.write}: the data file must end in .json")
     return args
 
 
 def main(argv=None) -> int:
-    """Command line entry point: re-check the claims and print or write them; returns 0.
+    """Command line entry point: re-check the entries and print or store them; returns 0.
 
     Examples
     --------
@@ -72,24 +72,21 @@ def main(argv=None) -> int:
             rb.write_json(rows, args.write, base=args.profile)
             print(f"{args.write}: {len(rows)} claims")
         elif args.json:
-            json.dump(rows, sys.stdout, indent=1)
-            print()
+            print(rb.to_json(rows, args.profile), end="")
         else:
             print(rb.robustness_table(rows), end="")
         return 0
     records = evaluate(args.profile, args.ids)
-    if args.write:
-        robustness = rb.read_json(ROBUSTNESS_FILE) if ROBUSTNESS_FILE.exists() else None
-        text = render_report(records, args.profile, robustness=robustness)
-        if not args.write.exists() or args.write.read_text() != text:
-            args.write.write_text(text)
-        print(f"{args.write}: {len(records)} claims")
-    elif args.json:
-        json.dump([asdict(r) for r in records], sys.stdout, indent=1, default=float)
-        print()
+    if args.write or args.json:
+        text = json.dumps(as_json(records), indent=1, default=float) + "\n"
+        if args.write:
+            write_output(args.write, text)
+            print(f"{args.write}: {len(records)} entries")
+        else:
+            sys.stdout.write(text)
     else:
         for r in records:
-            print(f"{r.id:24s} {r.status:11s} {r.ours}")
+            print(f"{r.id:28s} {r.kind:6s} {r.status:11s} {' '.join(r.ours.split())}")
     return 0
 
 

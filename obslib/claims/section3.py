@@ -6,9 +6,9 @@ from dataclasses import asdict
 from functools import lru_cache
 
 from ..studies import section3 as bc
-from .._format import format_small
+from .._format import count, number, small, span
 from ..profiles import params
-from ._ledger import Finding, claim
+from ._ledger import Finding, Table, claim
 
 NB = "01_model_and_bound"
 
@@ -33,11 +33,20 @@ def _thm1(profile: str) -> Finding:
     ok = a.n_violations == 0
     return Finding(
         "reproduced" if ok else "refuted",
-        f"{a.n_violations} violations in {a.n_evaluations} evaluations over {a.n_scenes} random "
-        r"scenes, generic and near-degenerate, at scales $10^{-3}$ to $10^{4}$ (the bound from the "
-        r"SVD of $O(o)$ against the exact $C^{-1}(O(o,u_o))$ from its Gram matrix). Largest "
-        f"excess of the bound over the exact value: {format_small(a.worst_excess)}.",
+        f"The bound holds: in {count(a.n_violations, of=a.n_evaluations)} evaluations over "
+        f"{number(a.n_scenes)} random scenes does the exact $C^{{-1}}(O(o,u_o))$ fall below it."
+        if ok else
+        f"The bound fails in {count(a.n_violations, of=a.n_evaluations)} evaluations over "
+        f"{number(a.n_scenes)} random scenes.",
         asdict(a),
+        Table("The bound from the SVD of $O(o)$ against the exact $C^{-1}(O(o,u_o))$ from its "
+              "Gram matrix, in random scenes (generic, collinear, near-parallel and spread "
+              "sensors, at scales $10^{-3}$ to $10^{4}$).",
+              ("quantity", "value"),
+              [("random scenes", a.n_scenes),
+               ("evaluations (scene and control)", a.n_evaluations),
+               ("violations", count(a.n_violations)),
+               ("largest excess of the bound over the exact value", small(a.worst_excess))]),
     )
 
 
@@ -55,12 +64,17 @@ def _thm1_tight(profile: str) -> Finding:
     ok = a.max_moving_error < 1e-12 and a.min_over_disc_gap >= -1e-12
     return Finding(
         "reproduced" if ok else "refuted",
-        r"Tight for moving targets too: at $u_o = u_{\max} v_{\max}$ ($v_{\max}$ the principal "
-        r"eigenvector of $O(o)^T O(o)$) the exact $C^{-1}$ equals the bound to "
-        f"{format_small(a.max_moving_error)} in {a.n_scenes} scenes, so the bound is the exact "
-        r"minimum of $C^{-1}$ over the disc $\lVert u_o\rVert \le u_{\max}$, not only a lower "
-        "bound.",
+        r"The bound is tight for a moving target too: at the control $u_o = u_{\max} v_{\max}$, "
+        r"with $v_{\max}$ the principal eigenvector of $O(o)^T O(o)$, the exact $C^{-1}$ equals "
+        r"the bound, so the bound is the minimum of $C^{-1}$ over the disc "
+        r"$\lVert u_o\rVert \le u_{\max}$, not only a lower bound.",
         asdict(a),
+        Table(r"The exact $C^{-1}(O(o,u_o))$ against the bound in random scenes.",
+              ("quantity", "value"),
+              [("random scenes", a.n_scenes),
+               (r"largest difference at $u_o = u_{\max} v_{\max}$", small(a.max_moving_error)),
+               ("smallest excess of the exact value over the bound on a grid of the disc",
+                small(a.min_over_disc_gap))]),
     )
 
 
@@ -80,12 +94,35 @@ def _thm2(profile: str) -> Finding:
     lo, hi = a.exact_range
     return Finding(
         "reproduced" if ok else "refuted",
-        r"From the eigenvalues of $O_i(o)^T O_i(o)$ in "
-        rf"{a.n_scenes} scenes: $\lambda_{{\min}} / \lambda_{{\max}}$ "
-        f"{format_small(a.max_relative_lambda_min, 1e-14, '.2g')} (rounding), bound {format_small(a.max_bound, 1e-7, '.2g')}. The exact "
-        rf"one-sensor $C^{{-1}}$ with a known control ranges over [{lo:.2g}, {hi:.2g}]: only $u_o$ decides it.",
+        f"With one sensor $O_i(o)^T O_i(o)$ has rank one, so the bound is $0$ (to rounding) in "
+        f"all {number(a.n_scenes)} random scenes; with a known control the exact one-sensor "
+        f"$C^{{-1}}$ is not $0$ (up to {number(hi)} here): only the unknown control makes one "
+        "sensor useless.",
         asdict(a),
+        Table("One sensor in random scenes: the bound from the eigenvalues of "
+              r"$O_i(o)^T O_i(o)$, and the exact $C^{-1}$ with a random known control.",
+              ("quantity", "value"),
+              [("random scenes", a.n_scenes),
+               (r"largest $\lambda_{\min} / \lambda_{\max}$",
+                small(a.max_relative_lambda_min, 1e-14)),
+               ("largest bound", small(a.max_bound, 1e-7)),
+               (r"exact $C^{-1}$ with a known control", span(lo, hi))]),
     )
+
+
+def _theorem3_table(a) -> Table:
+    """The random before/after configurations of Theorem 3, by the condition they meet."""
+    names = {
+        "stated": r"the theorem's: $C^{-1}(O(o))$ and $\sigma_{\min}(O(o))$ both up",
+        "ratio only": r"only $C^{-1}(O(o))$ up",
+        "sigma_min only": r"only $\sigma_{\min}(O(o))$ up",
+        "printed": r"the proof's: $\lambda'_{\min} \ge \lambda_{\max}$ (Eq. (27))",
+        "remark 2": r"Remark 2's: $T_1 + T_2 \ge 0$",
+    }
+    return Table(f"Random before/after configurations ({number(a.n_trials)} trials) by the "
+                 "condition they meet.",
+                 ("condition met", "trials", "the bound decreased"),
+                 [(text, a.counts[k][0], count(a.counts[k][1])) for k, text in names.items()])
 
 
 @claim(
@@ -105,11 +142,11 @@ def _thm3(profile: str) -> Finding:
     sn, sbad = a.counts["sigma_min only"]
     return Finding(
         "reproduced" if bad == 0 else "refuted",
-        f"Both conditions met in {n} of {a.n_trials} random before/after configurations; the "
-        f"bound decreased in {bad} of them. Neither condition suffices alone: with only the "
-        rf"ratio up it decreased in {rbad} of {rn}, with only $\sigma_{{\min}}$ up in {sbad} of "
-        f"{sn}.",
+        f"The bound decreases in {count(bad, of=n)} random configurations where both conditions "
+        "hold; neither condition suffices alone, as the configurations meeting only one of them "
+        "show.",
         {"counts": a.counts, "witnesses": a.witnesses, "n_trials": a.n_trials},
+        _theorem3_table(a),
     )
 
 
@@ -131,13 +168,13 @@ def _thm3_proof(profile: str) -> Finding:
     ok = a.printed_implies_stated and bad_printed == 0 and n_printed < n_stated
     return Finding(
         "partly" if ok else "refuted",
-        "The printed condition is sufficient (0 decreases in "
-        f"{n_printed} trials) but is not the theorem's: it is strictly stronger (met in "
-        f"{n_printed} of the {n_stated} trials meeting the stated one), so the proof as printed "
-        r"covers fewer cases than the theorem claims. Corrected: $\lambda'_{\min} \ge "
-        r"\lambda_{\min}$ ($\sigma_{\min}$ does not decrease), which makes both terms of Eq. (29) "
-        "non-negative.",
+        r"The printed condition $\lambda'_{\min} \ge \lambda_{\max}$ is sufficient but "
+        f"strictly stronger than the theorem's (it holds in {count(n_printed, of=n_stated)} "
+        "configurations meeting the theorem's conditions), so the proof covers fewer cases than "
+        r"the theorem claims; the condition it needs is $\lambda'_{\min} \ge \lambda_{\min}$, "
+        "which makes both terms of Eq. (29) non-negative.",
         {"counts": a.counts, "printed_implies_stated": a.printed_implies_stated},
+        _theorem3_table(a),
     )
 
 
@@ -155,8 +192,9 @@ def _remark1(profile: str) -> Finding:
     ok = a.max_stationary_error < 1e-12
     return Finding(
         "reproduced" if ok else "refuted",
-        r"Exact $C^{-1}(O(o,0))^2$ (zero row included) against $\lambda_{\min}/\lambda_{\max}$ "
-        f"in {a.n_scenes} scenes: largest difference {format_small(a.max_stationary_error)}.",
+        f"For a stationary target the bound equals the exact $C^{{-1}}(O(o,0))$ in all "
+        f"{number(a.n_scenes)} random scenes, to rounding (largest difference of the squares "
+        f"{small(a.max_stationary_error)}).",
         asdict(a),
     )
 
@@ -178,8 +216,10 @@ def _remark2(profile: str) -> Finding:
     ok = bad == 0 and a.remark2_necessary_violations == 0
     return Finding(
         "reproduced" if ok else "refuted",
-        f"Remark 2's condition met in {n} of {a.n_trials} trials, the bound decreased in {bad} "
-        "of them. It is also necessary, as the numerator of Eq. (29) shows: where it failed, "
-        f"the bound clearly increased in {a.remark2_necessary_violations} trials.",
+        f"Remark 2's condition suffices: the bound decreases in {count(bad, of=n)} configurations "
+        "meeting it. It is also necessary, as the numerator of Eq. (29) shows: of the "
+        f"configurations where it fails, {count(a.remark2_necessary_violations)} show a clear "
+        "increase of the bound.",
         {"counts": a.counts, "necessary_violations": a.remark2_necessary_violations},
+        _theorem3_table(a),
     )

@@ -37,6 +37,7 @@ __all__ = [
     "random_scenes",
     "bound_ratios",
     "pair_choice_changes",
+    "AUDIT_SIDES",
     "random_scene_audit",
 ]
 
@@ -282,19 +283,25 @@ def pair_choice_changes(n_scenes: int, n_sensors: int, u_max: float, seed: int =
     return changed / int(n_scenes)
 
 
+#: Sides of the random scenes of :func:`random_scene_audit`. The ratio of the derived matrix's
+#: worst case to Theorem 1's bound depends on ``lambda_max / u_max^2``, a squared length over a
+#: squared speed bound, so on the scale of the scene.
+AUDIT_SIDES = (1.0, 10.0, 100.0)
+
+
 @lru_cache(maxsize=4)
 def random_scene_audit(n_geometries: int, n_refine: int, seed: int, u_max: float):
     """The matrix as derived against Eq. (4) on random scenes of 2 to 6 sensors.
 
-    ``n_geometries`` scenes of side 1 and of side 100 give the worst case of the derived matrix
-    over the disc divided by Theorem 1's bound (:func:`bound_ratio`); ``n_refine`` scenes of
-    side 1 check the closed-form worst case against a grid search of the disc and count the
-    scenes where the grid search falls below Theorem 1's bound.
+    ``n_geometries`` scenes of each side of :data:`AUDIT_SIDES` give the worst case of the
+    derived matrix over the disc divided by Theorem 1's bound (:func:`bound_ratio`);
+    ``n_refine`` scenes of side 1 check the closed-form worst case against a grid search of the
+    disc and count the scenes where the grid search falls below Theorem 1's bound.
 
     Returns
     -------
     ratios : dict
-        Side (1.0, 100.0) -> ``(n_geometries,)`` ratios.
+        Side (1.0, 10.0, 100.0) -> ``(n_geometries,)`` ratios.
     grid_err : float
         Largest grid minimum minus closed form (non-negative up to the grid).
     below : int
@@ -305,11 +312,11 @@ def random_scene_audit(n_geometries: int, n_refine: int, seed: int, u_max: float
     >>> from obslib.studies.eq4 import random_scene_audit
     >>> ratios, grid_err, below = random_scene_audit(5, 3, 0, 1.0)
     >>> sorted(ratios), bool(grid_err >= -1e-12), 0 <= below <= 3
-    ([1.0, 100.0], True, True)
+    ([1.0, 10.0, 100.0], True, True)
     """
     rng = np.random.default_rng(seed)
     out = {side: bound_ratios(*random_scenes(n_geometries, rng, side), u_max)[0]
-           for side in (1.0, 100.0)}
+           for side in AUDIT_SIDES}
     # the closed-form worst case against a grid search of the disc, and against Theorem 1
     grid_err, below = 0.0, 0
     for _ in range(n_refine):

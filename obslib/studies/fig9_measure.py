@@ -22,7 +22,7 @@ import numpy as np
 from . import teams as ts
 from ..bounds import relative_vectors
 
-__all__ = ["NAN_RULES", "literal_logdet_counts", "literal_fig9_sweep"]
+__all__ = ["NAN_RULES", "literal_logdet_counts", "literal_fig9_sweep", "control_row_fig9_sweep"]
 
 NAN_RULES = ("ignore", "first")
 
@@ -70,7 +70,7 @@ def literal_logdet_counts(sensors, targets, nan: str = "ignore") -> np.ndarray:
     return _counts(v[None], np.array([v.shape[0]]), np.array([nan == "first"]))[0]
 
 
-def _counts(v, n_sensors, first) -> np.ndarray:
+def _counts(v, n_sensors, first, start=None) -> np.ndarray:
     """:func:`literal_logdet_counts` of ``B`` instances at once, ``(B, L)``.
 
     ``v`` is ``(B, N_max, L, 2)``, instance ``b`` using its first ``n_sensors[b]`` rows (the rest
@@ -78,11 +78,16 @@ def _counts(v, n_sensors, first) -> np.ndarray:
     round every instance does what the single-instance greedy does, on the same elementwise
     values in the same (sensor, target) order, so the counts are those of one instance at a time
     (the 1860 greedies of Fig. 9's two literal sweeps in 0.25 s against 3.4 s one by one).
+    ``start`` (``(B, L, 2)``), when given, is a row every team holds from the outset (a control
+    row ``u_o``): it is never counted, but enters every determinant.
     """
     B, n_max, n_targets = v.shape[0], v.shape[1], v.shape[2]
     rows = np.arange(B)
     det = np.zeros((B, n_targets))
     C = np.zeros((B, n_max, n_targets))  # Cauchy-Binet increment of adding sensor i to team l
+    if start is not None:  # every team starts with one row: det 0, increments (u x r)^2
+        cross0 = v[..., 0] * start[:, None, :, 1] - v[..., 1] * start[:, None, :, 0]
+        C += cross0 * cross0
     vdet = _value(det)  # (B, L)
     vnew = _value(C)  # _value(det + C), kept column by column as teams change
     free = np.arange(n_max)[None, :] < n_sensors[:, None]
@@ -140,4 +145,46 @@ def literal_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, sid
             v[a, t, :n] = relative_vectors(S, T)
     n_sensors = np.repeat(np.array(N_values, dtype=int), trials)
     out = _counts(v.reshape(-1, n_max, n_targets, 2), n_sensors, np.full(n_sensors.size, nan == "first"))
+    return out.reshape(len(N_values), trials, n_targets)
+
+
+def control_row_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5,
+                           side: float = 100.0, u_max: float = 1.0) -> np.ndarray:
+    """Counts ``(len(N_values), trials, L)`` of the Fig. 9 sweep with the measure the text of
+    Sec. V-D names, ``log det O(o, u_o)^T O(o, u_o)``: the team's rows and a control row ``u_o``.
+
+    Each target gets a control of norm ``u_max`` in a direction drawn uniformly from
+    ``default_rng([seed, N, trial, 1])`` (the geometries are those of
+    :func:`obslib.studies.teams.fig9_sweep`). With the control row a team of one sensor is
+    non-singular unless its row is parallel to ``u_o``, so the first gains are
+    ``log((u x r)^2) - (-inf) = +inf``; ties are resolved as in :func:`literal_logdet_counts`
+    (the first in (sensor, target) order), and the determinants are exact (Cauchy-Binet with the
+    control row in every team).
+
+    Examples
+    --------
+    The first rounds give each target one sensor (every first gain is infinite):
+
+    >>> from obslib.studies.fig9_measure import control_row_fig9_sweep
+    >>> counts = control_row_fig9_sweep([10], trials=3, seed=0)
+    >>> counts.shape, bool((counts >= 1).all()), counts.sum(axis=2).tolist()
+    ((1, 3, 5), True, [[10, 10, 10]])
+    """
+    N_values = [int(n) for n in N_values]
+    trials, n_targets = int(trials), int(n_targets)
+    u_max = float(u_max)
+    if not np.isfinite(u_max) or u_max <= 0:
+        raise ValueError(f"u_max must be a positive number, got {u_max!r}")
+    n_max = max(N_values, default=0)
+    v = np.zeros((len(N_values), trials, n_max, n_targets, 2))
+    u = np.zeros((len(N_values), trials, n_targets, 2))
+    for a, n in enumerate(N_values):
+        for t in range(trials):
+            S, T = ts.fig9_geometry(n, t, seed, n_targets, side)
+            v[a, t, :n] = relative_vectors(S, T)
+            phi = np.random.default_rng([seed, n, t, 1]).uniform(0, 2 * np.pi, n_targets)
+            u[a, t] = u_max * np.column_stack([np.cos(phi), np.sin(phi)])
+    n_sensors = np.repeat(np.array(N_values, dtype=int), trials)
+    out = _counts(v.reshape(-1, n_max, n_targets, 2), n_sensors,
+                  np.zeros(n_sensors.size, dtype=bool), u.reshape(-1, n_targets, 2))
     return out.reshape(len(N_values), trials, n_targets)

@@ -19,7 +19,36 @@ from . import assignment as st
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..bounds import pair_bounds
 
-__all__ = ["tight_geometry", "spread", "first_pick_margin", "jitter_ratios", "jitter_summary"]
+__all__ = ["tight_geometry", "TIGHT_SENSORS", "TIGHT_TARGETS", "TIGHT_U_MAX", "tight_witness",
+           "spread", "first_pick_margin", "jitter_ratios", "jitter_summary"]
+
+#: The tightest geometry the local search of :func:`tight_geometry` found at the paper's sizes
+#: of notebook 03 (6 sensors, 3 targets, seed 0, 20 starts of 300 steps, ``u_max = 1``): there
+#: Algorithm 1 collects 0.342 of the optimum. Stored (coordinates to full precision) so that every
+#: profile re-evaluates the same witness instead of a search whose reach depends on its size.
+TIGHT_SENSORS = (
+    (-8.339475832238582, 21.333329564370416), (64.72094335661477, 99.157249837481),
+    (39.61034811004262, 43.51023246911406), (84.70587194428593, 35.837367987404996),
+    (124.99538781982929, 29.11427016069306), (74.21790067526166, 37.57831261060378),
+)
+TIGHT_TARGETS = (
+    (90.1622910661433, 15.429663498738591), (40.59857605412964, 43.31311799183185),
+    (-0.016777723790030175, 48.51374451326523),
+)
+TIGHT_U_MAX = 1.0
+
+
+def tight_witness():
+    """The stored tight geometry: ``(sensors (6, 2), targets (3, 2))``, fresh arrays.
+
+    Examples
+    --------
+    >>> from obslib.studies import greedy_tightness as gt
+    >>> S, T = gt.tight_witness()
+    >>> round(gt.first_pick_margin(S, T, gt.TIGHT_U_MAX)["ratio"], 3)
+    0.342
+    """
+    return np.array(TIGHT_SENSORS), np.array(TIGHT_TARGETS)
 
 
 @lru_cache(maxsize=4)

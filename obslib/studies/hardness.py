@@ -37,6 +37,7 @@ __all__ = [
     "random_3dm",
     "reduction_check",
     "exact_solver_reach",
+    "exact_ratio_spread",
 ]
 
 
@@ -145,6 +146,17 @@ def reduction_check(n_instances: int, seed: int = 0, q_values=(2, 3, 4)) -> dict
     return {"n": int(n_instances), "agree": agree, "with_matching": with_m}
 
 
+def _budget(time_budget) -> float:
+    """The solver's time limit in seconds, a positive number, or a ValueError naming it."""
+    try:
+        budget = float(time_budget)
+    except (TypeError, ValueError):
+        raise ValueError(f"time_budget must be a positive number, got {time_budget!r}") from None
+    if not np.isfinite(budget) or budget <= 0:
+        raise ValueError(f"time_budget must be a positive number, got {time_budget!r}")
+    return budget
+
+
 def exact_solver_reach(L_values, time_budget: float, seed: int = 0, u_max: float = 1.0,
                        side: float = 100.0) -> list[dict]:
     """Time the exact optimum of Problem 1 on random Fig. 8 instances (``N = 2L``).
@@ -167,12 +179,7 @@ def exact_solver_reach(L_values, time_budget: float, seed: int = 0, u_max: float
     >>> all(r["greedy"] <= r["optimum"] + 1e-12 for r in rows)
     True
     """
-    try:
-        budget = float(time_budget)
-    except (TypeError, ValueError):
-        raise ValueError(f"time_budget must be a positive number, got {time_budget!r}") from None
-    if not np.isfinite(budget) or budget <= 0:
-        raise ValueError(f"time_budget must be a positive number, got {time_budget!r}")
+    budget = _budget(time_budget)
     Ls = [int(v) for v in L_values]
     if not Ls or min(Ls) < 1:
         raise ValueError(f"L_values must be positive integers, got {L_values!r}")
@@ -194,3 +201,37 @@ def exact_solver_reach(L_values, time_budget: float, seed: int = 0, u_max: float
             "relaxed": relaxed_pair_assignment(W).value,
         })
     return rows
+
+
+def exact_ratio_spread(L: int, n_instances: int, time_budget: float, seed: int = 0,
+                       u_max: float = 1.0, side: float = 100.0) -> np.ndarray:
+    """Greedy over the exact optimum of Problem 1 on ``n_instances`` random Fig. 8 instances of
+    one size (``N = 2L``; instance ``k`` drawn from ``default_rng([seed, L, k])``).
+
+    Returns
+    -------
+    ndarray, shape (n_instances,)
+        The ratios; NaN where the exact solver did not finish within ``time_budget`` seconds.
+
+    Examples
+    --------
+    >>> from obslib.studies.hardness import exact_ratio_spread
+    >>> r = exact_ratio_spread(3, 4, time_budget=30.0)
+    >>> r.shape, bool(((r >= 1 / 3) & (r <= 1 + 1e-12)).all())
+    ((4,), True)
+    """
+    for name, v in (("L", L), ("n_instances", n_instances)):
+        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
+            raise ValueError(f"{name} must be a positive integer, got {v!r}")
+    budget = _budget(time_budget)
+    out = np.full(int(n_instances), np.nan)
+    for k in range(int(n_instances)):
+        rng = np.random.default_rng([seed, int(L), k])
+        S, T = rng.uniform(0, side, (2 * int(L), 2)), rng.uniform(0, side, (int(L), 2))
+        W = pair_bounds(S, T, u_max)
+        try:
+            opt = optimal_pair_assignment(W, time_limit=budget)
+        except RuntimeError:
+            continue
+        out[k] = greedy_pair_assignment(W).value / opt.value
+    return out

@@ -27,3 +27,8 @@ PUBLISHED_CIRCLE = {
 
 #: Mean bound and pair changes over 314 transitions of the published Fig. 7 run.
 PUBLISHED_ADVERSARIAL = {"mean_bound": 0.79, "switches": 306, "transitions": 314}
+
+#: The address of the simulations' code printed in the paper's footnote (Sec. V), and the
+#: repository where that code and the saved runs of Figs. 4-7 are found today.
+CODE_URL_PRINTED = "https://github.com/lovetuliper/observability-based-sensor-assignment.git"
+CODE_REPOSITORY = "lfzhou917/observability-based-sensor-assignment"

@@ -1,17 +1,34 @@
 """Statements of the paper that it does not check itself, and the parameters of their notebook.
 
-The computations live in one module per topic (:mod:`obslib.studies.replay`,
+Most computations live in one module per topic (:mod:`obslib.studies.replay`,
 :mod:`obslib.studies.greedy_tightness`, :mod:`obslib.studies.eq4`,
 :mod:`obslib.studies.hardness`, :mod:`obslib.studies.fig9_measure`,
-:mod:`obslib.studies.experiment_details`); this module holds the parameters of the notebook
-that shows them (``11_unchecked_statements``) under each profile.
+:mod:`obslib.studies.experiment_details`). This module holds the parameters of the notebook that
+shows them (``11_unchecked_statements``) under each profile, and the two small studies of
+statements about sensors and teams:
+
+- :func:`one_sensor_conditioning`: footnote 1 says that Theorems 2 and 3 show at least two
+  sensors to be necessary when the measure is the inverse condition number. With a known
+  control, one sensor's :math:`C^{-1}(O(o, u_o))` is not 0;
+- :func:`team_constraint`: the introduction says that there is no restriction on the number of
+  targets assigned to a sensor, while Problem 2 allows at most one. Without that constraint a
+  monotone measure would put every sensor on every target.
 """
 
 from __future__ import annotations
 
-__all__ = ["NOTEBOOK", "notebook_params"]
+import numpy as np
+
+from ..bounds import relative_vectors
+from ..observability import inverse_condition_number
+from ..teams import greedy_team_assignment
+from .teams import fig9_geometry
+
+__all__ = ["NOTEBOOK", "notebook_params", "one_sensor_best", "one_sensor_conditioning",
+           "team_constraint"]
 
 NOTEBOOK = "11_unchecked_statements"
+
 
 def notebook_params(profile: str = "paper") -> dict:
     """Parameters of the notebook under ``profile`` (:func:`obslib.profiles.params`).
@@ -26,3 +43,117 @@ def notebook_params(profile: str = "paper") -> dict:
     from ..profiles import params
 
     return params(NOTEBOOK, profile)
+
+
+def one_sensor_best(distance, u_max):
+    r"""The largest :math:`C^{-1}(O(o, u_o))` of one sensor at ``distance`` over the disc
+    :math:`\lVert u_o\rVert \le u_{\max}`: :math:`\min(u_{\max}, d) / d`.
+
+    With rows :math:`r = o - p` and :math:`u`, :math:`O^T O = r r^T + u u^T` has trace
+    :math:`d^2 + b^2` and determinant :math:`d^2 b^2 \sin^2\phi` (:math:`b = \lVert u\rVert`,
+    :math:`\phi` the angle between them); the ratio of its eigenvalues is largest at
+    :math:`\phi = \pi/2`, where they are :math:`d^2` and :math:`b^2`, so the best control is
+    perpendicular to :math:`r` with :math:`b = \min(u_{\max}, d)`.
+
+    Examples
+    --------
+    >>> from obslib.studies.unchecked import one_sensor_best
+    >>> one_sensor_best([0.5, 2.0], 1.0).tolist()
+    [1.0, 0.5]
+    """
+    d = np.asarray(distance, dtype=float)
+    u_max = float(u_max)
+    if not (np.isfinite(d).all() and (d > 0).all()):
+        raise ValueError("distances must be positive and finite")
+    if not np.isfinite(u_max) or u_max < 0:
+        raise ValueError(f"u_max must be a non-negative number, got {u_max!r}")
+    return np.minimum(u_max, d) / d
+
+
+def one_sensor_conditioning(n_scenes: int, seed: int = 0, u_max: float = 1.0,
+                            side: float = 3.0) -> dict:
+    r"""One sensor and a target with a known control (footnote 1 of Sec. II).
+
+    ``n_scenes`` scenes: the sensor and the target uniform in :math:`[0, \mathrm{side}]^2`, a
+    control uniform in the disc :math:`\lVert u\rVert \le u_{\max}`. Theorem 2 says the *lower
+    bound* (the worst case over the unknown control) is 0; the exact
+    :math:`C^{-1}(O(o, u_o))` (:func:`obslib.inverse_condition_number`) with the control known
+    is not.
+
+    Returns
+    -------
+    dict
+        ``exact`` (per scene, with the drawn control), ``best`` (per scene, the largest value over
+        the disc, :func:`one_sensor_best`), ``share_above_half`` (scenes whose exact value exceeds
+        1/2).
+
+    Examples
+    --------
+    >>> from obslib.studies.unchecked import one_sensor_conditioning
+    >>> r = one_sensor_conditioning(50, seed=0)
+    >>> bool((r["exact"] <= r["best"] + 1e-12).all()), float(r["best"].max())
+    (True, 1.0)
+    """
+    if isinstance(n_scenes, bool) or not isinstance(n_scenes, (int, np.integer)) or n_scenes < 1:
+        raise ValueError(f"n_scenes must be a positive integer, got {n_scenes!r}")
+    rng = np.random.default_rng([int(seed), 11])
+    exact = np.empty(int(n_scenes))
+    dist = np.empty(int(n_scenes))
+    for k in range(int(n_scenes)):
+        p, o = rng.uniform(0, side, (1, 2)), rng.uniform(0, side, 2)
+        r, phi = u_max * np.sqrt(rng.uniform()), rng.uniform(0, 2 * np.pi)
+        exact[k] = inverse_condition_number(p, o, [r * np.cos(phi), r * np.sin(phi)])
+        dist[k] = float(np.hypot(*(o - p[0])))
+    best = one_sensor_best(dist, u_max)
+    return {"exact": exact, "best": best, "share_above_half": float(np.mean(exact > 0.5))}
+
+
+def _logdet(rows, eps):
+    G = eps * np.eye(2) + rows.T @ rows
+    return float(np.linalg.slogdet(G)[1])
+
+
+def team_constraint(N_values, trials: int, seed: int = 0, n_targets: int = 5, eps: float = 1.0,
+                    side: float = 100.0) -> dict:
+    r"""Problem 2 with and without its constraint "each sensor on at most one target".
+
+    On the instances of Fig. 9 (:func:`obslib.studies.teams.fig9_geometry`) the greedy team
+    assignment (:func:`obslib.greedy_team_assignment`, measure
+    :math:`\log\det(O^T O + \varepsilon I)`) gives every sensor one target. Without the
+    constraint, a monotone measure is largest when every sensor serves every target; the
+    function reports both totals.
+
+    Returns
+    -------
+    dict
+        Per ``N`` (lists in the order of ``N_values``): ``targets_per_sensor`` (the largest
+        number of targets any sensor serves), ``team_min`` and ``team_max`` (team sizes),
+        ``constrained`` and ``unconstrained`` (mean totals over the trials).
+
+    Examples
+    --------
+    >>> from obslib.studies.unchecked import team_constraint
+    >>> r = team_constraint([10], trials=2)
+    >>> r["targets_per_sensor"], r["constrained"][0] < r["unconstrained"][0]
+    ([1], True)
+    """
+    out = {k: [] for k in ("targets_per_sensor", "team_min", "team_max", "constrained",
+                           "unconstrained")}
+    for n in [int(v) for v in N_values]:
+        per_sensor, lo, hi, con, unc = 0, n, 0, [], []
+        for t in range(int(trials)):
+            S, T = fig9_geometry(n, t, seed, n_targets, side)
+            teams = greedy_team_assignment(S, T, "logdet", eps)
+            served = np.bincount([i for team in teams for i in team], minlength=n)
+            per_sensor = max(per_sensor, int(served.max()))
+            sizes = [len(team) for team in teams]
+            lo, hi = min(lo, min(sizes)), max(hi, max(sizes))
+            v = relative_vectors(S, T)  # (N, L, 2)
+            con.append(sum(_logdet(v[team, l], eps) for l, team in enumerate(teams)))
+            unc.append(sum(_logdet(v[:, l], eps) for l in range(n_targets)))
+        out["targets_per_sensor"].append(per_sensor)
+        out["team_min"].append(lo)
+        out["team_max"].append(hi)
+        out["constrained"].append(float(np.mean(con)))
+        out["unconstrained"].append(float(np.mean(unc)))
+    return out

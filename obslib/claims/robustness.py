@@ -14,10 +14,12 @@ Each variant records its status and whether the whole finding (the sentence and 
 the base's: a verdict that *holds* was earned again by different numbers; an *unchanged* finding
 does not depend on the parameter at all.
 
-:func:`robustness_table` renders the result as one MyST row per claim, saying over which range
-each verdict holds. The result is stored as data (:func:`write_json`, :func:`read_json`) by
+:func:`describe` says, per claim and dimension, over which range its verdict holds; the report
+renders that as a table and the command line prints :func:`robustness_table`. The result is
+stored as data (:func:`write_json`, :func:`read_json`) by
 ``python -m obslib.claims --robustness --write book/data/robustness.json`` and read by the
-report, since recomputing it takes longer than the rest of the report.
+report, since recomputing it takes longer than the rest of the report. Only claims of the paper
+(kind ``"paper"``) have verdicts to vary; the book's own questions are not among them.
 """
 
 from __future__ import annotations
@@ -27,10 +29,13 @@ import json
 from contextlib import contextmanager
 from pathlib import Path
 
+from .._io import write_output
 from ..profiles import PROFILES, params, profile_names
+from ._ledger import evaluate, registry
 
 __all__ = ["DIMENSIONS", "SIZE_KEYS", "TRACKING_NOTEBOOKS", "FIXED_BY_PUBLISHED_RUN", "HEADERS",
-           "default_ids", "verdict_robustness", "robustness_table", "write_json", "read_json"]
+           "default_ids", "verdict_robustness", "describe", "robustness_table", "to_json",
+           "write_json", "read_json"]
 
 #: Per dimension, the factors applied to the default (numbers) or the values tried (metric).
 DIMENSIONS = {
@@ -70,22 +75,21 @@ def _profile_with(base: str, notebook: str, key: str, value):
 
 
 def default_ids(base: str = "quick") -> list[str]:
-    """Claims whose verdict is partly or refuted at ``base``, and every tracking claim.
+    """Claims of the paper whose verdict is partly or refuted at ``base``, and every tracking
+    claim of the paper.
 
     Examples
     --------
     The claim that :math:`\\alpha^* \\ne 1` is judged "partly" at ``quick``
     (:func:`verdict_robustness` shows it), so it is among them:
 
-    >>> from obslib.studies.robustness import default_ids
+    >>> from obslib.claims.robustness import default_ids
     >>> ids = default_ids("quick")
     >>> "thm5-alpha-not-1" in ids, len(ids) == len(set(ids))
     (True, True)
     """
-    from ..claims import evaluate
-
-    return [r.id for r in evaluate(base)
-            if r.status in ("partly", "refuted") or r.notebook in TRACKING_NOTEBOOKS]
+    return [r.id for r in evaluate(base) if r.kind == "paper"
+            and (r.status in ("partly", "refuted") or r.notebook in TRACKING_NOTEBOOKS)]
 
 
 def _variants(p: dict, notebook: str) -> dict:
@@ -108,7 +112,8 @@ def _variants(p: dict, notebook: str) -> dict:
 
 def _finding(rec) -> str:
     """The whole finding of a record as text (sentence and evidence), to tell unchanged ones."""
-    return rec.ours + "\n" + json.dumps(rec.evidence, sort_keys=True, default=repr)
+    table = None if rec.table is None else [rec.table.columns, rec.table.rows]
+    return rec.ours + "\n" + json.dumps([rec.evidence, table], sort_keys=True, default=repr)
 
 
 def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[dict]:
@@ -136,13 +141,11 @@ def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[d
     --------
     One claim, one dimension: the four factors of :data:`DIMENSIONS` applied to ``u_max``:
 
-    >>> from obslib.studies.robustness import DIMENSIONS, verdict_robustness
+    >>> from obslib.claims.robustness import DIMENSIONS, verdict_robustness
     >>> row = verdict_robustness(ids=["thm5-alpha-not-1"], dimensions=["u_max"])[0]
     >>> row["id"], len(row["variants"]["u_max"]) == len(DIMENSIONS["u_max"])
     ('thm5-alpha-not-1', True)
     """
-    from ..claims import evaluate, registry
-
     if base not in profile_names() or base == _TMP:
         raise ValueError(f"unknown profile {base!r}; known: {profile_names()}")
     dims = list(DIMENSIONS) if dimensions is None else list(dimensions)
@@ -174,8 +177,7 @@ def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[d
     return rows
 
 
-#: Column headers of :func:`robustness_table`: what is varied and the values tried.
-#: Each header is Markdown with TeX math, typeset in the table.
+#: Column headers of the robustness table: what is varied and the values tried (MyST).
 #:
 #: :meta hide-value:
 HEADERS = {
@@ -185,15 +187,19 @@ HEADERS = {
     "size": r"seeds or instances $\times$ 0.5, 2",
 }
 
+#: The same headers in plain text, for the command line.
+PLAIN_HEADERS = {"u_max": "u_max x0.25-4", "noise_std": "noise x0.25-4", "metric": "metric",
+                 "size": "size x0.5, x2"}
+
 
 def _value(label: str) -> str:
-    """A variant's label as typeset text: ``x0.25`` -> ``×0.25``, ``n_seeds x2`` -> ``×2``,
+    """A variant's label as text: ``x0.25`` -> ``×0.25``, ``n_seeds x2`` -> ``×2``,
     ``euclidean`` -> ``Euclidean``."""
     last = label.split()[-1]
     return "×" + last[1:] if last.startswith("x") else last.capitalize()
 
 
-def _describe(base: str, got, fixed: bool = False) -> str:
+def _cell(base: str, got, fixed: bool = False) -> str:
     if fixed:
         return "fixed by the published run"
     if not got:
@@ -202,60 +208,81 @@ def _describe(base: str, got, fixed: bool = False) -> str:
     if not changed:
         same = all(len(g) > 2 and g[2] for g in got)
         return "unchanged finding" if same else "holds"
-    return "; ".join(f"**{status}** at {_value(label)}" for label, status in changed)
+    return "; ".join(f"{status} at {_value(label)}" for label, status in changed)
 
 
-def robustness_table(rows, link=None, statuses=None) -> str:
-    """MyST: one row per claim, per dimension whether its verdict holds over the range tried.
+def describe(row: dict, status: str | None = None) -> tuple[str, list[str]]:
+    """One claim's row of the robustness table: its verdict and one cell per dimension.
+
+    A cell reads ``holds`` when the verdict is the same at every value tried, ``unchanged
+    finding`` when not even the finding changes, names the verdict where it changes
+    (``refuted at ×2``), reads ``n/a`` where the experiment has no such parameter and ``fixed by
+    the published run`` where the claim is about a run made with that value.
 
     Parameters
     ----------
-    rows : list of dict
-        :func:`verdict_robustness` (or the ``rows`` of :func:`read_json`).
-    link : callable, optional
-        ``link(id) -> str``, the claim's cell (default: the id as code).
-    statuses : dict, optional
-        id -> the verdict to show (default: the base verdict of ``rows``); where it differs
-        from the base, the cell names both.
+    row : dict
+        A row of :func:`verdict_robustness` (or of the stored data).
+    status : str, optional
+        The verdict to show (default the row's base verdict); where it differs from the base,
+        the text names both.
 
     Examples
     --------
-    >>> from obslib.studies.robustness import robustness_table
+    >>> row = {"id": "c1", "base": "partly",
+    ...        "variants": {"u_max": [("x0.5", "partly"), ("x2", "refuted")]}}
+    >>> describe(row)
+    ('partly', ['refuted at ×2', 'n/a', 'n/a', 'n/a'])
+    >>> describe(row, "refuted")[0]
+    'refuted (partly at the smaller sizes)'
+    """
+    shown = status or row["base"]
+    verdict = shown if shown == row["base"] else f"{shown} ({row['base']} at the smaller sizes)"
+    cells = [_cell(row["base"], row["variants"].get(d), d in row.get("fixed", ()))
+             for d in DIMENSIONS]
+    return verdict, cells
+
+
+def robustness_table(rows, statuses=None) -> str:
+    """Plain text: one line per claim, per dimension whether its verdict holds (see
+    :func:`describe`); the command line prints it.
+
+    Examples
+    --------
     >>> rows = [{"id": "c1", "base": "partly",
     ...          "variants": {"u_max": [("x0.5", "partly"), ("x2", "refuted")]}}]
-    >>> robustness_table(rows).splitlines()[2]
-    '| `c1` | partly | **refuted** at ×2 | n/a | n/a | n/a |'
+    >>> print(robustness_table(rows), end="")
+    claim  verdict  u_max x0.25-4  noise x0.25-4  metric  size x0.5, x2
+    c1     partly   refuted at ×2  n/a            n/a     n/a
     """
-    dims = list(DIMENSIONS)
-    lines = ["| claim | verdict | " + " | ".join(HEADERS[d] for d in dims) + " |",
-             "| --- | --- | " + " | ".join("---" for _ in dims) + " |"]
+    table = [["claim", "verdict"] + [PLAIN_HEADERS[d] for d in DIMENSIONS]]
     for r in rows:
-        name = link(r["id"]) if link else f"`{r['id']}`"
-        shown = (statuses or {}).get(r["id"], r["base"])
-        verdict = shown if shown == r["base"] else f"{shown} ({r['base']} at the smaller sizes)"
-        cells = [_describe(r["base"], r["variants"].get(d), d in r.get("fixed", ())) for d in dims]
-        lines.append(f"| {name} | {verdict} | " + " | ".join(cells) + " |")
-    return "\n".join(lines) + "\n"
+        verdict, cells = describe(r, (statuses or {}).get(r["id"]))
+        table.append([r["id"], verdict] + cells)
+    widths = [max(len(line[i]) for line in table) for i in range(len(table[0]))]
+    return "".join("  ".join(c.ljust(w) for c, w in zip(line, widths)).rstrip() + "\n"
+                   for line in table)
 
 
-def write_json(rows, path, base: str = "quick") -> None:
-    """Store :func:`verdict_robustness`'s rows with the base profile and the dimensions tried.
+def to_json(rows, base: str = "quick") -> str:
+    """The text of the stored data: :func:`verdict_robustness`'s rows with the base profile and
+    the dimensions tried (:func:`read_json` reads it back).
 
     Examples
     --------
-    >>> import tempfile
-    >>> path = Path(tempfile.mkdtemp()) / "robustness.json"
-    >>> write_json([{"claim": "x", "holds": True}], path)
-    >>> data = json.loads(path.read_text())
+    >>> data = json.loads(to_json([{"claim": "x", "holds": True}]))
     >>> data["base"], data["rows"], set(data["dimensions"]) == set(DIMENSIONS)
     ('quick', [{'claim': 'x', 'holds': True}], True)
     """
     data = {"base": base, "dimensions": {k: list(v) for k, v in DIMENSIONS.items()},
             "rows": rows}
-    text = json.dumps(data, indent=1) + "\n"
-    path = Path(path)
-    if not path.exists() or path.read_text() != text:
-        path.write_text(text)
+    return json.dumps(data, indent=1) + "\n"
+
+
+def write_json(rows, path, base: str = "quick") -> bool:
+    """Store :func:`to_json` at ``path`` (:func:`obslib._io.write_output`: atomic, and untouched
+    when it already holds the same data); returns whether anything was written."""
+    return write_output(path, to_json(rows, base))
 
 
 def read_json(path) -> dict:
@@ -266,6 +293,7 @@ def read_json(path) -> dict:
     >>> import tempfile
     >>> path = Path(tempfile.mkdtemp()) / "robustness.json"
     >>> write_json([{"claim": "x"}], path, base="paper")
+    True
     >>> data = read_json(path)
     >>> data["base"], data["rows"]
     ('paper', [{'claim': 'x'}])

@@ -1,0 +1,462 @@
+"""The book's reproduction report (``book/report.md``), rendered from the claims ledger.
+
+``python -m obsbook.report --profile paper --write book/report.md`` evaluates
+:func:`obslib.claims.evaluate` and writes the page: a header explaining the verdicts, the counts
+of the paper's claims by verdict, the table of the paper's claims, the claims that do not hold as
+printed, one entry per claim (the claim, the paper's words, our finding and the table under it,
+the link to the section of the book that shows the evidence), the book's own questions apart,
+and how robust the verdicts are (from ``book/data/robustness.json``, written by
+``python -m obslib.claims --robustness --write ...``).
+
+Parts of the page sit between marker comments (:data:`MARKERS`) so that another page can include
+them with MyST's ``{include}`` directive (``start-after`` / ``end-before``): the sentence counting
+the paper's claims by verdict, and the table of those that do not hold as printed.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+from collections import Counter
+from pathlib import Path
+
+from obslib._format import count, number
+from obslib.claims import REQUIRED_IDS, STATUSES
+
+__all__ = ["ROOT", "MARKERS", "render_report", "notebook_targets", "typeset", "list_table",
+           "counts_sentence", "main"]
+
+#: The checkout the book is built from: ``notebooks/`` and ``book/`` live here.
+ROOT = Path(__file__).resolve().parents[1]
+
+#: Marker comments around the parts of the report that other pages may include.
+MARKERS = {
+    "counts": ("% counts: start", "% counts: end"),
+    "exceptions": ("% exceptions: start", "% exceptions: end"),
+}
+
+HEADER = """\
+# Reproduction report
+
+This page is the referee's report of the book: every claim the paper makes, what we found when
+we recomputed it, and the verdict, each with a link to the section of the book that shows the
+evidence. All checks were run at {parameters}; the parameters of every experiment are on the
+{{doc}}`experimental setup <setup>` page. A verdict says what the evidence gives, whatever we
+expected:
+
+- **reproduced**: the claim holds as stated;
+- **partly**: it holds with a correction, or only in part;
+- **refuted**: the evidence contradicts the statement as printed;
+- **untestable**: nothing we can compute decides it.
+
+For a claim about a printed formula or a step of a proof, the claim is what the paper prints, so
+*refuted* means that the printed formula is wrong, not necessarily the theorem. A verdict does not
+depend on the sizes of the experiments: the same checks at smaller Monte Carlo sizes give the
+same verdicts. The questions this book asks beyond the paper are reported apart, at the end, as
+findings with their own status words (**answered** or **open**); they are not claims of the
+paper and are not counted with them. Every check can be rerun from the command line,
+`python -m obslib.claims --profile {profile}`, or one claim with
+`python -m obslib.claims --id thm1`.
+"""
+
+BEYOND_INTRO = """\
+The paper does not ask these questions; the book does, because a reader deciding whether to use
+the bound asks them. Each is reported as a finding: **answered** when the evidence settles the
+question (the finding says how), **open** when it does not. They are not verdicts on the paper.
+"""
+
+ROBUSTNESS_INTRO = """\
+Every claim that is partly reproduced or refuted, and every claim of the tracking experiments, is
+checked again with one parameter of its experiment changed at a time: the speed bound
+$u_{{\\max}}$ and the measurement noise $\\sigma$ scaled by 0.25, 0.5, 2 and 4, the distances of
+the pair bound computed with the other metric (Euclidean instead of Mahalanobis), and the number
+of noise seeds, instances or trials halved and doubled. The reruns keep the paper's other
+parameters but start from the smaller Monte Carlo sizes of the profile `{base}`. A cell reads
+*holds* when the verdict is the same at every value tried, *unchanged finding* when not even the
+numbers change (the check does not use that parameter of its experiment), names the verdict
+where it changes, and reads *n/a* when the experiment has no such parameter. The numbers of a
+published run are not varied in the parameters that run was made with. Rerun with
+`python -m obslib.claims --robustness`.
+"""
+
+_MATH = re.compile(r"(\$\$.*?\$\$|\$[^$]+\$|`[^`]*`)", re.S)
+_SCI = re.compile(r"(?<![\w.$])(<\s*)?(\d+(?:\.\d+)?)e([+-]?)0*(\d+)\b")
+_SET = re.compile(r"\{(s\d(?:\s*,\s*s\d)*)\}")
+_SENSOR = re.compile(r"(?<![\w$\\{])s(\d)\b")
+
+
+def _sci(m: re.Match) -> str:
+    rel, mant, sign, exp = m.group(1), m.group(2), m.group(3), m.group(4)
+    power = f"10^{{{'-' if sign == '-' else ''}{exp}}}"
+    body = power if float(mant) == 1 else f"{mant} \\times {power}"
+    return f"${'< ' if rel else ''}{body}$"
+
+
+def _set(m: re.Match) -> str:
+    members = ", ".join(f"s_{x.strip()[1:]}" for x in m.group(1).split(","))
+    return f"$\\{{{members}\\}}$"
+
+
+#: Inline formulas longer than this (in characters of TeX) are split at their top-level relations.
+SPLIT_AT = 36
+_REL = re.compile(r"(?<!\\)(=|<|>|\\le\b|\\ge\b|\\ne\b|\\Rightarrow\b)")
+
+
+def _cuts(body: str, at) -> list:
+    """Positions in ``body`` where ``at(i)`` holds, outside braces, brackets and parentheses."""
+    depth, cuts = 0, []
+    for i, ch in enumerate(body):
+        if ch in "{([":
+            depth += 1
+        elif ch in "})]":
+            depth -= 1
+        elif depth == 0 and i > 0 and body[i - 1] != "\\" and at(i):
+            cuts.append(i)
+    return cuts
+
+
+def _binary(body: str, i: int) -> bool:
+    """Whether ``body[i]`` is a binary ``+`` or ``-`` (its left neighbour ends an operand)."""
+    if body[i] not in "+-":
+        return False
+    left = body[:i].rstrip()
+    return bool(left) and (left[-1].isalnum() or left[-1] in ")}'")
+
+
+def _pieces(body: str, cuts: list) -> list:
+    return [p for p in (body[a:b].strip() for a, b in zip([0] + cuts, cuts + [len(body)])) if p]
+
+
+def _split_math(tex: str) -> str:
+    """``$a = b = c$`` as ``$a$ $= b$ $= c$`` when it is long, so that a line can break there.
+
+    Splits only at relations outside braces, brackets and parentheses, and never inside an
+    environment or a ``\\left ... \\right`` pair, so each piece is valid TeX.
+    """
+    body = tex[1:-1]
+    if len(body) <= SPLIT_AT or "\\begin" in body or "\\left" in body:
+        return tex
+    out = []
+    for piece in _pieces(body, _cuts(body, lambda i: _REL.match(body, i))):
+        if len(piece) > SPLIT_AT:  # still long: also break before binary + and -
+            sub = _pieces(piece, _cuts(piece, lambda i: _binary(piece, i)))
+            out += [sub[0]] + [f"{{}} {s}" for s in sub[1:]]
+        else:
+            out.append(piece)
+    return " ".join(f"${p}$" for p in out)
+
+
+def typeset(text: str) -> str:
+    """Ledger text as one line of MyST, long inline formulas split where a line may break.
+
+    Outside ``$...$`` a number in machine notation (``< 1e-12``, ``4.5e-07``) is typeset as a
+    power of ten, and sensor sets ``{s1, s3}`` and names ``s1`` as :math:`\\{s_1, s_3\\}` and
+    :math:`s_1` (the ledger's own texts do not need it; quoted text may). A ``|`` outside math is
+    escaped (it would split a Markdown table row); inside math it becomes ``\\vert``.
+
+    Examples
+    --------
+    >>> typeset("difference < 1e-12 for s1")
+    'difference $< 10^{-12}$ for $s_1$'
+    """
+    parts = _MATH.split(" ".join(str(text).split()))
+    out = []
+    for i, part in enumerate(parts):
+        if i % 2 and part.startswith("`"):  # inline code, verbatim
+            out.append(part.replace("|", r"\|"))
+        elif i % 2:  # math
+            part = part.replace("|", r"\vert ")
+            out.append(part if part.startswith("$$") else _split_math(part))
+        else:
+            part = _SCI.sub(_sci, part)
+            part = _SET.sub(_set, part)
+            part = _SENSOR.sub(lambda m: f"$s_{m.group(1)}$", part)
+            out.append(part.replace("|", r"\|"))
+    return "".join(out)
+
+
+_LABEL = re.compile(r"^\(([^()\s]+)\)=\s*$")
+_HEADING = re.compile(r"^(#{1,6})\s+(.*\S)\s*$")
+
+
+def notebook_targets(notebooks=None) -> dict:
+    """The MyST targets ``(name)=`` of the notebooks' markdown cells: name -> (notebook, title).
+
+    ``notebook`` is the notebook's stem; ``title`` the heading that follows the target (the
+    section it names), or the notebook's title when no heading follows in the same cell.
+
+    Examples
+    --------
+    >>> t = notebook_targets()
+    >>> t["thm1-evidence"][0]
+    '01_model_and_bound'
+    """
+    notebooks = Path(ROOT / "notebooks" if notebooks is None else notebooks)
+    out = {}
+    for path in sorted(notebooks.glob("*.ipynb")):
+        cells = [c for c in json.loads(path.read_text()).get("cells", [])
+                 if c.get("cell_type") == "markdown"]
+        lines_of = ["".join(c.get("source", [])).splitlines() for c in cells]
+        title = next((m.group(2) for lines in lines_of for line in lines
+                      if (m := _HEADING.match(line)) and len(m.group(1)) == 1), path.stem)
+        for lines in lines_of:
+            pending = []
+            for line in lines:
+                m = _LABEL.match(line)
+                if m:
+                    pending.append(m.group(1))
+                    continue
+                h = _HEADING.match(line)
+                if pending and (h or line.strip()):
+                    for name in pending:
+                        out[name] = (path.stem, h.group(2) if h else title)
+                    pending = []
+            for name in pending:
+                out[name] = (path.stem, title)
+    return out
+
+
+def _cell(value) -> str:
+    return value if isinstance(value, str) else number(value)
+
+
+def list_table(caption: str, columns, rows, name: str | None = None, widths=None) -> list:
+    """Lines of a MyST ``{list-table}``: caption above, one header row, ``name`` for a number.
+
+    Cells are MyST text (used as given) or real numbers (:func:`obslib._format.number`).
+
+    Examples
+    --------
+    >>> print("\\n".join(list_table("Two rows.", ["$L$", "ratio"], [[2, 0.951], [3, "none"]],
+    ...                             name="tab-x")))
+    :::{list-table} Two rows.
+    :header-rows: 1
+    :name: tab-x
+    <BLANKLINE>
+    * - $L$
+      - ratio
+    * - 2
+      - 0.951
+    * - 3
+      - none
+    :::
+    """
+    lines = [f":::{{list-table}} {' '.join(caption.split())}", ":header-rows: 1"]
+    if name:
+        lines.append(f":name: {name}")
+    if widths:
+        lines.append(f":widths: {' '.join(str(w) for w in widths)}")
+    lines.append("")
+    for row in [list(columns)] + [list(r) for r in rows]:
+        lines.append(f"* - {_cell(row[0])}")
+        lines += [f"  - {_cell(c)}" for c in row[1:]]
+    lines.append(":::")
+    return lines
+
+
+_WORDS = {"partly": "partly reproduced"}
+
+
+def counts_sentence(records) -> str:
+    """The sentence counting the paper's claims by verdict (the book's own questions apart).
+
+    Examples
+    --------
+    >>> from obslib.claims import Record
+    >>> rs = [Record(str(i), "", "", "", "", s, "", {}) for i, s in
+    ...       enumerate(["reproduced", "reproduced", "refuted"])]
+    >>> counts_sentence(rs)
+    'Of the 3 claims of the paper in the ledger, 2 are reproduced and 1 refuted; none is partly reproduced or untestable.'
+    """
+    paper = [r for r in records if r.kind == "paper"]
+    c = Counter(r.status for r in paper)
+    have = [s for s in STATUSES if c.get(s)]
+    parts = [f"{number(c[s])} {_WORDS.get(s, s)}" for s in have]
+    if not parts:
+        return "The ledger holds no claim of the paper yet."
+    parts[0] = parts[0].replace(" ", " is " if c[have[0]] == 1 else " are ", 1)
+    tally = parts[0] if len(parts) == 1 else ", ".join(parts[:-1]) + " and " + parts[-1]
+    absent = [_WORDS.get(s, s) for s in STATUSES if not c.get(s)]
+    none = f"; none is {' or '.join(absent)}" if absent else ""
+    return f"Of the {number(len(paper))} claims of the paper in the ledger, {tally}{none}."
+
+
+def _verdict(status: str) -> str:
+    return f"**{status}**"
+
+
+def _entry(r, evidence: str, label: str) -> list:
+    lines = [
+        f"(claim-{r.id})=",
+        f"### {typeset(r.title).rstrip('.')}",
+        "",
+        f"*Where in the paper:* {typeset(r.where)}. *{label}:* {_verdict(r.status)}. "
+        f"*Evidence:* {evidence}. *Rerun:* `python -m obslib.claims --id {r.id}`.",
+        "",
+        f"**The claim.** {typeset(r.statement)}",
+        "",
+        f"**The paper.** {typeset(r.paper)}",
+        "",
+    ]
+    if r.later:
+        lines += [f"**The later version.** {typeset(r.later)}", ""]
+    lines += [
+        f"**What we found.** {typeset(r.ours)}",
+        "",
+    ]
+    if r.table is not None:
+        t = r.table
+
+        def ts(cell):
+            return typeset(cell) if isinstance(cell, str) else cell
+
+        lines += list_table(typeset(t.caption), [ts(c) for c in t.columns],
+                            [[ts(c) for c in row] for row in t.rows],
+                            name=f"tab-claim-{r.id}") + [""]
+    return lines
+
+
+def robustness_section(records, robustness: dict) -> list:
+    """Lines of the section "How robust are the verdicts?" from the stored robustness data."""
+    from obslib.claims import robustness as rb
+
+    have = {r.id: r for r in records if r.kind == "paper"}
+    rows = [row for row in robustness["rows"] if row["id"] in have]
+    if not rows:
+        return []
+    intro = ROBUSTNESS_INTRO.format(base=robustness["base"])
+    body = []
+    for row in rows:
+        r = have[row["id"]]
+        verdict, cells = rb.describe(row, r.status)
+        body.append([f"[{typeset(r.title)}](#claim-{r.id})", verdict] + cells)
+    return (["## How robust are the verdicts?", "", " ".join(intro.split()), ""]
+            + list_table("Each verdict with one parameter of its experiment changed at a time.",
+                         ["claim", "verdict"] + [rb.HEADERS[d] for d in rb.DIMENSIONS], body,
+                         name="tab-report-robustness") + [""])
+
+
+def render_report(records, profile: str = "paper", targets=None, robustness=None) -> str:
+    """MyST Markdown for the report page (see the module docstring).
+
+    Parameters
+    ----------
+    records : list of obslib.claims.Record
+        The evaluated ledger (:func:`obslib.claims.evaluate`).
+    profile : str
+        The profile the records were evaluated at (named on the page).
+    targets : dict, optional
+        The MyST targets of the notebooks (:func:`notebook_targets`; default: read from
+        ``notebooks/``). A claim's evidence links to its ``label`` when its notebook defines that
+        target, else to the top of its notebook.
+    robustness : dict, optional
+        The stored robustness of the verdicts (:func:`obslib.claims.robustness.read_json`);
+        when given, the section "How robust are the verdicts?" ends the page.
+    """
+    targets = notebook_targets() if targets is None else targets
+
+    def evidence(r) -> str:
+        nb, heading = targets.get(r.label, (None, None))
+        if nb == r.notebook:
+            return f"[{typeset(heading)}](#{r.label})"
+        return f"[the chapter](../notebooks/{r.notebook}.ipynb)"
+
+    def title(r) -> str:
+        return f"[{typeset(r.title)}](#claim-{r.id})"
+
+    paper = [r for r in records if r.kind == "paper"]
+    beyond = [r for r in records if r.kind == "beyond"]
+    tally = Counter(r.status for r in paper)
+    parameters = ("the paper's parameters (profile `paper`)" if profile == "paper" else
+                  f"the parameters of the profile `{profile}`")
+    lines = [HEADER.format(profile=profile, parameters=parameters), "## The verdicts in numbers", "",
+             MARKERS["counts"][0], counts_sentence(records), MARKERS["counts"][1], ""]
+    if beyond:
+        lines += [f"The book's own questions, {number(len(beyond))} of them, are reported apart "
+                  "in [Beyond the paper](#report-beyond).", ""]
+    lines += list_table("The paper's claims by verdict.", ["verdict", "claims"],
+                        [[s, tally.get(s, 0)] for s in STATUSES] + [["total", len(paper)]],
+                        name="tab-report-counts") + [""]
+    lines += ["## The paper's claims", "",
+              "Each claim links to its entry below, which states it, quotes the paper and says "
+              "what we found; the last column links to the section of the book that shows the "
+              "evidence.", ""]
+    lines += list_table("Every claim of the paper, its verdict and the evidence.",
+                        ["claim", "verdict", "evidence"],
+                        [[title(r), _verdict(r.status), evidence(r)] for r in paper],
+                        name="tab-report-claims", widths=(5, 1, 4)) + [""]
+    bad = [r for s in ("refuted", "partly") for r in paper if r.status == s]
+    lines += ["## What does not hold as printed", "", MARKERS["exceptions"][0]]
+    if bad:
+        lines += list_table("The paper's claims that do not hold as printed.",
+                            ["claim", "verdict", "evidence"],
+                            [[title(r), _verdict(r.status), evidence(r)] for r in bad],
+                            widths=(5, 1, 4))
+    else:
+        lines.append("Every claim of the paper holds as stated.")
+    lines += [MARKERS["exceptions"][1], "", "## The claims one by one", ""]
+    for r in paper:
+        lines += _entry(r, evidence(r), "Verdict")
+    if beyond:
+        lines += ["(report-beyond)=", "## Beyond the paper: the book's own questions", "",
+                  " ".join(BEYOND_INTRO.split()), ""]
+        lines += list_table("The book's own questions and their status.",
+                            ["question", "status", "evidence"],
+                            [[title(r), _verdict(r.status), evidence(r)] for r in beyond],
+                            name="tab-report-beyond", widths=(5, 1, 4)) + [""]
+        for r in beyond:
+            lines += _entry(r, evidence(r), "Status")
+    if robustness:
+        lines += robustness_section(records, robustness)
+    missing = [i for i in REQUIRED_IDS if i not in {r.id for r in records}]
+    if missing:
+        lines += ["## Not yet audited", "",
+                  f"{count(len(missing))} claims have no check yet, so the book makes no "
+                  "statement about them: " + ", ".join(f"`{i}`" for i in missing) + ".", ""]
+    return "\n".join(lines).rstrip() + "\n"
+
+
+def main(argv=None) -> int:
+    """``python -m obsbook.report [--profile P] [--write FILE] [--robustness FILE]
+    [--notebooks DIR]``: render the report, print it or store it (exit status 2 for a bad
+    profile or path)."""
+    from obslib._io import OutputPathError, check_output_path, write_output
+    from obslib.claims import evaluate
+    from obslib.claims.robustness import read_json
+    from obslib.profiles import profile_names
+
+    ap = argparse.ArgumentParser(prog="python -m obsbook.report",
+                                 description="Render the reproduction report from the ledger.")
+    ap.add_argument("--profile", default="paper", choices=profile_names())
+    ap.add_argument("--write", help="store the page here (default: print it)")
+    ap.add_argument("--robustness", default=str(ROOT / "book" / "data" / "robustness.json"),
+                    help="the stored robustness data (default: book/data/robustness.json)")
+    ap.add_argument("--notebooks", default=str(ROOT / "notebooks"),
+                    help="the notebooks whose section labels the evidence links go to")
+    args = ap.parse_args(argv)
+    if args.write is not None:
+        try:
+            args.write = check_output_path(args.write)
+        except OutputPathError as exc:
+            ap.error(f"--write {exc}")
+    if not Path(args.notebooks).is_dir():
+        ap.error(f"--notebooks {args.notebooks}: not a directory")
+    robustness = None
+    if Path(args.robustness).exists():
+        try:
+            robustness = read_json(args.robustness)
+        except ValueError as exc:
+            ap.error(f"--robustness {exc}")
+    records = evaluate(args.profile)
+    text = render_report(records, args.profile, notebook_targets(args.notebooks), robustness)
+    if args.write is None:
+        print(text, end="")
+    else:
+        write_output(args.write, text)
+        print(f"{args.write}: {len(records)} entries")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
