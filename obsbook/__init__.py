@@ -16,5 +16,5 @@ from .figures import setup
 from .glue import glue_number, glue_text
 from .tables import formatted_table, markdown_table, numbered_table
 
-__all__ = ["number", "count", "small", "percent", "span", "setting", "listing", "setup", "glue_number", "glue_text",
-           "formatted_table", "markdown_table", "numbered_table"]
+__all__ = ["number", "count", "small", "percent", "span", "setting", "listing", "setup",
+           "glue_number", "glue_text", "formatted_table", "markdown_table", "numbered_table"]
