@@ -6,8 +6,9 @@
 2. Every cell of a table with three or more columns gets its column's header as a label
    (``<span class="bk-cell-label">``, hidden on wide screens), and the table the class
    ``bk-cards``: on a narrow screen ``book.css`` shows each row as a card of labelled fields
-   instead of a table that scrolls sideways. The label is the header's own HTML, so a header
-   with a formula shows the formula.
+   instead of a table that scrolls sideways (label and value on one line where every cell is
+   short, class ``bk-cards-short``). The label is the header's own HTML, so a header with a
+   formula shows the formula.
 3. The page that holds the bound explorer (an element ``id="bound-explorer"``) loads its script
    and stylesheet; no other page does.
 4. A change to a file of ``book/_static`` or ``book/_ext`` rebuilds the book: Sphinx alone sees
@@ -53,6 +54,10 @@ def _link_figure_images(app, doctree, docname):
 
 # ------------------------------------------------------------------------------ tables
 
+#: A table whose cells all have at most this many characters (numbers, short names) shows each
+#: field of a card on one line, label and value side by side.
+SHORT_CELL = 24
+
 _TABLE = re.compile(r'<table class="table[^"]*">.*?</table>', re.S)
 _HEAD = re.compile(r"<thead>(.*?)</thead>", re.S)
 _ROW = re.compile(r"(<tr[^>]*>)(.*?)(</tr>)", re.S)
@@ -91,7 +96,10 @@ def _label_table(table: str) -> str:
         return m.group(1) + _BODY_CELL.sub(label_cell, m.group(2)) + m.group(3)
 
     body = _ROW.sub(label_row, table[start:end])
-    opening = table[: start].replace('<table class="table', '<table class="table bk-cards', 1)
+    cells = [re.sub(r"<[^>]+>", "", c) for c in re.findall(r"<td[^>]*>(.*?)</td>", table[start:end], re.S)]
+    short = all(len(" ".join(c.split())) <= SHORT_CELL for c in cells)
+    kind = "bk-cards bk-cards-short" if short else "bk-cards"
+    opening = table[: start].replace('<table class="table', f'<table class="table {kind}', 1)
     return opening + body
 
 

@@ -25,7 +25,7 @@
     closeBtn.textContent = "\u00d7";
     img = document.createElement("img");
     img.className = "bk-lightbox-image";
-    caption = document.createElement("p");
+    caption = document.createElement("div");
     caption.className = "bk-lightbox-caption";
     const inner = document.createElement("div");
     inner.className = "bk-lightbox-inner";
@@ -45,7 +45,12 @@
     img.src = src || from.getAttribute("href");
     img.alt = source ? source.alt : "";
     const cap = from.closest("figure") && from.closest("figure").querySelector("figcaption");
-    caption.textContent = cap ? cap.textContent.replace(/#\s*$/, "").trim() : "";
+    caption.textContent = "";
+    if (cap) {  // the caption as typeset (MathJax's output keeps its look), without its # link
+      const copy = cap.cloneNode(true);
+      copy.querySelectorAll("a.headerlink, [id]").forEach(e => e.matches("a.headerlink") ? e.remove() : e.removeAttribute("id"));
+      caption.append(...copy.childNodes);
+    }
     box.hidden = false;
     box.scrollTop = 0;
     box.scrollLeft = 0;
