@@ -340,26 +340,40 @@ const done = arguments[arguments.length - 1];
 """
 
 
-@pytest.fixture(scope="module")
-def seen(book, server, browser) -> dict:
-    """Every built page as the browser shows it: the results of :data:`PAGE_CHECK` and the
-    console errors, by page path; a screenshot of each page goes to ``_build/screenshots/``."""
-    SHOTS.mkdir(parents=True, exist_ok=True)
+def visit_every_page(book, server, browser, width: int, height: int, check: str, shots: Path,
+                     after=None) -> dict:
+    """Open every built page in a window ``width`` x ``height`` px, run the asynchronous script ``check`` (which
+    returns a dict with the page's ``height``), call ``after(result)`` if given, and save a
+    screenshot of the page (down to that height) in ``shots``; the results by page path."""
+    shots.mkdir(parents=True, exist_ok=True)
     browser.set_script_timeout(120)
     out = {}
     for page in pages(book):
         rel = page.relative_to(book).as_posix()
-        browser.set_window_size(WIDTH, 1600)
+        browser.set_window_size(width, height)
         browser.get(f"{server}/{rel}")
-        result = browser.execute_async_script(PAGE_CHECK)
+        result = browser.execute_async_script(check)
+        if after is not None:
+            after(result)
+        browser.set_window_size(width, max(800, result["height"]))
+        browser.save_screenshot(str(shots / (rel.replace("/", "__").replace(".html", ".png"))))
+        out[rel] = result
+    browser.set_window_size(WIDTH, 1600)
+    return out
+
+
+@pytest.fixture(scope="module")
+def seen(book, server, browser) -> dict:
+    """Every built page as the browser shows it: the results of :data:`PAGE_CHECK` and the
+    console errors, by page path; a screenshot of each page goes to ``_build/screenshots/``."""
+
+    def console(result):
         result["errors"] = [
             e["message"] for e in browser.get_log("browser")
             if e["level"] == "SEVERE" and "favicon.ico" not in e["message"]
         ]
-        browser.set_window_size(WIDTH, max(800, result["height"]))
-        browser.save_screenshot(str(SHOTS / (rel.replace("/", "__").replace(".html", ".png"))))
-        out[rel] = result
-    return out
+
+    return visit_every_page(book, server, browser, WIDTH, 1600, PAGE_CHECK, SHOTS, after=console)
 
 
 def test_every_page_renders_in_a_headless_browser(seen):
@@ -615,20 +629,7 @@ const done = arguments[arguments.length - 1];
 def seen_narrow(book, server, browser) -> dict:
     """Every built page on a 390 px screen: the results of :data:`NARROW_CHECK`, by page path;
     a screenshot of each page (its first 16,000 px) goes to ``_build/screenshots/390/``."""
-    shots = SHOTS / str(NARROW)
-    shots.mkdir(parents=True, exist_ok=True)
-    browser.set_script_timeout(120)
-    out = {}
-    for page in pages(book):
-        rel = page.relative_to(book).as_posix()
-        browser.set_window_size(NARROW, 900)
-        browser.get(f"{server}/{rel}")
-        result = browser.execute_async_script(NARROW_CHECK)
-        browser.set_window_size(NARROW, max(900, result["height"]))
-        browser.save_screenshot(str(shots / (rel.replace("/", "__").replace(".html", ".png"))))
-        out[rel] = result
-    browser.set_window_size(WIDTH, 1600)
-    return out
+    return visit_every_page(book, server, browser, NARROW, 844, NARROW_CHECK, SHOTS / str(NARROW))
 
 
 NARROW_CHECKS = {
@@ -922,6 +923,21 @@ def test_dragging_the_explorer_changes_its_state(explorer):
     import obslib as ob
     shown = ob.inverse_condition_number(tipped["sensors"], tipped["target"], tipped["control"])
     assert _six_digits(tipped["exact"], shown)
+
+    # the second view: dragging the point over (alpha, theta_ji) moves sensor j only, to the
+    # distance ratio and angle it is dropped at
+    explorer.execute_script("window.boundExplorer.setMode('surface')")
+    x, y = explorer.execute_script("return window.boundExplorer.explorer.surfacePoint()")
+    size = canvas.size
+    (ActionChains(explorer)
+     .move_to_element_with_offset(canvas, x - size["width"] / 2, y - size["height"] / 2)
+     .click_and_hold().move_by_offset(60, 25).release().perform())
+    on_surface = state()
+    assert on_surface["sensors"][0] == tipped["sensors"][0] and on_surface["target"] == tipped["target"]
+    assert on_surface["sensors"][1] != tipped["sensors"][1]
+    x1, y1 = explorer.execute_script("return window.boundExplorer.explorer.surfacePoint()")
+    assert abs(x1 - x - 60) <= 1.5 and abs(y1 - y - 25) <= 1.5, (x, y, x1, y1)
+    explorer.execute_script("window.boundExplorer.setMode('map')")
 
 
 # ------------------------------------------------------------------------- the API reference
