@@ -205,8 +205,8 @@ def _summary(obj, modname: str, attr: str) -> str:
         first = para[: m.start() + len(m.group(1)) + 1]
         if m.group(1).lower().rstrip(".") in _ABBREVIATIONS or first.count("`") % 2:
             continue
-        return first.replace("|", "\\|")
-    return para.replace("|", "\\|")
+        return first
+    return para
 
 
 _ABBREVIATIONS = {"eq", "eqs", "fig", "figs", "sec", "e.g", "i.e", "cf", "vs", "no", "ref", "al"}
