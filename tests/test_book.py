@@ -298,8 +298,10 @@ const done = arguments[arguments.length - 1];
     const f = v => { v /= 255; return v <= 0.04045 ? v / 12.92 : Math.pow((v + 0.055) / 1.055, 2.4); };
     return 0.2126 * f(c[0]) + 0.7152 * f(c[1]) + 0.0722 * f(c[2]);
   };
-  const contrast = e => {
-    const bg = behind(e), fg = over(rgba(getComputedStyle(e).color), bg);
+  const contrast = e => {  // the text's colour, faded by its own alpha and every opacity above it
+    const c = rgba(getComputedStyle(e).color);
+    for (let p = e; p; p = p.parentElement) c[3] *= Number(getComputedStyle(p).opacity);
+    const bg = behind(e), fg = over(c, bg);
     const a = lum(fg), b = lum(bg);
     return (Math.max(a, b) + 0.05) / (Math.min(a, b) + 0.05);
   };
@@ -491,6 +493,7 @@ def test_page_check_finds_each_defect_on_a_page_made_to_have_them(tmp_path, brow
 <figure><img src="dot.png"><figcaption>Figure 1. A caption.</figcaption></figure>
 <figure><img src="dot.png"><figcaption style="color:#999">Figure 2. A pale caption.</figcaption></figure>
 <figure><img src="dot.png"><figcaption style="color:#595959">Figure 3. Grey, but 7:1.</figcaption></figure>
+<figure style="opacity:0.3"><img src="dot.png"><figcaption>Figure 4. Black, faded.</figcaption></figure>
 <img src="{other_url}/dot.png" alt="">
 </article></main></body></html>"""
     (tmp_path / "page.html").write_text(page)
@@ -508,8 +511,10 @@ def test_page_check_finds_each_defect_on_a_page_made_to_have_them(tmp_path, brow
     assert any(w.startswith("div") and "ends at" in w for w in r["wide"]), r["wide"]
     assert len(r["uncaptioned"]) == 2, r["uncaptioned"]  # the bare image and the external one
     # #999 on white is 2.85:1; #595959 is 7.0:1 (WCAG's formula), in either mode of a plain page
-    assert len(r["low_contrast"]) == 2 and all("A pale caption" in c and "2.85:1" in c
-                                               for c in r["low_contrast"]), r["low_contrast"]
+    # and black at opacity 0.3 on white is rgb(178.5, 178.5, 178.5), 2.11:1
+    pale = [c for c in r["low_contrast"] if "A pale caption" in c and "2.85:1" in c]
+    faded = [c for c in r["low_contrast"] if "Black, faded" in c and "2.11:1" in c]
+    assert len(pale) == len(faded) == 2 and len(r["low_contrast"]) == 4, r["low_contrast"]
     assert [u.split("/")[-1] for u in r["external"]] == ["dot.png"]
     assert r["external"][0].startswith(other_url)
 
