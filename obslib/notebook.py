@@ -29,7 +29,7 @@ def setup_figures() -> None:
       of the axes at each draw (about 15 % of the book's drawing time). No 2-D axes of the book
       has top tick labels, so their titles land where the default puts them (the stored
       figures are byte-identical either way; ``tests/test_notebook.py``). 3-D axes are placed
-      differently and keep the default (:func:`obslib.pair_form.plot_fig2`); a new figure with
+      differently and keep the default (:func:`obslib.viz.pair_form.plot_fig2`); a new figure with
       top tick labels must set its title's height itself.
     - The objects imported so far (the modules and their tables, alive as long as the kernel)
       are moved to the garbage collector's permanent generation (``gc.freeze()``). Python's

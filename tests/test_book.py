@@ -4,13 +4,21 @@ The book is rendered (not re-executed) into ``_build/html`` when it is missing o
 sources. The browser test drives Debian's ``chromium`` through ``chromium-driver`` (Selenium, no
 downloaded browser) against the book served on 127.0.0.1. Without Chromium it skips with the
 reason, except in CI (``CI`` set), where it must run: ``.ci/run`` installs both packages.
-Screenshots of every page, 1400 px wide, go to ``_build/screenshots/`` for review.
+Screenshots of every page, 1400 px wide, go to ``_build/screenshots/``, and 390 px wide (a phone)
+to ``_build/screenshots/390/``, for review.
 
 What a reader sees is checked page by page (one test per page and check, so that a failure names
 both): no glued value shown in quotes, no TeX left raw in the text, no element wider than its
-container, every image of a notebook in a figure with a caption, no dead internal link, and no
-request leaving the page's origin. Pages that fail a check today are marked ``xfail(strict=True)``
-in :data:`KNOWN_FAILURES`, so that the mark must go as soon as the page is fixed.
+container, every image of a notebook in a figure with a caption, captions at WCAG AA contrast
+(4.5:1, in light and dark mode), no dead internal link, and no request leaving the page's origin;
+and on a 390 px screen: no page wider than the screen, every control of the animation players on
+the screen, and every figure linked to its image file (shown full size in an overlay). Pages that
+fail a check today are marked ``xfail(strict=True)`` in :data:`KNOWN_FAILURES`, so that the mark
+must go as soon as the page is fixed.
+
+The bound explorer on the pair closed-form page is driven through its contract
+(``window.boundExplorer.set``, ``.bound-value``, ``.exact-value``, the ``data-`` state) at random
+geometries and compared with ``obslib``, and dragged with the mouse.
 """
 
 from __future__ import annotations
@@ -18,6 +26,7 @@ from __future__ import annotations
 import functools
 import http.server
 import json
+import math
 import os
 import re
 import shutil
@@ -36,7 +45,8 @@ from obslib.tools.run import ROOT
 BUILD = ROOT / "_build" / "html"
 SHOTS = ROOT / "_build" / "screenshots"
 SOURCES = [ROOT / "_config.yml", ROOT / "_toc.yml", *ROOT.glob("book/*.md"), *ROOT.glob("book/*.bib"),
-           *ROOT.glob("book/_static/*"), *ROOT.glob("notebooks/*.ipynb")]
+           *ROOT.glob("book/_static/*"), *ROOT.glob("book/_ext/*.py"), *ROOT.glob("notebooks/*.ipynb"),
+           *ROOT.glob("obslib/**/*.py")]  # the API pages are the docstrings
 
 
 def _stale() -> bool:
@@ -71,12 +81,8 @@ def pages(book: Path) -> list[Path]:
 
 
 def test_every_toc_page_is_built(book):
-    import yaml
-
-    toc = yaml.safe_load((ROOT / "_toc.yml").read_text())
-    files = [toc["root"]] + [ch["file"] for part in toc["parts"] for ch in part["chapters"]]
-    for f in files:
-        assert (book / f"{f}.html").exists(), f"{f} was not rendered"
+    for f in toc_pages():
+        assert (book / f).exists(), f"{f} was not rendered"
 
 
 EXTERNAL = re.compile(
@@ -98,6 +104,13 @@ def test_no_resource_is_fetched_from_the_network(book):
         for m in re.finditer(r"(@import\s+url\(|url\()\s*[\"']?(https?:)?//[^)]*\)", css.read_text(errors="replace")):
             offenders.append(f"{css.relative_to(book)}: {m.group(0)[:120]}")
     assert not offenders, "\n".join(offenders)
+
+
+def test_no_page_shows_where_the_book_was_built(book):
+    """No page shows the path of the checkout (a default value or a constant in the API pages
+    would print it): the book reads the same wherever it is built."""
+    shown = [page.relative_to(book).as_posix() for page in pages(book) if str(ROOT) in page.read_text()]
+    assert not shown, shown
 
 
 def test_mathjax_is_served_from_the_build(book):
@@ -164,16 +177,35 @@ WIDTH = 1400
 
 
 def toc_pages() -> list[str]:
-    """The pages of the table of contents, as paths of their HTML files in the build."""
+    """The pages of the table of contents (chapters and their sections), as paths of their HTML
+    files in the build."""
     toc = yaml.safe_load((ROOT / "_toc.yml").read_text())
-    files = [toc["root"]] + [ch["file"] for part in toc["parts"] for ch in part["chapters"]]
-    return [f"{f}.html" for f in files]
 
+    def files(entries):
+        for e in entries or []:
+            yield e["file"]
+            yield from files(e.get("sections"))
+
+    return [f"{f}.html" for f in [toc["root"], *(f for part in toc["parts"] for f in files(part["chapters"]))]]
+
+
+#: A promise that the page's formulas are typeset. MathJax loads after the page, and until it has
+#: loaded ``MathJax.startup`` does not exist: wait for it (15 s at most) on a page with formulas.
+MATH_READY = r"""
+const mathReady = () => new Promise(resolve => {
+  const t0 = Date.now();
+  (function poll() {
+    if (window.MathJax && MathJax.startup && MathJax.startup.promise) return resolve(MathJax.startup.promise);
+    if (!document.querySelector('.math') || Date.now() - t0 > 15000) return resolve();
+    setTimeout(poll, 50);
+  })();
+});
+const ready = mathReady();
+"""
 
 PAGE_CHECK = r"""
 const done = arguments[arguments.length - 1];
-const ready = (window.MathJax && MathJax.startup && MathJax.startup.promise) ? MathJax.startup.promise : Promise.resolve();
-ready.then(() => new Promise(r => setTimeout(r, 300))).then(() => {
+""" + MATH_READY + r"""ready.then(() => new Promise(r => setTimeout(r, 300))).then(() => {
   const art = document.querySelector('article.bd-article') || document.querySelector('main') || document.body;
   const A = art.getBoundingClientRect();
   const name = e => {
@@ -243,6 +275,53 @@ ready.then(() => new Promise(r => setTimeout(r, 300))).then(() => {
     return !(cap && cap.textContent.trim());
   }).map(img => (img.closest('section[id]') || {id: '?'}).id + ': ' + (img.getAttribute('src') || '').slice(-40));
 
+  // captions below WCAG AA contrast (4.5:1) against what is behind them, in light and dark mode
+  const rgba = c => {
+    const m = /rgba?\(([^)]*)\)/.exec(c || '');
+    if (!m) return [0, 0, 0, 0];
+    const v = m[1].split(/[\s,\/]+/).filter(Boolean).map(Number);
+    return [v[0], v[1], v[2], v.length > 3 ? v[3] : 1];
+  };
+  const over = (top, below) => [0, 1, 2].map(k => top[k] * top[3] + below[k] * (1 - top[3])).concat([1]);
+  const behind = e => {
+    const layers = [];
+    for (let p = e; p; p = p.parentElement) {
+      const c = rgba(getComputedStyle(p).backgroundColor);
+      if (c[3] > 0) layers.push(c);
+      if (c[3] >= 1) break;
+    }
+    let bg = [255, 255, 255, 1];
+    for (let k = layers.length - 1; k >= 0; k--) bg = over(layers[k], bg);
+    return bg;
+  };
+  const lum = c => {
+    const f = v => { v /= 255; return v <= 0.04045 ? v / 12.92 : Math.pow((v + 0.055) / 1.055, 2.4); };
+    return 0.2126 * f(c[0]) + 0.7152 * f(c[1]) + 0.0722 * f(c[2]);
+  };
+  const contrast = e => {  // the text's colour, faded by its own alpha and every opacity above it
+    const c = rgba(getComputedStyle(e).color);
+    for (let p = e; p; p = p.parentElement) c[3] *= Number(getComputedStyle(p).opacity);
+    const bg = behind(e), fg = over(c, bg);
+    const a = lum(fg), b = lum(bg);
+    return (Math.max(a, b) + 0.05) / (Math.min(a, b) + 0.05);
+  };
+  const lowContrast = [];
+  const theme = document.documentElement.getAttribute('data-theme');
+  for (const mode of ['light', 'dark']) {
+    document.documentElement.setAttribute('data-theme', mode);
+    for (const cap of art.querySelectorAll('figcaption, caption')) {
+      const texts = [cap, ...cap.querySelectorAll('*')].filter(e =>
+        !e.closest('mjx-container, a.headerlink') && getComputedStyle(e).display !== 'none' &&
+        Array.from(e.childNodes).some(n => n.nodeType === 3 && n.textContent.trim()));
+      for (const e of texts) {
+        const r = contrast(e);
+        if (r < 4.5) lowContrast.push(`${mode}: ${name(e)} ${r.toFixed(2)}:1 "${snippet(e).slice(0, 40)}"`);
+      }
+    }
+  }
+  if (theme === null) document.documentElement.removeAttribute('data-theme');
+  else document.documentElement.setAttribute('data-theme', theme);
+
   // requests leaving the page's origin
   const external = performance.getEntriesByType('resource').map(e => e.name)
     .filter(u => !u.startsWith(location.origin) && !/^(data|blob|about):/.test(u));
@@ -255,6 +334,7 @@ ready.then(() => new Promise(r => setTimeout(r, 300))).then(() => {
     return {loaded: !!img && img.naturalWidth > 0, frames: slider ? Number(slider.max) + 1 : 0};
   });
   done({quoted: quoted, raw: raw, wide: wide.slice(0, 12), n_wide: wide.length, uncaptioned: uncaptioned,
+        low_contrast: lowContrast,
         external: external, broken: broken, anims: anims,
         math: document.querySelectorAll('mjx-container').length, images: images.length,
         height: Math.min(document.documentElement.scrollHeight, 12000)});
@@ -262,26 +342,40 @@ ready.then(() => new Promise(r => setTimeout(r, 300))).then(() => {
 """
 
 
-@pytest.fixture(scope="module")
-def seen(book, server, browser) -> dict:
-    """Every built page as the browser shows it: the results of :data:`PAGE_CHECK` and the
-    console errors, by page path; a screenshot of each page goes to ``_build/screenshots/``."""
-    SHOTS.mkdir(parents=True, exist_ok=True)
+def visit_every_page(book, server, browser, width: int, height: int, check: str, shots: Path,
+                     after=None) -> dict:
+    """Open every built page in a window ``width`` x ``height`` px, run the asynchronous script ``check`` (which
+    returns a dict with the page's ``height``), call ``after(result)`` if given, and save a
+    screenshot of the page (down to that height) in ``shots``; the results by page path."""
+    shots.mkdir(parents=True, exist_ok=True)
     browser.set_script_timeout(120)
     out = {}
     for page in pages(book):
         rel = page.relative_to(book).as_posix()
-        browser.set_window_size(WIDTH, 1600)
+        browser.set_window_size(width, height)
         browser.get(f"{server}/{rel}")
-        result = browser.execute_async_script(PAGE_CHECK)
+        result = browser.execute_async_script(check)
+        if after is not None:
+            after(result)
+        browser.set_window_size(width, max(800, result["height"]))
+        browser.save_screenshot(str(shots / (rel.replace("/", "__").replace(".html", ".png"))))
+        out[rel] = result
+    browser.set_window_size(WIDTH, 1600)
+    return out
+
+
+@pytest.fixture(scope="module")
+def seen(book, server, browser) -> dict:
+    """Every built page as the browser shows it: the results of :data:`PAGE_CHECK` and the
+    console errors, by page path; a screenshot of each page goes to ``_build/screenshots/``."""
+
+    def console(result):
         result["errors"] = [
             e["message"] for e in browser.get_log("browser")
             if e["level"] == "SEVERE" and "favicon.ico" not in e["message"]
         ]
-        browser.set_window_size(WIDTH, max(800, result["height"]))
-        browser.save_screenshot(str(SHOTS / (rel.replace("/", "__").replace(".html", ".png"))))
-        out[rel] = result
-    return out
+
+    return visit_every_page(book, server, browser, WIDTH, 1600, PAGE_CHECK, SHOTS, after=console)
 
 
 def test_every_page_renders_in_a_headless_browser(seen):
@@ -339,6 +433,7 @@ CHECKS = {
     "raw_tex": "TeX left raw in the text",
     "too_wide": "elements wider than their container",
     "uncaptioned_images": "images outside a figure with a caption",
+    "caption_contrast": "captions below WCAG AA contrast (4.5:1) in light or dark mode",
     "dead_links": "dead internal links",
     "external_requests": "requests to another origin",
 }
@@ -363,6 +458,7 @@ def test_what_a_reader_sees(check, rel, book, seen):
         "raw_tex": result["raw"],
         "too_wide": result["wide"] + ([f"... {result['n_wide'] - 12} more"] if result["n_wide"] > 12 else []),
         "uncaptioned_images": result["uncaptioned"],
+        "caption_contrast": result["low_contrast"],
         "dead_links": dead_links(book, rel),
         "external_requests": result["external"],
     }[check]
@@ -395,6 +491,9 @@ def test_page_check_finds_each_defect_on_a_page_made_to_have_them(tmp_path, brow
 <div style="width:900px">sticks out</div>
 <p><img src="dot.png"></p>
 <figure><img src="dot.png"><figcaption>Figure 1. A caption.</figcaption></figure>
+<figure><img src="dot.png"><figcaption style="color:#999">Figure 2. A pale caption.</figcaption></figure>
+<figure><img src="dot.png"><figcaption style="color:#595959">Figure 3. Grey, but 7:1.</figcaption></figure>
+<figure style="opacity:0.3"><img src="dot.png"><figcaption>Figure 4. Black, faded.</figcaption></figure>
 <img src="{other_url}/dot.png" alt="">
 </article></main></body></html>"""
     (tmp_path / "page.html").write_text(page)
@@ -411,6 +510,11 @@ def test_page_check_finds_each_defect_on_a_page_made_to_have_them(tmp_path, brow
     assert any(w.startswith("pre") and "needs" in w for w in r["wide"]), r["wide"]
     assert any(w.startswith("div") and "ends at" in w for w in r["wide"]), r["wide"]
     assert len(r["uncaptioned"]) == 2, r["uncaptioned"]  # the bare image and the external one
+    # #999 on white is 2.85:1; #595959 is 7.0:1 (WCAG's formula), in either mode of a plain page
+    # and black at opacity 0.3 on white is rgb(178.5, 178.5, 178.5), 2.11:1
+    pale = [c for c in r["low_contrast"] if "A pale caption" in c and "2.85:1" in c]
+    faded = [c for c in r["low_contrast"] if "Black, faded" in c and "2.11:1" in c]
+    assert len(pale) == len(faded) == 2 and len(r["low_contrast"]) == 4, r["low_contrast"]
     assert [u.split("/")[-1] for u in r["external"]] == ["dot.png"]
     assert r["external"][0].startswith(other_url)
 
@@ -449,3 +553,491 @@ def test_ledger_ids_on_pages_link_to_their_report_entries(book):
                 unlinked.append(f"{rel}: {m.group(3)}")
     assert n > 20, "no ledger id found on the pages: the check checks nothing"
     assert not unlinked, "\n".join(unlinked)
+
+
+# ------------------------------------------------------------------------- on a phone (390 px)
+
+#: Width of a phone's screen (an iPhone 12 to 15 in portrait).
+NARROW = 390
+
+NARROW_CHECK = r"""
+const done = arguments[arguments.length - 1];
+""" + MATH_READY + r"""ready.then(() => new Promise(r => setTimeout(r, 300))).then(async () => {
+  const vw = document.documentElement.clientWidth;
+  const clips = e => /(auto|scroll|hidden|clip)/.test(getComputedStyle(e).overflowX);
+  const label = e => e.tagName.toLowerCase() + (e.id ? '#' + e.id : '') +
+    ((typeof e.className === 'string' && e.className) ? '.' + e.className.trim().split(/\s+/).slice(0, 2).join('.') : '');
+
+  // what sticks out of the screen, where nothing clips it
+  const sticking = [];
+  if (document.documentElement.scrollWidth > vw) {
+    for (const e of document.body.querySelectorAll('*')) {
+      const r = e.getBoundingClientRect();
+      if (r.width === 0 || r.right <= vw + 1) continue;
+      let clipped = false;
+      for (let p = e.parentElement; p && p !== document.body; p = p.parentElement) if (clips(p)) { clipped = true; break; }
+      if (!clipped) sticking.push(`${label(e)} ends at ${Math.round(r.right)}px`);
+      if (sticking.length >= 8) break;
+    }
+  }
+
+  // every control of a player inside the screen and inside every box that clips it
+  const players = [];
+  let nControls = 0;
+  for (const a of document.querySelectorAll('.animation')) {
+    for (const b of a.querySelectorAll('button, input, label')) {
+      nControls++;
+      const r = b.getBoundingClientRect();
+      let L = 0, R = vw;
+      for (let p = b.parentElement; p; p = p.parentElement) {
+        if (!clips(p)) continue;
+        const q = p.getBoundingClientRect();
+        L = Math.max(L, q.left + p.clientLeft);
+        R = Math.min(R, q.left + p.clientLeft + p.clientWidth);
+      }
+      if (r.left < L - 1 || r.right > R + 1) {
+        players.push(`${b.getAttribute('title') || b.textContent.trim() || label(b)}: ${Math.round(r.left)}-${Math.round(r.right)}px, visible ${Math.round(L)}-${Math.round(R)}px`);
+      }
+    }
+  }
+
+  // every figure's image linked to its image file, which the server has
+  const art = document.querySelector('article.bd-article') || document.body;
+  const figures = [], links = new Map();
+  const imgs = Array.from(art.querySelectorAll('figure img'));
+  for (const img of imgs) {
+    const id = (img.closest('figure[id]') || img.closest('section[id]') || {id: '?'}).id;
+    if (img.closest('.animation')) {  // a player's frame has no file; it opens in the overlay
+      if (!img.classList.contains('bk-zoom-frame')) figures.push(`${id}: the player's frame does not open`);
+      continue;
+    }
+    const a = img.closest('a.bk-zoom');
+    if (!a) { figures.push(`${id}: no enlarge link`); continue; }
+    const u = new URL(a.getAttribute('href'), location.href);
+    if (u.origin !== location.origin) { figures.push(`${id}: links to ${u.origin}`); continue; }
+    links.set(u.href, id);
+  }
+  for (const [href, id] of links) {
+    const r = await fetch(href, {method: 'HEAD'});
+    const type = r.headers.get('content-type') || '';
+    if (!r.ok || !type.startsWith('image/')) figures.push(`${id}: ${href.split('/').pop()} gives ${r.status} ${type}`);
+  }
+  done({scroll_width: document.documentElement.scrollWidth, viewport: vw, sticking: sticking,
+        players: players, n_controls: nControls, figures: figures, n_figures: imgs.length,
+        height: Math.min(document.documentElement.scrollHeight, 16000)});
+});
+"""
+
+
+@pytest.fixture(scope="module")
+def seen_narrow(book, server, browser) -> dict:
+    """Every built page on a 390 px screen: the results of :data:`NARROW_CHECK`, by page path;
+    a screenshot of each page (its first 16,000 px) goes to ``_build/screenshots/390/``."""
+    return visit_every_page(book, server, browser, NARROW, 844, NARROW_CHECK, SHOTS / str(NARROW))
+
+
+NARROW_CHECKS = {
+    "phone_overflow": "the page is wider than a 390 px screen",
+    "phone_players": "controls of an animation player outside a 390 px screen",
+    "figure_zoom": "figures without a working link to their image file",
+}
+
+
+def _narrow_found(check: str, result: dict) -> list:
+    if check == "phone_overflow":
+        wide = result["scroll_width"] > result["viewport"]
+        return [f"scroll width {result['scroll_width']}px, screen {result['viewport']}px",
+                *result["sticking"]] if wide else []
+    return result[{"phone_players": "players", "figure_zoom": "figures"}[check]]
+
+
+@pytest.mark.parametrize("check, rel", [_param(c, p) for c in NARROW_CHECKS for p in toc_pages()])
+def test_what_a_reader_sees_on_a_phone(check, rel, seen_narrow):
+    found = _narrow_found(check, seen_narrow[rel])
+    assert not found, f"{rel}: {NARROW_CHECKS[check]}:\n" + "\n".join(map(str, found))
+
+
+def test_the_generated_pages_fit_a_phone(seen_narrow):
+    """The index pages Sphinx adds (general index, module index, theorems, search) fit too, and
+    the checks above had players and figures to check."""
+    toc = set(toc_pages())
+    extra = {rel: r for rel, r in seen_narrow.items() if rel not in toc}
+    assert {"genindex.html", "search.html"} <= set(extra), sorted(extra)
+    wide = [f"{rel}: {_narrow_found('phone_overflow', r)}" for rel, r in extra.items()
+            if _narrow_found("phone_overflow", r)]
+    assert not wide, "\n".join(wide)
+    assert sum(r["n_controls"] for r in seen_narrow.values()) >= 10
+    assert sum(r["n_figures"] for r in seen_narrow.values()) > 20
+
+
+def test_a_figure_opens_full_size_on_a_phone(server, browser):
+    """A tap on a figure shows its image at its own size in an overlay that scrolls, and the
+    page behind does not widen; Escape closes it."""
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.keys import Keys
+    from selenium.webdriver.support.ui import WebDriverWait
+
+    browser.set_window_size(NARROW, 900)
+    try:
+        browser.get(f"{server}/notebooks/05_two_sensors_tracking.html")
+        link = browser.find_element(By.CSS_SELECTOR, "figure a.bk-zoom")
+        browser.execute_script("arguments[0].scrollIntoView({block: 'center'})", link)
+        link.click()
+        WebDriverWait(browser, 10).until(lambda d: d.execute_script(
+            "const i = document.querySelector('.bk-lightbox:not([hidden]) img');"
+            "return !!i && i.complete && i.naturalWidth > 0"))
+        r = browser.execute_script("""
+            const box = document.querySelector('.bk-lightbox'), img = box.querySelector('img');
+            return {shown: img.getBoundingClientRect().width, natural: img.naturalWidth,
+                    href: arguments[0].getAttribute('href'), src: img.getAttribute('src'),
+                    box_scrolls: box.scrollWidth > box.clientWidth,
+                    page: document.documentElement.scrollWidth, screen: document.documentElement.clientWidth};
+        """, link)
+        assert r["src"] == r["href"] and r["href"].endswith(".png"), r
+        assert abs(r["shown"] - r["natural"]) <= 1, r  # full size, not shrunk to the screen
+        assert r["natural"] > NARROW and r["box_scrolls"], r  # wider than the phone: it scrolls
+        assert r["page"] <= r["screen"], r
+        browser.switch_to.active_element.send_keys(Keys.ESCAPE)
+        assert browser.execute_script("return document.querySelector('.bk-lightbox').hidden")
+
+        # the frame a player shows opens the same way
+        frame = browser.find_element(By.CSS_SELECTOR, ".animation img.bk-zoom-frame")
+        browser.execute_script("arguments[0].scrollIntoView({block: 'center'})", frame)
+        frame.click()
+        r = browser.execute_script("""
+            const box = document.querySelector('.bk-lightbox'), img = box.querySelector('img');
+            return {hidden: box.hidden, same: img.src === arguments[0].src,
+                    shown: img.getBoundingClientRect().width, natural: img.naturalWidth};
+        """, frame)
+        assert not r["hidden"] and r["same"] and abs(r["shown"] - r["natural"]) <= 1, r
+        browser.switch_to.active_element.send_keys(Keys.ESCAPE)
+    finally:
+        browser.set_window_size(WIDTH, 1600)
+
+
+# ------------------------------------------------------------------------- the bound explorer
+
+EXPLORER_PAGE = "notebooks/02_pair_closed_form.html"
+
+
+@pytest.fixture()
+def explorer(server, browser):
+    """The browser on the page of the bound explorer, 1400 px wide, the explorer in view."""
+    from selenium.webdriver.support.ui import WebDriverWait
+
+    browser.set_window_size(WIDTH, 1600)
+    browser.get(f"{server}/{EXPLORER_PAGE}")
+    WebDriverWait(browser, 20).until(lambda d: d.execute_script(
+        "return !!(window.boundExplorer && window.boundExplorer.set)"))
+    browser.execute_script(
+        "document.getElementById('bound-explorer').scrollIntoView({block: 'start'})")
+    return browser
+
+
+def random_geometries(n: int, seed: int) -> list[dict]:
+    """``n`` explorer states: 2-6 sensors, target and sensors in [-5, 5]^2, ``umax`` in [0, 3]
+    (0 in every tenth), the control inside the disc of radius ``umax``. Every third geometry is
+    nearly collinear: the sensors within 1e-7 to 1e-2 rad of one line through the target, on
+    both sides of it, where O(o) is close to rank one."""
+    import numpy as np
+
+    rng = np.random.default_rng(seed)
+    out = []
+    for k in range(n):
+        n_sensors = int(rng.integers(2, 7))
+        target = rng.uniform(-5, 5, 2)
+        if k % 3 == 0:
+            spread = 10.0 ** rng.uniform(-7, -2)
+            angle = rng.uniform(0, np.pi) + rng.uniform(-spread, spread, n_sensors)
+            dist = rng.uniform(0.3, 5, n_sensors) * rng.choice([-1.0, 1.0], n_sensors)
+            sensors = target + dist[:, None] * np.c_[np.cos(angle), np.sin(angle)]
+        else:
+            sensors = rng.uniform(-5, 5, (n_sensors, 2))
+        umax = 0.0 if k % 10 == 5 else float(rng.uniform(0, 3))
+        radius, phi = 0.999 * umax * np.sqrt(rng.random()), rng.uniform(0, 2 * np.pi)
+        out.append({"sensors": sensors.tolist(), "target": target.tolist(),
+                    "control": [radius * np.cos(phi), radius * np.sin(phi)], "umax": umax})
+    return out
+
+
+DRIVE = r"""
+const root = document.getElementById('bound-explorer'), out = [];
+for (const g of arguments[0]) {
+  window.boundExplorer.set(g);
+  out.push({bound: root.querySelector('.bound-value').textContent,
+            exact: root.querySelector('.exact-value').textContent,
+            bound_full: root.dataset.bound, exact_full: root.dataset.exact,
+            sensors: root.dataset.sensors, target: root.dataset.target,
+            control: root.dataset.control, umax: root.dataset.umax});
+}
+return out;
+"""
+
+
+def _six_digits(shown: str, value: float) -> bool:
+    """Whether ``shown`` has 6 significant digits and is ``value`` rounded to them (half a unit
+    of the last digit, plus 1e-9 of it for a value on a rounding boundary)."""
+    m = re.fullmatch(r"-?(\d+(?:\.\d*)?)(?:e[-+]?\d+)?", shown)
+    if not m:
+        return False
+    digits = m.group(1).replace(".", "")
+    if len(digits.lstrip("0") or digits[-6:]) != 6:
+        return False
+    if value == 0:
+        return float(shown) == 0
+    unit = 10.0 ** (math.floor(math.log10(abs(value))) - 5)
+    return abs(float(shown) - value) <= unit * (0.5 + 1e-9)
+
+
+def test_explorer_agrees_with_obslib_at_random_geometries(explorer):
+    """At 200 random geometries (a third nearly collinear) the explorer's bound and exact value
+    equal ``obslib.lower_bound`` and ``obslib.inverse_condition_number`` to 1e-6 relative.
+
+    Two readings of each: the full-precision ``data-bound`` and ``data-exact`` attributes against
+    obslib at 1e-6 relative (the contract; the largest difference seen is about 2e-10, on nearly
+    collinear sensors, where obslib's SVD and the explorer's Cauchy-Binet determinant round
+    differently), and the 6 significant digits shown in ``.bound-value`` and ``.exact-value``,
+    which must be obslib's value rounded to 6 digits (within half a unit of the last digit).
+    """
+    import obslib as ob
+
+    geoms = random_geometries(200, seed=23)
+    results = explorer.execute_script(DRIVE, geoms)
+    bad = []
+    for k, (g, r) in enumerate(zip(geoms, results)):
+        state = {key: json.loads(r[key]) for key in ("sensors", "target", "control", "umax")}
+        assert state == g, f"geometry {k}: the explorer holds {state}, not {g}"
+        bound = ob.lower_bound(g["sensors"], g["target"], g["umax"])
+        exact = ob.inverse_condition_number(g["sensors"], g["target"], g["control"])
+        for what, ours, full, shown in (("bound", bound, r["bound_full"], r["bound"]),
+                                        ("exact", exact, r["exact_full"], r["exact"])):
+            if not math.isclose(float(full), ours, rel_tol=1e-6, abs_tol=1e-300):
+                bad.append(f"geometry {k} {what}: explorer {full}, obslib {ours!r}: {g}")
+            if not _six_digits(shown, ours):
+                bad.append(f"geometry {k} {what}: shows {shown!r}, obslib {ours!r}")
+    assert not bad, "\n".join(bad[:10])
+
+
+def test_six_digits_check_can_fail():
+    assert _six_digits("0.734940", 0.73494031746)
+    assert _six_digits("1.00000e-7", 1.0000001e-7) and _six_digits("0.00000", 0.0)
+    assert not _six_digits("0.734941", 0.73494031746)  # wrong last digit
+    assert not _six_digits("0.73494", 0.73494031746)  # five digits
+    assert not _six_digits("0.7349403", 0.73494031746)  # seven digits
+
+
+def test_explorer_formulas_agree_with_obslib(explorer):
+    """The explorer's Theorem 4 (polar form, the surface view), its maximiser alpha*, its pair
+    polar coordinates (alpha, theta_ji) and its heat map (the bound with one more sensor) against
+    obslib at random points."""
+    import numpy as np
+
+    import obslib as ob
+    from obslib import pair_form as pf
+
+    rng = np.random.default_rng(7)
+    alpha, theta, q = rng.uniform(0, 6, 200), rng.uniform(-np.pi, np.pi, 200), rng.uniform(0, 3, 200)
+    theta[:10] = [0, np.pi, -np.pi / 2, np.pi / 2, 1e-9, np.pi - 1e-9, 0.3, -2.0, 1.0, 2.5]
+    got = explorer.execute_script(
+        "const m = window.boundExplorer.math;"
+        "return arguments[0].map((a, k) => [m.pairBoundPolar(a, arguments[1][k], arguments[2][k]),"
+        " m.maximisingAlpha(arguments[1][k], arguments[2][k])]);",
+        alpha.tolist(), theta.tolist(), q.tolist())
+    got = np.array(got)
+    np.testing.assert_allclose(got[:, 0], ob.pair_bound_polar(alpha, theta, q), rtol=1e-9, atol=1e-15)
+    ok = np.abs(np.sin(theta)) > 1e-6  # alpha* is defined where the angle is not 0 or pi
+    np.testing.assert_allclose(got[ok, 1], pf.maximising_alpha_closed(theta[ok], q[ok]), rtol=1e-9)
+
+    # alpha and theta_ji of a pair, through Theorem 4, give the pair's bound from its geometry
+    geoms = random_geometries(60, seed=5)
+    polar = explorer.execute_script(
+        "const m = window.boundExplorer.math;"
+        "return arguments[0].map(g => { const p = m.pairPolar(g.sensors[0], g.sensors[1], g.target);"
+        " return [p.alpha, p.theta, p.di, m.pairBoundPolar(p.alpha, p.theta, g.umax / p.di)]; });",
+        geoms)
+    for g, (a, th, di, b) in zip(geoms, polar):
+        w = ob.pair_bounds(g["sensors"][:2], [g["target"]], g["umax"])[0, 1, 0]
+        assert math.isclose(b, w, rel_tol=1e-6, abs_tol=1e-12), (g, b, w)
+        v = np.subtract(g["sensors"], g["target"])
+        assert math.isclose(a, np.hypot(*v[1]) / np.hypot(*v[0]), rel_tol=1e-12)
+        assert math.isclose(np.cos(th), np.dot(v[0], v[1]) / np.hypot(*v[0]) / np.hypot(*v[1]),
+                            rel_tol=1e-9, abs_tol=1e-9)
+
+    # the heat map: the bound with one more sensor at each grid point
+    g = geoms[1]
+    xs, ys = np.linspace(-6, 6, 9), np.linspace(-5, 5, 7)
+    heat = explorer.execute_script(
+        "const g = arguments[0], r = window.boundExplorer.math.candidateBounds("
+        "g.sensors, g.target, g.umax, arguments[1], arguments[2]);"
+        "return [Array.from(r.values), r.bestIndex];", g, xs.tolist(), ys.tolist())
+    values = np.array(heat[0]).reshape(len(ys), len(xs))
+    want = np.array([[ob.lower_bound(g["sensors"] + [[x, y]], g["target"], g["umax"]) for x in xs]
+                     for y in ys])
+    np.testing.assert_allclose(values, want, rtol=1e-9, atol=1e-15)
+    assert heat[1] == int(np.argmax(want))
+
+
+
+def test_dragging_the_explorer_changes_its_state(explorer):
+    """Mouse drags on the canvas move the target, a sensor and the tip of the arrow (which stops
+    at u_max), and the displayed values follow."""
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.by import By
+
+    explorer.execute_script("window.boundExplorer.set(arguments[0])",
+                            {"sensors": [[-2.5, -1.5], [2.0, -2.0]], "target": [0.5, 1.0],
+                             "control": [0.6, 0.3], "umax": 1.0})
+    canvas = explorer.find_element(By.CSS_SELECTOR, "#bound-explorer canvas")
+    size = canvas.size
+
+    def state():
+        return explorer.execute_script(
+            "const e = document.getElementById('bound-explorer');"
+            "return {sensors: JSON.parse(e.dataset.sensors), target: JSON.parse(e.dataset.target),"
+            " control: JSON.parse(e.dataset.control), umax: JSON.parse(e.dataset.umax),"
+            " bound: e.querySelector('.bound-value').textContent,"
+            " exact: e.querySelector('.exact-value').textContent};")
+
+    def drag(handle, dx, dy):
+        x, y = explorer.execute_script("return window.boundExplorer.handle(arguments[0])", handle)
+        (ActionChains(explorer)
+         .move_to_element_with_offset(canvas, x - size["width"] / 2, y - size["height"] / 2)
+         .click_and_hold().move_by_offset(dx // 2, dy // 2).move_by_offset(dx - dx // 2, dy - dy // 2)
+         .release().perform())
+        return explorer.execute_script("return window.boundExplorer.handle(arguments[0])", handle)
+
+    before = state()
+    x0, y0 = explorer.execute_script("return window.boundExplorer.handle('target')")
+    x1, y1 = drag("target", 40, -30)
+    after = state()
+    assert abs(x1 - x0 - 40) <= 1.5 and abs(y1 - y0 + 30) <= 1.5, (x0, y0, x1, y1)
+    assert after["target"][0] > before["target"][0] and after["target"][1] > before["target"][1]
+    assert after["sensors"] == before["sensors"] and after["control"] == before["control"]
+    assert after["bound"] != before["bound"] and after["exact"] != before["exact"]
+
+    drag(1, -50, 20)  # the second sensor
+    moved = state()
+    assert moved["sensors"][0] == after["sensors"][0] and moved["sensors"][1] != after["sensors"][1]
+
+    drag("tip", 300, 0)  # far beyond the disc: the arrow stops at u_max
+    tipped = state()
+    assert math.isclose(math.hypot(*tipped["control"]), tipped["umax"], rel_tol=1e-9), tipped
+    assert tipped["control"][0] > 0.9 * tipped["umax"]
+
+    import obslib as ob
+    shown = ob.inverse_condition_number(tipped["sensors"], tipped["target"], tipped["control"])
+    assert _six_digits(tipped["exact"], shown)
+
+    # the second view: dragging the point over (alpha, theta_ji) moves sensor j only, to the
+    # distance ratio and angle it is dropped at
+    explorer.execute_script("window.boundExplorer.setMode('surface')")
+    x, y = explorer.execute_script("return window.boundExplorer.explorer.surfacePoint()")
+    size = canvas.size
+    (ActionChains(explorer)
+     .move_to_element_with_offset(canvas, x - size["width"] / 2, y - size["height"] / 2)
+     .click_and_hold().move_by_offset(60, 25).release().perform())
+    on_surface = state()
+    assert on_surface["sensors"][0] == tipped["sensors"][0] and on_surface["target"] == tipped["target"]
+    assert on_surface["sensors"][1] != tipped["sensors"][1]
+    x1, y1 = explorer.execute_script("return window.boundExplorer.explorer.surfacePoint()")
+    assert abs(x1 - x - 60) <= 1.5 and abs(y1 - y - 25) <= 1.5, (x, y, x1, y1)
+    explorer.execute_script("window.boundExplorer.setMode('map')")
+
+
+# ------------------------------------------------------------------------- the API reference
+
+
+def public_names() -> dict[str, list[str]]:
+    """Every public module of ``obslib`` (no part of its dotted path starts with ``_``) with the
+    names of its ``__all__`` that are not modules."""
+    import importlib
+    import inspect
+    import pkgutil
+
+    import obslib
+
+    out = {}
+    for name in ["obslib", *(m.name for m in pkgutil.walk_packages(obslib.__path__, "obslib."))]:
+        if any(part.startswith("_") for part in name.split(".")):
+            continue
+        mod = importlib.import_module(name)
+        out[name] = [n for n in getattr(mod, "__all__", []) if not inspect.ismodule(getattr(mod, n))]
+    return out
+
+
+def _object_at(path: str):
+    import importlib
+
+    parts = path.split(".")
+    for cut in range(len(parts), 0, -1):
+        try:
+            obj = importlib.import_module(".".join(parts[:cut]))
+        except ImportError:
+            continue
+        for attr in parts[cut:]:
+            obj = getattr(obj, attr)
+        return obj
+    raise LookupError(path)
+
+
+def test_api_landing_lists_every_public_name(book):
+    """The landing page of the reference links every public name (and every module with public
+    names, and every package) to an entry that exists on a page of the reference."""
+    import importlib
+
+    page = (book / "book" / "api.html").read_text()
+    links = re.findall(r'<a class="reference internal" href="(api_[a-z]+\.html)#([\w.-]+)"', page)
+    assert links, "no links to the pages of the reference"
+    linked, modules, dead = set(), set(), []
+    for href, anchor in links:
+        if anchor not in _ids(book / "book" / href):
+            dead.append(f"{href}#{anchor}")
+        if anchor.startswith("module-"):
+            modules.add(anchor.removeprefix("module-"))
+        else:
+            linked.add(id(_object_at(anchor)))
+    assert not dead, dead
+    missing = []
+    for modname, names in public_names().items():
+        mod = importlib.import_module(modname)
+        if (names or hasattr(mod, "__path__")) and modname not in modules:
+            missing.append(f"module {modname}")
+        missing += [f"{modname}.{n}" for n in names if id(getattr(mod, n)) not in linked]
+    assert not missing, "not on the landing page of the API reference:\n" + "\n".join(missing)
+    assert len(linked) > 200
+
+
+CONTENTS_CHECK = r"""
+const nav = document.querySelector('.bd-sidebar-secondary');
+if (!nav) return ['no contents column'];
+const style = document.createElement('style');  // show every level of the contents at once
+style.textContent = '.bd-sidebar-secondary .page-toc ul { display: block !important; }';
+document.head.appendChild(style);
+const right = nav.getBoundingClientRect().left + nav.clientLeft + nav.clientWidth, out = [];
+for (const a of nav.querySelectorAll('.page-toc a.nav-link')) {
+  const r = a.getBoundingClientRect();
+  if (r.width === 0) continue;
+  if (a.scrollWidth > a.clientWidth + 1 || r.right > right + 1) {
+    out.push(`${a.textContent.trim()} (${a.scrollWidth}px in ${a.clientWidth}px, ends at ${Math.round(r.right)}px of ${Math.round(right)}px)`);
+  }
+}
+if (nav.scrollWidth > nav.clientWidth + 1) out.push(`the column scrolls sideways (${nav.scrollWidth}px in ${nav.clientWidth}px)`);
+style.remove();
+return out;
+"""
+
+
+def test_api_pages_contents_do_not_clip(server, browser):
+    """On every page of the reference, each entry of the right-hand contents fits its column."""
+    api = [p for p in toc_pages() if p.startswith("book/api")]
+    assert len(api) >= 8, api
+    from selenium.webdriver.support.ui import WebDriverWait
+
+    browser.set_window_size(WIDTH, 1600)
+    clipped = []
+    for rel in api:
+        browser.get(f"{server}/{rel}")
+        WebDriverWait(browser, 20).until(lambda d: d.execute_script(
+            "return document.readyState === 'complete' && !!document.querySelector('.bd-sidebar-secondary')"))
+        clipped += [f"{rel}: {c}" for c in browser.execute_script(CONTENTS_CHECK)]
+    assert not clipped, "\n".join(clipped[:20])

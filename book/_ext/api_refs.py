@@ -10,6 +10,9 @@ except a word of a type field (napoleon's ``:vartype:`` for an *Attributes* entr
 ``noise : (steps, N)`` or ``motion : {"circle", "adversarial"}``): Sphinx makes every word of
 such a type a class reference, but a shape or a set of strings names no object, so those words
 are set as plain text.
+
+The landing page of the reference quotes the first sentence of each docstring in a table, with no
+module around it; there every name is looked up in every ``obslib`` module the same way.
 """
 
 import importlib
@@ -17,6 +20,10 @@ import sys
 
 from docutils import nodes
 from sphinx.util.nodes import make_refnode
+
+
+#: The pages of the API reference: their summary tables quote docstrings outside their modules.
+API_PAGES = "book/api"
 
 
 def _lookup(path: str):
@@ -50,7 +57,8 @@ def _resolve(app, env, node, contnode):
         return None
     target = node["reftarget"].lstrip("~.")
     module = node.get("py:module")
-    if not (target.startswith("obslib") or (module or "").startswith("obslib")):
+    on_api_page = node.get("refdoc", "").startswith(API_PAGES)
+    if not (target.startswith("obslib") or (module or "").startswith("obslib") or on_api_page):
         return None
     objects = env.get_domain("py").objects
     for cand in _candidates(target, module):
