@@ -113,10 +113,10 @@ def _thm6_tight(profile: str) -> Finding:
     :data:`NEAR_THIRD`; partly: below 1/2; refuted otherwise. The fragility (jitter of every
     point by a fraction of the spread) is reported, not judged: a tight example may be fragile."""
     from ..studies import greedy_tightness as gt
-    from ..studies.unchecked import notebook_params
+    from ..studies.unchecked import NOTEBOOK as UNCHECKED
 
     p = params(NB, profile)
-    q = notebook_params(profile)
+    q = params(UNCHECKED, profile)
     ratio, S, T = gt.tight_geometry(p["search_sensors"], p["search_targets"], p["seed"],
                                     p["n_starts"], p["n_steps"], p["u_max"])
     margin = gt.first_pick_margin(S, T, p["u_max"])

@@ -8,6 +8,7 @@ how well the targets are then tracked. The evidence is computed by
 
 from __future__ import annotations
 
+from ..profiles import params
 from ..studies import criteria as cs
 from ._ledger import Finding, claim
 
@@ -24,7 +25,7 @@ def _verdicts(rows):
 
 def criteria_evidence(profile: str) -> dict:
     """The summary rows of every (setting, metric) at ``profile``'s sizes."""
-    p = cs.params(profile)
+    p = params(NB, profile)
     study = cs.tracking_study(p["n_seeds"], p["seed"], p["metrics"])
     return {
         f"{setting}, {metric}": cs.summary_rows(mc, loss_threshold=p["loss_threshold"])
@@ -43,7 +44,7 @@ def criteria_evidence(profile: str) -> dict:
     notebook=NB,
 )
 def _criteria(profile: str) -> Finding:
-    p = cs.params(profile)
+    p = params(NB, profile)
     missing = [c for c in CLASSICAL if c not in cs.available_strategies()]
     if missing:
         return Finding(
@@ -98,7 +99,7 @@ def _cell(r):
     notebook=NB,
 )
 def _assignment(profile: str) -> Finding:
-    p = cs.params(profile)
+    p = params(NB, profile)
     rows = cs.assignment_rows(cs.assignment_study(p), loss_threshold=p["assign_loss"])
     verdict = {}
     for r in rows:

@@ -6,7 +6,8 @@ Registered after the tracking claims of Sections V-A and V-B, which it sharpens.
 from __future__ import annotations
 
 from ..studies import replay as rp
-from ..studies.unchecked import NOTEBOOK, notebook_params
+from ..profiles import params
+from ..studies.unchecked import NOTEBOOK
 from ._ledger import Finding, claim
 from .tracking import FIGURE_TOLERANCE
 
@@ -39,7 +40,7 @@ def _published_replay(profile: str) -> Finding:
     :data:`REPLAY_TOLERANCE`; partly: the pairs agree but some number does not; refuted: a pair
     differs. How typical the published adversarial run is among random noise seeds is in the
     evidence (it sharpens ``fig7-figure-data``)."""
-    p = notebook_params(profile)
+    p = params(NOTEBOOK, profile)
     cmp = _comparisons()
     runs = [cmp[n] for n in REPLAYED]
     pairs_ok = all(c.pair_mismatches == 0 for c in runs)

@@ -20,7 +20,7 @@ from ..published_runs import published_run
 from ..studies import replay as rp
 from ..studies import tracking as study
 from ..studies.published import PUBLISHED_ADVERSARIAL, PUBLISHED_CIRCLE
-from ..studies.unchecked import notebook_params
+from ..studies.unchecked import NOTEBOOK as UNCHECKED
 from ._ledger import Finding, claim
 
 NB5 = "05_two_sensors_tracking"
@@ -506,7 +506,7 @@ def _fig7_data(profile: str) -> Finding:
     pub = PUBLISHED_ADVERSARIAL
     printed = {k: printed_match(summ[k], pub[k], k) for k in ("mean_bound", "switches")}
     status = "reproduced" if c.matches and all(printed.values()) else "refuted"
-    q = notebook_params(profile)
+    q = params(UNCHECKED, profile)
     t = rp.seed_typicality(q["n_seeds_typical"], q["seed"])
     ours = (
         "Replayed with the noise it used, the run "

@@ -13,7 +13,8 @@ import numpy as np
 from ..studies import greedy_vs_relaxed as ast
 from ..assignment import relaxed_pair_assignment
 from ..studies import eq4, experiment_details as ed, hardness as hd
-from ..studies.unchecked import NOTEBOOK, notebook_params
+from ..profiles import params
+from ..studies.unchecked import NOTEBOOK
 from ._ledger import Finding, claim
 
 
@@ -41,7 +42,7 @@ def _eq4_collapse(profile: str) -> Finding:
     Theorem 1's bound also holds for the derived matrix; partly: it holds for Eq. (4) only and the
     derived matrix's worst case (closed form, checked by a grid search of the disc) falls below
     it; refuted: not even Eq. (4) (that is ``thm1``)."""
-    p = notebook_params(profile)
+    p = params(NOTEBOOK, profile)
     ratios, grid_err, below = eq4.random_scene_audit(p["n_geometries"], p["n_refine"], p["seed"],
                                                      p["u_max"])
     holds = below == 0
@@ -96,7 +97,7 @@ def _np_complete(profile: str) -> Finding:
     sizes; partly: NP-complete for arbitrary weights (reduction verified on every instance) but
     the optimum is computed at the paper's largest size (L = 20) or the geometric case is open;
     refuted: the reduction fails on some instance."""
-    p = notebook_params(profile)
+    p = params(NOTEBOOK, profile)
     red = hd.reduction_check(p["n_3dm"], p["seed"])
     reach = _reach(tuple(p["solver_L"]), float(p["time_budget"]), p["seed"], p["u_max"])
     solved = [r for r in reach if r["solved"]]
@@ -149,7 +150,7 @@ def _problem3(profile: str) -> Finding:
     figure shows Problem 3 whichever was solved); partly: the ordered one is larger on some
     instances, so the figure's curve is a looser bound than the printed Problem 3; refuted: the
     unordered value exceeds the ordered one somewhere (impossible for correct solvers)."""
-    p = notebook_params(profile)
+    p = params(NOTEBOOK, profile)
     r = _fig8(tuple(p["problem3_L"]), p["problem3_trials"], p["seed"], p["u_max"])
     rel, ordr = r["relaxed"], r["relaxed_ordered"]
     gap = ordr / rel - 1
@@ -235,7 +236,7 @@ def _control_ball(profile: str) -> Finding:
     nothing that matters (per-step objective within 1e-3 and the entrapped share over seeds the
     same); partly: the text misdescribes the set but the effect is that small; refuted: the
     ball frees the target (a lower entrapped share)."""
-    p = notebook_params(profile)
+    p = params(NOTEBOOK, profile)
     g = ed.control_set_gap(20, 360)
     d = ed.control_set_entrapment(p["n_seeds_disc"], p["seed"], p["n_radii"], p["n_angles"])
     freed = d["disc"]["entrapped"] < d["paper"]["entrapped"]
