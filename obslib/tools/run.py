@@ -1,16 +1,27 @@
-"""Execute the book's notebooks with papermill.
+"""Execute the book's notebooks with papermill, on all cores, every parameter checked first.
 
 ``make book`` runs every notebook in place at its default parameters (the tagged
-``parameters`` cell) and prints one line per notebook with its run time::
+``parameters`` cell), several at a time (``--jobs``, default: the cores this process may use),
+and prints one line per notebook with its run time as it finishes::
 
     python -m obslib.run --in-place
 
 Reruns with other parameters never touch the committed notebooks; they write to
-``_build/runs/<profile>/`` (or ``_build/runs/custom/`` with ``-p`` overrides)::
+``_build/runs/<label>/<notebook>.ipynb``, with ``<notebook>.json`` beside it holding the
+parameters, and list each run (notebook, parameters, time) in ``_build/runs/index.json``. The
+label is the profile (``quick``), followed by a short hash of the ``-p`` overrides when there
+are any (``paper-3f9c1a2b``), so reruns with different parameters never overwrite each other::
 
     python -m obslib.run --profile quick                # every notebook, quick profile
     python -m obslib.run --profile quick 01             # one notebook, by number or stem
     python -m obslib.run -p n_scenes 500 -p seed 3 01   # explicit overrides
+    python -m obslib.run --profile quick --jobs 1       # one notebook at a time
+
+Every value is checked before any notebook runs, against the ranges and constraints of
+:mod:`obslib.profiles`; a bad one is a command-line error (exit status 2) naming the notebook and
+the accepted values. Progress (notebooks done, and the cells of each running notebook) goes to
+standard error when it is a terminal. Kernels are started with CurveZMQ keys provisioned by the
+kernel manager, so their traffic is encrypted and they do not warn that it is not.
 
 After execution the runner strips what changes from run to run or machine to machine
 (papermill's timestamps, the Python patch version), so that re-running an unchanged notebook
@@ -21,15 +32,21 @@ from __future__ import annotations
 
 import argparse
 import ast
+import datetime
+import hashlib
 import json
 import os
 import sys
+import threading
 import time
+from concurrent.futures import FIRST_COMPLETED, ThreadPoolExecutor, wait
 from pathlib import Path
+from typing import NamedTuple
 
 __all__ = [
-    "ROOT", "NOTEBOOK_DIR", "RUNS_DIR", "notebooks", "resolve", "declared_parameters", "plan", "precompile", "execute",
-    "execution_page", "main",
+    "ROOT", "NOTEBOOK_DIR", "RUNS_DIR", "Run", "RunFailed", "notebooks", "resolve",
+    "declared_parameters", "run_label", "plan", "precompile", "execute", "execute_all",
+    "default_jobs", "execution_page", "main",
 ]
 
 from . import ROOT  # noqa: E402  the checkout obslib is installed from
@@ -80,7 +97,7 @@ def _literal(text: str):
     """``-p`` values: Python literals (``3``, ``0.5``, ``[1, 2]``, ``'a'``) or a bare string."""
     try:
         return ast.literal_eval(text)
-    except (ValueError, SyntaxError):
+    except (ValueError, SyntaxError, MemoryError, RecursionError):
         return text
 
 
@@ -92,23 +109,47 @@ def declared_parameters(path: Path) -> dict:
     >>> declared_parameters(resolve(["05"])[0])["n_seeds"]
     200
     """
-    import papermill as pm
+    from ..profiles import parameter_cell
 
-    out = {}
-    for name, info in pm.inspect_notebook(str(path)).items():
-        try:
-            out[name] = ast.literal_eval(info["default"])
-        except (ValueError, SyntaxError):  # not a literal: accept any value of no checked type
-            out[name] = info["default"]
-    return out
+    return parameter_cell(path)
 
 
-def plan(paths, profile: str | None, overrides: dict, in_place: bool) -> list:
-    """``(notebook, destination, parameters)`` of every run, all parameters checked first.
+class Run(NamedTuple):
+    """One notebook to execute: into ``dst`` with ``parameters``, under the rerun's ``label``."""
+
+    notebook: Path
+    dst: Path
+    parameters: dict
+    label: str = ""
+    profile: str | None = None
+    overrides: dict = {}
+
+
+def run_label(profile: str | None, overrides: dict) -> str:
+    """Folder name of a rerun: the profile, and a short hash of the overrides if any.
+
+    Examples
+    --------
+    >>> run_label("quick", {})
+    'quick'
+    >>> run_label(None, {"seed": 3}) == run_label(None, {"seed": 3}) != run_label(None, {"seed": 4})
+    True
+    """
+    label = profile or "paper"
+    if overrides:
+        text = json.dumps(overrides, sort_keys=True, separators=(",", ":"))
+        label += "-" + hashlib.sha256(text.encode()).hexdigest()[:8]
+    return label
+
+
+def plan(paths, profile: str | None, overrides: dict, in_place: bool,
+         runs_dir: Path | None = None) -> list[Run]:
+    """Every :class:`Run` of a command, all parameters checked first.
 
     Every notebook's parameters (profile values and ``-p`` overrides) are checked against the
-    parameters it declares (:func:`obslib.profiles.check_parameters`) before anything runs, so
-    a bad value or a name unknown to the second notebook fails before the first starts.
+    parameters it declares, their ranges and constraints (:func:`obslib.profiles.check_parameters`)
+    before anything runs, so a bad value or a name unknown to the second notebook fails before
+    the first starts.
 
     Raises
     ------
@@ -118,29 +159,28 @@ def plan(paths, profile: str | None, overrides: dict, in_place: bool) -> list:
     Examples
     --------
     >>> steps = plan(resolve(["05"]), None, {"n_seeds": 3}, False)
-    >>> [(nb.stem, params) for nb, _, params in steps]
-    [('05_two_sensors_tracking', {'n_seeds': 3})]
+    >>> [(r.notebook.stem, r.parameters, r.label[:6]) for r in steps]
+    [('05_two_sensors_tracking', {'n_seeds': 3}, 'paper-')]
     >>> plan(resolve(["05"]), None, {"n_seeds": 2.5}, False)
     Traceback (most recent call last):
     ...
-    ValueError: ...n_seeds = 2.5 is not accepted; expected an integer >= 1
+    ValueError: notebook 05_two_sensors_tracking: parameter n_seeds = 2.5 is not accepted; expected an integer >= 1
     """
-    from ..profiles import PROFILES, check_parameters, params
+    from ..profiles import PROFILES, check_parameters
 
-    label = profile or "custom"
-    if profile and overrides:
-        label = f"{profile}-custom"
+    runs_dir = RUNS_DIR if runs_dir is None else Path(runs_dir)
+    label = run_label(profile, overrides)
     runs = []
     for nb in paths:
         if in_place:
-            runs.append((nb, nb, {}))
+            runs.append(Run(nb, nb, {}))
             continue
-        parameters = {}
-        if profile and nb.stem in PROFILES["paper"]:
-            parameters = params(nb.stem, profile)
+        declared = declared_parameters(nb)
+        parameters = dict(PROFILES[profile or "paper"].get(nb.stem, {}))
         parameters.update(overrides)
-        parameters = check_parameters(nb.stem, parameters, declared_parameters(nb))
-        runs.append((nb, RUNS_DIR / label / nb.name, parameters))
+        parameters = check_parameters(nb.stem, parameters, declared)
+        runs.append(Run(nb, runs_dir / label / nb.name, parameters, label, profile,
+                        dict(overrides)))
     return runs
 
 
@@ -195,16 +235,27 @@ def precompile() -> None:
     compileall.compile_dir(str(Path(__file__).resolve().parents[1]), quiet=1)  # all of obslib
 
 
-def execute(src: Path, dst: Path, parameters: dict | None = None) -> float:
+def _kernel_config():
+    """Kernel managers provision CurveZMQ keys where the kernel supports them (ipykernel does).
+
+    Without keys ipykernel warns on every start that its TCP traffic is not encrypted.
+    """
+    from traitlets.config import Config
+
+    return Config({"KernelManager": {"transport_encryption": "auto"}})
+
+
+def execute(src: Path, dst: Path, parameters: dict | None = None, progress=False) -> float:
     """Execute ``src`` into ``dst`` with papermill; return the wall time in seconds.
 
     ``parameters`` override the notebook's ``parameters`` cell; every name must exist there.
+    ``progress``: papermill's per-cell progress bar (``True``, or a dict of tqdm options).
 
     Examples
     --------
     Executing a notebook starts a kernel (seconds), so the example is not run:
 
-    >>> out = RUNS_DIR / "custom" / "01.ipynb"
+    >>> out = RUNS_DIR / "quick" / "01.ipynb"
     >>> execute(resolve(["01"])[0], out, {"n_scenes": 10})  # doctest: +SKIP
     3.2
     """
@@ -212,7 +263,7 @@ def execute(src: Path, dst: Path, parameters: dict | None = None) -> float:
 
     parameters = dict(parameters or {})
     if parameters:
-        declared = pm.inspect_notebook(str(src))
+        declared = declared_parameters(src)
         unknown = sorted(set(parameters) - set(declared))
         if unknown:
             raise ValueError(
@@ -226,7 +277,7 @@ def execute(src: Path, dst: Path, parameters: dict | None = None) -> float:
         str(dst),
         parameters=parameters,
         kernel_name=KERNEL,
-        progress_bar=False,
+        progress_bar=progress,
         cwd=str(src.parent),
         # write the result once, at the end (on an error papermill still writes what ran), rather
         # than the whole notebook again after every cell
@@ -234,14 +285,142 @@ def execute(src: Path, dst: Path, parameters: dict | None = None) -> float:
         # every output has arrived when the last cell is done; a graceful shutdown only runs the
         # kernel's exit hooks, and ipykernel sometimes takes seconds to honour it
         shutdown_kernel="immediate",
+        config=_kernel_config(),
     )
     elapsed = time.perf_counter() - t0
     _clean(dst)
     return elapsed
 
 
-def execution_page(times: dict) -> str:
+def default_jobs() -> int:
+    """Notebooks run side by side by default: the cores this process may run on.
+
+    Examples
+    --------
+    >>> default_jobs() >= 1
+    True
+    """
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not Linux
+        return max(1, os.cpu_count() or 1)
+
+
+class RunFailed(RuntimeError):
+    """A notebook raised; ``notebook`` names it and ``__cause__`` is papermill's error."""
+
+    def __init__(self, notebook: Path, error: BaseException):
+        super().__init__(f"{notebook.name} failed: {type(error).__name__}")
+        self.notebook = notebook
+        self.error = error
+
+
+def _longest_first(runs: list) -> list:
+    """Runs ordered by their last in-place time, longest first, so the cores finish together."""
+    try:
+        last = json.loads(TIMES_FILE.read_text())
+    except (OSError, ValueError):
+        last = {}
+    return sorted(runs, key=lambda r: -float(last.get(r.notebook.name, 0.0)))
+
+
+def execute_all(runs, jobs: int = 1, progress: bool | None = None, on_done=None) -> dict:
+    """Execute ``runs`` (from :func:`plan`), ``jobs`` at a time; ``{notebook name: seconds}``.
+
+    Each notebook runs in its own kernel, as serially: the outputs are the same whatever
+    ``jobs``. The longest notebooks (by their last in-place time) start first. ``on_done(run,
+    seconds)`` is called in this thread as each finishes. ``progress``: bars on standard error
+    (``None``: when it is a terminal).
+
+    Raises
+    ------
+    RunFailed
+        At the first notebook that fails; notebooks not yet started are not started, those
+        running are finished.
+
+    Examples
+    --------
+    >>> execute_all([], jobs=2)
+    {}
+    """
+    from tqdm import tqdm
+
+    if jobs < 1:
+        raise ValueError(f"jobs must be >= 1, got {jobs}")
+    runs = _longest_first(list(runs)) if jobs > 1 else list(runs)
+    os.environ.setdefault("PYTHONHASHSEED", "0")  # kernels inherit it
+    disable = None if progress is None else not progress
+    slots = list(range(min(jobs, len(runs)), 0, -1))  # bar positions below the overall bar
+    lock = threading.Lock()
+
+    def work(r: Run) -> float:
+        with lock:
+            slot = slots.pop()
+        try:
+            bar = dict(desc=r.notebook.stem[:24], position=slot, leave=False, file=sys.stderr,
+                       disable=disable, dynamic_ncols=True)
+            return execute(r.notebook, r.dst, r.parameters, progress=bar)
+        finally:
+            with lock:
+                slots.append(slot)
+
+    times: dict = {}
+    overall = tqdm(total=len(runs), desc="notebooks", unit="nb", position=0, file=sys.stderr,
+                   disable=disable, dynamic_ncols=True)
+    pool = ThreadPoolExecutor(max_workers=max(1, min(jobs, len(runs))))
+    try:
+        pending = {pool.submit(work, r): r for r in runs}
+        while pending:
+            done, _ = wait(pending, return_when=FIRST_COMPLETED)
+            for fut in done:
+                r = pending.pop(fut)
+                try:
+                    dt = fut.result()
+                except Exception as exc:  # papermill's PapermillExecutionError, with the traceback
+                    for other in pending:
+                        other.cancel()
+                    raise RunFailed(r.notebook, exc) from exc
+                times[r.notebook.name] = dt
+                overall.update(1)
+                if on_done is not None:
+                    with tqdm.external_write_mode(file=sys.stdout):
+                        on_done(r, dt)
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
+        overall.close()
+    return times
+
+
+def _record(run: Run, seconds: float) -> None:
+    """Write the rerun's parameters beside it and list it in ``index.json`` of its folder's parent."""
+    from .._io import write_output
+
+    entry = {
+        "notebook": run.notebook.stem,
+        "output": run.dst.relative_to(run.dst.parents[1]).as_posix(),
+        "profile": run.profile or "paper",
+        "overrides": run.overrides,  # the -p values
+        "injected": run.parameters,  # the profile's and the -p values, injected by papermill
+        "parameters": {**declared_parameters(run.notebook), **run.parameters},  # all of them
+        "finished": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+        "seconds": round(seconds, 2),
+    }
+    run.dst.parent.mkdir(parents=True, exist_ok=True)  # the runner's own folder under _build/
+    write_output(run.dst.with_suffix(".json"), json.dumps(entry, indent=1) + "\n")
+    index_file = run.dst.parents[1] / "index.json"
+    try:
+        index = json.loads(index_file.read_text())["runs"]
+    except (OSError, ValueError, KeyError, TypeError):
+        index = []
+    index = [e for e in index if e.get("output") != entry["output"]] + [entry]
+    index.sort(key=lambda e: e["output"])
+    write_output(index_file, json.dumps({"runs": index}, indent=1) + "\n")
+
+
+def execution_page(times: dict, jobs: int = 1, wall: float | None = None) -> str:
     """MyST page listing each notebook's run time in the last in-place execution.
+
+    ``jobs``: notebooks run side by side; ``wall``: the whole run's wall time, if known.
 
     Examples
     --------
@@ -250,13 +429,19 @@ def execution_page(times: dict) -> str:
     """
     import platform
 
+    if jobs == 1:
+        together = "one at a time"
+    else:
+        together = (f"{jobs} at a time (each notebook's time includes waiting for its share of "
+                    "the cores)")
     lines = [
         "# Execution statistics",
         "",
         "Wall time of each notebook in the last `make book`, executed by papermill at its default",
         "parameters (`python -m obslib.run --in-place`) on the machine that built this copy of the",
-        f"book (Python {platform.python_version()}, {os.cpu_count()} cores). A notebook marked *not",
-        "run* was not executed by the last run and shows its committed outputs.",
+        f"book (Python {platform.python_version()}, {os.cpu_count()} cores), {together}.",
+        "A notebook marked *not run* was not executed by the last run and shows its committed",
+        "outputs." + (f" The whole run took {wall:.1f} s." if wall is not None else ""),
         "",
         "| notebook | run time (s) |",
         "| --- | ---: |",
@@ -271,13 +456,16 @@ def execution_page(times: dict) -> str:
     return "\n".join(lines)
 
 
-def main(argv=None) -> int:
-    """Command line entry point (see the module docstring); returns the exit status.
+def parse_args(argv=None) -> argparse.Namespace:
+    """Parse the command line and check everything but the parameter values (exit status 2).
 
     Examples
     --------
-    >>> main(["-p", "n_seeds", "-5", "05"])  # doctest: +SKIP
+    >>> parse_args(["--profile", "quick", "--jobs", "2", "01"]).jobs
+    2
     """
+    from ..profiles import PROFILES
+
     ap = argparse.ArgumentParser(
         prog="python -m obslib.run",
         description="Execute notebooks with papermill (see the module docstring).",
@@ -286,45 +474,92 @@ def main(argv=None) -> int:
     ap.add_argument("--in-place", action="store_true", help="run at defaults over the committed notebooks")
     ap.add_argument("--profile", help="named parameter profile (obslib.profiles), e.g. quick")
     ap.add_argument("-p", nargs=2, action="append", metavar=("NAME", "VALUE"), default=[],
-                    help="override one parameter (repeatable)")
+                    help="override one parameter (repeatable, each name once)")
+    ap.add_argument("--jobs", "-j", type=int, default=default_jobs(),
+                    help="notebooks run side by side (default: the cores available, %(default)s)")
+    ap.add_argument("--no-progress", action="store_true",
+                    help="no progress bars (they are shown only on a terminal anyway)")
     args = ap.parse_args(argv)
-
-    from ..profiles import PROFILES
 
     if args.in_place and (args.profile or args.p):
         ap.error("--in-place runs the defaults; reruns with --profile or -p go to _build/runs/")
     if args.profile and args.profile not in PROFILES:
         ap.error(f"unknown profile {args.profile!r}; known: {sorted(PROFILES)}")
-    overrides = {name: _literal(value) for name, value in args.p}
+    if args.jobs < 1:
+        ap.error(f"--jobs must be at least 1, got {args.jobs}")
+    names = [name for name, _ in args.p]
+    repeated = sorted({n for n in names if names.count(n) > 1})
+    if repeated:
+        ap.error(f"parameter(s) {', '.join(repeated)} given more than once with -p")
+    args.overrides = {name: _literal(value) for name, value in args.p}
     try:
-        paths = resolve(args.names)
+        args.paths = resolve(args.names)
     except ValueError as exc:
         ap.error(str(exc))
-    if not args.in_place and not args.profile and not overrides:
+    if not args.in_place and not args.profile and not args.overrides:
         ap.error("say --in-place (make book), --profile NAME or -p NAME VALUE")
-
     try:
-        runs = plan(paths, args.profile, overrides, args.in_place)
-    except ValueError as exc:
+        args.runs = plan(args.paths, args.profile, args.overrides, args.in_place)
+    except (ValueError, FileNotFoundError) as exc:
         ap.error(str(exc))
-    times = {}
+    return args
+
+
+def _shown(path: Path) -> str:
+    """``path`` relative to the checkout when it lies inside it."""
+    try:
+        return str(path.relative_to(ROOT))
+    except ValueError:
+        return str(path)
+
+
+def main(argv=None) -> int:
+    """Command line entry point (see the module docstring); returns the exit status.
+
+    Examples
+    --------
+    >>> main(["-p", "n_seeds", "-5", "05"])  # doctest: +SKIP
+    """
+    from .._io import write_output
+
+    args = parse_args(argv)
+
+    def done(r: Run, dt: float) -> None:
+        where = "" if args.in_place else f"  -> {_shown(r.dst)}"
+        print(f"{r.notebook.name:40s} {dt:7.1f} s{where}", flush=True)
+        if not args.in_place:
+            _record(r, dt)
+
     precompile()
-    for nb, dst, parameters in runs:
-        try:
-            dt = execute(nb, dst, parameters)
-        except Exception as exc:  # papermill raises PapermillExecutionError with the traceback
-            print(f"{nb.name:40s} FAILED", flush=True)
-            print(exc, file=sys.stderr)
-            return 1
-        times[nb.name] = round(dt, 2)
-        where = "" if args.in_place else f"  -> {dst.relative_to(ROOT)}"
-        print(f"{nb.name:40s} {dt:7.1f} s{where}", flush=True)
+    t0 = time.perf_counter()
+    try:
+        times = execute_all(args.runs, args.jobs, None if not args.no_progress else False, done)
+    except RunFailed as exc:
+        print(f"{exc.notebook.name:40s} FAILED", flush=True)
+        print(exc.error, file=sys.stderr)
+        print(f"python -m obslib.run: error: notebook {exc.notebook.stem} failed (above)",
+              file=sys.stderr)
+        return 1
+    except OSError as exc:
+        print(f"python -m obslib.run: error: {exc}", file=sys.stderr)
+        return 1
     if args.in_place:
-        TIMES_FILE.parent.mkdir(parents=True, exist_ok=True)
-        old = json.loads(TIMES_FILE.read_text()) if TIMES_FILE.exists() else {}
+        times = {k: round(v, 2) for k, v in times.items()}
+        try:
+            old = json.loads(TIMES_FILE.read_text()) if TIMES_FILE.exists() else {}
+        except ValueError:
+            old = {}
         old.update(times)
-        TIMES_FILE.write_text(json.dumps(old, indent=1, sort_keys=True) + "\n")
-        EXECUTION_PAGE.write_text(execution_page(old))
+        try:
+            TIMES_FILE.parent.mkdir(parents=True, exist_ok=True)  # _build/, the runner's own
+            write_output(TIMES_FILE, json.dumps(old, indent=1, sort_keys=True) + "\n")
+            write_output(EXECUTION_PAGE, execution_page(old, args.jobs, time.perf_counter() - t0))
+        except OSError as exc:
+            print(f"python -m obslib.run: error: cannot write {exc.filename}: {exc.strerror}",
+                  file=sys.stderr)
+            return 1
+    elif args.runs:
+        print(f"parameters and times of every rerun: {_shown(RUNS_DIR / 'index.json')}", flush=True)
     return 0
 
 
