@@ -34,7 +34,7 @@ def check_output_path(path) -> Path:
     >>> check_output_path("/nonexistent-dir/out.json")
     Traceback (most recent call last):
     ...
-    obslib._io.OutputPathError: /nonexistent-dir/out.json: directory /nonexistent-dir does not exist
+    obslib._io.OutputPathError: ...: directory /nonexistent-dir does not exist
     """
     if path is None or str(path) == "":
         raise OutputPathError("the output path is empty; give a file name")

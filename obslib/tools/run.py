@@ -132,8 +132,9 @@ def run_label(profile: str | None, overrides: dict) -> str:
     --------
     >>> run_label("quick", {})
     'quick'
-    >>> run_label(None, {"seed": 3}) == run_label(None, {"seed": 3}) != run_label(None, {"seed": 4})
-    True
+    >>> a, b = run_label(None, {"seed": 3}), run_label(None, {"seed": 4})
+    >>> a == run_label(None, {"seed": 3}) != b, a[:6]
+    (True, 'paper-')
     """
     label = profile or "paper"
     if overrides:
@@ -164,7 +165,7 @@ def plan(paths, profile: str | None, overrides: dict, in_place: bool,
     >>> plan(resolve(["05"]), None, {"n_seeds": 2.5}, False)
     Traceback (most recent call last):
     ...
-    ValueError: notebook 05_two_sensors_tracking: parameter n_seeds = 2.5 is not accepted; expected an integer >= 1
+    ValueError: ...n_seeds = 2.5 is not accepted; expected an integer >= 1
     """
     from ..profiles import PROFILES, check_parameters
 
@@ -278,7 +279,9 @@ def execute(src: Path, dst: Path, parameters: dict | None = None, progress=False
         parameters=parameters,
         kernel_name=KERNEL,
         progress_bar=progress,
-        cwd=str(src.parent),
+        # the kernel starts in the notebook's folder; papermill's cwd= would chdir this whole
+        # process, which notebooks running side by side in threads cannot share
+        resources={"metadata": {"path": str(src.parent)}},
         # write the result once, at the end (on an error papermill still writes what ran), rather
         # than the whole notebook again after every cell
         request_save_on_cell_execute=False,

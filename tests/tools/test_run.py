@@ -194,6 +194,9 @@ def test_reruns_with_different_parameters_never_share_a_file(monkeypatch, runs_d
 
 
 def test_parallel_run_gives_the_outputs_of_a_serial_run(tmp_path, monkeypatch):
+    import os
+
+    cwd = os.getcwd()
     monkeypatch.setattr(run, "RUNS_DIR", tmp_path / "serial")
     assert run.main(["--profile", "quick", "--jobs", "1", "03", "07"]) == 0
     monkeypatch.setattr(run, "RUNS_DIR", tmp_path / "parallel")
@@ -202,6 +205,7 @@ def test_parallel_run_gives_the_outputs_of_a_serial_run(tmp_path, monkeypatch):
         a, b = (nbformat.read(tmp_path / d / "quick" / name, as_version=4)
                 for d in ("serial", "parallel"))
         assert [c.get("outputs") for c in a.cells] == [c.get("outputs") for c in b.cells]
+    assert os.getcwd() == cwd  # kernels start in the notebooks' folder; this process stays
 
 
 def test_first_error_fails_the_command_naming_the_notebook(tmp_path, runs_dir, capfd):
