@@ -304,7 +304,11 @@ def parameter_cell(path) -> dict:
                 and isinstance(node.targets[0], ast.Name)):
             raise ValueError(f"{path.name}: the parameters cell holds only NAME = literal lines "
                              f"(line {node.lineno})")
-        out[node.targets[0].id] = ast.literal_eval(node.value)
+        try:
+            out[node.targets[0].id] = ast.literal_eval(node.value)
+        except ValueError:
+            raise ValueError(f"{path.name}: the parameters cell holds only NAME = literal lines "
+                             f"(line {node.lineno})") from None
     _CELLS[path] = (key, out)
     return copy.deepcopy(out)
 

@@ -334,6 +334,11 @@ def bench_book(profile: str = "paper", jobs: int | None = None) -> dict:
     print(f"{n} notebooks {exec_s:.1f} s, {n} trivial notebooks {floor_s:.1f} s, "
           f"{n} minimal notebooks of the book's stack {stack_s:.1f} s", flush=True)
     print(f"{n} notebooks {jobs} at a time: {parallel_s:.1f} s", flush=True)
+    for key, value, target, met in (
+            ("exec_over_floor", exec_s / floor_s, "<= 3", exec_s / floor_s <= 3),
+            ("exec_over_stack", exec_s / stack_s, "<= 2.5", exec_s / stack_s <= 2.5),
+            ("parallel_speedup", exec_s / parallel_s, ">= 1.6 on 2 cores", exec_s / parallel_s >= 1.6)):
+        print(f"{key:18s} {value:6.2f}  target {target}: {'met' if met else 'MISSED'}", flush=True)
     return {
         "notebooks": n,
         "profile": profile,

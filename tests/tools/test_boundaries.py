@@ -1,7 +1,8 @@
 """Every notebook runs to the end at the boundary values of each of its declared ranges.
 
-Slow (a few hundred notebook runs at the quick sizes), so marked ``boundaries``: ``make test``
-leaves it out and ``.ci/run`` runs it as a separate step::
+The runs are slow (about 180 notebook runs at the quick sizes), so marked ``boundaries``:
+``make test`` leaves them out (it checks only that the cases are accepted) and ``.ci/run`` runs
+them as a separate step::
 
     .venv/bin/python -m pytest -m boundaries tests/tools/test_boundaries.py
 
@@ -20,8 +21,6 @@ import pytest
 
 from obslib import profiles as pr
 from obslib.tools import run
-
-pytestmark = pytest.mark.boundaries
 
 
 def _ends(rule, default) -> list:
@@ -98,6 +97,7 @@ def test_boundary_cases_cover_every_end_and_are_accepted():
             pr.check_parameters(nb, c, declared)
 
 
+@pytest.mark.boundaries
 @pytest.mark.parametrize("notebook", list(pr.RANGES))
 def test_notebook_runs_at_every_boundary(notebook, tmp_path):
     src = run.NOTEBOOK_DIR / f"{notebook}.ipynb"
