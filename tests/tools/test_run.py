@@ -228,3 +228,31 @@ def test_progress_of_notebooks_and_cells_goes_to_stderr(tiny_notebook, tmp_path,
     assert len(seen) == 2 and set(times) == {"00_tiny.ipynb"}
     assert "notebooks: 100%" in err and "cell/s" in err and out == ""
     assert "without encryption" not in err
+
+
+def test_a_kernel_that_does_not_start_is_started_again_once(tiny_notebook, tmp_path, monkeypatch,
+                                                            capsys):
+    import shutil
+
+    import papermill
+
+    calls = []
+
+    def flaky(src, dst, **kw):
+        calls.append(src)
+        if len(calls) == 1:
+            raise RuntimeError("Kernel died before replying to kernel_info")
+        shutil.copy(src, dst)
+
+    monkeypatch.setattr(papermill, "execute_notebook", flaky)
+    run.execute(tiny_notebook, tmp_path / "out.ipynb")
+    assert len(calls) == 2 and "did not start" in capsys.readouterr().err
+
+    def broken(src, dst, **kw):
+        calls.append(src)
+        raise RuntimeError("something else")
+
+    monkeypatch.setattr(papermill, "execute_notebook", broken)
+    with pytest.raises(RuntimeError, match="something else"):
+        run.execute(tiny_notebook, tmp_path / "out.ipynb")
+    assert len(calls) == 3  # not started again
