@@ -78,7 +78,8 @@ class File:
 
 @dataclass(frozen=True)
 class Constraint:
-    """``expr`` (Python over the parameter names, ``len``/``min``/``max``/``sorted``/``set``) holds."""
+    """``expr`` holds: Python over the parameter names and ``len``, ``min``, ``max``, ``sorted``,
+    ``set``, ``all``, ``abs``; ``why`` says why, for the error message."""
 
     expr: str
     why: str = ""

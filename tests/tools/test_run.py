@@ -60,7 +60,7 @@ def test_execute_injects_parameters_and_strips_run_metadata(tiny_notebook, tmp_p
     outputs = [o for c in nb["cells"] if c["cell_type"] == "code" for o in c["outputs"]]
     assert any("".join(o.get("text", "")) == "105\n" for o in outputs)
     assert json.loads(tiny_notebook.read_text())["cells"][1]["outputs"] == []  # source untouched
-    # the kernel's traffic is encrypted, so it does not warn (the kernel's stderr is ours)
+    # the kernel talks over Unix sockets, so it does not warn about TCP (its stderr is ours)
     assert "without encryption" not in capfd.readouterr().err
 
 
