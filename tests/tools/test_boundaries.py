@@ -1,8 +1,8 @@
 """Every notebook runs to the end at the boundary values of each of its declared ranges.
 
-The runs are slow (177 notebook runs at the quick sizes, 8 minutes on two busy cores), so they
-are marked ``boundaries``: ``make test`` leaves them out (it checks only that the cases are
-accepted) and ``.ci/run`` runs them as a separate step::
+The runs are slow (177 notebook runs at the quick sizes, 8 to 10 minutes on two busy cores), so
+they are marked ``boundaries``: ``make test`` leaves them out (it checks only that the cases
+are accepted) and ``.ci/run`` runs them as a separate step::
 
     .venv/bin/python -m pytest -m boundaries tests/tools/test_boundaries.py
 
