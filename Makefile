@@ -15,8 +15,9 @@ $(STAMP): requirements.txt pyproject.toml
 	$(BIN)/python -m pip install --quiet --disable-pip-version-check --no-deps --no-build-isolation -e .
 	@touch $(STAMP)
 
+# JOBS: notebooks executed side by side (default: every core available), e.g. make book JOBS=1
 book: $(STAMP)
-	$(BIN)/python -m obslib.run --in-place
+	$(BIN)/python -m obslib.run --in-place $(if $(JOBS),--jobs $(JOBS))
 	$(BIN)/python -m obsbook.report --profile paper --write book/report.md
 	$(BIN)/jupyter-book build . --builder html --warningiserror --nitpick --keep-going
 

@@ -1,150 +1,222 @@
-"""Named parameter sets for the notebooks and the claims ledger.
+"""The notebooks' parameters: their one source, the profiles that override them, and their ranges.
 
-``paper`` holds each notebook's defaults: the paper's parameters (Sec. V)
-and, for audits the paper does not have, our chosen sizes. It must equal the notebook's tagged
-``parameters`` cell (a test checks this). ``quick`` shrinks the sizes for fast previews and for
-the ledger in tests. A profile lists only the parameters it changes; the rest are the defaults.
+The paper's values
+    Each notebook's first code cell, tagged ``parameters``, holds the values it runs with by
+    default: the paper's (Sec. V) and, for audits the paper does not have, our chosen sizes. That
+    cell is their only copy. :func:`defaults` reads it (``NAME = literal`` lines, the form
+    papermill injects over) and :func:`params` adds a profile's overrides; the ledger
+    (:mod:`obslib.claims`) and the runner read parameters through them. The notebooks are found in
+    ``notebooks/`` of the checkout obslib is installed from (``make`` installs it editable), or in
+    the folder named by the environment variable ``OBSLIB_NOTEBOOKS``; without them
+    :func:`defaults` raises an error that says so. (Packaging a copy of the values would bring
+    back the second source they had before.)
+
+Profiles
+    ``PROFILES[profile][notebook]`` lists only the parameters that profile changes: ``paper``
+    changes none, ``quick`` shrinks the sizes for previews and for the ledger in the tests.
+
+Accepted values
+    ``RANGES[notebook][parameter]`` declares, for every parameter of every notebook, the values
+    with which the notebook runs to the end: a :class:`Range` (closed, for a number and for each
+    entry of a list; the type is that of the default), a :class:`Choice` of strings or a
+    :class:`File`. ``CONSTRAINTS[notebook]`` adds the conditions between parameters (or on a whole
+    list), each a Python expression over the parameter names with the reason for it.
+    :func:`check_parameters` enforces both before any notebook runs; a test runs every notebook at
+    the boundary values of each range. Sizes (seeds, instances, trials) have no upper limit unless
+    the work grows faster than in proportion to them; the exponential ones are bounded, alone
+    and together.
 """
 
 from __future__ import annotations
 
+import ast
 import copy
+import json
+import math
+import os
+from dataclasses import dataclass
+from pathlib import Path
 
-__all__ = ["PROFILES", "RANGES", "params", "profile_names", "check_parameters"]
+__all__ = ["PROFILES", "RANGES", "CONSTRAINTS", "Range", "Choice", "File", "Constraint",
+           "notebook_dir", "defaults", "parameter_cell", "params", "profile_names",
+           "check_parameters"]
+
+#: Environment variable naming the folder of the notebooks, for an install without its checkout.
+NOTEBOOKS_ENV = "OBSLIB_NOTEBOOKS"
+
+
+# --------------------------------------------------------------------------------------------
+# Declarations
+# --------------------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Range:
+    """Closed range ``[lo, hi]`` of a number (or of each entry of a list); ``None``: unbounded.
+
+    ``why`` says why the range is narrower than the type allows, for the error message.
+    """
+
+    lo: float | None = None
+    hi: float | None = None
+    why: str = ""
+
+
+@dataclass(frozen=True)
+class Choice:
+    """One of the strings ``options`` (or, for a list, a list of them)."""
+
+    options: tuple
+    why: str = ""
+
+
+@dataclass(frozen=True)
+class File:
+    """A path to an existing file, relative to the notebooks' folder."""
+
+    why: str = ""
+
+
+@dataclass(frozen=True)
+class Constraint:
+    """``expr`` holds: Python over the parameter names and ``len``, ``min``, ``max``, ``sorted``,
+    ``set``, ``all``, ``abs``; ``why`` says why, for the error message."""
+
+    expr: str
+    why: str = ""
+
+    def names(self) -> list[str]:
+        """The parameters ``expr`` reads, in order of appearance."""
+        calls = {"len", "min", "max", "sorted", "set", "all", "abs"}
+        found = [(n.col_offset, n.id) for n in ast.walk(ast.parse(self.expr))
+                 if isinstance(n, ast.Name) and n.id not in calls]
+        return list(dict.fromkeys(name for _, name in sorted(found)))
+
+    def holds(self, values: dict) -> bool:
+        env = {"len": len, "min": min, "max": max, "sorted": sorted, "set": set, "all": all,
+               "abs": abs}
+        return bool(eval(self.expr, {"__builtins__": {}, **env}, dict(values)))  # our own text
+
+
+SEED = Range(0, 2**32 - 1, "a 32-bit seed")
+COUNT = Range(1)
+PAIRED = Range(2, why="the paired tests compare runs")
+METRICS = Choice(("mahalanobis", "euclidean"))
+DATA_FILE = File("a JSON file written by the benchmark command")
+#: Notebook 03's exact optimum is a dynamic program over the 2^N sets of N = 2L + extra sensors.
+EXACT = "the exact optimum runs over the 2^N sets of N = 2 L + extra <= 16 sensors"
+
+RANGES: dict[str, dict[str, object]] = {
+    "01_model_and_bound": {
+        "seed": SEED, "n_scenes": COUNT, "n_controls": COUNT, "n_trials_thm3": COUNT,
+        "u_max": Range(1e-3, 1e3, "the worked example divides by u_max"),
+        "n_radii": Range(2, why="the figures contour a polar grid"),
+        "n_angles": Range(4, why="the figures contour a polar grid"),
+    },
+    "02_pair_closed_form": {
+        "seed": SEED,
+        "u_max": Range(0.0, 1e3),
+        "d_io": Range(1e-3, 1e3, "Fig. 2 is drawn at q = u_max / d_io"),
+        "alpha_max": Range(1.0, 100.0, "the alpha axis must hold the maximum at alpha = 1"),
+        "paper_step": Range(0.01, 1.0, "the step of Fig. 2's grid, drawn as a surface"),
+        "fine_alpha_per_unit": Range(1, 1000),
+        "fine_theta_quarter": Range(1, 1000),
+        "contour_levels": Range(0.01, 0.99, "the bound lies in [0, 1]"),
+        "u_over_d_curves": Range(0.0, 100.0),
+        "n_theta_curve": Range(2), "n_rational_points": COUNT,
+        "digits": Range(20, 1000, "the exact checks need twice double precision"),
+        "n_random_points": COUNT, "n_weyl": COUNT,
+    },
+    "03_greedy_unique_pairs": {
+        "seed": SEED, "n_instances": COUNT,
+        "targets_min": Range(1, 6, EXACT),
+        "targets_max": Range(1, 6, EXACT),
+        "extra_max": Range(0, 4, EXACT),
+        "u_max": Range(0.0, 1e3),
+        "search_sensors": Range(2, 12, "the search solves the exact optimum at every step"),
+        "search_targets": Range(1, 6, "the search solves the exact optimum at every step"),
+        "n_starts": COUNT, "n_steps": Range(0),
+    },
+    "04_submodularity": {
+        "seed": SEED, "u_max": Range(0.0, 1e3), "n_instances": COUNT,
+        "n_sensors": Range(2, 10, "all 2^N subsets of every instance are compared"),
+        "eps": Range(1e-6, 1e6, "log det(eps I + O^T O) stays finite: 1e-300 underflows"),
+        "min_size": Range(0, 2, "sets of fewer sensors are left out; omega needs two"),
+    },
+    "05_two_sensors_tracking": {
+        "seed": SEED, "n_seeds": COUNT,
+        "steps": Range(10, 10_000, "the switch-rate figure smooths over 9 transitions"),
+        "u_max": Range(1e-3, 1e3), "noise_std": Range(0.0, 10.0),
+        "q": Range(1e-6, 1e3), "r": Range(1e-6, 1e3), "p0": Range(1e-6, 1e3),
+        "metric": METRICS, "anim_every": COUNT, "anim_dpi": Range(20, 300),
+    },
+    "06_adversarial_target": {
+        "seed": SEED, "n_seeds": COUNT, "steps": Range(2, 10_000), "u_max": Range(1e-3, 10.0),
+        "noise_std": Range(0.0, 10.0), "n_seeds_strong": COUNT, "n_radii": COUNT,
+        "n_angles": Range(3),
+    },
+    "07_greedy_vs_relaxed": {
+        "seed": SEED, "L_max": Range(2, 200, "the ratios are read from L = 2 on"),
+        "trials": COUNT, "u_max": Range(0.0, 1e3), "side": Range(1e-3, 1e6),
+        "optimum_max_L": Range(0, 8, "the exact optimum's work grows as 4^L"),
+        "L_extended": Range(1, 400), "trials_extended": COUNT,
+    },
+    "08_general_assignment": {
+        "seed": SEED, "n_targets": Range(1, 20), "N_min": Range(1, 200), "N_max": Range(1, 200),
+        "trials": COUNT, "eps": Range(1e-6, 1e6), "side": Range(1e-3, 1e6),
+        "eps_values": Range(1e-6, 1e6), "compare_N": Range(1, 200), "compare_trials": COUNT,
+        "n_tiny": COUNT,
+    },
+    "09_scaling": {
+        "times_file": DATA_FILE, "seed": SEED, "greedy_sizes": Range(2, 4000),
+        "literal_sizes": Range(2, 800), "relaxed_sizes": Range(2, 1000),
+    },
+    "10_criteria": {
+        "seed": SEED, "n_seeds": PAIRED, "metrics": METRICS, "loss_threshold": Range(1e-3, 1e3),
+        "times_file": DATA_FILE, "assign_targets": Range(1, 10), "assign_seeds": PAIRED,
+        "assign_steps": Range(2, 1000), "assign_side": Range(1.0, 1e4),
+        "assign_u_max": Range(1e-3, 100.0, "the tracking engine needs u_max > 0"),
+        "assign_noise_std": Range(1e-3, 10.0, "the filter needs measurement noise"),
+        "assign_p0": Range(1e-6, 1e3), "assign_loss": Range(1e-3, 1e3),
+    },
+    "11_unchecked_statements": {
+        "seed": SEED, "n_seeds_typical": COUNT, "jitter_fractions": Range(0.0, 1.0),
+        "n_jitter": COUNT, "n_geometries": COUNT, "n_refine": COUNT, "u_max": Range(1e-3, 1e3),
+        "n_3dm": COUNT, "solver_L": Range(1, 40), "time_budget": Range(0.1, 3600.0),
+        "problem3_L": Range(1, 200), "problem3_trials": COUNT, "n_seeds_disc": COUNT,
+        "n_radii": COUNT, "n_angles": Range(3),
+    },
+}
+
+CONSTRAINTS: dict[str, tuple[Constraint, ...]] = {
+    "02_pair_closed_form": (
+        Constraint("contour_levels == sorted(set(contour_levels))",
+                   "contour levels increase"),
+        Constraint("paper_step <= alpha_max / 2", "the published grid needs two steps in alpha"),
+        Constraint("alpha_max <= 1000 * paper_step",
+                   "the published grid is drawn as a surface: at most 1000 steps in alpha"),
+        Constraint("alpha_max * fine_alpha_per_unit * fine_theta_quarter <= 1_000_000",
+                   "the fine grid's 4 alpha_max fine_alpha_per_unit fine_theta_quarter points "
+                   "take about 1 GB at this limit"),
+    ),
+    "03_greedy_unique_pairs": (
+        Constraint("targets_min <= targets_max"),
+        Constraint("2 * search_targets <= search_sensors",
+                   "each target needs a pair of its own"),
+    ),
+    "04_submodularity": (
+        Constraint("n_instances * 2 ** n_sensors <= 4_096_000",
+                   "every subset of every instance is held at once: 0.4 GB for 2000 instances "
+                   "of 10 sensors"),
+    ),
+    "08_general_assignment": (
+        Constraint("N_min <= N_max"),
+        Constraint("n_targets <= N_min and n_targets <= min(compare_N)",
+                   "every target needs a sensor"),
+    ),
+}
 
 PROFILES: dict[str, dict[str, dict]] = {
-    "paper": {
-        "01_model_and_bound": {
-            "seed": 0,
-            "n_scenes": 2000,
-            "n_controls": 64,
-            "n_trials_thm3": 20000,
-            "u_max": 1.0,
-            "n_radii": 40,
-            "n_angles": 180,
-        },
-        "02_pair_closed_form": {
-            "seed": 0,
-            "u_max": 1.0,
-            "d_io": 1.0,
-            "alpha_max": 5.0,
-            "paper_step": 0.1,
-            "fine_alpha_per_unit": 100,
-            "fine_theta_quarter": 180,
-            "contour_levels": [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7],
-            "u_over_d_curves": [0.25, 0.5, 1.0, 2.0],
-            "n_theta_curve": 179,
-            "n_rational_points": 200,
-            "digits": 50,
-            "n_random_points": 2000,
-            "n_weyl": 20000,
-        },
-        "03_greedy_unique_pairs": {
-            "seed": 0,
-            "n_instances": 2000,
-            "targets_min": 2,
-            "targets_max": 4,
-            "extra_max": 2,
-            "u_max": 1.0,
-            "search_sensors": 6,
-            "search_targets": 3,
-            "n_starts": 20,
-            "n_steps": 300,
-        },
-        "04_submodularity": {
-            "seed": 0,
-            "u_max": 1.0,
-            "n_instances": 2000,
-            "n_sensors": 6,
-            "eps": 1.0,
-            "min_size": 2,
-        },
-        "05_two_sensors_tracking": {
-            "seed": 0,
-            "n_seeds": 200,
-            "steps": 315,
-            "u_max": 3.0,
-            "noise_std": 0.5,
-            "q": 0.5,
-            "r": 0.5,
-            "p0": 0.5,
-            "metric": "mahalanobis",
-            "anim_every": 8,
-            "anim_dpi": 100,
-        },
-        "06_adversarial_target": {
-            "seed": 0,
-            "n_seeds": 50,
-            "steps": 315,
-            "u_max": 0.1,
-            "noise_std": 0.5,
-            "n_seeds_strong": 10,
-            "n_radii": 10,
-            "n_angles": 180,
-        },
-        "07_greedy_vs_relaxed": {
-            "seed": 0,
-            "L_max": 20,
-            "trials": 30,
-            "u_max": 1.0,
-            "side": 100.0,
-            "optimum_max_L": 6,
-            "L_extended": [50, 100, 150, 200],
-            "trials_extended": 3,
-        },
-        "08_general_assignment": {
-            "seed": 0,
-            "n_targets": 5,
-            "N_min": 20,
-            "N_max": 50,
-            "trials": 30,
-            "eps": 1.0,
-            "side": 100.0,
-            "eps_values": [1e-06, 1.0, 10000.0],
-            "compare_N": [20, 35, 50],
-            "compare_trials": 30,
-            "n_tiny": 500,
-        },
-        "09_scaling": {
-            "times_file": "../book/data/scaling_times.json",
-            "seed": 0,
-            "greedy_sizes": [20, 50, 100, 200, 400, 800],
-            "literal_sizes": [20, 50, 100, 200],
-            "relaxed_sizes": [20, 50, 100, 200, 400],
-        },
-        "10_criteria": {
-            "seed": 0,
-            "n_seeds": 200,
-            "metrics": ["mahalanobis", "euclidean"],
-            "loss_threshold": 0.5,
-            "times_file": "../book/data/criteria_times.json",
-            "assign_targets": [2, 5],
-            "assign_seeds": 200,
-            "assign_steps": 50,
-            "assign_side": 100.0,
-            "assign_u_max": 1.0,
-            "assign_noise_std": 0.5,
-            "assign_p0": 1.0,
-            "assign_loss": 0.5,
-        },
-        "11_unchecked_statements": {
-            "seed": 0,
-            "n_seeds_typical": 1000,
-            "jitter_fractions": [1e-06, 1e-05, 0.0001, 0.001, 0.01, 0.1],
-            "n_jitter": 200,
-            "n_geometries": 2000,
-            "n_refine": 200,
-            "u_max": 1.0,
-            "n_3dm": 40,
-            "solver_L": [5, 10, 15, 20],
-            "time_budget": 60.0,
-            "problem3_L": [2, 5, 10, 20],
-            "problem3_trials": 30,
-            "n_seeds_disc": 100,
-            "n_radii": 10,
-            "n_angles": 180,
-        },
-    },
+    "paper": {nb: {} for nb in RANGES},
     "quick": {
         "01_model_and_bound": {
             "n_scenes": 200,
@@ -182,6 +254,84 @@ PROFILES: dict[str, dict[str, dict]] = {
 }
 
 
+# --------------------------------------------------------------------------------------------
+# The paper's values, read from the notebooks
+# --------------------------------------------------------------------------------------------
+
+def notebook_dir() -> Path:
+    """The folder of the notebooks: ``$OBSLIB_NOTEBOOKS``, else ``notebooks/`` of the checkout.
+
+    Raises
+    ------
+    FileNotFoundError
+        When the folder does not exist (obslib installed without its checkout).
+
+    Examples
+    --------
+    >>> notebook_dir().name
+    'notebooks'
+    """
+    env = os.environ.get(NOTEBOOKS_ENV)
+    folder = Path(env) if env else Path(__file__).resolve().parents[1] / "notebooks"
+    if not folder.is_dir():
+        raise FileNotFoundError(
+            f"the notebooks' parameters cells hold the paper's values, and there is no notebooks "
+            f"folder at {folder}: install obslib from its checkout (pip install -e .) or set "
+            f"{NOTEBOOKS_ENV} to the checkout's notebooks/ folder")
+    return folder
+
+
+_CELLS: dict = {}  # path -> ((mtime_ns, size), parameters): the ledger asks many times
+
+
+def parameter_cell(path) -> dict:
+    """``{name: value}`` of the notebook's tagged ``parameters`` cell (``NAME = literal`` lines).
+
+    Examples
+    --------
+    >>> parameter_cell(notebook_dir() / "05_two_sensors_tracking.ipynb")["metric"]
+    'mahalanobis'
+    """
+    path = Path(path)
+    st = path.stat()
+    key = (st.st_mtime_ns, st.st_size)
+    if path in _CELLS and _CELLS[path][0] == key:
+        return copy.deepcopy(_CELLS[path][1])
+    cells = json.loads(path.read_text())["cells"]
+    tagged = [c for c in cells if "parameters" in c.get("metadata", {}).get("tags", [])]
+    if len(tagged) != 1 or tagged[0]["cell_type"] != "code":
+        raise ValueError(f"{path.name}: needs exactly one code cell tagged 'parameters'")
+    out = {}
+    for node in ast.parse("".join(tagged[0]["source"])).body:
+        if not (isinstance(node, ast.Assign) and len(node.targets) == 1
+                and isinstance(node.targets[0], ast.Name)):
+            raise ValueError(f"{path.name}: the parameters cell holds only NAME = literal lines "
+                             f"(line {node.lineno})")
+        try:
+            out[node.targets[0].id] = ast.literal_eval(node.value)
+        except ValueError:
+            raise ValueError(f"{path.name}: the parameters cell holds only NAME = literal lines "
+                             f"(line {node.lineno})") from None
+    _CELLS[path] = (key, out)
+    return copy.deepcopy(out)
+
+
+def defaults(notebook: str) -> dict:
+    """The values of ``notebook`` (its stem) at the paper's parameters, from its parameters cell.
+
+    Examples
+    --------
+    >>> defaults("05_two_sensors_tracking")["n_seeds"]
+    200
+    """
+    if notebook not in RANGES:
+        raise ValueError(f"no parameters for notebook {notebook!r}; known: {list(RANGES)}")
+    path = notebook_dir() / f"{notebook}.ipynb"
+    if not path.exists():
+        raise FileNotFoundError(f"{path} is missing: its parameters cell holds the paper's values")
+    return parameter_cell(path)
+
+
 def profile_names() -> list[str]:
     """Names of the known profiles.
 
@@ -196,7 +346,7 @@ def profile_names() -> list[str]:
 def params(notebook: str, profile: str = "paper") -> dict:
     """Parameters of ``notebook`` (its stem, e.g. ``"01_model_and_bound"``) under ``profile``.
 
-    The ``paper`` values updated by the profile's overrides.
+    The notebook's parameters cell (:func:`defaults`) updated by the profile's overrides.
 
     Examples
     --------
@@ -205,105 +355,96 @@ def params(notebook: str, profile: str = "paper") -> dict:
     """
     if profile not in PROFILES:
         raise ValueError(f"unknown profile {profile!r}; known: {profile_names()}")
-    if notebook not in PROFILES["paper"]:
-        raise ValueError(f"no parameters for notebook {notebook!r}; known: {list(PROFILES['paper'])}")
-    out = copy.deepcopy(PROFILES["paper"][notebook])
-    out.update(PROFILES[profile].get(notebook, {}))
+    out = defaults(notebook)
+    out.update(copy.deepcopy(PROFILES[profile].get(notebook, {})))
     return out
 
 
 # --------------------------------------------------------------------------------------------
-# Accepted values of the notebooks' parameters
+# Checks
 # --------------------------------------------------------------------------------------------
 
-#: Range of each parameter beyond its type (the type is that of the notebook's default):
-#: ``(lower, upper, lower_open)`` for numbers and for the entries of lists, a tuple of choices
-#: for strings. Parameters not listed accept any value of their type.
-RANGES: dict[str, tuple] = {
-    "seed": (0, None, False),
-    **{name: (1, None, False) for name in (
-        "n_scenes", "n_controls", "n_trials_thm3", "n_radii", "n_angles", "fine_alpha_per_unit",
-        "fine_theta_quarter", "n_theta_curve", "n_rational_points", "digits", "n_random_points",
-        "n_weyl", "n_instances", "targets_min", "targets_max", "search_sensors", "search_targets",
-        "n_starts", "n_steps", "n_sensors", "n_seeds", "steps", "anim_every", "anim_dpi",
-        "n_seeds_strong", "L_max", "trials", "optimum_max_L", "trials_extended", "n_targets",
-        "N_min", "N_max", "compare_trials", "n_tiny", "L_extended", "compare_N", "greedy_sizes",
-        "literal_sizes", "relaxed_sizes", "assign_targets", "assign_seeds",
-        "assign_steps", "n_seeds_typical", "n_jitter", "n_geometries", "n_refine", "n_3dm", "solver_L",
-        "problem3_L", "problem3_trials", "n_seeds_disc")},
-    "extra_max": (0, None, False),
-    "min_size": (0, None, False),
-    "u_max": (0.0, None, False),
-    "noise_std": (0.0, None, False),
-    "u_over_d_curves": (0.0, None, False),
-    **{name: (0.0, None, True) for name in (
-        "d_io", "alpha_max", "paper_step", "q", "r", "p0", "side", "eps", "eps_values", "loss_threshold",
-        "assign_side", "assign_p0", "assign_loss", "time_budget", "jitter_fractions")},
-    "assign_u_max": (0.0, None, False),
-    "assign_noise_std": (0.0, None, False),
-    "contour_levels": (0.0, 1.0, True),
-    "metric": ("mahalanobis", "euclidean"),
-    "metrics": ("mahalanobis", "euclidean"),
-}
-
-#: Pairs of parameters whose values must be ordered (first <= second).
-ORDERED = (("targets_min", "targets_max"), ("N_min", "N_max"))
+def _fmt(x) -> str:
+    return f"{x:g}" if isinstance(x, float) else str(x)
 
 
 def _describe(kind: type, rule) -> str:
     noun = {int: "an integer", float: "a number", str: "a string", bool: "True or False"}[kind]
-    if rule is None:
-        return noun
-    if kind is str:
-        return "one of " + ", ".join(repr(c) for c in rule)
-    lo, hi, lo_open = rule
-    if hi is None:
-        return f"{noun} {'>' if lo_open else '>='} {lo}"
-    return f"{noun} in {'(' if lo_open else '['}{lo}, {hi}]"
+    if isinstance(rule, Choice):
+        text = "one of " + ", ".join(repr(c) for c in rule.options)
+    elif isinstance(rule, File):
+        text = "the path of an existing file"
+    elif rule is None or (rule.lo is None and rule.hi is None):
+        text = noun
+    elif rule.hi is None:
+        text = f"{noun} >= {_fmt(rule.lo)}"
+    elif rule.lo is None:
+        text = f"{noun} <= {_fmt(rule.hi)}"
+    else:
+        text = f"{noun} in [{_fmt(rule.lo)}, {_fmt(rule.hi)}]"
+    why = getattr(rule, "why", "")
+    return f"{text} ({why})" if why and not isinstance(rule, File) else text
 
 
 def _accepts(kind: type, rule, value):
     """``value`` converted to ``kind`` if it is accepted, else ``None``."""
-    import math
-
     if kind is bool:
         return value if isinstance(value, bool) else None
     if isinstance(value, bool):
         return None
-    if kind is int:
-        if not isinstance(value, int):
+    if kind is str:
+        if not isinstance(value, str) or not value:
             return None
-    elif kind is float:
+        if isinstance(rule, Choice) and value not in rule.options:
+            return None
+        if isinstance(rule, File) and not (notebook_dir() / value).is_file():
+            return None
+        return value
+    if kind is int and not isinstance(value, int):
+        return None
+    if kind is float:
         if not isinstance(value, (int, float)) or not math.isfinite(value):
             return None
         value = float(value)
-    elif kind is str:
-        if not isinstance(value, str) or not value:
-            return None
-        if rule is not None and value not in rule:
-            return None
-        return value
-    if rule is not None:
-        lo, hi, lo_open = rule
-        if value < lo or (lo_open and value == lo) or (hi is not None and value > hi):
+    if isinstance(rule, Range):
+        if (rule.lo is not None and value < rule.lo) or (rule.hi is not None and value > rule.hi):
             return None
     return value
 
 
-def check_parameters(notebook: str, values: dict, defaults: dict) -> dict:
-    """Check parameter ``values`` for ``notebook`` against its declared ``defaults``.
+def _check_one(notebook: str, name: str, value, default, rule):
+    if isinstance(default, list):
+        kinds = {type(x) for x in default}
+        kind = float if float in kinds else (kinds.pop() if len(kinds) == 1 else float)
+        ok = isinstance(value, list) and value and all(
+            _accepts(kind, rule, x) is not None for x in value)
+        if not ok:
+            what = _describe(kind, rule).split(" ", 1)[1]  # "integer >= 1", not "an integer"
+            raise ValueError(f"notebook {notebook}: parameter {name} = {value!r} is not accepted; "
+                             f"expected a non-empty list, each entry {what}")
+        return [_accepts(kind, rule, x) for x in value]
+    got = _accepts(type(default), rule, value)
+    if got is None:
+        raise ValueError(f"notebook {notebook}: parameter {name} = {value!r} is not accepted; "
+                         f"expected {_describe(type(default), rule)}")
+    return got
+
+
+def check_parameters(notebook: str, values: dict, defaults: dict | None = None) -> dict:
+    """Check parameter ``values`` (overrides) for ``notebook`` against its declarations.
 
     Parameters
     ----------
     notebook : str
-        The notebook's stem, for the messages.
+        The notebook's stem.
     values : dict
         Parameter name -> value to inject.
-    defaults : dict
-        The notebook's declared parameters (its ``parameters`` cell) with their default values;
-        each value's type must be that of its default (an integer where the default is an
-        integer, a number where it is a float, a list of such where it is a list), within
-        :data:`RANGES`.
+    defaults : dict, optional
+        The notebook's declared parameters with their default values (default: its parameters
+        cell, :func:`defaults`). Each value must have its default's type (an integer where the
+        default is an integer, a number where it is a float, a non-empty list of such where it
+        is a list), lie in its :data:`RANGES` entry, and the values together with the defaults
+        must satisfy :data:`CONSTRAINTS`.
 
     Returns
     -------
@@ -318,41 +459,27 @@ def check_parameters(notebook: str, values: dict, defaults: dict) -> dict:
     Examples
     --------
     >>> nb = "05_two_sensors_tracking"
-    >>> check_parameters(nb, {"n_seeds": 5}, {"n_seeds": 200})
-    {'n_seeds': 5}
-    >>> check_parameters(nb, {"n_seeds": -5}, {"n_seeds": 200})
+    >>> check_parameters(nb, {"n_seeds": 5, "u_max": 2})
+    {'n_seeds': 5, 'u_max': 2.0}
+    >>> check_parameters(nb, {"n_seeds": -5})
     Traceback (most recent call last):
     ...
-    ValueError: ...n_seeds = -5 is not accepted; expected an integer >= 1
+    ValueError: notebook 05_two_sensors_tracking: ...; expected an integer >= 1
     """
+    if defaults is None:
+        defaults = globals()["defaults"](notebook)
     unknown = sorted(set(values) - set(defaults))
     if unknown:
         raise ValueError(f"notebook {notebook} has no parameter(s) {unknown}; "
                          f"its parameters: {sorted(defaults)}")
-    out = {}
-    for name, value in values.items():
-        default = defaults[name]
-        rule = RANGES.get(name)
-        if isinstance(default, list):
-            kinds = {type(x) for x in default}
-            kind = float if float in kinds else (kinds.pop() if len(kinds) == 1 else float)
-            ok = isinstance(value, list) and value and all(
-                _accepts(kind, rule, x) is not None for x in value)
-            if not ok:
-                raise ValueError(f"notebook {notebook}: parameter {name} = {value!r} is not accepted; "
-                                 f"expected a non-empty list of {_describe(kind, rule)[0:]}"
-                                 .replace("list of an ", "list of ").replace("list of a ", "list of "))
-            out[name] = [_accepts(kind, rule, x) for x in value]
-            continue
-        kind = type(default)
-        got = _accepts(kind, rule, value)
-        if got is None:
-            raise ValueError(f"notebook {notebook}: parameter {name} = {value!r} is not accepted; "
-                             f"expected {_describe(kind, rule)}")
-        out[name] = got
+    rules = RANGES.get(notebook, {})
+    out = {name: _check_one(notebook, name, value, defaults[name], rules.get(name))
+           for name, value in values.items()}
     merged = {**defaults, **out}
-    for a, b in ORDERED:
-        if a in merged and b in merged and merged[a] > merged[b]:
-            raise ValueError(f"notebook {notebook}: parameters {a} = {merged[a]!r} and {b} = "
-                             f"{merged[b]!r} are not accepted; expected {a} <= {b}")
+    for c in CONSTRAINTS.get(notebook, ()):
+        if not c.holds(merged):
+            shown = ", ".join(f"{n} = {merged[n]!r}" for n in c.names())
+            why = f" ({c.why})" if c.why else ""
+            raise ValueError(f"notebook {notebook}: parameters {shown} are not accepted; "
+                             f"expected {c.expr}{why}")
     return out

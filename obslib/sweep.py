@@ -2,11 +2,13 @@
 
 Every trial function of the studies (``fig8_trial``, ``fig9_trial``) seeds its own generator from
 its arguments (``default_rng([seed, size, trial])``), never from a worker or a shared stream, so
-the results are the same whatever the backend, worker count or completion order.
+the results are the same whatever the backend, worker count or completion order. With
+``progress=True`` a tqdm bar of the finished tasks goes to standard error.
 """
 
 from __future__ import annotations
 
+import sys
 from typing import Callable
 
 __all__ = ["BACKENDS", "run_sweep"]
@@ -15,7 +17,7 @@ BACKENDS = ("serial", "joblib", "dask")
 
 
 def run_sweep(fn: Callable, tasks: list[dict], backend: str = "serial", n_jobs: int | None = None,
-              scheduler=None) -> list:
+              scheduler=None, progress: bool = False) -> list:
     """``[fn(**t) for t in tasks]``, computed by ``backend``; results in task order.
 
     Parameters
@@ -27,6 +29,8 @@ def run_sweep(fn: Callable, tasks: list[dict], backend: str = "serial", n_jobs: 
         ``joblib`` runs ``n_jobs`` local processes (default: all cores); ``dask`` submits to the
         scheduler at ``scheduler`` (an address such as ``"tcp://127.0.0.1:8786"``, or a
         ``distributed.Client``).
+    progress : bool
+        Show a tqdm bar of the finished tasks on standard error.
 
     Examples
     --------
@@ -35,20 +39,41 @@ def run_sweep(fn: Callable, tasks: list[dict], backend: str = "serial", n_jobs: 
     """
     if backend not in BACKENDS:
         raise ValueError(f"backend must be one of {BACKENDS}, got {backend!r}")
+    if not isinstance(progress, bool):
+        raise ValueError(f"progress must be True or False, got {progress!r}")
     tasks = list(tasks)
-    if backend == "serial":
-        return [fn(**t) for t in tasks]
-    if backend == "joblib":
-        from joblib import Parallel, delayed
-
-        return Parallel(n_jobs=n_jobs or -1)(delayed(fn)(**t) for t in tasks)
-    if scheduler is None:
+    if backend == "dask" and scheduler is None:
         raise ValueError("backend 'dask' needs scheduler= (an address or a distributed.Client)")
-    from distributed import Client
+    from tqdm import tqdm
+
+    with tqdm(total=len(tasks), desc=getattr(fn, "__name__", "tasks"), unit="task",
+              file=sys.stderr, disable=not progress) as bar:
+        if backend == "serial":
+            out = []
+            for t in tasks:
+                out.append(fn(**t))
+                bar.update(1)
+            return out
+        if backend == "joblib":
+            from joblib import Parallel, delayed
+
+            out = []
+            for r in Parallel(n_jobs=n_jobs or -1, return_as="generator")(
+                    delayed(fn)(**t) for t in tasks):
+                out.append(r)  # in task order, as each arrives
+                bar.update(1)
+            return out
+        return _dask(fn, tasks, scheduler, bar)
+
+
+def _dask(fn, tasks, scheduler, bar) -> list:
+    from distributed import Client, as_completed
 
     client = scheduler if isinstance(scheduler, Client) else Client(scheduler)
     try:
         futures = [client.submit(fn, pure=False, **t) for t in tasks]
+        for _ in as_completed(futures):
+            bar.update(1)
         return client.gather(futures)
     finally:
         if client is not scheduler:

@@ -6,6 +6,7 @@ import pytest
 import obslib.claims as claims
 from obslib.claims import criteria as cc
 from obslib.studies import assignment_tracking as at
+from obslib.profiles import params
 from obslib.studies import criteria as cs
 
 IDS = ["beyond-criteria", "beyond-assignment-tracking"]
@@ -26,7 +27,7 @@ def test_assignment_claim_evidence_recomputed_directly(records):
     r = records["beyond-assignment-tracking"]
     assert r.kind == "beyond" and r.status in claims.BEYOND_STATUSES
     assert r.notebook == cs.NOTEBOOK
-    p = cs.params("quick")
+    p = params(cs.NOTEBOOK, "quick")
     L = p["assign_targets"][0]
     setup = at.AssignmentTrackingSetup(
         n_targets=L, steps=p["assign_steps"], side=p["assign_side"], u_max=p["assign_u_max"],
@@ -78,4 +79,4 @@ def test_criteria_claim(records):
         assert cs.REFERENCE in names and set(cc.CLASSICAL) <= set(names)
         for x in rows:
             if x["strategy"] != cs.REFERENCE:
-                assert x["vs_n"] == cs.params("quick")["n_seeds"]
+                assert x["vs_n"] == params(cs.NOTEBOOK, "quick")["n_seeds"]

@@ -7,6 +7,7 @@ from scipy import stats
 
 import obslib as ob
 from obslib import tracking as tr
+from obslib.profiles import params
 from obslib.studies import criteria as cs
 from obslib.studies import tracking as study
 
@@ -130,10 +131,10 @@ def test_tracking_study_validates():
 
 
 def test_params_profiles():
-    p, q = cs.params("paper"), cs.params("quick")
+    p, q = params(cs.NOTEBOOK, "paper"), params(cs.NOTEBOOK, "quick")
     assert q["n_seeds"] < p["n_seeds"] and p["n_seeds"] >= 200 and p["assign_seeds"] >= 100
     with pytest.raises(ValueError, match="profile"):
-        cs.params("nonsense")
+        params(cs.NOTEBOOK, "nonsense")
 
 
 def test_figures_label_their_axes():

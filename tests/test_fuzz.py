@@ -315,6 +315,7 @@ def test_run_cli_parsing(argv):
             mock.patch.object(run, "precompile", lambda: None), \
             mock.patch.object(run, "TIMES_FILE", TMP / "fuzz_times.json"), \
             mock.patch.object(run, "EXECUTION_PAGE", TMP / "fuzz_execution.md"), \
+            mock.patch.object(run, "RUNS_DIR", TMP / "fuzz_runs"), \
             contextlib.redirect_stderr(io.StringIO()), contextlib.redirect_stdout(io.StringIO()):
         try:
             assert run.main(argv) == 0

@@ -1,4 +1,4 @@
-"""Notebook conventions: tagged parameters equal to the profile, executed, in the toc."""
+"""Notebook conventions: a tagged parameters cell first, executed, in the toc."""
 
 import ast
 import json
@@ -6,7 +6,7 @@ import json
 import pytest
 import yaml
 
-from obslib.profiles import PROFILES, params
+from obslib.profiles import PROFILES, RANGES, params
 from obslib.tools.run import NOTEBOOK_DIR, ROOT, notebooks
 
 NOTEBOOKS = notebooks()
@@ -29,7 +29,8 @@ def test_there_are_notebooks():
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
-def test_parameters_cell_equals_paper_profile(path):
+def test_first_code_cell_is_the_parameters_cell_of_literals(path):
+    # the one source of the paper's values, read by obslib.profiles.params
     first = code_cells(path)[0]
     assert "parameters" in first["metadata"].get("tags", [])
     assert literal_assignments("".join(first["source"])) == params(path.stem, "paper")
@@ -74,9 +75,9 @@ def test_visible_code_fits_the_column(path):
 def test_profiles_only_override_known_parameters():
     for name, table in PROFILES.items():
         for stem, values in table.items():
-            assert stem in PROFILES["paper"], f"profile {name}: unknown notebook {stem}"
-            assert set(values) <= set(PROFILES["paper"][stem]), f"profile {name}/{stem}: unknown parameter"
-    assert {p.stem for p in NOTEBOOKS} == set(PROFILES["paper"])
+            assert stem in RANGES, f"profile {name}: unknown notebook {stem}"
+            assert set(values) <= set(params(stem)), f"profile {name}/{stem}: unknown parameter"
+    assert {p.stem for p in NOTEBOOKS} == set(RANGES) == set(PROFILES["paper"])
 
 
 def test_toc_lists_every_notebook_and_every_entry_exists():

@@ -38,3 +38,14 @@ def test_bad_backend():
         run_sweep(abs, [{"x": 1}], backend="mpi")
     with pytest.raises(ValueError, match="scheduler"):
         run_sweep(abs, [{"x": 1}], backend="dask")
+
+
+def test_progress_bar_goes_to_stderr_and_leaves_the_results(capfd):
+    tasks = [dict(base=2, exp=k) for k in range(5)]
+    assert run_sweep(pow, tasks, progress=True) == run_sweep(pow, tasks) == [1, 2, 4, 8, 16]
+    out, err = capfd.readouterr()
+    assert out == "" and "5/5" in err
+    assert run_sweep(pow, tasks, backend="joblib", n_jobs=2, progress=True) == [1, 2, 4, 8, 16]
+    assert "5/5" in capfd.readouterr().err
+    with pytest.raises(ValueError, match="progress"):
+        run_sweep(pow, tasks, progress="yes")

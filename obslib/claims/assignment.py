@@ -8,7 +8,7 @@ import numpy as np
 
 from ..studies import assignment as st
 from ..studies import greedy_tightness as gt
-from ..studies.unchecked import notebook_params
+from ..studies.unchecked import NOTEBOOK as UNCHECKED
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from .._format import number, percent, setting, small
 from ..profiles import params
@@ -139,7 +139,7 @@ def _thm6_tight(profile: str) -> Finding:
     below 1/2, refuted otherwise. The search at the profile's sizes and the fragility of the
     witness (every point jittered by a fraction of the spread) are reported, not judged."""
     p = params(NB, profile)
-    q = notebook_params(profile)
+    q = params(UNCHECKED, profile)
     S, T = gt.tight_witness()
     margin = gt.first_pick_margin(S, T, gt.TIGHT_U_MAX)
     ratio = margin["ratio"]

@@ -9,6 +9,7 @@ better than assignments by information gain or at random? The evidence is comput
 
 from __future__ import annotations
 
+from ..profiles import params
 from ..studies import criteria as cs
 from .._format import count, fixed, listing, number, percent, setting, small
 from ._ledger import Finding, Table, claim
@@ -26,7 +27,7 @@ def _verdicts(rows):
 
 def criteria_evidence(profile: str) -> dict:
     """The summary rows of every (setting, metric) at ``profile``'s sizes."""
-    p = cs.params(profile)
+    p = params(NB, profile)
     study = cs.tracking_study(p["n_seeds"], p["seed"], p["metrics"])
     return {
         f"{setting}, {metric}": cs.summary_rows(mc, loss_threshold=p["loss_threshold"])
@@ -61,7 +62,7 @@ def _criteria(profile: str) -> Finding:
     """answered: in every setting (trajectory and metric) the paired Wilcoxon test at
     :data:`ALPHA` decides the comparison with at least one classical criterion, or with all of
     them in the bound's favour; open otherwise."""
-    p = cs.params(profile)
+    p = params(NB, profile)
     missing = [c for c in CLASSICAL if c not in cs.available_strategies()]
     if missing:
         return Finding("open", f"The tracking engine does not offer the criteria {missing} yet.",
@@ -125,7 +126,7 @@ def _assignment(profile: str) -> Finding:
     """answered: the paired Wilcoxon test at :data:`ALPHA` decides the comparison with random
     assignment at every number of targets (the comparison with D-optimality is reported as it
     comes out, decided or not); open otherwise."""
-    p = cs.params(profile)
+    p = params(NB, profile)
     rows = cs.assignment_rows(cs.assignment_study(p), loss_threshold=p["assign_loss"])
     by = {(r["L"], r["rule"]): r for r in rows}
     Ls = sorted({r["L"] for r in rows})

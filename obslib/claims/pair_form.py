@@ -8,6 +8,7 @@ from dataclasses import asdict
 
 import numpy as np
 
+from ..profiles import params
 from ..studies import pair_form as pf
 from .._format import listing, number, setting, small, span
 from ._ledger import Finding, Table, claim
@@ -18,13 +19,6 @@ NB = "02_pair_closed_form"
 TOL_FLOAT = 1e-10
 #: Exact (high-precision) checks at ``digits`` digits must agree to ``digits - TOL_EXACT_DIGITS``.
 TOL_EXACT_DIGITS = 10
-
-
-def _params(profile: str) -> dict:
-    """Parameters of notebook 02 under ``profile`` (:mod:`obslib.profiles`)."""
-    from ..profiles import params
-
-    return params(NB, profile)
 
 
 def _qs(p: dict) -> tuple:
@@ -56,7 +50,7 @@ def _bmatrix(rows) -> str:
     notebook=NB,
 )
 def _thm4(profile: str) -> Finding:
-    p = _params(profile)
+    p = params(NB, profile)
     a = pf.theorem4_audit(p["n_rational_points"], p["n_random_points"], p["seed"], p["digits"])
     symbolic = (
         a.polar_matrix_printed_equal and a.eigenvalues_printed_equal and a.theorem4_ratio_equal
@@ -100,7 +94,7 @@ def _thm4(profile: str) -> Finding:
     notebook=NB,
 )
 def _fig2_max(profile: str) -> Finding:
-    p = _params(profile)
+    p = params(NB, profile)
     q = p["u_max"] / p["d_io"]
     grids = pf.fig2_grids(p["u_max"], p["d_io"], p["alpha_max"], p["paper_step"],
                           p["fine_alpha_per_unit"], p["fine_theta_quarter"])
@@ -149,7 +143,7 @@ def _fig2_max(profile: str) -> Finding:
     notebook=NB,
 )
 def _thm5(profile: str) -> Finding:
-    p = _params(profile)
+    p = params(NB, profile)
     qs = _qs(p)
     a = pf.theorem5_audit(
         qs, p["alpha_max"], p["fine_alpha_per_unit"], p["fine_theta_quarter"], p["n_rational_points"]
@@ -194,7 +188,7 @@ def _thm5(profile: str) -> Finding:
     notebook=NB,
 )
 def _thm5_alpha(profile: str) -> Finding:
-    p = _params(profile)
+    p = params(NB, profile)
     qs = _qs(p)
     a = pf.alpha_star_audit(qs, p["n_theta_curve"])
     consistent = a.max_closed_vs_numeric < TOL_FLOAT and a.max_brute_force_gap < TOL_FLOAT
@@ -254,7 +248,7 @@ WEYL_TEX = {
     notebook=NB,
 )
 def _weyl(profile: str) -> Finding:
-    p = _params(profile)
+    p = params(NB, profile)
     a = pf.weyl_audit(p["n_weyl"], p["seed"])
     sym_ok = all(a.symbolic_triangle_equal.values())
     num_ok = min(a.min_relative_slack.values()) >= -1e-14 and a.min_ratio_slack >= -1e-12
@@ -294,7 +288,7 @@ def _weyl(profile: str) -> Finding:
     notebook=NB,
 )
 def _weyl_range(profile: str) -> Finding:
-    p = _params(profile)
+    p = params(NB, profile)
     a = pf.weyl_audit(p["n_weyl"], p["seed"])
     bad = a.invalid_indices
     dual = ("l1 <= l1+l2", "l1 <= l2+l1", "l2 <= l2+l2")
@@ -360,7 +354,7 @@ def _matrix(profile: str) -> Finding:
     notebook=NB,
 )
 def _dtheta(profile: str) -> Finding:
-    p = _params(profile)
+    p = params(NB, profile)
     a = pf.theta_derivative_audit(p["n_rational_points"], p["seed"])
     kink = a.slope_at_zero_min > 0 and a.slope_at_zero_error < 1e-20
     corner = a.corner_halfpi_slopes[0] > 0 > a.corner_halfpi_slopes[1]
@@ -411,7 +405,7 @@ def _dtheta(profile: str) -> Finding:
     notebook=NB,
 )
 def _dalpha_halfpi(profile: str) -> Finding:
-    p = _params(profile)
+    p = params(NB, profile)
     a = pf.alpha_derivative_audit(p["n_rational_points"], p["seed"])
     below, left, right = a.halfpi_true_slopes
     never_zero = below > 0 and left > 0 > right
@@ -454,7 +448,7 @@ def _dalpha_halfpi(profile: str) -> Finding:
     notebook=NB,
 )
 def _dalpha(profile: str) -> Finding:
-    p = _params(profile)
+    p = params(NB, profile)
     a = pf.alpha_derivative_audit(p["n_rational_points"], p["seed"])
     lo, hi = a.printed_ratio_spread
     not_constant = hi / lo > 1 + 1e-6

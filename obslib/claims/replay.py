@@ -6,8 +6,9 @@ Registered after the tracking claims of Sections V-A and V-B, which it sharpens.
 from __future__ import annotations
 
 from ..studies import replay as rp
-from ..studies.unchecked import NOTEBOOK, notebook_params
+from ..studies.unchecked import NOTEBOOK
 from .._format import count, fixed, number, percent, small
+from ..profiles import params
 from ._ledger import Finding, Table, claim
 from .tracking import FIGURE_TOLERANCE
 
@@ -47,7 +48,7 @@ def _published_replay(profile: str) -> Finding:
     construction; what the replay tests is counted apart (:func:`obslib.studies.replay.
     independent_checks`). How typical the published adversarial run is among random noise seeds
     is in the evidence (it sharpens ``fig7-figure-data``)."""
-    p = notebook_params(profile)
+    p = params(NOTEBOOK, profile)
     cmp = _comparisons()
     runs = [cmp[n] for n in REPLAYED]
     pairs_ok = all(c.pair_mismatches == 0 for c in runs)

@@ -20,7 +20,7 @@ from ..published_runs import published_run
 from ..studies import replay as rp
 from ..studies import tracking as study
 from ..studies.published import PUBLISHED_ADVERSARIAL, PUBLISHED_CIRCLE
-from ..studies.unchecked import notebook_params
+from ..studies.unchecked import NOTEBOOK as UNCHECKED
 from .._format import fixed, listing, number, percent, setting
 from ._ledger import Finding, Table, claim
 
@@ -567,7 +567,7 @@ def _fig7_data(profile: str) -> Finding:
     pub = PUBLISHED_ADVERSARIAL
     printed = {k: printed_match(summ[k], pub[k], k) for k in ("mean_bound", "switches")}
     status = "reproduced" if c.matches and all(printed.values()) else "refuted"
-    q = notebook_params(profile)
+    q = params(UNCHECKED, profile)
     t = rp.seed_typicality(q["n_seeds_typical"], q["seed"])
     checks = rp.independent_checks("adversarial")
     ours = ("Replayed with the noise recovered from its log, the run chooses the logged pair and "

@@ -19,7 +19,7 @@ from ..studies import replay as rp
 from ..studies import teams as ts
 from ..studies import unchecked as uc
 from ..studies.published import CODE_REPOSITORY, CODE_URL_PRINTED
-from ..studies.unchecked import NOTEBOOK, notebook_params
+from ..studies.unchecked import NOTEBOOK
 from .._format import count, fixed, listing, number, percent, setting, small, span
 from ._ledger import Finding, Table, claim
 
@@ -88,7 +88,7 @@ def _footnote1(profile: str) -> Finding:
     scenes. partly: one sensor reaches a clearly positive C^-1 (above 1/2 somewhere), so the
     footnote holds for the bound only; reproduced: one sensor stays near 0 even with a known
     control."""
-    p = notebook_params(profile)
+    p = params(NOTEBOOK, profile)
     r = uc.one_sensor_conditioning(p["n_geometries"], p["seed"], p["u_max"])
     positive = r["exact"].max() > 0.5
     status = "partly" if positive else "reproduced"
@@ -134,7 +134,7 @@ def _eq4_collapse(profile: str) -> Finding:
     Theorem 1's bound also holds for the derived matrix; partly: it holds for Eq. (4) only and the
     derived matrix's worst case (closed form, checked by a grid search of the disc) falls below
     it; refuted: not even Eq. (4) (that is ``thm1``)."""
-    p = notebook_params(profile)
+    p = params(NOTEBOOK, profile)
     ratios, grid_err, below = eq4.random_scene_audit(p["n_geometries"], p["n_refine"], p["seed"],
                                                      p["u_max"])
     status = "reproduced" if below == 0 else "partly"
@@ -200,7 +200,7 @@ def _np_complete(profile: str) -> Finding:
     sizes; partly: NP-complete for arbitrary weights (Problem 1 is posed for any omega; the
     reduction verified on every instance) but the optimum is computed at the sizes tried or the
     geometric case is open; refuted: the reduction fails on some instance."""
-    p = notebook_params(profile)
+    p = params(NOTEBOOK, profile)
     red = hd.reduction_check(p["n_3dm"], p["seed"])
     reach = _reach(tuple(p["solver_L"]), float(p["time_budget"]), p["seed"], p["u_max"])
     solved = [r for r in reach if r["solved"]]
@@ -263,7 +263,7 @@ def _problem3(profile: str) -> Finding:
     figure shows Problem 3 whichever was solved); partly: the ordered one is larger on some
     instances, so the figure's curve is a looser bound than the printed Problem 3; refuted: the
     unordered value exceeds the ordered one somewhere (impossible for correct solvers)."""
-    p = notebook_params(profile)
+    p = params(NOTEBOOK, profile)
     r = _fig8(tuple(p["problem3_L"]), p["problem3_trials"], p["seed"], p["u_max"])
     rel, ordr = r["relaxed"], r["relaxed_ordered"]
     gap = ordr / rel - 1
@@ -354,7 +354,7 @@ def _control_ball(profile: str) -> Finding:
     of the ball changes nothing that matters (per-step objective within 1e-3 along the
     published trajectory and the same entrapped share over seeds); partly: it changes the
     numbers but not the entrapment; refuted: the finer ball frees the target."""
-    p = notebook_params(profile)
+    p = params(NOTEBOOK, profile)
     g = ed.control_set_gap(20, 360)
     d = ed.control_set_entrapment(p["n_seeds_disc"], p["seed"], p["n_radii"], p["n_angles"])
     freed = d["disc"]["entrapped"] < d["paper"]["entrapped"]

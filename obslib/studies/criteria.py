@@ -41,7 +41,6 @@ __all__ = [
     "PAPER_STRATEGIES",
     "REFERENCE",
     "SCORES",
-    "params",
     "available_strategies",
     "missing_strategies",
     "criterion_scores",
@@ -65,21 +64,6 @@ PAPER_STRATEGIES = ("best-pair", "best-partner", "fixed-pair")
 REFERENCE = "best-pair"
 #: The scores :func:`criterion_scores` computes (``"bound"`` is ``best-pair``'s).
 SCORES = ("bound", "d-optimal", "a-optimal", "e-optimal", "exact-icn")
-
-def params(profile: str = "paper") -> dict:
-    """Notebook 10's parameters under ``profile`` (:func:`obslib.profiles.params`).
-
-    Examples
-    --------
-    >>> from obslib import profiles
-    >>> p = params("paper")
-    >>> p == profiles.params(NOTEBOOK, "paper"), p["metrics"]
-    (True, ['mahalanobis', 'euclidean'])
-    """
-    from ..profiles import params as profile_params
-
-    return profile_params(NOTEBOOK, profile)
-
 
 def _known() -> tuple:
     """Every strategy name the tracking engine accepts (its strategies and criteria)."""
@@ -506,13 +490,15 @@ def _assignment_study(targets, n_seeds, seed, steps, side, u_max, noise_std, p0,
 
 
 def assignment_study(p: dict, metric: str = "mahalanobis") -> dict:
-    """The assignment-by-tracking runs at the parameters ``p`` (:func:`params`), per ``L``.
+    """The assignment-by-tracking runs at the parameters ``p`` (:func:`obslib.profiles.params`),
+    per ``L``.
 
     Returns ``{L: {rule: AssignmentRuns}}`` (cached).
 
     Examples
     --------
-    >>> p = dict(params(), assign_targets=[1, 2], assign_seeds=2,
+    >>> from obslib.profiles import params
+    >>> p = dict(params(NOTEBOOK), assign_targets=[1, 2], assign_seeds=2,
     ...          assign_steps=5)
     >>> runs = assignment_study(p)
     >>> sorted(runs), list(runs[2])

@@ -68,11 +68,12 @@ def fig8_trial(n_targets: int, trial: int, seed: int, u_max: float = 1.0, side: 
 
 
 def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float = 100.0,
-               optimum_max_L: int = 0, backend: str = "serial", n_jobs=None, scheduler=None) -> dict:
+               optimum_max_L: int = 0, backend: str = "serial", n_jobs=None, scheduler=None,
+               progress: bool = False) -> dict:
     """Fig. 8's sweep: arrays of shape ``(len(L_values), trials)`` for each of :data:`FIG8_KEYS`.
 
-    ``backend``, ``n_jobs`` and ``scheduler`` go to :func:`obslib.sweep.run_sweep`; the numbers do
-    not depend on them.
+    ``backend``, ``n_jobs``, ``scheduler`` and ``progress`` (a bar on standard error) go to
+    :func:`obslib.sweep.run_sweep`; the numbers do not depend on them.
 
     Examples
     --------
@@ -85,7 +86,7 @@ def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float
         dict(n_targets=L, trial=t, seed=seed, u_max=u_max, side=side, with_optimum=L <= optimum_max_L)
         for L in L_values for t in range(trials)
     ]
-    results = run_sweep(fig8_trial, tasks, backend, n_jobs, scheduler)
+    results = run_sweep(fig8_trial, tasks, backend, n_jobs, scheduler, progress)
     out = {k: np.array([r[k] for r in results]).reshape(len(L_values), trials) for k in FIG8_KEYS}
     out["L"] = np.array(L_values)
     return out

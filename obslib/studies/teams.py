@@ -78,12 +78,12 @@ def fig9_trials(n_sensors: int, trials, seed: int, n_targets: int = 5, measure: 
 
 def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: str = "logdet",
                eps: float = 1.0, side: float = 100.0, backend: str = "serial", n_jobs=None,
-               scheduler=None) -> np.ndarray:
+               scheduler=None, progress: bool = False) -> np.ndarray:
     """Counts of shape ``(len(N_values), trials, L)`` for the Fig. 9 sweep.
 
     One task per ``N`` runs its trials as a batch (:func:`fig9_trials`); every trial keeps its own
     seed, so ``backend``, ``n_jobs`` and ``scheduler`` (for :func:`obslib.sweep.run_sweep`) do
-    not change the counts.
+    not change the counts; ``progress`` shows a bar of the finished sizes on standard error.
 
     Examples
     --------
@@ -96,7 +96,7 @@ def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: st
              side=side)
         for n in N_values
     ]
-    counts = run_sweep(fig9_trials, tasks, backend, n_jobs, scheduler)
+    counts = run_sweep(fig9_trials, tasks, backend, n_jobs, scheduler, progress)
     return np.array(counts).reshape(len(N_values), trials, n_targets)
 
 

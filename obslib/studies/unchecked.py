@@ -1,11 +1,11 @@
-"""Statements of the paper that it does not check itself, and the parameters of their notebook.
+"""Statements of the paper that it does not check itself: the notebook that shows them.
 
 Most computations live in one module per topic (:mod:`obslib.studies.replay`,
 :mod:`obslib.studies.greedy_tightness`, :mod:`obslib.studies.eq4`,
 :mod:`obslib.studies.hardness`, :mod:`obslib.studies.fig9_measure`,
-:mod:`obslib.studies.experiment_details`). This module holds the parameters of the notebook that
-shows them (``11_unchecked_statements``) under each profile, and the two small studies of
-statements about sensors and teams:
+:mod:`obslib.studies.experiment_details`). This module names the notebook that
+shows them (:data:`NOTEBOOK`) and holds the two small studies of statements about sensors and
+teams:
 
 - :func:`one_sensor_conditioning`: footnote 1 says that Theorems 2 and 3 show at least two
   sensors to be necessary when the measure is the inverse condition number. With a known
@@ -24,25 +24,10 @@ from ..observability import inverse_condition_number
 from ..teams import greedy_team_assignment
 from .teams import fig9_geometry
 
-__all__ = ["NOTEBOOK", "notebook_params", "one_sensor_best", "one_sensor_conditioning",
+__all__ = ["NOTEBOOK", "one_sensor_best", "one_sensor_conditioning",
            "team_constraint"]
 
 NOTEBOOK = "11_unchecked_statements"
-
-
-def notebook_params(profile: str = "paper") -> dict:
-    """Parameters of the notebook under ``profile`` (:func:`obslib.profiles.params`).
-
-    Examples
-    --------
-    >>> from obslib.profiles import params
-    >>> from obslib.studies.unchecked import NOTEBOOK, notebook_params
-    >>> notebook_params("quick") == params(NOTEBOOK, "quick")
-    True
-    """
-    from ..profiles import params
-
-    return params(NOTEBOOK, profile)
 
 
 def one_sensor_best(distance, u_max):

@@ -23,15 +23,24 @@ prints a few readable lines and, last, one JSON object.
     are committed data, so ``make book`` stays deterministic.
 
 ``book``
-    ``exec_s``: executing every notebook at its default parameters the way ``make book`` does
-    (papermill, one kernel per notebook, into a scratch folder); ``floor_s``: executing the same
-    number of trivial notebooks the same way, the fixed cost of a kernel per notebook, each one
-    just before a notebook; ``exec_over_floor`` their ratio (target <= 3). ``stack_floor_s``:
-    as many minimal notebooks of this book, each importing the stack every notebook starts with
+    ``exec_s``: executing every notebook at its default parameters one at a time (papermill, one
+    kernel per notebook, into a scratch folder); ``floor_s``: executing the same number of
+    trivial notebooks the same way, the fixed cost of a kernel per notebook, each one just
+    before a notebook; ``exec_over_floor`` their ratio (target <= 3). ``stack_floor_s``: as many
+    minimal notebooks of this book, each importing the stack every notebook starts with
     (matplotlib, NumPy, pandas, myst-nb's ``glue``, ``obslib``, :func:`obslib.notebook.setup_figures`)
     and showing one small figure; ``stack_over_floor`` is what that start costs before any
-    content. ``--profile quick`` runs the notebooks at the ``quick`` profile's tiny sizes
-    instead: what the same notebooks, figures and derivations cost with almost no computation.
+    content, and ``exec_over_stack`` what the notebooks cost over it (a regression guard: at
+    most 2.5). The notebooks also run ``jobs`` at a time as ``make book`` runs them
+    (``--jobs``, default the cores available), in groups of similar length, each group right
+    after its notebooks ran alone: ``parallel_s`` sums the groups' wall times and
+    ``parallel_speedup`` is ``exec_s`` over it (target at least 1.6 on two cores).
+    ``--profile quick`` runs the notebooks at the ``quick`` profile's tiny sizes instead: what
+    the same notebooks, figures and derivations cost with almost no computation.
+
+Progress goes to standard error (on a terminal); ``--write`` is checked before any work (a
+missing directory or an unwritable path is a command-line error, exit status 2) and written at
+the end (:mod:`obslib._io`).
 """
 
 from __future__ import annotations
@@ -196,16 +205,19 @@ def bench_scaling(seed: int = 0, repeat: int = 3) -> dict:
     }
     warm = np.random.default_rng(seed).uniform(0, 100, (8, 2))
     out = {}
-    for name, ns in SCALING_SIZES.items():
-        algos[name](warm, warm[:4] + 0.5)  # imports and first-call costs are not timed
-        times = []
-        for n in ns:
-            rng = np.random.default_rng([seed, n])
-            S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (n // 2, 2))
-            reps = 1 if name == "literal Algorithm 1" and n >= 400 else repeat
-            times.append(round(_timed(lambda: algos[name](S, T), reps)[0], 6))
-            print(f"{name:22s} N={n:5d} {times[-1]:10.4f} s", flush=True)
-        out[name] = {"N": list(ns), "seconds": times}
+    with _progress(sum(len(ns) for ns in SCALING_SIZES.values()), "sizes") as bar:
+        for name, ns in SCALING_SIZES.items():
+            algos[name](warm, warm[:4] + 0.5)  # imports and first-call costs are not timed
+            times = []
+            for n in ns:
+                bar.set_postfix_str(f"{name} N={n}")
+                rng = np.random.default_rng([seed, n])
+                S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (n // 2, 2))
+                reps = 1 if name == "literal Algorithm 1" and n >= 400 else repeat
+                times.append(round(_timed(lambda: algos[name](S, T), reps)[0], 6))
+                bar.write(f"{name:22s} N={n:5d} {times[-1]:10.4f} s", file=sys.stdout)
+                bar.update(1)
+            out[name] = {"N": list(ns), "seconds": times}
     return {
         "machine": _machine(),
         "seed": seed,
@@ -255,27 +267,35 @@ def bench_criteria(n_timing: int = 1000, seed: int = 0, repeat: int = 3) -> dict
     Q = R = 0.5 * np.eye(2)
     n_pairs = len(S) * (len(S) - 1) // 2
     per_pair, per_decision = {}, {}
-    for name in cs.SCORES:
-        def score(b=n_timing, name=name):
-            return cs.criterion_scores(name, S, X[:b], C[:b], Q, R, 3.0, control=U[:b])
-        score(1)  # first-call costs are not timed
-        t_batch = min(timeit.repeat(score, number=5, repeat=repeat)) / 5
-        t_one = min(timeit.repeat(lambda: score(1), number=200, repeat=repeat)) / 200
-        per_pair[name] = round(1e6 * t_batch / (n_timing * n_pairs), 4)
-        per_decision[name] = round(1e6 * t_one, 1)
-        print(f"{name:10s} {per_pair[name]:7.3f} us per pair (batched)"
-              f"  {per_decision[name]:6.0f} us per decision (one estimate)", flush=True)
+    with _progress(len(cs.SCORES), "criteria") as bar:
+        for name in cs.SCORES:
+            def score(b=n_timing, name=name):
+                return cs.criterion_scores(name, S, X[:b], C[:b], Q, R, 3.0, control=U[:b])
+            bar.set_postfix_str(name)
+            score(1)  # first-call costs are not timed
+            t_batch = min(timeit.repeat(score, number=5, repeat=repeat)) / 5
+            t_one = min(timeit.repeat(lambda: score(1), number=200, repeat=repeat)) / 200
+            per_pair[name] = round(1e6 * t_batch / (n_timing * n_pairs), 4)
+            per_decision[name] = round(1e6 * t_one, 1)
+            bar.write(f"{name:10s} {per_pair[name]:7.3f} us per pair (batched)"
+                      f"  {per_decision[name]:6.0f} us per decision (one estimate)",
+                      file=sys.stdout)
+            bar.update(1)
     return {"machine": _machine(), "seed": seed, "n_timing": n_timing, "repeat": repeat,
             "per_pair_us": per_pair, "per_decision_us": per_decision}
 
 
-def bench_book(profile: str = "paper") -> dict:
+def bench_book(profile: str = "paper", jobs: int | None = None) -> dict:
     """Run the book benchmark; returns the JSON-ready dict (see the module docstring).
 
-    Each notebook runs right after one trivial notebook, so that the floor and the notebooks see
-    the same machine load (on a shared machine the speed drifts over a minute by tens of
-    percent); ``floor_s`` sums the trivial runs, ``exec_s`` the notebooks. ``profile`` names the
-    parameters (:data:`obslib.profiles.PROFILES`); ``"paper"`` is the notebooks' defaults.
+    The notebooks go in groups of ``jobs`` (default: the cores available) of similar length (by
+    their last ``make book`` times). In each group every notebook runs alone, right after one
+    trivial and one minimal notebook, then the group's notebooks run side by side: the floors,
+    the serial and the parallel runs see the same machine load (on a shared machine the speed
+    drifts over a minute by tens of percent). ``floor_s`` sums the trivial runs,
+    ``stack_floor_s`` the minimal ones, ``exec_s`` the notebooks alone and ``parallel_s`` the
+    groups' wall times. ``profile`` names the parameters (:data:`obslib.profiles.PROFILES`);
+    ``"paper"`` is the notebooks' defaults.
 
     Examples
     --------
@@ -284,36 +304,69 @@ def bench_book(profile: str = "paper") -> dict:
     import tempfile
     from pathlib import Path
 
-    from ..profiles import params
-    from .run import execute, notebooks, precompile
+    from ..profiles import PROFILES, profile_names
+    from .run import Run, default_jobs, execute, execute_all, longest_first, notebooks, precompile
 
+    if profile not in PROFILES:
+        raise ValueError(f"unknown profile {profile!r}; known: {profile_names()}")
+    jobs = default_jobs() if jobs is None else int(jobs)
+    if jobs < 1:
+        raise ValueError(f"jobs must be >= 1, got {jobs}")
     nbs = notebooks()
-    # every notebook's parameters first, so that a bad profile fails before anything runs
-    parameters = {nb: params(nb.stem, profile) if profile != "paper" else {} for nb in nbs}
     precompile()  # as make book does
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         trivial = _scratch_notebook(tmp / "trivial.ipynb", "print(x + 1)")
         stack = _scratch_notebook(tmp / "stack.ipynb", _STACK_NOTEBOOK)
-        exec_s = floor_s = stack_s = 0.0
-        for k, nb in enumerate(nbs):
-            floor_s += execute(trivial, tmp / f"trivial_{k}.ipynb")
-            stack_s += execute(stack, tmp / f"stack_{k}.ipynb")
-            dt = execute(nb, tmp / nb.name, parameters[nb])
-            exec_s += dt
-            print(f"{nb.name:40s} {dt:7.1f} s", flush=True)
+        runs = longest_first([Run(nb, tmp / "parallel" / nb.name,
+                                  dict(PROFILES[profile].get(nb.stem, {}))) for nb in nbs])
+        exec_s = floor_s = stack_s = parallel_s = 0.0
+        with _progress(len(nbs), "notebooks") as bar:
+            for g in range(0, len(runs), jobs):
+                group = runs[g:g + jobs]
+                for k, r in enumerate(group, start=g):
+                    bar.set_postfix_str(r.notebook.stem)
+                    floor_s += execute(trivial, tmp / f"trivial_{k}.ipynb")
+                    stack_s += execute(stack, tmp / f"stack_{k}.ipynb")
+                    dt = execute(r.notebook, tmp / r.notebook.name, r.parameters)
+                    exec_s += dt
+                    bar.write(f"{r.notebook.name:40s} {dt:7.1f} s", file=sys.stdout)
+                t0 = time.perf_counter()
+                execute_all(group, jobs, progress=False)
+                parallel_s += time.perf_counter() - t0
+                bar.write(f"{'  the last ' + str(len(group)) + ' side by side':40s} "
+                          f"{time.perf_counter() - t0:7.1f} s", file=sys.stdout)
+                bar.update(len(group))
     n = len(nbs)
     print(f"{n} notebooks {exec_s:.1f} s, {n} trivial notebooks {floor_s:.1f} s, "
           f"{n} minimal notebooks of the book's stack {stack_s:.1f} s", flush=True)
+    print(f"{n} notebooks {jobs} at a time: {parallel_s:.1f} s", flush=True)
+    for key, value, target in (("exec_over_floor", exec_s / floor_s, 3),
+                               ("exec_over_stack", exec_s / stack_s, 2.5),
+                               ("parallel_speedup", exec_s / parallel_s, -1.6)):
+        met = value <= target if target > 0 else value >= -target
+        rule = f"<= {target}" if target > 0 else f">= {-target} on 2 cores"
+        print(f"{key:18s} {value:6.2f}  target {rule}: {'met' if met else 'MISSED'}", flush=True)
     return {
         "notebooks": n,
         "profile": profile,
+        "jobs": jobs,
         "exec_s": round(exec_s, 2),
         "floor_s": round(floor_s, 2),
         "exec_over_floor": round(exec_s / floor_s, 3),
         "stack_floor_s": round(stack_s, 2),
         "stack_over_floor": round(stack_s / floor_s, 3),
+        "exec_over_stack": round(exec_s / stack_s, 3),
+        "parallel_s": round(parallel_s, 2),
+        "parallel_speedup": round(exec_s / parallel_s, 3),
     }
+
+
+def _progress(total: int, desc: str):
+    """A progress bar on standard error (shown on a terminal only)."""
+    from tqdm import tqdm
+
+    return tqdm(total=total, desc=desc, file=sys.stderr, disable=None, dynamic_ncols=True)
 
 
 def _scratch_notebook(path, code: str):
@@ -360,8 +413,7 @@ def parse_args(argv=None) -> argparse.Namespace:
     >>> parse_args(["book", "--profile", "quick"]).profile
     'quick'
     """
-    from pathlib import Path
-
+    from .._io import OutputPathError, check_output_path
     from ..profiles import profile_names
 
     ap = argparse.ArgumentParser(prog="python -m obslib.bench", description=__doc__,
@@ -370,38 +422,50 @@ def parse_args(argv=None) -> argparse.Namespace:
     ap.add_argument("--write", help="scaling, criteria: also write the JSON to this file")
     ap.add_argument("--profile", default="paper", choices=profile_names(),
                     help="book: parameter profile of the notebooks (default: paper, their defaults)")
+    ap.add_argument("--jobs", type=int, default=None,
+                    help="book: notebooks side by side in the parallel runs (default: the cores)")
     args = ap.parse_args(argv)
     if args.write is not None:
         if args.which not in ("scaling", "criteria"):
             ap.error("--write applies to the scaling and criteria benchmarks only")
-        if not args.write or Path(args.write).is_dir():
-            ap.error(f"--write {args.write!r}: give a file name")
+        try:
+            args.write = check_output_path(args.write)
+        except OutputPathError as exc:
+            ap.error(f"--write {exc}")
     if args.profile != "paper" and args.which != "book":
         ap.error("--profile applies to the book benchmark only")
+    if args.jobs is not None and (args.which != "book" or args.jobs < 1):
+        ap.error("--jobs applies to the book benchmark only and must be at least 1")
     return args
 
 
 def main(argv=None) -> int:
     """Command line entry point: run one benchmark and print its JSON; returns the exit status.
 
+    A ``--write`` that fails at the end (a full device, say) is a one-line error, exit status 1.
+
     Examples
     --------
     >>> main(["assignment"])  # doctest: +SKIP
     """
+    from .._io import write_output
+
     args = parse_args(argv)
     if args.which == "assignment":
         result = bench_assignment()
     elif args.which == "book":
-        result = bench_book(args.profile)
+        result = bench_book(args.profile, args.jobs)
     else:
         result = bench_scaling() if args.which == "scaling" else bench_criteria()
-        if args.write:
-            from pathlib import Path
-
-            Path(args.write).parent.mkdir(parents=True, exist_ok=True)
-            Path(args.write).write_text(json.dumps(result, indent=1) + "\n")
-    json.dump(result, sys.stdout)
-    print()
+    text = json.dumps(result)
+    print(text, flush=True)
+    if args.write:
+        try:
+            write_output(args.write, json.dumps(result, indent=1) + "\n")
+        except OSError as exc:
+            print(f"python -m obslib.bench: error: cannot write {args.write}: "
+                  f"{exc.strerror or exc}", file=sys.stderr)
+            return 1
     return 0
 
 

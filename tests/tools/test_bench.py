@@ -1,6 +1,9 @@
-"""Benchmark helpers that feed the book: the literal algorithm's exact work count."""
+"""Benchmarks: the literal algorithm's exact work count, and the command line's --write."""
+
+import json
 
 import numpy as np
+import pytest
 
 from obslib.assignment import greedy_pair_assignment_literal
 from obslib.tools.bench import evaluation_counts, literal_count
@@ -27,3 +30,73 @@ def test_book_benchmark_rejects_an_unknown_profile_before_running():
 
     with pytest.raises(ValueError, match="unknown profile 'nope'"):
         bench_book("nope")
+
+
+# --------------------------------------------------------------------------- --write
+
+
+@pytest.fixture
+def quick_criteria(monkeypatch):
+    """The criteria benchmark replaced by a constant result: these tests are about the writing."""
+    from obslib.tools import bench
+
+    ran = []
+    monkeypatch.setattr(bench, "bench_criteria", lambda: ran.append(1) or {"per_pair_us": {"x": 1.5}})
+    return ran
+
+
+@pytest.mark.parametrize("path, message", [
+    ("/etc/passwd/x.json", "a part of the path is not a directory"),
+    ("{tmp}/missing/x.json", "does not exist"),
+    ("{tmp}", "is a directory"),
+    ("", "the output path is empty"),
+])
+def test_an_unwritable_path_is_a_command_line_error_before_any_work(path, message, tmp_path,
+                                                                    quick_criteria, capsys):
+    from obslib.tools.bench import main
+
+    with pytest.raises(SystemExit) as exc:
+        main(["criteria", "--write", path.format(tmp=tmp_path)])
+    assert exc.value.code == 2 and not quick_criteria
+    assert message in capsys.readouterr().err
+    assert not (tmp_path / "missing").exists()  # no directory is created
+
+
+def test_a_write_that_fails_at_the_end_is_one_line(quick_criteria, capsys):
+    from obslib.tools.bench import main
+
+    assert main(["criteria", "--write", "/dev/full"]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "cannot write /dev/full" in err and "Traceback" not in err
+
+
+def test_a_fifo_is_written_once_and_never_read(tmp_path, quick_criteria):
+    import os
+    import threading
+
+    from obslib.tools.bench import main
+
+    fifo = tmp_path / "fifo"
+    os.mkfifo(fifo)
+    got = []
+    reader = threading.Thread(target=lambda: got.append(fifo.read_text()))
+    reader.start()
+    assert main(["criteria", "--write", str(fifo)]) == 0
+    reader.join(timeout=30)
+    assert json.loads(got[0]) == {"per_pair_us": {"x": 1.5}}
+
+
+def test_stdout_piped_and_a_regular_file(tmp_path):
+    import subprocess
+    import sys
+
+    code = ("from obslib.tools import bench; bench.bench_criteria = lambda: {'a': 1}; "
+            "import sys; raise SystemExit(bench.main(sys.argv[1:]))")
+    out = subprocess.run([sys.executable, "-c", code, "criteria", "--write", "/dev/stdout"],
+                         capture_output=True, text=True, check=True)  # stdout is a pipe
+    lines = out.stdout.splitlines()
+    assert json.loads(lines[0]) == {"a": 1} and json.loads("".join(lines[1:])) == {"a": 1}
+    target = tmp_path / "x.json"
+    subprocess.run([sys.executable, "-c", code, "criteria", "--write", str(target)], check=True,
+                   capture_output=True)
+    assert json.loads(target.read_text()) == {"a": 1}
