@@ -266,11 +266,11 @@ def _bound_rows(sensors, xhat, cov, u_max, metric):
 
 def _scaled(v, cov, metric):
     """Rows ``v`` ``(M, K, 2)`` scaled as the tracking engine scales the bound's rows
-    (:func:`obslib.tracking.criteria.scaled_rows`): Mahalanobis lengths in ``cov`` ``(M, 2, 2)``
+    (:func:`obslib.tracking.choosers.scaled_rows`): Mahalanobis lengths in ``cov`` ``(M, 2, 2)``
     when ``metric`` says so, divided by each estimate's longest row."""
     c = (cov[:, 0, 0], cov[:, 0, 1], cov[:, 1, 0], cov[:, 1, 1])
     maha = np.full(v.shape[0], metric == "mahalanobis")
-    return tr.criteria.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
+    return tr.choosers.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
 
 
 def info_gain_weights(sensors, xhat, cov_pred, r) -> np.ndarray:

@@ -22,7 +22,7 @@ from typing import Iterable
 import numpy as np
 
 from .adversary import adversary_moves, control_basis
-from .criteria import PairChooser, candidates, check_strategy, fixed_pair_bound, pair_draws
+from .choosers import PairChooser, candidates, check_strategy, fixed_pair_bound, pair_draws
 from .ekf import SINGULAR_RTOL, singular_update_message
 from .model import circle_truth, pair_index
 from .results import BatchResult, TrackingResult, derived_arrays
@@ -166,7 +166,7 @@ def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
               barred=None, kinds=None, draws=None) -> dict:
     """``R`` runs of one shared setup, each with its own pair candidates (``cand``, ``(R, P)``),
     metric (``maha``), adversary (``nextpair``), chooser (``kinds`` and ``draws`` of
-    :class:`~obslib.tracking.criteria.PairChooser`) and noise table: run ``r`` uses
+    :class:`~obslib.tracking.choosers.PairChooser`) and noise table: run ``r`` uses
     ``tables[r % B]``. An adversary's controls are ``controls`` (default: the setup's) less each
     run's ``barred`` ones (see :func:`~obslib.tracking.adversary.adversary_moves`).
 

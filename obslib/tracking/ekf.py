@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .criteria import CRITERIA, PairChooser, candidates, check_strategy, pair_draws
+from .choosers import CRITERIA, PairChooser, candidates, check_strategy, pair_draws
 from .model import circle_truth, half_squared_range, range_jacobian, target_objective
 from .results import TrackingResult, derived_arrays
 from .setup import TrackingSetup, check_noise, check_seed, check_setup, noise_table
@@ -82,14 +82,14 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
         ``"best-pair"``, ``"best-partner"``, ``"fixed-pair"``: strategies (1), (2), (3) of
         Section V-A (:data:`~obslib.tracking.STRATEGIES`); or a criterion beyond the paper,
         ``"d-optimal"``, ``"a-optimal"``, ``"e-optimal"``, ``"exact-icn"``, ``"random"``
-        (:data:`~obslib.tracking.CRITERIA`, see :mod:`~obslib.tracking.criteria`). The logged
+        (:data:`~obslib.tracking.CRITERIA`, see :mod:`~obslib.tracking.choosers`). The logged
         ``bound`` is always the paper's pair bound of the chosen pair.
     noise : array_like, shape (steps, N), optional
         Explicit measurement noise, entry ``[k-1, i]`` for sensor ``i`` at step ``k`` (exact
         replay). Default: :func:`~obslib.tracking.noise_table` of ``seed``.
     seed : int
         Seed of the noise table when ``noise`` is not given, and of the ``"random"`` chooser's
-        draws (:func:`~obslib.tracking.criteria.pair_draws`, a separate stream) in any case.
+        draws (:func:`~obslib.tracking.choosers.pair_draws`, a separate stream) in any case.
 
     Returns
     -------
