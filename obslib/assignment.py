@@ -22,20 +22,23 @@ Among triples of equal weight every algorithm here takes the lexicographically s
 
 from __future__ import annotations
 
-import heapq
+import sys
 import time
 from dataclasses import dataclass
 
 import numpy as np
 
 from . import _exact_pairs as exact_pairs
-from ._kernels import normalise, pair_kernel
-from ._validate import ArgumentTypeError, as_bool, as_float_array, as_int, as_points, as_u_max, as_weights, check_pair_sizes, check_weight_memory, validated_vectors
+from ._kernels import mahalanobis_rescale, normalise_rows, pair_kernel
+from ._pair_search import PairSearch, keep_top
+from ._validate import (ArgumentTypeError, as_bool, as_cov, as_float_array, as_int, as_points, as_u_max,
+                        as_weights, check_distinct, check_pair_sizes, check_weight_memory, vectors_between)
 
 __all__ = [
     "PairAssignment",
     "greedy_pair_assignment",
     "greedy_pair_assignment_literal",
+    "greedy_pairs_batch",
     "relaxed_pair_assignment",
     "optimal_pair_assignment",
     "assignment_value",
@@ -77,191 +80,230 @@ def assignment_value(W, triples) -> float:
     return float(sum(W[i, j, l] for i, j, l in triples))
 
 
-def _geometry(sensors, targets, u_max, cov):
-    """Validated rows ``o_l - p_i`` ``(N, L, 2)`` normalised per target, and ``u_max^2`` ``(L,)``
-    in the same unit: the input of :func:`obslib._kernels.pair_kernel` (as in ``pair_bounds``)."""
-    v, unit = validated_vectors(sensors, targets, cov)
+def _rows(sensors, targets, u_max, cov):
+    """Validated rows ``o_l - p_i`` of every target, normalised per target as
+    :func:`obslib.pair_bounds` normalises them: ``x, y`` ``(L, N)`` and ``u_max^2`` ``(L,)`` in
+    the same unit, the input of :func:`obslib._kernels.pair_kernel`.
+
+    Computed a block of targets at a time, so that the memory is that of ``x, y`` (the
+    ``(N, L, 2)`` array of differences and its temporaries never exist at once: at ``N = 10,000``,
+    ``L = 5,000`` they took 2.4 GB). The scene is checked as :func:`obslib._validate.vectors_between`
+    checks it, and by it where a difference may overflow or a sensor sits on a target, so errors
+    name the same sensor and target.
+    """
+    s, t = as_points(sensors, "sensors"), as_points(targets, "targets")
+    n, n_targets = s.shape[0], t.shape[0]
+    check_distinct(s)
     with np.errstate(over="ignore"):
-        u = as_u_max(u_max, v.shape[1]) / unit
-    return normalise(v, u)
-
-
-# --------------------------------------------------------------------------------------------
-# Greedy (Algorithm 1) without re-evaluation
-# --------------------------------------------------------------------------------------------
-
-
-class _TargetQueue:
-    """Candidate pairs of one target in greedy order ``(-w, i, j)``, refilled on demand.
-
-    Holds at least the ``k`` best pairs over the sensors that were free when it was (re)filled,
-    and every pair tied with the last of them. Since weights never change and sensors only
-    leave, the first candidate whose sensors are both free is the target's best free pair as long
-    as the list is not exhausted; when it is, the list is refilled over the free sensors.
-    """
-
-    def __init__(self, source, l: int, k: int):
-        self.source, self.l, self.k = source, l, k
-        self.cand: list = []
-        self.pos = 0
-        self.complete = False  # the list holds every pair over the sensors free at fill time
-
-    def fill(self, free: np.ndarray) -> None:
-        a, b, w, self.complete = self.source.top_pairs(self.l, np.flatnonzero(free), self.k)
-        i, j = np.minimum(a, b), np.maximum(a, b)
-        order = np.lexsort((j, i, -w))
-        self.cand = list(zip(w[order].tolist(), i[order].tolist(), j[order].tolist()))
-        self.pos = 0
-
-    def head(self, free: np.ndarray):
-        """The best candidate with both sensors free, or None if the target has no free pair.
-
-        Terminates: a refill lists only pairs of free sensors, so after one refill the next
-        candidate is free or the list is complete (weights are finite, checked at the boundary).
-        """
-        refilled = False
-        while True:
-            while self.pos < len(self.cand):
-                w, i, j = self.cand[self.pos]
-                if free[i] and free[j]:
-                    return w, i, j
-                self.pos += 1
-            if self.complete:
-                return None
-            if refilled:  # cannot happen with finite weights; never spin
-                raise RuntimeError(f"refilling the candidates of target {self.l} made no progress")
-            self.fill(free)
-            refilled = True
-
-
-def _keep_top(a, b, w, k):
-    """The pairs among ``(a, b, w)`` whose weight is at least the ``k``-th largest."""
-    if w.size <= k:
-        return a, b, w
-    kth = np.partition(w, w.size - k)[w.size - k]
-    keep = w >= kth
-    return a[keep], b[keep], w[keep]
-
-
-class _WeightSource:
-    """Pair weights read from a materialised ``W``."""
-
-    def __init__(self, W):
-        self.W = W
-
-    def top_pairs(self, l, idx, k):
-        iu, ju = np.triu_indices(idx.size, 1)
-        a, b = idx[iu], idx[ju]
-        w = self.W[a, b, l]
-        complete = w.size <= k
-        return (*_keep_top(a, b, w, k), complete)
-
-
-class _GeometrySource:
-    """Pair weights computed on demand from geometry, pruned by a distance-only upper bound.
-
-    For rows with squared lengths ``r_i <= r_j``, ``lambda_min <= r_i`` and ``lambda_max >= r_j``
-    (the diagonal of the Gram matrix lies between its eigenvalues), so
-    ``bound^2 <= r_i / (r_j + u^2)``. Given ``tau``, the ``k``-th largest weight of a sample of
-    pairs (a lower bound on the ``k``-th largest weight overall), only pairs with
-    ``r_j <= r_i / tau^2 - u^2`` can reach the top ``k``; with the sensors sorted by distance
-    they form a band, found with ``searchsorted``. The pruning is exact: every pair of weight
-    ``>= tau`` is evaluated.
-    """
-
-    def __init__(self, v, u2):
-        # normalised rows as contiguous (L, N) coordinate arrays, and u_max^2 per target (L,)
-        self.x = np.ascontiguousarray(v[..., 0].T)
-        self.y = np.ascontiguousarray(v[..., 1].T)
-        self.r = self.x * self.x + self.y * self.y
-        self.u2 = u2
-        self.n_evaluations = 0
-
-    def _weights(self, l, a, b):
-        x, y = self.x[l], self.y[l]
-        self.n_evaluations += a.size
-        w = pair_kernel(x[a], y[a], x[b], y[b], self.u2[l])
-        if not np.isfinite(w).all():  # validation and normalisation exclude it; never feed a NaN on
-            raise RuntimeError(f"a pair weight of target {l} is not finite")
-        return w
-
-    def top_pairs(self, l, idx, k):
-        m = idx.size
-        if m < 2:
-            e = np.zeros(0, dtype=int)
-            return e, e, np.zeros(0), True
-        order = idx[np.argsort(self.r[l, idx], kind="stable")]
-        rs = self.r[l, order]
-        n_pairs = m * (m - 1) // 2
-        if n_pairs <= 4 * k:
-            hi = np.full(m, m)
-        else:
-            # sample: each sensor with its next few neighbours in distance order
-            width = min(m - 1, -(-_SAMPLE * k // m) + 1)
-            pa, pb = _band(np.minimum(np.arange(m) + width + 1, m))
-            tau = np.partition(self._weights(l, order[pa], order[pb]), pa.size - k)[pa.size - k]
-            if tau <= 0:
-                hi = np.full(m, m)
+        reach = np.abs(s).max(initial=0.0) + np.abs(t).max(initial=0.0)
+    on = np.isin(t[:, 0] + 1j * t[:, 1], s[:, 0] + 1j * s[:, 1])
+    if not np.isfinite(reach) or on.any():
+        vectors_between(s, t, cov)  # raises, naming the sensor and the target
+    if cov is not None:
+        cov = as_cov(cov, n_targets)
+    u = np.broadcast_to(as_u_max(u_max, n_targets), (n_targets,))
+    x, y, u2 = np.empty((n_targets, n)), np.empty((n_targets, n)), np.empty(n_targets)
+    step = max(1, (1 << 20) // max(n, 1))
+    for l0 in range(0, n_targets, step):
+        blk = slice(l0, min(l0 + step, n_targets))
+        unit = 1.0
+        with np.errstate(over="ignore"):  # u_max / unit may exceed the float range: inf, bound 0
+            if cov is None:  # o_l - p_i, as vectors_between computes it
+                dx, dy = t[blk, 0, None] - s[None, :, 0], t[blk, 1, None] - s[None, :, 1]
             else:
-                limit = rs / (tau * tau * (1 - 1e-9)) - self.u2[l]
-                hi = np.searchsorted(rs, limit, side="right")
-        pa, pb = _band(hi)
-        a, b = order[pa], order[pb]
-        w = self._weights(l, a, b)
-        complete = pa.size == n_pairs and w.size <= k
-        return (*_keep_top(a, b, w, k), complete)
+                v, unit = mahalanobis_rescale(t[None, blk, :] - s[:, None, :], cov[blk])
+                dx, dy = v[..., 0].T, v[..., 1].T
+            x[blk], y[blk], u2[blk] = normalise_rows(dx, dy, u[blk] / unit)
+    return x, y, u2
 
 
-#: Size of the sample that sets the pruning threshold, in multiples of ``k`` (speed only).
-_SAMPLE = 16
+# --------------------------------------------------------------------------------------------
+# Algorithm 1: one kernel for one instance or a batch, from weights or from geometry
+# --------------------------------------------------------------------------------------------
 
 
-def _band(hi):
-    """Positions ``(p, q)``, ``p < q < hi[p]``, of the pairs in a band over a sorted order."""
-    m = hi.size
-    counts = np.maximum(hi - np.arange(m) - 1, 0)
-    p = np.repeat(np.arange(m), counts)
-    starts = np.cumsum(counts) - counts
-    q = p + 1 + (np.arange(p.size) - np.repeat(starts, counts))
-    return p, q
+def _rounds(source, free, n_targets: int, bar=None):
+    """Algorithm 1 on ``B`` instances at once: their picks ``(B, L, 3)`` in pick order and the
+    picked weights ``(B, L)``.
+
+    ``free`` ``(B, N)`` marks each instance's free sensors (updated in place) and
+    ``source.heads(b, l, free)`` gives the heaviest free pair ``(w, i, j)`` of targets ``l`` of
+    instances ``b`` (ties: smallest ``(i, j)``; ``w = -inf`` when none). Each target's head is
+    kept until a sensor of it is taken; a stale head keeps its old weight, an upper bound of its
+    target's best, and is refreshed only when it reaches the top (weights never change and
+    sensors only leave). Every round takes, in each instance, the heaviest head, ties to the
+    smallest ``(i, j, l)``.
+    """
+    B, n = free.shape
+    rows = np.arange(B)
+    lidx = np.arange(n_targets)
+    w, i, j = source.heads(np.repeat(rows, n_targets), np.tile(lidx, B), free)
+    hw, hi, hj = w.reshape(B, n_targets), i.reshape(B, n_targets), j.reshape(B, n_targets)
+    picks = np.empty((B, n_targets, 3), dtype=np.int64)
+    weights = np.empty((B, n_targets))
+    col = rows[:, None]
+    for r in range(n_targets):
+        while True:  # refresh the stale heads that could be the top (twice at most)
+            valid = free[col, hi] & free[col, hj]
+            top = np.where(valid, hw, -np.inf).max(axis=1)
+            need = ~valid & (hw >= top[:, None]) & (hw > -np.inf)
+            if not need.any():
+                break
+            b, l = np.nonzero(need)
+            hw[b, l], hi[b, l], hj[b, l] = source.heads(b, l, free)
+        if not (top > -np.inf).all():  # N >= 2L is checked at the boundary
+            raise RuntimeError(f"no free pair left in round {r + 1}")
+        key = np.where(hw == top[:, None], (hi * n + hj) * n_targets + lidx, np.iinfo(np.int64).max)
+        l = key.argmin(axis=1)
+        i, j = hi[rows, l], hj[rows, l]
+        picks[:, r, 0], picks[:, r, 1], picks[:, r, 2] = i, j, l
+        weights[:, r] = top
+        free[rows, i] = free[rows, j] = False
+        hw[rows, l] = -np.inf
+        if bar is not None:
+            bar.update()
+    return picks, weights
 
 
-def _greedy(source, n: int, n_targets: int, k: int | None = None) -> PairAssignment:
-    """Algorithm 1 with a lazily refilled candidate list per target and a global heap."""
-    if k is None:
-        k = 8
-    free = np.ones(n, dtype=bool)
-    queues = [_TargetQueue(source, l, k) for l in range(n_targets)]
-    heap = []
-    for q in queues:
-        q.fill(free)
-        h = q.head(free)
-        if h is not None:
-            heap.append((-h[0], h[1], h[2], q.l))
-    heapq.heapify(heap)
-    triples, value = [], 0.0
-    while heap:
-        negw, i, j, l = heapq.heappop(heap)
-        if free[i] and free[j]:
-            triples.append((i, j, l))
-            value += -negw
-            free[i] = free[j] = False
-            continue
-        h = queues[l].head(free)  # stale: this target's head lost a sensor; re-queue its next
-        if h is not None:
-            heapq.heappush(heap, (-h[0], h[1], h[2], l))
-    return PairAssignment(triples=triples, value=float(value))
+class _WeightHeads:
+    """Heads of :func:`_rounds` from weights ``w`` ``(B, P, L)`` of the pairs ``(ii, jj)``,
+    ``ii < jj`` in ``numpy.triu_indices`` order: a masked ``argmax`` over the pairs (the first
+    maximum is the smallest ``(i, j)``)."""
+
+    def __init__(self, w, ii, jj):
+        self.w, self.ii, self.jj = w, ii, jj
+
+    def heads(self, b, l, free):
+        P = self.ii.size
+        out_w, out_i, out_j = np.empty(b.size), np.empty(b.size, np.int64), np.empty(b.size, np.int64)
+        step = max(1, (1 << 22) // max(P, 1))  # rows per block: about 4M weights
+        for s in range(0, b.size, step):
+            bs, ls = b[s:s + step], l[s:s + step]
+            fb = free[bs]
+            rows = np.where(fb[:, self.ii] & fb[:, self.jj], self.w[bs, :, ls], -np.inf)
+            p = rows.argmax(axis=1)
+            out_w[s:s + step] = rows[np.arange(bs.size), p]
+            out_i[s:s + step], out_j[s:s + step] = self.ii[p], self.jj[p]
+        return out_w, out_i, out_j
 
 
-def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, cov=None, k=None):
+class _GeometryHeads:
+    """Heads of :func:`_rounds` (one instance) from geometry: per target, the list of its pairs
+    of weight at least ``floor`` over the sensors free when it was filled
+    (:meth:`obslib._pair_search.PairSearch.best`, at least ``k`` of them), in greedy order.
+
+    Sensors only leave, so while the list holds a pair of free sensors, the first such pair is
+    the target's best; when none is left, the list is refilled over the free sensors with a
+    lower threshold.
+    """
+
+    def __init__(self, search, n_targets, k):
+        self.search, self.k = search, k
+        empty = (np.zeros(0), np.zeros(0, np.int64), np.zeros(0, np.int64))
+        self.lists = [empty] * n_targets
+        self.pos = [0] * n_targets
+        self.floor = [None] * n_targets  # None: never filled
+
+    def heads(self, b, l, free):
+        out = np.array([self._head(int(t), free[0]) for t in l.tolist()]).reshape(-1, 3)
+        return out[:, 0], out[:, 1].astype(np.int64), out[:, 2].astype(np.int64)
+
+    def _head(self, l, free):
+        (w, i, j), pos = self.lists[l], self.pos[l]
+        for _ in range(2):  # a fresh list holds free sensors only: at most one refill
+            step = 4
+            while pos < w.size:  # the first pair of free sensors, in chunks that double
+                ok = free[i[pos:pos + step]] & free[j[pos:pos + step]]
+                first = int(ok.argmax())
+                if ok[first]:
+                    self.pos[l] = pos = pos + first
+                    return w[pos], i[pos], j[pos]
+                pos += step
+                step *= 2
+            floor = self.floor[l]
+            if floor == -np.inf:  # the list held every pair: none is free
+                break
+            tau = None if floor is None else 1.0 - 2.0 * (1.0 - floor)
+            a, b, w, self.floor[l] = self.search.best(l, np.flatnonzero(free), self.k, tau)
+            i, j = np.minimum(a, b), np.maximum(a, b)
+            order = np.lexsort((j, i, -w))
+            w, i, j = self.lists[l] = w[order], i[order], j[order]
+            pos = 0
+        self.pos[l] = pos
+        return -np.inf, 0, 0
+
+
+def _progress(progress, total, what):
+    """A tqdm bar on stderr over ``total`` steps when ``progress`` is true, else None."""
+    if not as_bool(progress, "progress"):
+        return None
+    from tqdm import tqdm
+
+    return tqdm(total=total, desc=what, file=sys.stderr, leave=False, mininterval=0.5)
+
+
+def greedy_pairs_batch(w, n_sensors: int, progress=False):
+    """Algorithm 1 on a batch of instances given by the weights of their pairs ``i < j``.
+
+    ``w[b, p, l]`` is the weight in instance ``b`` of pair ``p`` (``numpy.triu_indices(N, 1)``
+    order) for target ``l``. Every round takes, in each instance at once, the heaviest triple
+    ``(i, j, l)`` whose sensors and target are unused, ties to the smallest ``(i, j, l)``; it
+    is the kernel of :func:`greedy_pair_assignment` and of the studies' batched greedy.
+
+    Returns
+    -------
+    picks : ndarray, shape (B, L, 3)
+        ``(i, j, l)`` of each round, in pick order.
+    weights : ndarray, shape (B, L)
+        The picked weights, in pick order.
+
+    Examples
+    --------
+    >>> W = np.zeros((4, 4, 2))
+    >>> W[0, 1, 0] = W[1, 0, 0] = 2.0  # pair (0, 1) for target 0
+    >>> W[2, 3, 1] = W[3, 2, 1] = 1.0  # pair (2, 3) for target 1
+    >>> ii, jj = np.triu_indices(4, 1)
+    >>> picks, weights = greedy_pairs_batch(W[ii, jj][None], 4)
+    >>> picks[0].tolist(), weights[0].tolist()
+    ([[0, 1, 0], [2, 3, 1]], [2.0, 1.0])
+    """
+    n = as_int(n_sensors, "n_sensors", 2)
+    w = as_float_array(w, "w")
+    ii, jj = np.triu_indices(n, 1)
+    if w.ndim != 3 or w.shape[1] != ii.size:
+        raise ValueError(f"w must have shape (B, N (N - 1) / 2, L) = (B, {ii.size}, L), got {w.shape}")
+    check_pair_sizes(n, w.shape[2])
+    if not np.isfinite(w).all():
+        raise ValueError("w must be finite")
+    free = np.ones((w.shape[0], n), dtype=bool)
+    bar = _progress(progress, w.shape[2], "Algorithm 1")
+    try:
+        return _rounds(_WeightHeads(w, ii, jj), free, w.shape[2], bar)
+    finally:
+        if bar is not None:
+            bar.close()
+
+
+def _assignment(picks, weights, n_evaluations=None) -> PairAssignment:
+    """The :class:`PairAssignment` of one instance's picks; the value summed in pick order."""
+    return PairAssignment(triples=[tuple(t) for t in picks.tolist()],
+                          value=float(sum(weights.tolist())), n_evaluations=n_evaluations)
+
+
+def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, cov=None, k=None,
+                           progress=False):
     """Algorithm 1 (greedy unique pair assignment), without re-evaluating triples.
 
     Each round takes the heaviest triple ``(i, j, l)`` whose sensors and target are unused
     (ties: smallest ``(i, j, l)``), then removes them. Because the weights do not change between
-    rounds, each target keeps a sorted list of its best pairs, computed once and refilled only
-    when all of them have lost a sensor; a heap of the targets' current heads gives each round's
-    maximum. From geometry, a target's list is found without evaluating most pairs (see
-    ``_GeometrySource``). The picks equal those of :func:`greedy_pair_assignment_literal`.
+    rounds, each target keeps its best free pair (its *head*) until a sensor of it is taken, and
+    a stale head is recomputed only when it could be the round's maximum (:func:`_rounds`, the
+    kernel of :func:`greedy_pairs_batch`). From geometry, each target keeps a sorted list of its
+    heaviest pairs, found without evaluating most pairs (:mod:`obslib._pair_search`: a pair
+    heavier than ``tau`` has nearly orthogonal rows of nearly equal length, so an angular window
+    around each row turned by 90 degrees holds its partners), and refilled with a lower
+    threshold when every pair of it has lost a sensor. The picks equal those of
+    :func:`greedy_pair_assignment_literal`.
 
     Parameters
     ----------
@@ -270,9 +312,13 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     sensors, targets, u_max, cov : optional
         Instead of ``W``: the geometry, weighted as :func:`obslib.pair_bounds` does (Theorem 4,
         Mahalanobis with ``cov``), computed on demand so the ``(N, N, L)`` array is never
-        materialised.
+        materialised. Memory: the normalised rows, 16 bytes per sensor and target (0.8 GB at
+        ``N = 10,000``, ``L = 5,000``), and the candidate lists.
     k : int, optional
-        Candidates kept per target between refills (default 8); affects speed only.
+        From geometry, the least number of pairs a target's list holds after a fill (default
+        16); affects speed only.
+    progress : bool
+        Show a progress bar (tqdm, on stderr) over the rounds.
 
     Returns
     -------
@@ -291,23 +337,33 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     >>> greedy_pair_assignment(pair_bounds(S, T, 1.0)).triples  # from weights
     [(2, 3, 1), (0, 1, 0)]
     """
-    if k is not None:
-        k = as_int(k, "k", 1)
+    k = 16 if k is None else as_int(k, "k", 1)
+    as_bool(progress, "progress")
     if W is not None:
         if sensors is not None or targets is not None:
             raise ValueError("give either W or sensors/targets, not both")
         arr = as_weights(W)
         n, n_targets = arr.shape[0], arr.shape[2]
         check_pair_sizes(n, n_targets)
-        return _greedy(_WeightSource(arr), n, n_targets, k)
-    if sensors is None or targets is None or u_max is None:
+        ii, jj = np.triu_indices(n, 1)
+        source = _WeightHeads(arr[ii, jj][None], ii, jj)
+        counted = None
+    elif sensors is None or targets is None or u_max is None:
         raise ValueError("give W, or sensors=, targets= and u_max=")
-    v, u2 = _geometry(sensors, targets, u_max, cov)  # (N, L, 2) validated and normalised
-    n, n_targets = v.shape[0], v.shape[1]
-    check_pair_sizes(n, n_targets)
-    source = _GeometrySource(v, u2)
-    result = _greedy(source, n, n_targets, k)
-    return PairAssignment(result.triples, result.value, source.n_evaluations)
+    else:
+        x, y, u2 = _rows(sensors, targets, u_max, cov)
+        n_targets, n = x.shape
+        check_pair_sizes(n, n_targets)
+        search = PairSearch(x, y, u2)
+        source = _GeometryHeads(search, n_targets, k)
+    bar = _progress(progress, n_targets, "greedy")
+    try:
+        picks, weights = _rounds(source, np.ones((1, n), dtype=bool), n_targets, bar)
+    finally:
+        if bar is not None:
+            bar.close()
+    counted = None if W is not None else search.n_evaluations
+    return _assignment(picks[0], weights[0], counted)
 
 
 def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=None, cov=None) -> PairAssignment:
@@ -334,12 +390,12 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
             return arr[np.ix_(s_free, s_free, t_free)]
         counted = None
     elif sensors is not None and targets is not None and u_max is not None:
-        v, u2 = _geometry(sensors, targets, u_max, cov)
-        n, n_targets = v.shape[0], v.shape[1]
+        X, Y, u2 = _rows(sensors, targets, u_max, cov)
+        n_targets, n = X.shape
         check_weight_memory(n, n_targets)  # the first round evaluates the whole (N, N, L) block
 
         def block(s_free, t_free):
-            x, y = v[np.ix_(s_free, t_free, [0])][..., 0], v[np.ix_(s_free, t_free, [1])][..., 0]
+            x, y = X[np.ix_(t_free, s_free)].T, Y[np.ix_(t_free, s_free)].T
             return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2[t_free])
         counted = 0
     else:
@@ -383,9 +439,8 @@ def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 <
     >>> [(l0, l1, block.shape) for l0, l1, block in blocks]
     [(0, 1, (1, 6)), (1, 2, (1, 6))]
     """
-    v, u2 = _geometry(sensors, targets, u_max, cov)
-    ii, jj = np.triu_indices(v.shape[0], 1)
-    xt, yt = np.ascontiguousarray(v[..., 0].T), np.ascontiguousarray(v[..., 1].T)  # (L, N)
+    xt, yt, u2 = _rows(sensors, targets, u_max, cov)  # (L, N)
+    ii, jj = np.triu_indices(xt.shape[1], 1)
     step = max(1, chunk // max(ii.size, 1))
     for a in range(0, xt.shape[0], step):
         b = min(a + step, xt.shape[0])
@@ -457,7 +512,7 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
     other ``L - 1`` targets hold at most ``L - 1`` pairs; it would gain weight, so every optimum
     uses only those candidates (with ``(i, j)`` and ``(j, i)`` for the ordered variant, whose
     ``L``-th best ordered weight is at least the ``L``-th best unordered one). The candidates are
-    found with the greedy's exact distance pruning (``_GeometrySource``), without computing most
+    found with the greedy's exact pruning (:mod:`obslib._pair_search`), without computing most
     weights, and the sparse matching is solved with
     ``scipy.sparse.csgraph.min_weight_full_bipartite_matching``. Returns one
     :class:`PairAssignment` per entry of ``orders`` (``ordered`` flags), sharing the candidates;
@@ -472,17 +527,18 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
     from scipy.sparse import csr_array
     from scipy.sparse.csgraph import min_weight_full_bipartite_matching
 
-    v, u2 = _geometry(sensors, targets, u_max, cov)
-    n, n_targets = v.shape[0], v.shape[1]
+    x, y, u2 = _rows(sensors, targets, u_max, cov)
+    n_targets, n = x.shape
     if n_targets < 1:
         raise ValueError("there must be at least one target")
     if n < 2:
         raise ValueError(f"pairs need at least two sensors, got {n}")
-    source = _GeometrySource(v, u2)
+    source = PairSearch(x, y, u2)
     every = np.arange(n)
     rows, ids, ws = [], [], []
     for l in range(n_targets):
-        a, b, w, _ = source.top_pairs(l, every, n_targets)
+        a, b, w, _ = source.best(l, every, n_targets)
+        a, b, w = keep_top(a, b, w, n_targets)
         rows.append(np.full(w.size, l))
         ids.append(np.minimum(a, b) * n + np.maximum(a, b))
         ws.append(w)
@@ -587,6 +643,6 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
         if not (np.isfinite(time_limit) and time_limit > 0):
             raise ValueError(f"time_limit must be positive and finite, got {time_limit!r}")
     deadline = None if not time_limit else time.perf_counter() + float(time_limit)
-    start = _greedy(_WeightSource(arr), n, n_targets).triples  # one of the search's incumbents
+    start = greedy_pair_assignment(arr).triples  # one of the search's incumbents
     triples = sorted(exact_pairs.solve(arr, deadline, start), key=lambda t: t[2])
     return PairAssignment(triples=triples, value=assignment_value(arr, triples))

@@ -10,6 +10,7 @@ from obslib.assignment import (
     assignment_value,
     greedy_pair_assignment,
     greedy_pair_assignment_literal,
+    greedy_pairs_batch,
     optimal_pair_assignment,
     relaxed_pair_assignment,
 )
@@ -69,6 +70,66 @@ def test_greedy_equals_literal_on_thousands_of_instances(grid):
         assert greedy_pair_assignment(sensors=S, targets=T, u_max=1.0, k=k).triples == lit.triples
         if k == 1:  # the literal algorithm recomputing weights each round agrees too
             assert greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0).triples == lit.triples
+
+
+def greedy_by_enumeration(W):
+    """Algorithm 1 replayed round by round in plain Python: every remaining triple (i < j) is
+    listed, the heaviest taken, ties to the smallest (i, j, l)."""
+    n, _, L = W.shape
+    free, open_, picks = set(range(n)), set(range(L)), []
+    while open_ and len(free) >= 2:
+        best = max((W[i, j, l], (-i, -j, -l)) for i in free for j in free if i < j for l in open_)
+        i, j, l = (-v for v in best[1])
+        picks.append((i, j, l))
+        free -= {i, j}
+        open_.discard(l)
+    return picks
+
+
+def test_batched_kernel_equals_the_literal_algorithm_and_enumeration_with_ties():
+    """The kernel of every greedy in obslib on batches of instances (integer weights: many
+    exact ties) against the vectorised literal Algorithm 1 and the plain enumeration."""
+    rng = np.random.default_rng(21)
+    for n, L in [(2, 1), (4, 2), (5, 2), (7, 3), (8, 4), (9, 3)]:
+        W = rng.integers(0, 3, size=(40, n, n, L)).astype(float)
+        W = W + W.transpose(0, 2, 1, 3)
+        ii, jj = np.triu_indices(n, 1)
+        picks, weights = greedy_pairs_batch(W[:, ii, jj], n)
+        for b in range(40):
+            got = [tuple(t) for t in picks[b].tolist()]
+            assert got == greedy_pair_assignment_literal(W[b]).triples
+            assert got == greedy_by_enumeration(W[b])
+            assert weights[b].tolist() == [W[b][t] for t in got]
+
+
+def test_batched_kernel_rejects_bad_input():
+    with pytest.raises(ValueError, match="shape"):
+        greedy_pairs_batch(np.zeros((1, 5, 1)), 4)
+    with pytest.raises(ValueError, match="N >= 2L"):
+        greedy_pairs_batch(np.zeros((1, 6, 3)), 4)
+    with pytest.raises(ValueError, match="finite"):
+        greedy_pairs_batch(np.full((1, 6, 1), np.nan), 4)
+
+
+def test_greedy_from_geometry_equals_literal_on_larger_scenes():
+    """The pruned search from geometry against the literal algorithm (which weighs every
+    remaining triple each round) where most pairs are never weighed: uniform scenes, a grid
+    (exact ties) and Mahalanobis distances."""
+    rng = np.random.default_rng(22)
+    for n, L, kind in [(160, 80, "uniform"), (144, 60, "grid"), (120, 50, "cov")]:
+        S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (L, 2))
+        cov = None
+        if kind == "grid":
+            side = int(np.ceil(np.sqrt(n)))
+            S = np.array([(a, b) for a in range(side) for b in range(side)], float)[:n] * 8.0
+            T = np.round(T / 8.0) * 8.0 + 4.0
+        elif kind == "cov":
+            A = rng.normal(size=(L, 2, 2))
+            cov = A @ A.transpose(0, 2, 1) + 0.5 * np.eye(2)
+        fast = greedy_pair_assignment(sensors=S, targets=T, u_max=1.0, cov=cov)
+        lit = greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0, cov=cov)
+        assert fast.triples == lit.triples and fast.value == lit.value
+        assert fast.n_evaluations < 0.05 * lit.n_evaluations
 
 
 def test_greedy_from_geometry_with_mahalanobis_equals_weights():
