@@ -19,12 +19,16 @@ the two measurements. The parts:
     both engines with the same decisions;
 :mod:`~obslib.tracking.adversary`
     the adversarial target's moves (Section V-B);
+:mod:`~obslib.tracking.kalman`
+    the extended Kalman filter's predict and update for many filters at once (filterpy's
+    equations on 2 x 2 component arrays);
 :mod:`~obslib.tracking.ekf`
     :func:`simulate`, the reference engine (filterpy's EKF, one run);
 :mod:`~obslib.tracking.batch`
     :func:`simulate_many`, :func:`simulate_batch`, :func:`monte_carlo`: the same runs
-    vectorised over seeds, strategies and setup variants (the tests hold the two engines to the
-    same picks and to rounding);
+    vectorised over seeds, strategies and setup variants, filtered by
+    :mod:`~obslib.tracking.kalman` (the tests hold the two engines to the same picks and to
+    rounding);
 :mod:`~obslib.tracking.results`
     :class:`TrackingResult` and :class:`BatchResult`;
 :mod:`~obslib.tracking.stats`
