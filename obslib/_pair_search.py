@@ -29,9 +29,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._kernels import pair_kernel
+from ._kernels import mahalanobis_rescale, normalise_rows, pair_kernel
+from ._validate import as_cov, as_points, as_u_max, check_distinct, vectors_between
 
-__all__ = ["PairSearch", "keep_top"]
+__all__ = ["target_rows", "PairSearch", "GeometryHeads", "keep_top"]
 
 #: Margin (relative) added to every pruning test, so that rounding in the angles, squared lengths
 #: and the kernel never drops a pair the kernel would weigh at or above the threshold.
@@ -157,3 +158,87 @@ class PairSearch:
             a, b, w = keep_top(np.concatenate([a, sa]), np.concatenate([b, sb]),
                                np.concatenate([w, self.weights(l, sa, sb)]), _KEEP * k)
         return a, b, w, (-np.inf if w.size == ii.size else float(w.min()))
+
+
+def target_rows(sensors, targets, u_max, cov):
+    """Validated rows ``o_l - p_i`` of every target, normalised per target as
+    :func:`obslib.pair_bounds` normalises them: ``x, y`` ``(L, N)`` and ``u_max^2`` ``(L,)`` in
+    the same unit, the input of :func:`obslib._kernels.pair_kernel`.
+
+    Computed a block of targets at a time, so that the memory is that of ``x, y`` (the
+    ``(N, L, 2)`` array of differences and its temporaries never exist at once: at ``N = 10,000``,
+    ``L = 5,000`` they took 2.4 GB). The scene is checked as :func:`obslib._validate.vectors_between`
+    checks it, and by it where a difference may overflow or a sensor sits on a target, so errors
+    name the same sensor and target.
+    """
+    s, t = as_points(sensors, "sensors"), as_points(targets, "targets")
+    n, n_targets = s.shape[0], t.shape[0]
+    check_distinct(s)
+    with np.errstate(over="ignore"):
+        reach = np.abs(s).max(initial=0.0) + np.abs(t).max(initial=0.0)
+    on = np.isin(t[:, 0] + 1j * t[:, 1], s[:, 0] + 1j * s[:, 1])
+    if not np.isfinite(reach) or on.any():
+        vectors_between(s, t, cov)  # raises, naming the sensor and the target
+    if cov is not None:
+        cov = as_cov(cov, n_targets)
+    u = np.broadcast_to(as_u_max(u_max, n_targets), (n_targets,))
+    x, y, u2 = np.empty((n_targets, n)), np.empty((n_targets, n)), np.empty(n_targets)
+    step = max(1, (1 << 20) // max(n, 1))
+    for l0 in range(0, n_targets, step):
+        blk = slice(l0, min(l0 + step, n_targets))
+        unit = 1.0
+        with np.errstate(over="ignore"):  # u_max / unit may exceed the float range: inf, bound 0
+            if cov is None:  # o_l - p_i, as vectors_between computes it
+                dx, dy = t[blk, 0, None] - s[None, :, 0], t[blk, 1, None] - s[None, :, 1]
+            else:
+                v, unit = mahalanobis_rescale(t[None, blk, :] - s[:, None, :], cov[blk])
+                dx, dy = v[..., 0].T, v[..., 1].T
+            x[blk], y[blk], u2[blk] = normalise_rows(dx, dy, u[blk] / unit)
+    return x, y, u2
+
+
+class GeometryHeads:
+    """The heads Algorithm 1's kernel (:func:`obslib.assignment.greedy_pairs_batch`) asks for, of
+    one instance, from geometry: per target, the list of its pairs of weight at least ``floor``
+    over the sensors free when it was filled (:meth:`PairSearch.best`, at least ``k`` of them),
+    in greedy order.
+
+    Sensors only leave, so while the list holds a pair of free sensors, the first such pair is
+    the target's best; when none is left, the list is refilled over the free sensors with a
+    lower threshold.
+    """
+
+    def __init__(self, search, n_targets, k):
+        self.search, self.k = search, k
+        empty = (np.zeros(0), np.zeros(0, np.int64), np.zeros(0, np.int64))
+        self.lists = [empty] * n_targets
+        self.pos = [0] * n_targets
+        self.floor = [None] * n_targets  # None: never filled
+
+    def heads(self, b, l, free):
+        out = np.array([self._head(int(t), free[0]) for t in l.tolist()]).reshape(-1, 3)
+        return out[:, 0], out[:, 1].astype(np.int64), out[:, 2].astype(np.int64)
+
+    def _head(self, l, free):
+        (w, i, j), pos = self.lists[l], self.pos[l]
+        for _ in range(2):  # a fresh list holds free sensors only: at most one refill
+            step = 4
+            while pos < w.size:  # the first pair of free sensors, in chunks that double
+                ok = free[i[pos:pos + step]] & free[j[pos:pos + step]]
+                first = int(ok.argmax())
+                if ok[first]:
+                    self.pos[l] = pos = pos + first
+                    return w[pos], i[pos], j[pos]
+                pos += step
+                step *= 2
+            floor = self.floor[l]
+            if floor == -np.inf:  # the list held every pair: none is free
+                break
+            tau = None if floor is None else 1.0 - 2.0 * (1.0 - floor)
+            a, b, w, self.floor[l] = self.search.best(l, np.flatnonzero(free), self.k, tau)
+            i, j = np.minimum(a, b), np.maximum(a, b)
+            order = np.lexsort((j, i, -w))
+            w, i, j = self.lists[l] = w[order], i[order], j[order]
+            pos = 0
+        self.pos[l] = pos
+        return -np.inf, 0, 0

@@ -29,10 +29,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _exact_pairs as exact_pairs
-from ._kernels import mahalanobis_rescale, normalise_rows, pair_kernel
-from ._pair_search import PairSearch, keep_top
-from ._validate import (ArgumentTypeError, as_bool, as_cov, as_float_array, as_int, as_points, as_u_max,
-                        as_weights, check_distinct, check_pair_sizes, check_weight_memory, vectors_between)
+from ._kernels import pair_kernel
+from ._pair_search import GeometryHeads, PairSearch, keep_top, target_rows
+from ._validate import (ArgumentTypeError, as_bool, as_float_array, as_int, as_points, as_weights,
+                        check_pair_sizes, check_weight_memory)
 
 __all__ = [
     "PairAssignment",
@@ -41,6 +41,8 @@ __all__ = [
     "greedy_pairs_batch",
     "relaxed_pair_assignment",
     "optimal_pair_assignment",
+    "OptimumNotProven",
+    "MAX_EXACT_BYTES",
     "assignment_value",
     "upper_pair_weights",
     "upper_pair_weight_blocks",
@@ -78,43 +80,6 @@ def assignment_value(W, triples) -> float:
     """
     W = as_float_array(W, "W")
     return float(sum(W[i, j, l] for i, j, l in triples))
-
-
-def _rows(sensors, targets, u_max, cov):
-    """Validated rows ``o_l - p_i`` of every target, normalised per target as
-    :func:`obslib.pair_bounds` normalises them: ``x, y`` ``(L, N)`` and ``u_max^2`` ``(L,)`` in
-    the same unit, the input of :func:`obslib._kernels.pair_kernel`.
-
-    Computed a block of targets at a time, so that the memory is that of ``x, y`` (the
-    ``(N, L, 2)`` array of differences and its temporaries never exist at once: at ``N = 10,000``,
-    ``L = 5,000`` they took 2.4 GB). The scene is checked as :func:`obslib._validate.vectors_between`
-    checks it, and by it where a difference may overflow or a sensor sits on a target, so errors
-    name the same sensor and target.
-    """
-    s, t = as_points(sensors, "sensors"), as_points(targets, "targets")
-    n, n_targets = s.shape[0], t.shape[0]
-    check_distinct(s)
-    with np.errstate(over="ignore"):
-        reach = np.abs(s).max(initial=0.0) + np.abs(t).max(initial=0.0)
-    on = np.isin(t[:, 0] + 1j * t[:, 1], s[:, 0] + 1j * s[:, 1])
-    if not np.isfinite(reach) or on.any():
-        vectors_between(s, t, cov)  # raises, naming the sensor and the target
-    if cov is not None:
-        cov = as_cov(cov, n_targets)
-    u = np.broadcast_to(as_u_max(u_max, n_targets), (n_targets,))
-    x, y, u2 = np.empty((n_targets, n)), np.empty((n_targets, n)), np.empty(n_targets)
-    step = max(1, (1 << 20) // max(n, 1))
-    for l0 in range(0, n_targets, step):
-        blk = slice(l0, min(l0 + step, n_targets))
-        unit = 1.0
-        with np.errstate(over="ignore"):  # u_max / unit may exceed the float range: inf, bound 0
-            if cov is None:  # o_l - p_i, as vectors_between computes it
-                dx, dy = t[blk, 0, None] - s[None, :, 0], t[blk, 1, None] - s[None, :, 1]
-            else:
-                v, unit = mahalanobis_rescale(t[None, blk, :] - s[:, None, :], cov[blk])
-                dx, dy = v[..., 0].T, v[..., 1].T
-            x[blk], y[blk], u2[blk] = normalise_rows(dx, dy, u[blk] / unit)
-    return x, y, u2
 
 
 # --------------------------------------------------------------------------------------------
@@ -173,6 +138,12 @@ class _WeightHeads:
     def __init__(self, w, ii, jj):
         self.w, self.ii, self.jj = w, ii, jj
 
+    @classmethod
+    def of(cls, arr):
+        """The heads of one instance's validated weights ``arr`` ``(N, N, L)``."""
+        ii, jj = np.triu_indices(arr.shape[0], 1)
+        return cls(arr[ii, jj][None], ii, jj)
+
     def heads(self, b, l, free):
         P = self.ii.size
         out_w, out_i, out_j = np.empty(b.size), np.empty(b.size, np.int64), np.empty(b.size, np.int64)
@@ -185,52 +156,6 @@ class _WeightHeads:
             out_w[s:s + step] = rows[np.arange(bs.size), p]
             out_i[s:s + step], out_j[s:s + step] = self.ii[p], self.jj[p]
         return out_w, out_i, out_j
-
-
-class _GeometryHeads:
-    """Heads of :func:`_rounds` (one instance) from geometry: per target, the list of its pairs
-    of weight at least ``floor`` over the sensors free when it was filled
-    (:meth:`obslib._pair_search.PairSearch.best`, at least ``k`` of them), in greedy order.
-
-    Sensors only leave, so while the list holds a pair of free sensors, the first such pair is
-    the target's best; when none is left, the list is refilled over the free sensors with a
-    lower threshold.
-    """
-
-    def __init__(self, search, n_targets, k):
-        self.search, self.k = search, k
-        empty = (np.zeros(0), np.zeros(0, np.int64), np.zeros(0, np.int64))
-        self.lists = [empty] * n_targets
-        self.pos = [0] * n_targets
-        self.floor = [None] * n_targets  # None: never filled
-
-    def heads(self, b, l, free):
-        out = np.array([self._head(int(t), free[0]) for t in l.tolist()]).reshape(-1, 3)
-        return out[:, 0], out[:, 1].astype(np.int64), out[:, 2].astype(np.int64)
-
-    def _head(self, l, free):
-        (w, i, j), pos = self.lists[l], self.pos[l]
-        for _ in range(2):  # a fresh list holds free sensors only: at most one refill
-            step = 4
-            while pos < w.size:  # the first pair of free sensors, in chunks that double
-                ok = free[i[pos:pos + step]] & free[j[pos:pos + step]]
-                first = int(ok.argmax())
-                if ok[first]:
-                    self.pos[l] = pos = pos + first
-                    return w[pos], i[pos], j[pos]
-                pos += step
-                step *= 2
-            floor = self.floor[l]
-            if floor == -np.inf:  # the list held every pair: none is free
-                break
-            tau = None if floor is None else 1.0 - 2.0 * (1.0 - floor)
-            a, b, w, self.floor[l] = self.search.best(l, np.flatnonzero(free), self.k, tau)
-            i, j = np.minimum(a, b), np.maximum(a, b)
-            order = np.lexsort((j, i, -w))
-            w, i, j = self.lists[l] = w[order], i[order], j[order]
-            pos = 0
-        self.pos[l] = pos
-        return -np.inf, 0, 0
 
 
 def _progress(progress, total, what):
@@ -345,17 +270,15 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
         arr = as_weights(W)
         n, n_targets = arr.shape[0], arr.shape[2]
         check_pair_sizes(n, n_targets)
-        ii, jj = np.triu_indices(n, 1)
-        source = _WeightHeads(arr[ii, jj][None], ii, jj)
-        counted = None
+        source = _WeightHeads.of(arr)
     elif sensors is None or targets is None or u_max is None:
         raise ValueError("give W, or sensors=, targets= and u_max=")
     else:
-        x, y, u2 = _rows(sensors, targets, u_max, cov)
+        x, y, u2 = target_rows(sensors, targets, u_max, cov)
         n_targets, n = x.shape
         check_pair_sizes(n, n_targets)
         search = PairSearch(x, y, u2)
-        source = _GeometryHeads(search, n_targets, k)
+        source = GeometryHeads(search, n_targets, k)
     bar = _progress(progress, n_targets, "greedy")
     try:
         picks, weights = _rounds(source, np.ones((1, n), dtype=bool), n_targets, bar)
@@ -390,7 +313,7 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
             return arr[np.ix_(s_free, s_free, t_free)]
         counted = None
     elif sensors is not None and targets is not None and u_max is not None:
-        X, Y, u2 = _rows(sensors, targets, u_max, cov)
+        X, Y, u2 = target_rows(sensors, targets, u_max, cov)
         n_targets, n = X.shape
         check_weight_memory(n, n_targets)  # the first round evaluates the whole (N, N, L) block
 
@@ -439,7 +362,7 @@ def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 <
     >>> [(l0, l1, block.shape) for l0, l1, block in blocks]
     [(0, 1, (1, 6)), (1, 2, (1, 6))]
     """
-    xt, yt, u2 = _rows(sensors, targets, u_max, cov)  # (L, N)
+    xt, yt, u2 = target_rows(sensors, targets, u_max, cov)  # (L, N)
     ii, jj = np.triu_indices(xt.shape[1], 1)
     step = max(1, chunk // max(ii.size, 1))
     for a in range(0, xt.shape[0], step):
@@ -471,7 +394,7 @@ def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
 
 
 def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targets=None, u_max=None,
-                            cov=None) -> PairAssignment:
+                            cov=None, progress=False) -> PairAssignment:
     """Problem 3: maximum-weight matching of sensor pairs to targets.
 
     Each unordered pair serves at most one target and each target gets at most one pair, but a
@@ -487,6 +410,9 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
         which one unordered pair can serve two targets (as ``(i, j)`` and ``(j, i)``).
     sensors, targets, u_max, cov : optional
         Instead of ``W``: the geometry (only the ``i < j`` weights are computed).
+    progress : bool
+        Show a progress bar (tqdm, on stderr): from geometry over the targets' candidate
+        searches, from ``W`` over the one matching.
 
     Examples
     --------
@@ -495,17 +421,25 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
     [(0, 1, 0), (2, 3, 1)]
     """
     ordered = as_bool(ordered, "ordered")
+    as_bool(progress, "progress")
     if W is not None:
         arr = as_weights(W)
         n = arr.shape[0]
         ii, jj = np.triu_indices(n, 1)
-        return _relaxed_from_cost(n, ii, jj, arr[ii, jj, :].T, ordered, counted=None)
+        bar = _progress(progress, 1, "matching")
+        try:
+            return _relaxed_from_cost(n, ii, jj, arr[ii, jj, :].T, ordered, counted=None)
+        finally:
+            if bar is not None:
+                bar.update()
+                bar.close()
     if sensors is not None and targets is not None and u_max is not None:
-        return relaxed_from_geometry(sensors, targets, u_max, cov, orders=(ordered,))[0]
+        return relaxed_from_geometry(sensors, targets, u_max, cov, orders=(ordered,),
+                                     progress=progress)[0]
     raise ValueError("give W, or sensors=, targets= and u_max=")
 
 
-def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True)) -> list:
+def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True), progress=False) -> list:
     """Problem 3 from geometry, evaluating only each target's ``L`` best pairs.
 
     A target matched to a pair outside its ``L`` heaviest could move to one of them, since the
@@ -516,7 +450,8 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
     weights, and the sparse matching is solved with
     ``scipy.sparse.csgraph.min_weight_full_bipartite_matching``. Returns one
     :class:`PairAssignment` per entry of ``orders`` (``ordered`` flags), sharing the candidates;
-    ``n_evaluations`` counts the weights computed (once, for all of them).
+    ``n_evaluations`` counts the weights computed (once, for all of them). ``progress`` shows a
+    tqdm bar (stderr) over the targets' searches.
 
     Examples
     --------
@@ -527,7 +462,7 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
     from scipy.sparse import csr_array
     from scipy.sparse.csgraph import min_weight_full_bipartite_matching
 
-    x, y, u2 = _rows(sensors, targets, u_max, cov)
+    x, y, u2 = target_rows(sensors, targets, u_max, cov)
     n_targets, n = x.shape
     if n_targets < 1:
         raise ValueError("there must be at least one target")
@@ -536,12 +471,17 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
     source = PairSearch(x, y, u2)
     every = np.arange(n)
     rows, ids, ws = [], [], []
+    bar = _progress(progress, n_targets, "candidate pairs")
     for l in range(n_targets):
         a, b, w, _ = source.best(l, every, n_targets)
         a, b, w = keep_top(a, b, w, n_targets)
         rows.append(np.full(w.size, l))
         ids.append(np.minimum(a, b) * n + np.maximum(a, b))
         ws.append(w)
+        if bar is not None:
+            bar.update()
+    if bar is not None:
+        bar.close()
     rows, ids, ws = np.concatenate(rows), np.concatenate(ids), np.concatenate(ws)
     pairs, col = np.unique(ids, return_inverse=True)
     ii, jj = pairs // n, pairs % n
@@ -582,7 +522,45 @@ def _relaxed_from_cost(n, ii, jj, cost, ordered, counted) -> PairAssignment:
     return PairAssignment(triples=triples, value=float(cost[rows, cols].sum()), n_evaluations=counted)
 
 
-def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignment:
+class OptimumNotProven(RuntimeError):
+    """:func:`optimal_pair_assignment` reached its ``time_limit`` before proving an optimum.
+
+    ``best`` is the best assignment found by then (a :class:`PairAssignment`, one pair per
+    target; at worst Algorithm 1's), ``bound`` an upper bound on the optimum (``None`` when the
+    limit came before the linear relaxation gave one), so ``best.value / bound`` bounds how far
+    from optimal ``best`` can be.
+    """
+
+    def __init__(self, message, best, bound):
+        super().__init__(message)
+        self.best, self.bound = best, bound
+
+
+#: Largest memory :func:`optimal_pair_assignment` may use beyond ``W``: 2 GiB, at
+#: :data:`obslib._exact_pairs.BYTES_PER_VARIABLE` bytes per pair-target variable.
+MAX_EXACT_BYTES = exact_pairs.MAX_BYTES
+
+
+def _check_exact_memory(n, n_targets):
+    """Refuse, before any work, an exact solve whose estimated memory exceeds the limit."""
+    need = exact_pairs.memory_bytes(n, n_targets)
+    if need <= MAX_EXACT_BYTES:
+        return
+    per = exact_pairs.BYTES_PER_VARIABLE
+    most = MAX_EXACT_BYTES // per
+    top = 1
+    while exact_pairs.memory_bytes(2 * top + 2, top + 1) <= MAX_EXACT_BYTES:
+        top += 1
+    raise ValueError(
+        f"the exact solver would need about {need / 2**30:.1f} GiB for N = {n}, L = {n_targets} "
+        f"({n * (n - 1) // 2 * n_targets:,} pair-target variables, {per} bytes each), over the "
+        f"limit of {MAX_EXACT_BYTES / 2**30:.0f} GiB: it fits up to {most:,} variables "
+        f"(N (N - 1) / 2 * L), e.g. N = 2L up to L = {top}; for larger instances use "
+        "greedy_pair_assignment (within 1/3 of the optimum, Theorem 6) or "
+        "relaxed_pair_assignment (an upper bound)")
+
+
+def optimal_pair_assignment(W, time_limit: float | None = None, progress=False) -> PairAssignment:
     """Problem 1 solved exactly: a 0-1 program over pair-target variables.
 
     Variables ``x[p, l]`` for unordered pairs ``p = (i, j)`` and targets ``l``; each target takes
@@ -606,15 +584,34 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
     loss per target and per sensor. It proves the optimum up to
     :math:`10^{-10}` of the bound (floating-point noise; HiGHS's default gap is :math:`10^{-4}`);
     if the search grows beyond a fixed node count it hands the reduced model to
-    ``scipy.optimize.milp``. Fig. 8's random instances at ``L = 20``, ``N = 2L`` take 0.1 to 1 s
-    (one HiGHS 0-1 program: about 4 s).
+    ``scipy.optimize.milp``. The LP is solved by column generation (each target's heaviest pairs
+    first, then the pairs the duals price as profitable), so HiGHS never sees all
+    ``N (N - 1) / 2 * L`` variables at once. Fig. 8's random instances at ``L = 20``, ``N = 2L``
+    take 0.1 to 1 s (one HiGHS 0-1 program: about 4 s).
+
+    Limits. Memory is estimated before any work, at
+    :data:`obslib._exact_pairs.BYTES_PER_VARIABLE` bytes per pair-target variable beyond ``W``
+    itself (the case where no variable can be fixed); above :data:`MAX_EXACT_BYTES` (2 GiB:
+    about 12 million variables, ``N = 2L`` up to ``L = 182``) the call raises ``ValueError``
+    saying what fits. The HiGHS 0-1 program that takes over a search grown too large needs
+    about :data:`obslib._exact_pairs.MILP_BYTES_PER_VARIABLE` bytes per variable left; it runs
+    only when that fits the same limit, and otherwise the call raises :class:`OptimumNotProven`.
+    ``time_limit`` bounds the whole call: every HiGHS call gets the time left, the local search
+    and the branch and bound check the clock, and when it runs out the call raises
+    :class:`OptimumNotProven` (a ``RuntimeError``) carrying the best assignment found and the LP
+    bound, within a fraction of a second of the limit (0.2 s over at ``L = 100`` and
+    ``L = 200``: one HiGHS call on a restricted LP, one sort, or a few search nodes).
 
     Parameters
     ----------
     W : array_like, shape (N, N, L)
         Pair weights: finite, non-negative, symmetric in ``i, j`` (the diagonal is ignored).
     time_limit : float, optional
-        Seconds after which the call gives up (RuntimeError).
+        Seconds the call may take (from after the validation of ``W`` and the import of
+        ``scipy.optimize``).
+    progress : bool
+        Show the phase (LP relaxation, incumbent, branch and bound) and the gap between the
+        bound and the best assignment in a tqdm bar on stderr.
 
     Returns
     -------
@@ -625,7 +622,9 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
     Raises
     ------
     ValueError
-        For bad ``W`` or ``N < 2L``; RuntimeError if the solver stops without a proven optimum.
+        For bad ``W``, ``N < 2L``, or an instance over the memory limit.
+    OptimumNotProven
+        When ``time_limit`` passes before an optimum is proven.
 
     Examples
     --------
@@ -642,7 +641,29 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
             raise ArgumentTypeError(f"time_limit must be a number of seconds or None, got {time_limit!r}")
         if not (np.isfinite(time_limit) and time_limit > 0):
             raise ValueError(f"time_limit must be positive and finite, got {time_limit!r}")
+    as_bool(progress, "progress")
+    _check_exact_memory(n, n_targets)
+    import scipy.optimize  # noqa: F401  (1 s on a first call: imported before the clock starts)
+
     deadline = None if not time_limit else time.perf_counter() + float(time_limit)
-    start = greedy_pair_assignment(arr).triples  # one of the search's incumbents
-    triples = sorted(exact_pairs.solve(arr, deadline, start), key=lambda t: t[2])
+    bar = _progress(progress, None, "exact optimum")
+    try:
+        # Algorithm 1 (one of the search's incumbents) on the weights validated above
+        picks, _ = _rounds(_WeightHeads.of(arr), np.ones((1, n), dtype=bool), n_targets)
+        start = [tuple(t) for t in picks[0].tolist()]
+        triples = exact_pairs.solve(arr, deadline, start, bar)
+    except exact_pairs.Stopped as e:
+        best = sorted(e.triples, key=lambda t: t[2])
+        best = PairAssignment(triples=best, value=assignment_value(arr, best))
+        gap = "" if e.bound is None else f", the bound {e.bound:.6g}"
+        why = (f"within time_limit = {time_limit} s" if e.reason == "time" else
+               f"within {MAX_EXACT_BYTES / 2**30:.0f} GiB: the search left more variables than "
+               "the HiGHS 0-1 program it hands them to could hold")
+        raise OptimumNotProven(
+            f"no proven optimum {why}; the best assignment found is worth {best.value:.6g}{gap} "
+            "(attributes best and bound)", best, e.bound) from None
+    finally:
+        if bar is not None:
+            bar.close()
+    triples = sorted(triples, key=lambda t: t[2])
     return PairAssignment(triples=triples, value=assignment_value(arr, triples))

@@ -330,6 +330,58 @@ def test_exact_solver_hands_large_searches_to_highs(monkeypatch):
     assert calls  # the hand-over happened
 
 
+def test_exact_solver_honours_a_tiny_time_limit_at_L_100():
+    """At L = 100, N = 200 (2 million pair-target variables) the call stops within its limit
+    plus 1 s with the best assignment found, at least Algorithm 1's, and the LP bound once it
+    is known."""
+    import time
+
+    import scipy.optimize  # noqa: F401  (the clock starts after this import)
+
+    from obslib.assignment import OptimumNotProven
+
+    rng = np.random.default_rng([0, 100])
+    W = ob.pair_bounds(rng.uniform(0, 100, (200, 2)), rng.uniform(0, 100, (100, 2)), 1.0)
+    greedy = greedy_pair_assignment(W).value
+    for limit in (0.2, 2.0):
+        t0 = time.perf_counter()
+        with pytest.raises(OptimumNotProven, match="no proven optimum within time_limit") as err:
+            optimal_pair_assignment(W, time_limit=limit)
+        assert time.perf_counter() - t0 < limit + 1.0
+        best = err.value.best
+        assert _feasible(best, 200, 100) and sorted(l for *_, l in best.triples) == list(range(100))
+        assert best.value == assignment_value(W, best.triples) >= greedy
+        assert err.value.bound is None or best.value <= err.value.bound + 1e-9
+
+
+def test_exact_solver_refuses_what_would_not_fit_in_memory(monkeypatch):
+    from obslib import _exact_pairs as exact
+    from obslib import assignment
+    from obslib.assignment import OptimumNotProven
+
+    rng = np.random.default_rng(14)
+    _, _, W = random_instance(rng, 5, 0)
+    monkeypatch.setattr(assignment, "MAX_EXACT_BYTES", 10_000)  # 45 * 5 variables do not fit
+    with pytest.raises(ValueError, match=r"over the limit .* fits up to 56 variables"):
+        optimal_pair_assignment(W)
+    monkeypatch.undo()
+    # the 0-1 program a large search hands over runs only within the limit: every search that
+    # branches is handed over (no node allowed), and no program fits
+    monkeypatch.setattr(exact, "MAX_NODES", 0)
+    monkeypatch.setattr(exact, "MAX_BYTES", exact.memory_bytes(10, 5))
+    stopped = 0
+    for _ in range(20):
+        _, _, W = random_instance(rng, 5, 0)
+        want = _highs(W)
+        try:
+            assert optimal_pair_assignment(W).value == pytest.approx(want, rel=1e-9)
+        except OptimumNotProven as err:
+            assert "GiB" in str(err)
+            assert err.best.value <= want + 1e-12 <= err.bound + 2e-12
+            stopped += 1
+    assert stopped
+
+
 def test_exact_solver_time_limit_and_zero_weights():
     rng = np.random.default_rng([0, 20])
     W = ob.pair_bounds(rng.uniform(0, 100, (40, 2)), rng.uniform(0, 100, (20, 2)), 1.0)
@@ -339,3 +391,25 @@ def test_exact_solver_time_limit_and_zero_weights():
         with pytest.raises(ValueError, match="time_limit"):
             optimal_pair_assignment(W, time_limit=bad)
     assert optimal_pair_assignment(np.zeros((4, 4, 2))).triples == []
+
+
+def test_progress_bars_go_to_stderr_and_change_nothing(capsys):
+    rng = np.random.default_rng(15)
+    S, T, W = random_instance(rng, 6, 2)
+    runs = [
+        (lambda p: greedy_pair_assignment(sensors=S, targets=T, u_max=1.0, progress=p), "greedy"),
+        (lambda p: greedy_pair_assignment(W, progress=p), "greedy"),
+        (lambda p: relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0, progress=p),
+         "candidate pairs"),
+        (lambda p: relaxed_pair_assignment(W, progress=p), "matching"),
+        (lambda p: optimal_pair_assignment(W, progress=p), "exact optimum"),
+    ]
+    for run, label in runs:
+        quiet = run(False)
+        assert capsys.readouterr().err == ""
+        shown = run(True)
+        out = capsys.readouterr()
+        assert label in out.err and out.out == ""
+        assert shown == quiet
+    with pytest.raises(ValueError, match="progress"):
+        greedy_pair_assignment(W, progress="yes")
