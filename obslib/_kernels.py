@@ -119,9 +119,10 @@ def normalise(v: np.ndarray, u) -> tuple:
     return np.stack([x.T, y.T], axis=-1), u2
 
 
-def normalise_rows(x: np.ndarray, y: np.ndarray, u) -> tuple:
+def normalise_rows(x: np.ndarray, y: np.ndarray, u, out=None) -> tuple:
     """:func:`normalise` for rows given by their coordinates ``x, y``, shape ``(L, N)`` (target
-    ``l``'s rows are ``x[l], y[l]``); returns the scaled ``x, y`` (new arrays) and ``u_max^2``.
+    ``l``'s rows are ``x[l], y[l]``); returns the scaled ``x, y`` (new arrays, or ``out``, a pair
+    of arrays of that shape to write them to) and ``u_max^2``.
 
     A target's rows are first brought into :data:`SAFE_RANGE` by a power of two (exact), so the
     norms cannot overflow; ``u_max`` too large to square in the new unit becomes ``inf``
@@ -131,13 +132,22 @@ def normalise_rows(x: np.ndarray, y: np.ndarray, u) -> tuple:
     if x.shape[1] == 0:
         with np.errstate(over="ignore"):
             return x, y, np.broadcast_to(np.asarray(u, dtype=float) ** 2, (n_targets,)).copy()
-    p = pow2_scale(np.maximum(np.abs(x).max(axis=1), np.abs(y).max(axis=1)))  # (L,)
+    # max |x| as max(max x, -min x): the same number without an array of |x|
+    top = np.maximum(np.maximum(x.max(axis=1), -x.min(axis=1)),
+                     np.maximum(y.max(axis=1), -y.min(axis=1)))
+    p = pow2_scale(top)  # (L,)
     x, y = rescale(x, p[:, None]), rescale(y, p[:, None])
-    scale = np.sqrt((x * x + y * y).max(axis=1))
+    sq = x * x
+    sq += y * y
+    scale = np.sqrt(sq.max(axis=1))
     with np.errstate(over="ignore"):
         u = np.broadcast_to(np.asarray(u, dtype=float), (n_targets,)) / p
         u2 = u**2 / scale**2
-    return x / scale[:, None], y / scale[:, None], u2
+    if out is None:
+        return x / scale[:, None], y / scale[:, None], u2
+    np.divide(x, scale[:, None], out=out[0])
+    np.divide(y, scale[:, None], out=out[1])
+    return out[0], out[1], u2
 
 
 def pair_series(v: np.ndarray, pairs: np.ndarray, u) -> np.ndarray:

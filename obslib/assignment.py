@@ -243,7 +243,8 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
         From geometry, the least number of pairs a target's list holds after a fill (default
         16); affects speed only.
     progress : bool
-        Show a progress bar (tqdm, on stderr) over the rounds.
+        Show a progress bar (tqdm, on stderr) over the rounds (from geometry, first over the
+        targets' first searches).
 
     Returns
     -------
@@ -277,9 +278,11 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
         x, y, u2 = target_rows(sensors, targets, u_max, cov)
         n_targets, n = x.shape
         check_pair_sizes(n, n_targets)
+    # the bar ticks once per round, and from geometry first once per target's first search
+    bar = _progress(progress, n_targets * (1 if W is not None else 2), "greedy")
+    if W is None:
         search = PairSearch(x, y, u2)
-        source = GeometryHeads(search, n_targets, k)
-    bar = _progress(progress, n_targets, "greedy")
+        source = GeometryHeads(search, n_targets, k, bar)
     try:
         picks, weights = _rounds(source, np.ones((1, n), dtype=bool), n_targets, bar)
     finally:
