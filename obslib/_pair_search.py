@@ -2,27 +2,29 @@
 search behind the greedy and the relaxed matching of :mod:`obslib.assignment`.
 
 A pair's weight (Theorem 4's bound, :func:`obslib._kernels.pair_kernel`) is at most the inverse
-condition number of its two rows :math:`a, b` (:math:`\\lambda_{\\min}/\\lambda_{\\max}` of their
-Gram matrix; the control only adds to :math:`\\lambda_{\\max}`). Writing
-:math:`b = s R_{90^\\circ + \\varphi} a` (:math:`s = |b|/|a|`), that ratio is at least
-:math:`\\tau` if and only if
+condition number of its two rows :math:`a, b` (:math:`\\sqrt{\\lambda_{\\min}/\\lambda_{\\max}}` of
+their Gram matrix; the control only adds to :math:`\\lambda_{\\max}`). Writing
+:math:`b = s R_{90^\\circ + \\varphi} a` (:math:`s = |b|/|a|`, :math:`R` a rotation), the Gram matrix
+has trace :math:`|a|^2 (1 + s^2)` and determinant :math:`|a|^4 s^2 \\cos^2\\varphi`, so that ratio
+is at least :math:`\\tau` if and only if
 
 .. math::
 
-    2 s |\\cos\\varphi| \\ge \\frac{2\\tau}{1 + \\tau^2}\\,(1 + s^2),
+    2 s |\\cos\\varphi| \\ge \\frac{2\\tau}{1 + \\tau^2}\\,(1 + s^2).
 
-which forces :math:`\\tau \\le s \\le 1/\\tau` and
-:math:`|b - b^*|^2 = |a|^2 (s^2 - 2 s |\\cos\\varphi| + 1) \\le |a|^2 (1 - \\tau)^2 / \\tau^2`
-for :math:`b^* = \\pm R_{90^\\circ} a`: a pair of weight :math:`\\ge \\tau > 1/2` has its second
-row within the angle :math:`\\arcsin((1 - \\tau)/\\tau)` of the first row turned by
-:math:`+90^\\circ` or :math:`-90^\\circ` (which, turned back from the second row, is
-:math:`+90^\\circ`). With a target's rows sorted by angle, the pairs of weight :math:`\\ge \\tau`
-are therefore among those whose second row lies in the window
-:math:`[\\theta_a + 90^\\circ - \\delta, \\theta_a + 90^\\circ + \\delta]` of the first, each pair once;
-the window is found by ``searchsorted`` and its pairs are further screened by the distance bound
+As :math:`1 + s^2 \\ge 2 s`, this forces :math:`|\\sin\\varphi| \\le (1 - \\tau^2)/(1 + \\tau^2)`, and
+:math:`\\tau \\le s \\le 1/\\tau`: the second row of a pair of weight :math:`\\ge \\tau > 0` lies within
+:math:`\\delta = \\arcsin((1 - \\tau^2)/(1 + \\tau^2)) < 90^\\circ` of the first row turned by
+:math:`+90^\\circ` (when :math:`\\cos\\varphi > 0`) or :math:`-90^\\circ`, in which case the first lies
+within :math:`\\delta` of the second turned by :math:`+90^\\circ`. With a target's rows sorted by
+angle, each pair of weight :math:`\\ge \\tau` is therefore found exactly once among the rows in the
+window :math:`[\\theta + 90^\\circ - \\delta, \\theta + 90^\\circ + \\delta]` of each row's angle
+:math:`\\theta` (read off angle bins), screened by the distance bound
 :math:`\\text{weight}^2 \\le r_{\\min} / (r_{\\max} + u^2)` before the kernel runs. Near the top
-(:math:`\\tau` close to 1) a window holds about :math:`N \\delta / \\pi` rows, so finding a target's
-best pairs costs :math:`O(N \\log N)` instead of :math:`O(N^2)`.
+(:math:`\\tau` close to 1, :math:`\\delta \\approx 1 - \\tau`) a window holds about
+:math:`N \\delta / \\pi` rows, so a target's best pairs cost :math:`O(N \\log N)` instead of
+:math:`O(N^2)`. Every pruning test is widened by a relative margin (:data:`_MARGIN`) far above
+rounding, so no pair the kernel weighs at or above :math:`\\tau` is missed.
 """
 
 from __future__ import annotations
@@ -80,7 +82,7 @@ class PairSearch:
         it is lowered (``1 - tau`` doubled) until ``k`` pairs reach it.
         """
         m = idx.size
-        if m * (m - 1) // 2 <= 4 * k or m < 64:
+        if m * (m - 1) // 2 <= 4 * k:
             return self._all(l, idx, k)
         x, y = self.x[l, idx], self.y[l, idx]
         theta = np.arctan2(y, x)

@@ -413,3 +413,33 @@ def test_progress_bars_go_to_stderr_and_change_nothing(capsys):
         assert shown == quiet
     with pytest.raises(ValueError, match="progress"):
         greedy_pair_assignment(W, progress="yes")
+
+
+def test_pair_search_returns_every_pair_down_to_its_floor():
+    """PairSearch.best against all pairs weighed: the pairs it returns are exactly those at or
+    above the floor it reports (at least k of them), with the kernel's weights, from any first
+    threshold, on uniform scenes, a grid (ties) and clustered sensors."""
+    from obslib._pair_search import PairSearch, target_rows
+
+    rng = np.random.default_rng(23)
+    scenes = [(rng.uniform(0, 100, (300, 2)), rng.uniform(0, 100, (4, 2))),
+              (np.array([(a, b) for a in range(18) for b in range(18)], float) * 5.0,
+               np.array([[42.5, 42.5], [2.5, 87.5], [120.0, -10.0]])),
+              (rng.normal(50, 3, (250, 2)), np.array([[50.5, 50.5], [90.0, 50.0]]))]
+    for S, T in scenes:
+        x, y, u2 = target_rows(S, T, 1.0, None)
+        search = PairSearch(x, y, u2)
+        ii, jj = np.triu_indices(S.shape[0], 1)
+        for l in range(T.shape[0]):
+            every = search.weights(l, ii, jj)
+            for k, tau in [(1, None), (16, None), (40, 0.999), (16, 0.2)]:
+                idx = np.sort(rng.choice(S.shape[0], size=S.shape[0] - 7, replace=False))
+                a, b, w, floor = search.best(l, idx, k, tau)
+                inside = np.isin(ii, idx) & np.isin(jj, idx)
+                want = {(i, j) for i, j in zip(ii[inside & (every >= floor)].tolist(),
+                                               jj[inside & (every >= floor)].tolist())}
+                got = {(min(p, q), max(p, q)) for p, q in zip(a.tolist(), b.tolist())}
+                assert got == want and len(got) == a.size
+                assert floor == -np.inf or a.size >= k
+                W = {(i, j): v for i, j, v in zip(ii.tolist(), jj.tolist(), every.tolist())}
+                assert all(W[min(p, q), max(p, q)] == v for p, q, v in zip(a, b, w))
