@@ -5,6 +5,9 @@ Weights are ``W[i, j, l]`` = the pair bound of sensors ``i, j`` for target ``l``
 
 ``greedy_pair_assignment``
     Algorithm 1: repeatedly take the heaviest triple whose sensors and target are all unused.
+``greedy_pairs_batch``
+    Algorithm 1 on many instances at once: the one kernel behind the greedy here and the
+    studies' batched greedy.
 ``greedy_pair_assignment_literal``
     The same algorithm as printed, re-evaluating every remaining triple each round; kept for
     tests and benchmarks.
@@ -12,7 +15,8 @@ Weights are ``W[i, j, l]`` = the pair bound of sensors ``i, j`` for target ``l``
     Problem 3 (each unordered pair serves at most one target, sensors may be reused), solved
     exactly as a bipartite matching between pairs and targets; an upper bound on Problem 1.
 ``optimal_pair_assignment``
-    Problem 1 solved exactly as a 0-1 program (``scipy.optimize.milp``, HiGHS).
+    Problem 1 solved exactly: branch and bound on its LP relaxation (HiGHS), within a time and
+    a memory limit (:class:`OptimumNotProven`).
 
 Ties
 ----
