@@ -19,7 +19,8 @@ import time
 import numpy as np
 
 __all__ = ["solve", "milp", "lp_duals", "pair_rows", "memory_bytes", "Stopped", "MAX_NODES",
-           "MAX_BYTES", "BYTES_PER_VARIABLE", "MILP_BYTES_PER_VARIABLE"]
+           "MAX_BYTES", "BYTES_PER_VARIABLE", "SEARCH_BYTES", "MILP_BYTES_PER_VARIABLE",
+           "SEARCH_MAX_VARIABLES", "HIGHS_SECONDS_PER_VARIABLE"]
 
 
 class Stopped(RuntimeError):
@@ -37,10 +38,14 @@ class Stopped(RuntimeError):
 MAX_BYTES = 2 << 30
 
 #: Bytes per pair-target variable (``N (N - 1) / 2 * L`` of them) at the solver's peak beyond
-#: ``W``, when every variable stays in the search: the ``(P, L)`` weights, losses and LP
-#: solution, the sorts over them, and the search's option lists (measured: 160 at ``L = 100``,
-#: ``N = 200``, where no variable could be fixed).
-BYTES_PER_VARIABLE = 176
+#: ``W``: the ``(P, L)`` weights, losses and LP solution and the temporaries over them
+#: (measured: 55 at ``L = 200``, ``N = 400``); the branch and bound's option lists add at most
+#: :data:`SEARCH_BYTES`.
+BYTES_PER_VARIABLE = 64
+
+#: The branch and bound's option lists at their largest (:data:`SEARCH_MAX_VARIABLES` options,
+#: about 110 bytes each, measured).
+SEARCH_BYTES = 32 << 20
 
 #: Bytes per variable of the HiGHS 0-1 program the search hands over (measured: 830 at
 #: ``L = 100``, ``N = 200``); it runs only if the variables left fit :data:`MAX_BYTES`.
@@ -50,7 +55,7 @@ MILP_BYTES_PER_VARIABLE = 900
 def memory_bytes(n: int, n_targets: int) -> int:
     """Peak memory of :func:`solve` beyond ``W`` (without the 0-1 program the search may hand
     over, which runs only within :data:`MAX_BYTES`), estimated from the number of variables."""
-    return BYTES_PER_VARIABLE * (n * (n - 1) // 2) * n_targets
+    return BYTES_PER_VARIABLE * (n * (n - 1) // 2) * n_targets + SEARCH_BYTES
 
 
 def _hi_scale(top: float) -> float:
@@ -322,35 +327,55 @@ def _solve(arr, deadline, state, bar):
         return best
 
     # reduced-cost fixing: a variable whose loss reaches the gap is in no better assignment
-    _phase(bar, "branch and bound", state)
     keep = np.flatnonzero(flat_loss < bound - best_val - tol)
-    _remaining(deadline)
-    keep = keep[np.lexsort((-flat_w[keep], flat_loss[keep]))]
-    _remaining(deadline)
-    search = _Search(arr, ii, jj, yt, ys, loss, keep, bound, best_val, best, tol, deadline, bar)
-    state["search"] = search
-    # Search first for assignments within a small gap of the bound, widening it geometrically:
-    # a tight floor prunes hard, and an assignment found above it is a near-optimal incumbent
-    # for the rest of the search (L = 15: 0.07 s against 0.30 s from the local-search incumbent).
-    gap = bound - best_val
-    floor = bound - gap / 64
-    try:
-        while True:
-            search.run(max(floor, best_val))
-            if search.value > floor or floor <= best_val:
-                break
-            floor = bound - 1.5 * (bound - floor)
-    except _TooLarge:
-        # the incumbent's gap (not the floor's) decides which variables may still matter
-        _phase(bar, "0-1 program (HiGHS)", state)
-        keep = np.flatnonzero(flat_loss < bound - search.value - tol)
-        if memory_bytes(n, n_targets) + keep.size * MILP_BYTES_PER_VARIABLE > MAX_BYTES:
-            raise Stopped(reason="memory")
-        search.tops = search.sops = None  # HiGHS needs the memory more
-        del loss, flat_loss, wmat, flat_w
-        alt = milp(arr, _remaining(deadline), keep)
-        return alt if _value(arr, alt) > search.value else search.best
-    return search.best
+    if keep.size <= SEARCH_MAX_VARIABLES:
+        _phase(bar, "branch and bound", state)
+        keep = keep[np.lexsort((-flat_w[keep], flat_loss[keep]))]
+        _remaining(deadline)
+        search = _Search(arr, ii, jj, yt, ys, loss, keep, bound, best_val, best, tol, deadline,
+                         bar)
+        state["search"] = search
+        # Search first for assignments within a small gap of the bound, widening it
+        # geometrically: a tight floor prunes hard, and an assignment found above it is a
+        # near-optimal incumbent for the rest of the search (L = 15: 0.07 s against 0.30 s from
+        # the local-search incumbent).
+        gap = bound - best_val
+        floor = bound - gap / 64
+        try:
+            while True:
+                search.run(max(floor, best_val))
+                if search.value > floor or floor <= best_val:
+                    break
+                floor = bound - 1.5 * (bound - floor)
+            return search.best
+        except _TooLarge:
+            # the incumbent's gap (not the floor's) decides which variables may still matter
+            best_val, best = search.value, search.best
+            keep = np.flatnonzero(flat_loss < bound - best_val - tol)
+            search.tops = search.sops = None  # HiGHS needs the memory more
+    # the search cannot finish (past MAX_NODES, or too many variables left): HiGHS's 0-1
+    # program over the variables left, if it fits the memory and can start before the deadline
+    _phase(bar, "0-1 program (HiGHS)", state)
+    if memory_bytes(n, n_targets) + keep.size * MILP_BYTES_PER_VARIABLE > MAX_BYTES:
+        raise Stopped(reason="memory")
+    budget = None
+    if deadline is not None:  # HiGHS reads the model before its clock applies: leave it that
+        budget = _remaining(deadline) - HIGHS_SECONDS_PER_VARIABLE * keep.size
+        if budget <= 0:
+            raise Stopped  # it would still be reading the model at the deadline
+    del loss, flat_loss, wmat, flat_w
+    alt = milp(arr, budget, keep)
+    return alt if _value(arr, alt) > best_val else best
+
+
+#: Most variables the branch and bound takes on after reduced-cost fixing; beyond, its nodes
+#: cost milliseconds each and building its option lists alone takes seconds, so HiGHS's 0-1
+#: program takes over at once (speed, and the time limit's resolution).
+SEARCH_MAX_VARIABLES = 1 << 18
+
+#: Seconds HiGHS spends per variable reading a 0-1 program beyond its time limit (measured:
+#: 2.0 s for 1 million variables, 4.0 s for 2 million, 0.5 to 1 s for 428,000).
+HIGHS_SECONDS_PER_VARIABLE = 2e-6
 
 
 def _remaining(deadline):

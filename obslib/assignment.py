@@ -179,6 +179,15 @@ def greedy_pairs_batch(w, n_sensors: int, progress=False):
     ``(i, j, l)`` whose sensors and target are unused, ties to the smallest ``(i, j, l)``; it
     is the kernel of :func:`greedy_pair_assignment` and of the studies' batched greedy.
 
+    Parameters
+    ----------
+    w : array_like, shape (B, N (N - 1) / 2, L)
+        Finite weights (any sign).
+    n_sensors : int
+        ``N``, at least ``2 L``.
+    progress : bool
+        Show a progress bar (tqdm, on stderr) over the rounds.
+
     Returns
     -------
     picks : ndarray, shape (B, L, 3)
@@ -554,9 +563,9 @@ def _check_exact_memory(n, n_targets):
     if need <= MAX_EXACT_BYTES:
         return
     per = exact_pairs.BYTES_PER_VARIABLE
-    most = MAX_EXACT_BYTES // per
-    top = 1
-    while exact_pairs.memory_bytes(2 * top + 2, top + 1) <= MAX_EXACT_BYTES:
+    most = max(0, MAX_EXACT_BYTES - exact_pairs.SEARCH_BYTES) // per
+    top = 0
+    while (top + 1) * (2 * top + 2) * (2 * top + 1) // 2 <= most:
         top += 1
     raise ValueError(
         f"the exact solver would need about {need / 2**30:.1f} GiB for N = {n}, L = {n_targets} "
@@ -598,16 +607,21 @@ def optimal_pair_assignment(W, time_limit: float | None = None, progress=False) 
 
     Limits. Memory is estimated before any work, at
     :data:`obslib._exact_pairs.BYTES_PER_VARIABLE` bytes per pair-target variable beyond ``W``
-    itself (the case where no variable can be fixed); above :data:`MAX_EXACT_BYTES` (2 GiB:
-    about 12 million variables, ``N = 2L`` up to ``L = 182``) the call raises ``ValueError``
-    saying what fits. The HiGHS 0-1 program that takes over a search grown too large needs
+    itself, and the branch and bound's lists at most
+    :data:`obslib._exact_pairs.SEARCH_BYTES`; above :data:`MAX_EXACT_BYTES` (2 GiB: about 33
+    million variables, ``N = 2L`` up to ``L = 254``) the call raises ``ValueError`` saying what
+    fits. The HiGHS 0-1 program that takes over a search grown too large needs
     about :data:`obslib._exact_pairs.MILP_BYTES_PER_VARIABLE` bytes per variable left; it runs
     only when that fits the same limit, and otherwise the call raises :class:`OptimumNotProven`.
     ``time_limit`` bounds the whole call: every HiGHS call gets the time left, the local search
     and the branch and bound check the clock, and when it runs out the call raises
     :class:`OptimumNotProven` (a ``RuntimeError``) carrying the best assignment found and the LP
     bound, within a fraction of a second of the limit (0.2 s over at ``L = 100`` and
-    ``L = 200``: one HiGHS call on a restricted LP, one sort, or a few search nodes).
+    ``L = 200``: one HiGHS call on a restricted LP, one sort, or a few search nodes). It stops
+    earlier when the one step left, HiGHS's 0-1 program over the variables the bound could not
+    fix (for more than :data:`obslib._exact_pairs.SEARCH_MAX_VARIABLES` of them, instead of the
+    branch and bound), could not even read its model in the time left (about
+    :data:`obslib._exact_pairs.HIGHS_SECONDS_PER_VARIABLE` seconds per variable).
 
     Parameters
     ----------

@@ -361,7 +361,9 @@ def test_exact_solver_refuses_what_would_not_fit_in_memory(monkeypatch):
 
     rng = np.random.default_rng(14)
     _, _, W = random_instance(rng, 5, 0)
-    monkeypatch.setattr(assignment, "MAX_EXACT_BYTES", 10_000)  # 45 * 5 variables do not fit
+    # 45 * 5 variables do not fit in what leaves room for 56
+    monkeypatch.setattr(assignment, "MAX_EXACT_BYTES",
+                        exact.SEARCH_BYTES + 56 * exact.BYTES_PER_VARIABLE)
     with pytest.raises(ValueError, match=r"over the limit .* fits up to 56 variables"):
         optimal_pair_assignment(W)
     monkeypatch.undo()
