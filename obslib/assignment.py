@@ -305,14 +305,16 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     return _assignment(picks[0], weights[0], counted)
 
 
-def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=None, cov=None) -> PairAssignment:
+def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=None, cov=None,
+                                   progress=False) -> PairAssignment:
     """Algorithm 1 as printed: every round, evaluate all remaining triples and take the maximum.
 
     Vectorised per round (one ``argmax`` over the remaining ``(N', N', L')`` block); ties go to
     the smallest ``(i, j, l)`` with ``i < j``. From geometry it recomputes the weights of the
     remaining sensors and targets every round, as the algorithm's "compute all possible omega"
     says (with the kernel of :func:`obslib.pair_bounds`, so the weights are the same). Quadratic
-    in the number of rounds; for tests and benchmarks.
+    in the number of rounds; for tests and benchmarks. ``progress`` shows a tqdm bar over the
+    rounds on stderr.
 
     Examples
     --------
@@ -343,6 +345,7 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
     s_free = np.arange(n)
     t_free = np.arange(n_targets)
     triples, value = [], 0.0
+    bar = _progress(progress, n_targets, "literal Algorithm 1")
     while t_free.size and s_free.size >= 2:
         w = block(s_free, t_free)
         m = s_free.size
@@ -356,6 +359,10 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
         value += float(w[a, b, c])
         s_free = s_free[(s_free != i) & (s_free != j)]
         t_free = t_free[t_free != l]
+        if bar is not None:
+            bar.update()
+    if bar is not None:
+        bar.close()
     return PairAssignment(triples=triples, value=float(value), n_evaluations=counted)
 
 

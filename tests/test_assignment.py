@@ -405,6 +405,7 @@ def test_progress_bars_go_to_stderr_and_change_nothing(capsys):
          "candidate pairs"),
         (lambda p: relaxed_pair_assignment(W, progress=p), "matching"),
         (lambda p: optimal_pair_assignment(W, progress=p), "exact optimum"),
+        (lambda p: greedy_pair_assignment_literal(W, progress=p), "literal Algorithm 1"),
     ]
     for run, label in runs:
         quiet = run(False)

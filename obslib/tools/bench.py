@@ -72,20 +72,29 @@ def _timed(fn, repeat: int = 1):
     return best, out
 
 
-def one_pass(sensors, targets, u_max, chunk: int = 1 << 20) -> float:
+def one_pass(sensors, targets, u_max, chunk: int = 1 << 20, progress: bool = False) -> float:
     """Evaluate every pair bound ``i < j`` for every target once, in blocks; return the maximum.
 
     The reference cost for the greedy: one vectorised sweep of all ``N (N - 1) / 2 * L``
-    weights with the kernel of :func:`obslib.pair_bounds`, without keeping them.
+    weights with the kernel of :func:`obslib.pair_bounds`, without keeping them. ``progress``
+    shows a tqdm bar over the targets on stderr.
 
     Examples
     --------
     >>> one_pass([[0, 0], [1, 0], [3, 1]], [[1, 1]], 1.0) >= 0  # in seconds
     True
     """
+    from tqdm import tqdm
+
     from ..assignment import upper_pair_weight_blocks
 
-    return max(float(block.max()) for _, _, block in upper_pair_weight_blocks(sensors, targets, u_max, chunk=chunk))
+    top = -np.inf
+    with tqdm(total=len(targets), desc="one pass", file=sys.stderr, leave=False,
+              mininterval=0.5, disable=not progress) as bar:
+        for a, b, block in upper_pair_weight_blocks(sensors, targets, u_max, chunk=chunk):
+            top = max(top, float(block.max()))
+            bar.update(b - a)
+    return top
 
 
 def evaluation_counts(sizes: dict, seed: int = 0) -> dict:
@@ -184,14 +193,16 @@ def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l
                                                         progress=True), repeat=2)
     _say(f"greedy      N={n_big} L={l_big}: {greedy_s:8.2f} s  (value {g.value:.2f})")
     _say(f"one pass over every pair bound, N={n_big} L={l_big}")
-    one_pass_s, _ = _timed(lambda: one_pass(S, T, 1.0))
+    one_pass_s, _ = _timed(lambda: one_pass(S, T, 1.0, progress=True))
     _say(f"one pass    N={n_big} L={l_big}: {one_pass_s:8.2f} s")
 
     S2, T2 = rng.uniform(0, 100, (n_small, 2)), rng.uniform(0, 100, (l_small, 2))
+    _say(f"greedy from geometry, N={n_small} L={l_small}, best of 3")
     small_s, g2 = _timed(lambda: greedy_pair_assignment(sensors=S2, targets=T2, u_max=1.0), repeat=3)
     _say(f"greedy      N={n_small} L={l_small}: {small_s:8.3f} s")
     _say(f"literal Algorithm 1, N={n_small} L={l_small} (every remaining triple, every round)")
-    literal_s, lit = _timed(lambda: greedy_pair_assignment_literal(sensors=S2, targets=T2, u_max=1.0))
+    literal_s, lit = _timed(lambda: greedy_pair_assignment_literal(sensors=S2, targets=T2, u_max=1.0,
+                                                                   progress=True))
     if lit.triples != g2.triples:
         raise AssertionError("the greedy and the literal algorithm disagree")
     _say(f"literal     N={n_small} L={l_small}: {literal_s:8.2f} s")
