@@ -1,10 +1,15 @@
 """Exact solver of Problem 1 (unique pair assignment), behind :func:`obslib.optimal_pair_assignment`.
 
 Branch and bound on the bound of the linear relaxation: the LP's duals ``y >= 0`` (HiGHS via
-``scipy.optimize.linprog``) turn every assignment's value into ``1^T y`` minus non-negative
-losses, which prune the search and fix most variables to 0 (reduced-cost fixing). The plain
-HiGHS 0-1 program (:func:`milp`) is the fallback for searches past :data:`MAX_NODES` nodes and
-the reference of the tests.
+``scipy.optimize.linprog``, by column generation: :func:`lp_duals`) turn every assignment's value
+into ``1^T y`` minus non-negative losses, which prune the search and fix most variables to 0
+(reduced-cost fixing). The plain HiGHS 0-1 program (:func:`milp`) is the fallback for searches
+past :data:`MAX_NODES` nodes and the reference of the tests.
+
+Every phase watches the deadline: each HiGHS call gets the time left (and is small: the
+restricted LPs of the column generation, the reduced 0-1 program), the local search and the
+branch and bound check the clock, and running out raises :class:`Stopped` with the best
+assignment found so far and the bound.
 """
 
 from __future__ import annotations
@@ -13,7 +18,44 @@ import time
 
 import numpy as np
 
-__all__ = ["solve", "milp", "lp_duals", "pair_rows", "MAX_NODES"]
+__all__ = ["solve", "milp", "lp_duals", "pair_rows", "memory_bytes", "Stopped", "MAX_NODES",
+           "MAX_BYTES", "BYTES_PER_VARIABLE", "SEARCH_BYTES", "MILP_BYTES_PER_VARIABLE",
+           "SEARCH_MAX_VARIABLES", "HIGHS_SECONDS_PER_VARIABLE"]
+
+
+class Stopped(RuntimeError):
+    """The solver stopped before proving an optimum, at the deadline (``reason = "time"``) or
+    because the last 0-1 program would not fit :data:`MAX_BYTES` (``"memory"``): ``triples`` is
+    the best assignment found (complete: one pair per target), ``bound`` an upper bound on the
+    optimum (``None`` before the LP gave one)."""
+
+    def __init__(self, triples=None, bound=None, reason="time"):
+        super().__init__(f"stopped before a proven optimum ({reason})")
+        self.triples, self.bound, self.reason = triples, bound, reason
+
+
+#: Memory the solver may use beyond ``W``: 2 GiB.
+MAX_BYTES = 2 << 30
+
+#: Bytes per pair-target variable (``N (N - 1) / 2 * L`` of them) at the solver's peak beyond
+#: ``W``: the ``(P, L)`` weights, losses and LP solution and the temporaries over them
+#: (measured: 55 at ``L = 200``, ``N = 400``); the branch and bound's option lists add at most
+#: :data:`SEARCH_BYTES`.
+BYTES_PER_VARIABLE = 64
+
+#: The branch and bound's option lists at their largest (:data:`SEARCH_MAX_VARIABLES` options,
+#: about 110 bytes each, measured).
+SEARCH_BYTES = 32 << 20
+
+#: Bytes per variable of the HiGHS 0-1 program the search hands over (measured: 830 at
+#: ``L = 100``, ``N = 200``); it runs only if the variables left fit :data:`MAX_BYTES`.
+MILP_BYTES_PER_VARIABLE = 900
+
+
+def memory_bytes(n: int, n_targets: int) -> int:
+    """Peak memory of :func:`solve` beyond ``W`` (without the 0-1 program the search may hand
+    over, which runs only within :data:`MAX_BYTES`), estimated from the number of variables."""
+    return BYTES_PER_VARIABLE * (n * (n - 1) // 2) * n_targets + SEARCH_BYTES
 
 
 def _hi_scale(top: float) -> float:
@@ -66,6 +108,8 @@ def milp(arr, time_limit=None, keep=None) -> list:
         bounds=Bounds(0, 1),
         options=options,
     )
+    if res.status == 1:  # HiGHS's time limit
+        raise Stopped
     if res.status != 0:
         raise RuntimeError(f"MILP did not reach a proven optimum: {res.message}")
     chosen = keep[res.x > 0.5]
@@ -73,35 +117,71 @@ def milp(arr, time_limit=None, keep=None) -> list:
     return sorted(zip(ii[p_of].tolist(), jj[p_of].tolist(), l_of.tolist()), key=lambda t: t[2])
 
 
-def lp_duals(wmat, n, ii, jj):
+def lp_duals(wmat, n, ii, jj, deadline=None):
     """Duals ``y >= 0`` (target rows, then sensor rows) of Problem 1's LP relaxation and its
     solution ``x`` (indices ``p * L + l``), or ``(None, None)``.
 
-    Any ``y >= 0`` gives valid bounds below; the LP optimum gives the tightest of this form.
+    Any ``y >= 0`` gives valid bounds below; the LP optimum gives the tightest of this form. It
+    is found by column generation: HiGHS solves the LP over each target's heaviest pairs
+    (:data:`_FIRST_COLUMNS` per target), every variable is priced with the duals (reduced profit
+    ``w_pl - y_l - y_i - y_j``), those with a positive reduced profit join, until none is left
+    (then the duals are feasible for the whole LP, to HiGHS's tolerance, and optimal). The LPs
+    stay small (at ``L = 100``, ``N = 200``: 0.3 s in all, against more than 60 s for the LP
+    over all 2 million variables), and each gets the time left before ``deadline``.
     """
     from scipy.optimize import linprog
 
-    n_targets = wmat.shape[1]
+    n_pairs, n_targets = wmat.shape
     w = wmat.reshape(-1)
     scale = _hi_scale(float(w.max()))
-    res = linprog(-w / scale, A_ub=pair_rows(n, n_targets, ii, jj, np.arange(w.size)),
-                  b_ub=np.ones(n_targets + n), bounds=(0, None), method="highs")
-    if res.status != 0:
-        return None, None
-    return np.maximum(-np.asarray(res.ineqlin.marginals), 0.0) * scale, res.x
+    k = min(n_pairs, _FIRST_COLUMNS)
+    first = np.argpartition(-wmat, k - 1, axis=0)[:k]  # (k, L) each target's heaviest pairs
+    cols = np.unique((first * n_targets + np.arange(n_targets)).reshape(-1))
+    tol = 1e-9 * float(w.max())
+    while True:
+        left = _remaining(deadline)
+        res = linprog(-w[cols] / scale, A_ub=pair_rows(n, n_targets, ii, jj, cols),
+                      b_ub=np.ones(n_targets + n), bounds=(0, None), method="highs",
+                      options={} if left is None else {"time_limit": left})
+        if res.status == 1:
+            raise Stopped
+        if res.status != 0:
+            return None, None
+        y = np.maximum(-np.asarray(res.ineqlin.marginals), 0.0) * scale
+        yt, ys = y[:n_targets], y[n_targets:]
+        profit = wmat - yt[None, :]
+        profit -= ys[ii][:, None]
+        profit -= ys[jj][:, None]
+        profit = profit.reshape(-1)
+        profit[cols] = -np.inf  # in the LP already
+        new = np.flatnonzero(profit > tol)
+        if new.size == 0:
+            x = np.zeros(w.size)
+            x[cols] = res.x
+            return y, x
+        if new.size > _ADDED_COLUMNS * n_targets:  # the most profitable ones
+            new = new[np.argpartition(-profit[new], _ADDED_COLUMNS * n_targets)[
+                :_ADDED_COLUMNS * n_targets]]
+        cols = np.union1d(cols, new)
 
 
-def _repair(arr, assign, free, tol):
+#: Columns per target in the first restricted LP, and at most that many per target added by
+#: each round of pricing (speed only).
+_FIRST_COLUMNS = 64
+_ADDED_COLUMNS = 64
+
+
+def _repair(arr, assign, free, tol, deadline=None):
     """Local search on a full assignment ``assign`` (``(L, 2)`` sensors per target), in place.
 
     Moves: re-pair the four sensors of two targets (three pairings, two ways round) and swap one
     sensor of a target for an unused one; the best improving move is applied until none improves
-    by more than ``tol``.
+    by more than ``tol``, or until ``deadline`` (``assign`` is then the last improvement).
     """
     n_targets = assign.shape[0]
     la, lb = np.triu_indices(n_targets, 1)
     tl = np.arange(n_targets)
-    while True:
+    while deadline is None or time.perf_counter() < deadline:
         a, b = assign[:, 0], assign[:, 1]
         cur = arr[a, b, tl]
         best_gain, best_move = tol, None
@@ -166,15 +246,42 @@ def _complete(n, n_targets, triples):
 MAX_NODES = 100_000
 
 
-def solve(arr, deadline, start) -> list:
+def solve(arr, deadline, start, bar=None) -> list:
     """Optimal triples of Problem 1 with weights ``arr`` (validated), by branch and bound from
-    the assignment ``start`` (Algorithm 1's); ``deadline`` a ``time.perf_counter`` time or None."""
+    the assignment ``start`` (Algorithm 1's); ``deadline`` a ``time.perf_counter`` time or None.
+
+    Raises :class:`Stopped` at the deadline, with the best assignment found and the bound;
+    ``bar`` (a tqdm bar or None) shows the phase and the gap.
+    """
+    n, n_targets = arr.shape[0], arr.shape[2]
+    state = {"triples": list(start), "value": _value(arr, start), "bound": None}
+    try:
+        return _solve(arr, deadline, state, bar)
+    except Stopped as e:
+        search = state.get("search")
+        if search is not None and search.value > state["value"]:
+            state["triples"], state["value"] = search.best, search.value
+        assign, _ = _complete(n, n_targets, state["triples"])  # one pair per target
+        triples = [(int(min(a, b)), int(max(a, b)), l) for l, (a, b) in enumerate(assign.tolist())]
+        raise Stopped(triples, state["bound"], e.reason) from None
+
+
+def _phase(bar, name, state):
+    if bar is not None:
+        bar.set_description(name)
+        if state["bound"] is not None:
+            bar.set_postfix(gap=f"{state['bound'] - state['value']:.3g}", refresh=False)
+        bar.update()
+
+
+def _solve(arr, deadline, state, bar):
     n, n_targets = arr.shape[0], arr.shape[2]
     ii, jj = np.triu_indices(n, 1)
     wmat = arr[ii, jj, :]  # (P, L)
     if float(wmat.max(initial=0.0)) == 0.0:
         return []
-    y, x = lp_duals(wmat, n, ii, jj)
+    _phase(bar, "LP relaxation", state)
+    y, x = lp_duals(wmat, n, ii, jj, deadline)
     if y is None:
         return milp(arr, _remaining(deadline))
     yt, ys = y[:n_targets], y[n_targets:]
@@ -184,14 +291,21 @@ def solve(arr, deadline, start) -> list:
     yt = yt + np.maximum(-loss.min(axis=0), 0.0)
     loss = np.maximum(yt[None, :] + ys[ii][:, None] + ys[jj][:, None] - wmat, 0.0)
     bound = float(yt.sum() + ys.sum())
+    state["bound"] = bound
     tol = 1e-10 * bound
+    _remaining(deadline)
 
     # incumbent: Algorithm 1 and the LP's rounding completed in order of loss, each improved by
     # local search (entries above 1/2 share no row, so they form an assignment)
-    starts = [start]
-    order = np.lexsort((-wmat.reshape(-1), loss.reshape(-1), x < 0.5))
+    _phase(bar, "incumbent", state)
+    flat_loss, flat_w = loss.reshape(-1), wmat.reshape(-1)
+    # candidates in order: the LP's entries above 1/2, then by loss (and weight); an assignment
+    # needs at most L of them, so the smallest losses are sorted, not all P L
+    few = min(flat_loss.size, 64 * n_targets)
+    cand = np.union1d(np.flatnonzero(x >= 0.5), np.argpartition(flat_loss, few - 1)[:few])
+    cand = cand[np.lexsort((-flat_w[cand], flat_loss[cand], x[cand] < 0.5))]
     used_t, used_s, picks = np.zeros(n_targets, bool), np.zeros(n, bool), []
-    for v in order.tolist():
+    for v in cand.tolist():
         p, l = divmod(v, n_targets)
         i, j = int(ii[p]), int(jj[p])
         if not (used_t[l] or used_s[i] or used_s[j]):
@@ -199,40 +313,69 @@ def solve(arr, deadline, start) -> list:
             picks.append((i, j, l))
             if len(picks) == n_targets:
                 break
-    starts.append(picks)
-    best_val, best = -1.0, None
-    for triples in starts:
+    for triples in (list(state["triples"]), picks):
         assign, free = _complete(n, n_targets, triples)
-        _repair(arr, assign, free, tol)
+        _repair(arr, assign, free, tol, deadline)
         val = float(arr[assign[:, 0], assign[:, 1], np.arange(n_targets)].sum())
-        if val > best_val:
-            best_val, best = val, assign.copy()
-    best = [(int(min(a, b)), int(max(a, b)), l) for l, (a, b) in enumerate(best.tolist())]
+        if val > state["value"]:
+            state["value"] = val
+            state["triples"] = [(int(min(a, b)), int(max(a, b)), l)
+                                for l, (a, b) in enumerate(assign.tolist())]
+        _remaining(deadline)
+    best_val, best = state["value"], state["triples"]
     if bound - best_val <= tol:
         return best
 
     # reduced-cost fixing: a variable whose loss reaches the gap is in no better assignment
-    keep = np.flatnonzero(loss.reshape(-1) < bound - best_val - tol)
-    keep = keep[np.lexsort((-wmat.reshape(-1)[keep], loss.reshape(-1)[keep]))]
-    search = _Search(arr, ii, jj, yt, ys, loss, keep, bound, best_val, best, tol, deadline)
-    # Search first for assignments within a small gap of the bound, widening it geometrically:
-    # a tight floor prunes hard, and an assignment found above it is a near-optimal incumbent
-    # for the rest of the search (L = 15: 0.07 s against 0.30 s from the local-search incumbent).
-    gap = bound - best_val
-    floor = bound - gap / 64
-    _remaining(deadline)
-    try:
-        while True:
-            search.run(max(floor, best_val))
-            if search.value > floor or floor <= best_val:
-                break
-            floor = bound - 1.5 * (bound - floor)
-    except _TooLarge:
-        # the incumbent's gap (not the floor's) decides which variables may still matter
-        keep = np.flatnonzero(loss.reshape(-1) < bound - search.value - tol)
-        alt = milp(arr, _remaining(deadline), keep)
-        return alt if _value(arr, alt) > search.value else search.best
-    return search.best
+    keep = np.flatnonzero(flat_loss < bound - best_val - tol)
+    if keep.size <= SEARCH_MAX_VARIABLES:
+        _phase(bar, "branch and bound", state)
+        keep = keep[np.lexsort((-flat_w[keep], flat_loss[keep]))]
+        _remaining(deadline)
+        search = _Search(arr, ii, jj, yt, ys, loss, keep, bound, best_val, best, tol, deadline,
+                         bar)
+        state["search"] = search
+        # Search first for assignments within a small gap of the bound, widening it
+        # geometrically: a tight floor prunes hard, and an assignment found above it is a
+        # near-optimal incumbent for the rest of the search (L = 15: 0.07 s against 0.30 s from
+        # the local-search incumbent).
+        gap = bound - best_val
+        floor = bound - gap / 64
+        try:
+            while True:
+                search.run(max(floor, best_val))
+                if search.value > floor or floor <= best_val:
+                    break
+                floor = bound - 1.5 * (bound - floor)
+            return search.best
+        except _TooLarge:
+            # the incumbent's gap (not the floor's) decides which variables may still matter
+            best_val, best = search.value, search.best
+            keep = np.flatnonzero(flat_loss < bound - best_val - tol)
+            search.tops = search.sops = None  # HiGHS needs the memory more
+    # the search cannot finish (past MAX_NODES, or too many variables left): HiGHS's 0-1
+    # program over the variables left, if it fits the memory and can start before the deadline
+    _phase(bar, "0-1 program (HiGHS)", state)
+    if memory_bytes(n, n_targets) + keep.size * MILP_BYTES_PER_VARIABLE > MAX_BYTES:
+        raise Stopped(reason="memory")
+    budget = None
+    if deadline is not None:  # HiGHS reads the model before its clock applies: leave it that
+        budget = _remaining(deadline) - HIGHS_SECONDS_PER_VARIABLE * keep.size
+        if budget <= 0:
+            raise Stopped  # it would still be reading the model at the deadline
+    del loss, flat_loss, wmat, flat_w
+    alt = milp(arr, budget, keep)
+    return alt if _value(arr, alt) > best_val else best
+
+
+#: Most variables the branch and bound takes on after reduced-cost fixing; beyond, its nodes
+#: cost milliseconds each and building its option lists alone takes seconds, so HiGHS's 0-1
+#: program takes over at once (speed, and the time limit's resolution).
+SEARCH_MAX_VARIABLES = 1 << 18
+
+#: Seconds HiGHS spends per variable reading a 0-1 program beyond its time limit (measured:
+#: 2.0 s for 1 million variables, 4.0 s for 2 million, 0.5 to 1 s for 428,000).
+HIGHS_SECONDS_PER_VARIABLE = 2e-6
 
 
 def _remaining(deadline):
@@ -240,7 +383,7 @@ def _remaining(deadline):
         return None
     left = deadline - time.perf_counter()
     if left <= 0:
-        raise RuntimeError("MILP did not reach a proven optimum: time limit reached")
+        raise Stopped
     return left
 
 
@@ -263,21 +406,25 @@ class _Search:
     split between its two sensors, an unused sensor costing ``y_i``).
     """
 
-    def __init__(self, arr, ii, jj, yt, ys, loss, keep, bound, best_val, best, tol, deadline):
+    def __init__(self, arr, ii, jj, yt, ys, loss, keep, bound, best_val, best, tol, deadline,
+                 bar=None):
         n, n_targets = arr.shape[0], arr.shape[2]
-        self.arr, self.bound, self.tol, self.deadline = arr, bound, tol, deadline
+        self.arr, self.bound, self.tol, self.deadline, self.bar = arr, bound, tol, deadline, bar
         self.value, self.best = best_val, best  # the incumbent
         self.best_val = best_val  # the pruning floor: the incumbent's value or above
         self.yt, self.ys = yt.tolist(), ys.tolist()
         self.tops = [[] for _ in range(n_targets)]  # per target, options (loss, l, i, j) by loss
         self.sops = [[] for _ in range(n)]  # per sensor, the same options
-        p_of, l_of = keep // n_targets, keep % n_targets
-        for lo, l, i, j in zip(loss.reshape(-1)[keep].tolist(), l_of.tolist(), ii[p_of].tolist(),
-                               jj[p_of].tolist()):
-            opt = (lo, l, i, j)
-            self.tops[l].append(opt)
-            self.sops[i].append(opt)
-            self.sops[j].append(opt)
+        for s in range(0, keep.size, 1 << 14):  # checking the clock between blocks
+            _remaining(deadline)
+            part = keep[s:s + (1 << 14)]
+            p_of, l_of = part // n_targets, part % n_targets
+            for lo, l, i, j in zip(loss.reshape(-1)[part].tolist(), l_of.tolist(),
+                                   ii[p_of].tolist(), jj[p_of].tolist()):
+                opt = (lo, l, i, j)
+                self.tops[l].append(opt)
+                self.sops[i].append(opt)
+                self.sops[j].append(opt)
         self.nodes = 0
         self.n, self.n_targets = n, n_targets
 
@@ -291,8 +438,11 @@ class _Search:
         self.nodes += 1
         if self.nodes > MAX_NODES:
             raise _TooLarge
-        if self.nodes % 4096 == 0:
+        if self.nodes % 16 == 0:  # a node costs up to milliseconds at L = 100
             _remaining(self.deadline)
+            if self.bar is not None and self.nodes % 1024 == 0:
+                self.bar.set_postfix(gap=f"{self.bound - self.value:.3g}", refresh=False)
+                self.bar.update()
         if not tfree:
             val = float(sum(self.arr[i, j, l] for i, j, l in chosen))
             if val > self.best_val + self.tol:

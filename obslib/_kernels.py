@@ -28,6 +28,7 @@ __all__ = [
     "rescale",
     "pair_kernel",
     "normalise",
+    "normalise_rows",
     "mahalanobis_rescale",
     "gram_parts",
     "ratio_from_gram",
@@ -110,21 +111,43 @@ def normalise(v: np.ndarray, u) -> tuple:
     in the same unit, shape ``(L,)``.
 
     The pair bound is invariant under scaling rows and ``u_max`` together; the scaled squares in
-    :func:`pair_kernel` are far from overflow and underflow whatever the units. A target's rows
-    are first brought into :data:`SAFE_RANGE` by a power of two (exact), so the norms cannot
-    overflow; ``u_max`` too large to square in the new unit becomes ``inf`` (bound 0).
+    :func:`pair_kernel` are far from overflow and underflow whatever the units. The arithmetic is
+    :func:`normalise_rows`' (on the coordinates of ``v`` laid out target by target), so both
+    layouts give the same rows bit for bit.
     """
-    n, n_targets = v.shape[0], v.shape[1]
-    if n == 0:
+    x, y, u2 = normalise_rows(v[..., 0].T, v[..., 1].T, u)
+    return np.stack([x.T, y.T], axis=-1), u2
+
+
+def normalise_rows(x: np.ndarray, y: np.ndarray, u, out=None) -> tuple:
+    """:func:`normalise` for rows given by their coordinates ``x, y``, shape ``(L, N)`` (target
+    ``l``'s rows are ``x[l], y[l]``); returns the scaled ``x, y`` (new arrays, or ``out``, a pair
+    of arrays of that shape to write them to) and ``u_max^2``.
+
+    A target's rows are first brought into :data:`SAFE_RANGE` by a power of two (exact), so the
+    norms cannot overflow; ``u_max`` too large to square in the new unit becomes ``inf``
+    (bound 0).
+    """
+    n_targets = x.shape[0]
+    if x.shape[1] == 0:
         with np.errstate(over="ignore"):
-            return v, np.broadcast_to(np.asarray(u, dtype=float) ** 2, (n_targets,)).copy()
-    p = pow2_scale(np.abs(v).max(axis=(0, 2)))  # (L,)
-    v = rescale(v, p[None, :, None])
-    scale = np.sqrt(np.einsum("nlk,nlk->nl", v, v).max(axis=0))
+            return x, y, np.broadcast_to(np.asarray(u, dtype=float) ** 2, (n_targets,)).copy()
+    # max |x| as max(max x, -min x): the same number without an array of |x|
+    top = np.maximum(np.maximum(x.max(axis=1), -x.min(axis=1)),
+                     np.maximum(y.max(axis=1), -y.min(axis=1)))
+    p = pow2_scale(top)  # (L,)
+    x, y = rescale(x, p[:, None]), rescale(y, p[:, None])
+    sq = x * x
+    sq += y * y
+    scale = np.sqrt(sq.max(axis=1))
     with np.errstate(over="ignore"):
         u = np.broadcast_to(np.asarray(u, dtype=float), (n_targets,)) / p
         u2 = u**2 / scale**2
-    return v / scale[None, :, None], u2
+    if out is None:
+        return x / scale[:, None], y / scale[:, None], u2
+    np.divide(x, scale[:, None], out=out[0])
+    np.divide(y, scale[:, None], out=out[1])
+    return out[0], out[1], u2
 
 
 def pair_series(v: np.ndarray, pairs: np.ndarray, u) -> np.ndarray:

@@ -5,6 +5,9 @@ Weights are ``W[i, j, l]`` = the pair bound of sensors ``i, j`` for target ``l``
 
 ``greedy_pair_assignment``
     Algorithm 1: repeatedly take the heaviest triple whose sensors and target are all unused.
+``greedy_pairs_batch``
+    Algorithm 1 on many instances at once: the one kernel behind the greedy here and the
+    studies' batched greedy.
 ``greedy_pair_assignment_literal``
     The same algorithm as printed, re-evaluating every remaining triple each round; kept for
     tests and benchmarks.
@@ -12,7 +15,8 @@ Weights are ``W[i, j, l]`` = the pair bound of sensors ``i, j`` for target ``l``
     Problem 3 (each unordered pair serves at most one target, sensors may be reused), solved
     exactly as a bipartite matching between pairs and targets; an upper bound on Problem 1.
 ``optimal_pair_assignment``
-    Problem 1 solved exactly as a 0-1 program (``scipy.optimize.milp``, HiGHS).
+    Problem 1 solved exactly: branch and bound on its LP relaxation (HiGHS), within a time and
+    a memory limit (:class:`OptimumNotProven`).
 
 Ties
 ----
@@ -22,22 +26,27 @@ Among triples of equal weight every algorithm here takes the lexicographically s
 
 from __future__ import annotations
 
-import heapq
+import sys
 import time
 from dataclasses import dataclass
 
 import numpy as np
 
 from . import _exact_pairs as exact_pairs
-from ._kernels import normalise, pair_kernel
-from ._validate import ArgumentTypeError, as_bool, as_float_array, as_int, as_points, as_u_max, as_weights, check_pair_sizes, check_weight_memory, validated_vectors
+from ._kernels import pair_kernel
+from ._pair_search import GeometryHeads, PairSearch, keep_top, target_rows
+from ._validate import (ArgumentTypeError, as_bool, as_float_array, as_int, as_points, as_weights,
+                        check_pair_sizes, check_weight_memory)
 
 __all__ = [
     "PairAssignment",
     "greedy_pair_assignment",
     "greedy_pair_assignment_literal",
+    "greedy_pairs_batch",
     "relaxed_pair_assignment",
     "optimal_pair_assignment",
+    "OptimumNotProven",
+    "MAX_EXACT_BYTES",
     "assignment_value",
     "upper_pair_weights",
     "upper_pair_weight_blocks",
@@ -77,191 +86,162 @@ def assignment_value(W, triples) -> float:
     return float(sum(W[i, j, l] for i, j, l in triples))
 
 
-def _geometry(sensors, targets, u_max, cov):
-    """Validated rows ``o_l - p_i`` ``(N, L, 2)`` normalised per target, and ``u_max^2`` ``(L,)``
-    in the same unit: the input of :func:`obslib._kernels.pair_kernel` (as in ``pair_bounds``)."""
-    v, unit = validated_vectors(sensors, targets, cov)
-    with np.errstate(over="ignore"):
-        u = as_u_max(u_max, v.shape[1]) / unit
-    return normalise(v, u)
-
-
 # --------------------------------------------------------------------------------------------
-# Greedy (Algorithm 1) without re-evaluation
+# Algorithm 1: one kernel for one instance or a batch, from weights or from geometry
 # --------------------------------------------------------------------------------------------
 
 
-class _TargetQueue:
-    """Candidate pairs of one target in greedy order ``(-w, i, j)``, refilled on demand.
+def _rounds(source, free, n_targets: int, bar=None):
+    """Algorithm 1 on ``B`` instances at once: their picks ``(B, L, 3)`` in pick order and the
+    picked weights ``(B, L)``.
 
-    Holds at least the ``k`` best pairs over the sensors that were free when it was (re)filled,
-    and every pair tied with the last of them. Since weights never change and sensors only
-    leave, the first candidate whose sensors are both free is the target's best free pair as long
-    as the list is not exhausted; when it is, the list is refilled over the free sensors.
+    ``free`` ``(B, N)`` marks each instance's free sensors (updated in place) and
+    ``source.heads(b, l, free)`` gives the heaviest free pair ``(w, i, j)`` of targets ``l`` of
+    instances ``b`` (ties: smallest ``(i, j)``; ``w = -inf`` when none). Each target's head is
+    kept until a sensor of it is taken; a stale head keeps its old weight, an upper bound of its
+    target's best, and is refreshed only when it reaches the top (weights never change and
+    sensors only leave). Every round takes, in each instance, the heaviest head, ties to the
+    smallest ``(i, j, l)``.
     """
-
-    def __init__(self, source, l: int, k: int):
-        self.source, self.l, self.k = source, l, k
-        self.cand: list = []
-        self.pos = 0
-        self.complete = False  # the list holds every pair over the sensors free at fill time
-
-    def fill(self, free: np.ndarray) -> None:
-        a, b, w, self.complete = self.source.top_pairs(self.l, np.flatnonzero(free), self.k)
-        i, j = np.minimum(a, b), np.maximum(a, b)
-        order = np.lexsort((j, i, -w))
-        self.cand = list(zip(w[order].tolist(), i[order].tolist(), j[order].tolist()))
-        self.pos = 0
-
-    def head(self, free: np.ndarray):
-        """The best candidate with both sensors free, or None if the target has no free pair.
-
-        Terminates: a refill lists only pairs of free sensors, so after one refill the next
-        candidate is free or the list is complete (weights are finite, checked at the boundary).
-        """
-        refilled = False
-        while True:
-            while self.pos < len(self.cand):
-                w, i, j = self.cand[self.pos]
-                if free[i] and free[j]:
-                    return w, i, j
-                self.pos += 1
-            if self.complete:
-                return None
-            if refilled:  # cannot happen with finite weights; never spin
-                raise RuntimeError(f"refilling the candidates of target {self.l} made no progress")
-            self.fill(free)
-            refilled = True
+    B, n = free.shape
+    rows = np.arange(B)
+    lidx = np.arange(n_targets)
+    w, i, j = source.heads(np.repeat(rows, n_targets), np.tile(lidx, B), free)
+    hw, hi, hj = w.reshape(B, n_targets), i.reshape(B, n_targets), j.reshape(B, n_targets)
+    picks = np.empty((B, n_targets, 3), dtype=np.int64)
+    weights = np.empty((B, n_targets))
+    col = rows[:, None]
+    for r in range(n_targets):
+        while True:  # refresh the stale heads that could be the top (twice at most)
+            valid = free[col, hi] & free[col, hj]
+            top = np.where(valid, hw, -np.inf).max(axis=1)
+            need = ~valid & (hw >= top[:, None]) & (hw > -np.inf)
+            if not need.any():
+                break
+            b, l = np.nonzero(need)
+            hw[b, l], hi[b, l], hj[b, l] = source.heads(b, l, free)
+        if not (top > -np.inf).all():  # N >= 2L is checked at the boundary
+            raise RuntimeError(f"no free pair left in round {r + 1}")
+        key = np.where(hw == top[:, None], (hi * n + hj) * n_targets + lidx, np.iinfo(np.int64).max)
+        l = key.argmin(axis=1)
+        i, j = hi[rows, l], hj[rows, l]
+        picks[:, r, 0], picks[:, r, 1], picks[:, r, 2] = i, j, l
+        weights[:, r] = top
+        free[rows, i] = free[rows, j] = False
+        hw[rows, l] = -np.inf
+        if bar is not None:
+            bar.update()
+    return picks, weights
 
 
-def _keep_top(a, b, w, k):
-    """The pairs among ``(a, b, w)`` whose weight is at least the ``k``-th largest."""
-    if w.size <= k:
-        return a, b, w
-    kth = np.partition(w, w.size - k)[w.size - k]
-    keep = w >= kth
-    return a[keep], b[keep], w[keep]
+class _WeightHeads:
+    """Heads of :func:`_rounds` from weights ``w`` ``(B, P, L)`` of the pairs ``(ii, jj)``,
+    ``ii < jj`` in ``numpy.triu_indices`` order: a masked ``argmax`` over the pairs (the first
+    maximum is the smallest ``(i, j)``)."""
+
+    def __init__(self, w, ii, jj):
+        self.w, self.ii, self.jj = w, ii, jj
+
+    @classmethod
+    def of(cls, arr):
+        """The heads of one instance's validated weights ``arr`` ``(N, N, L)``."""
+        ii, jj = np.triu_indices(arr.shape[0], 1)
+        return cls(arr[ii, jj][None], ii, jj)
+
+    def heads(self, b, l, free):
+        P = self.ii.size
+        out_w, out_i, out_j = np.empty(b.size), np.empty(b.size, np.int64), np.empty(b.size, np.int64)
+        step = max(1, (1 << 22) // max(P, 1))  # rows per block: about 4M weights
+        for s in range(0, b.size, step):
+            bs, ls = b[s:s + step], l[s:s + step]
+            fb = free[bs]
+            rows = np.where(fb[:, self.ii] & fb[:, self.jj], self.w[bs, :, ls], -np.inf)
+            p = rows.argmax(axis=1)
+            out_w[s:s + step] = rows[np.arange(bs.size), p]
+            out_i[s:s + step], out_j[s:s + step] = self.ii[p], self.jj[p]
+        return out_w, out_i, out_j
 
 
-class _WeightSource:
-    """Pair weights read from a materialised ``W``."""
+def _progress(progress, total, what):
+    """A tqdm bar on stderr over ``total`` steps when ``progress`` is true, else None."""
+    if not as_bool(progress, "progress"):
+        return None
+    from tqdm import tqdm
 
-    def __init__(self, W):
-        self.W = W
-
-    def top_pairs(self, l, idx, k):
-        iu, ju = np.triu_indices(idx.size, 1)
-        a, b = idx[iu], idx[ju]
-        w = self.W[a, b, l]
-        complete = w.size <= k
-        return (*_keep_top(a, b, w, k), complete)
+    return tqdm(total=total, desc=what, file=sys.stderr, leave=False, mininterval=0.5)
 
 
-class _GeometrySource:
-    """Pair weights computed on demand from geometry, pruned by a distance-only upper bound.
+def greedy_pairs_batch(w, n_sensors: int, progress=False):
+    """Algorithm 1 on a batch of instances given by the weights of their pairs ``i < j``.
 
-    For rows with squared lengths ``r_i <= r_j``, ``lambda_min <= r_i`` and ``lambda_max >= r_j``
-    (the diagonal of the Gram matrix lies between its eigenvalues), so
-    ``bound^2 <= r_i / (r_j + u^2)``. Given ``tau``, the ``k``-th largest weight of a sample of
-    pairs (a lower bound on the ``k``-th largest weight overall), only pairs with
-    ``r_j <= r_i / tau^2 - u^2`` can reach the top ``k``; with the sensors sorted by distance
-    they form a band, found with ``searchsorted``. The pruning is exact: every pair of weight
-    ``>= tau`` is evaluated.
+    ``w[b, p, l]`` is the weight in instance ``b`` of pair ``p`` (``numpy.triu_indices(N, 1)``
+    order) for target ``l``. Every round takes, in each instance at once, the heaviest triple
+    ``(i, j, l)`` whose sensors and target are unused, ties to the smallest ``(i, j, l)``; it
+    is the kernel of :func:`greedy_pair_assignment` and of the studies' batched greedy.
+
+    Parameters
+    ----------
+    w : array_like, shape (B, N (N - 1) / 2, L)
+        Finite weights (any sign).
+    n_sensors : int
+        ``N``, at least ``2 L``.
+    progress : bool
+        Show a progress bar (tqdm, on stderr) over the rounds.
+
+    Returns
+    -------
+    picks : ndarray, shape (B, L, 3)
+        ``(i, j, l)`` of each round, in pick order.
+    weights : ndarray, shape (B, L)
+        The picked weights, in pick order.
+
+    Examples
+    --------
+    >>> W = np.zeros((4, 4, 2))
+    >>> W[0, 1, 0] = W[1, 0, 0] = 2.0  # pair (0, 1) for target 0
+    >>> W[2, 3, 1] = W[3, 2, 1] = 1.0  # pair (2, 3) for target 1
+    >>> ii, jj = np.triu_indices(4, 1)
+    >>> picks, weights = greedy_pairs_batch(W[ii, jj][None], 4)
+    >>> picks[0].tolist(), weights[0].tolist()
+    ([[0, 1, 0], [2, 3, 1]], [2.0, 1.0])
     """
-
-    def __init__(self, v, u2):
-        # normalised rows as contiguous (L, N) coordinate arrays, and u_max^2 per target (L,)
-        self.x = np.ascontiguousarray(v[..., 0].T)
-        self.y = np.ascontiguousarray(v[..., 1].T)
-        self.r = self.x * self.x + self.y * self.y
-        self.u2 = u2
-        self.n_evaluations = 0
-
-    def _weights(self, l, a, b):
-        x, y = self.x[l], self.y[l]
-        self.n_evaluations += a.size
-        w = pair_kernel(x[a], y[a], x[b], y[b], self.u2[l])
-        if not np.isfinite(w).all():  # validation and normalisation exclude it; never feed a NaN on
-            raise RuntimeError(f"a pair weight of target {l} is not finite")
-        return w
-
-    def top_pairs(self, l, idx, k):
-        m = idx.size
-        if m < 2:
-            e = np.zeros(0, dtype=int)
-            return e, e, np.zeros(0), True
-        order = idx[np.argsort(self.r[l, idx], kind="stable")]
-        rs = self.r[l, order]
-        n_pairs = m * (m - 1) // 2
-        if n_pairs <= 4 * k:
-            hi = np.full(m, m)
-        else:
-            # sample: each sensor with its next few neighbours in distance order
-            width = min(m - 1, -(-_SAMPLE * k // m) + 1)
-            pa, pb = _band(np.minimum(np.arange(m) + width + 1, m))
-            tau = np.partition(self._weights(l, order[pa], order[pb]), pa.size - k)[pa.size - k]
-            if tau <= 0:
-                hi = np.full(m, m)
-            else:
-                limit = rs / (tau * tau * (1 - 1e-9)) - self.u2[l]
-                hi = np.searchsorted(rs, limit, side="right")
-        pa, pb = _band(hi)
-        a, b = order[pa], order[pb]
-        w = self._weights(l, a, b)
-        complete = pa.size == n_pairs and w.size <= k
-        return (*_keep_top(a, b, w, k), complete)
+    n = as_int(n_sensors, "n_sensors", 2)
+    w = as_float_array(w, "w")
+    ii, jj = np.triu_indices(n, 1)
+    if w.ndim != 3 or w.shape[1] != ii.size:
+        raise ValueError(f"w must have shape (B, N (N - 1) / 2, L) = (B, {ii.size}, L), got {w.shape}")
+    check_pair_sizes(n, w.shape[2])
+    if not np.isfinite(w).all():
+        raise ValueError("w must be finite")
+    free = np.ones((w.shape[0], n), dtype=bool)
+    bar = _progress(progress, w.shape[2], "Algorithm 1")
+    try:
+        return _rounds(_WeightHeads(w, ii, jj), free, w.shape[2], bar)
+    finally:
+        if bar is not None:
+            bar.close()
 
 
-#: Size of the sample that sets the pruning threshold, in multiples of ``k`` (speed only).
-_SAMPLE = 16
+def _assignment(picks, weights, n_evaluations=None) -> PairAssignment:
+    """The :class:`PairAssignment` of one instance's picks; the value summed in pick order."""
+    return PairAssignment(triples=[tuple(t) for t in picks.tolist()],
+                          value=float(sum(weights.tolist())), n_evaluations=n_evaluations)
 
 
-def _band(hi):
-    """Positions ``(p, q)``, ``p < q < hi[p]``, of the pairs in a band over a sorted order."""
-    m = hi.size
-    counts = np.maximum(hi - np.arange(m) - 1, 0)
-    p = np.repeat(np.arange(m), counts)
-    starts = np.cumsum(counts) - counts
-    q = p + 1 + (np.arange(p.size) - np.repeat(starts, counts))
-    return p, q
-
-
-def _greedy(source, n: int, n_targets: int, k: int | None = None) -> PairAssignment:
-    """Algorithm 1 with a lazily refilled candidate list per target and a global heap."""
-    if k is None:
-        k = 8
-    free = np.ones(n, dtype=bool)
-    queues = [_TargetQueue(source, l, k) for l in range(n_targets)]
-    heap = []
-    for q in queues:
-        q.fill(free)
-        h = q.head(free)
-        if h is not None:
-            heap.append((-h[0], h[1], h[2], q.l))
-    heapq.heapify(heap)
-    triples, value = [], 0.0
-    while heap:
-        negw, i, j, l = heapq.heappop(heap)
-        if free[i] and free[j]:
-            triples.append((i, j, l))
-            value += -negw
-            free[i] = free[j] = False
-            continue
-        h = queues[l].head(free)  # stale: this target's head lost a sensor; re-queue its next
-        if h is not None:
-            heapq.heappush(heap, (-h[0], h[1], h[2], l))
-    return PairAssignment(triples=triples, value=float(value))
-
-
-def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, cov=None, k=None):
+def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, cov=None, k=None,
+                           progress=False):
     """Algorithm 1 (greedy unique pair assignment), without re-evaluating triples.
 
     Each round takes the heaviest triple ``(i, j, l)`` whose sensors and target are unused
     (ties: smallest ``(i, j, l)``), then removes them. Because the weights do not change between
-    rounds, each target keeps a sorted list of its best pairs, computed once and refilled only
-    when all of them have lost a sensor; a heap of the targets' current heads gives each round's
-    maximum. From geometry, a target's list is found without evaluating most pairs (see
-    ``_GeometrySource``). The picks equal those of :func:`greedy_pair_assignment_literal`.
+    rounds, each target keeps its best free pair (its *head*) until a sensor of it is taken, and
+    a stale head is recomputed only when it could be the round's maximum (:func:`_rounds`, the
+    kernel of :func:`greedy_pairs_batch`). From geometry, each target keeps a sorted list of its
+    heaviest pairs, found without evaluating most pairs (:mod:`obslib._pair_search`: a pair
+    heavier than ``tau`` has nearly orthogonal rows of nearly equal length, so an angular window
+    around each row turned by 90 degrees holds its partners), and refilled with a lower
+    threshold when every pair of it has lost a sensor. The picks equal those of
+    :func:`greedy_pair_assignment_literal`.
 
     Parameters
     ----------
@@ -270,9 +250,14 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     sensors, targets, u_max, cov : optional
         Instead of ``W``: the geometry, weighted as :func:`obslib.pair_bounds` does (Theorem 4,
         Mahalanobis with ``cov``), computed on demand so the ``(N, N, L)`` array is never
-        materialised.
+        materialised. Memory: the normalised rows, 16 bytes per sensor and target (0.8 GB at
+        ``N = 10,000``, ``L = 5,000``), and the candidate lists.
     k : int, optional
-        Candidates kept per target between refills (default 8); affects speed only.
+        From geometry, the least number of pairs a target's list holds after a fill (default
+        16); affects speed only.
+    progress : bool
+        Show a progress bar (tqdm, on stderr) over the rounds (from geometry, first over the
+        targets' first searches).
 
     Returns
     -------
@@ -291,33 +276,45 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     >>> greedy_pair_assignment(pair_bounds(S, T, 1.0)).triples  # from weights
     [(2, 3, 1), (0, 1, 0)]
     """
-    if k is not None:
-        k = as_int(k, "k", 1)
+    k = 16 if k is None else as_int(k, "k", 1)
+    as_bool(progress, "progress")
     if W is not None:
         if sensors is not None or targets is not None:
             raise ValueError("give either W or sensors/targets, not both")
         arr = as_weights(W)
         n, n_targets = arr.shape[0], arr.shape[2]
         check_pair_sizes(n, n_targets)
-        return _greedy(_WeightSource(arr), n, n_targets, k)
-    if sensors is None or targets is None or u_max is None:
+        source = _WeightHeads.of(arr)
+    elif sensors is None or targets is None or u_max is None:
         raise ValueError("give W, or sensors=, targets= and u_max=")
-    v, u2 = _geometry(sensors, targets, u_max, cov)  # (N, L, 2) validated and normalised
-    n, n_targets = v.shape[0], v.shape[1]
-    check_pair_sizes(n, n_targets)
-    source = _GeometrySource(v, u2)
-    result = _greedy(source, n, n_targets, k)
-    return PairAssignment(result.triples, result.value, source.n_evaluations)
+    else:
+        x, y, u2 = target_rows(sensors, targets, u_max, cov)
+        n_targets, n = x.shape
+        check_pair_sizes(n, n_targets)
+    # the bar ticks once per round, and from geometry first once per target's first search
+    bar = _progress(progress, n_targets * (1 if W is not None else 2), "greedy")
+    if W is None:
+        search = PairSearch(x, y, u2)
+        source = GeometryHeads(search, n_targets, k, bar)
+    try:
+        picks, weights = _rounds(source, np.ones((1, n), dtype=bool), n_targets, bar)
+    finally:
+        if bar is not None:
+            bar.close()
+    counted = None if W is not None else search.n_evaluations
+    return _assignment(picks[0], weights[0], counted)
 
 
-def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=None, cov=None) -> PairAssignment:
+def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=None, cov=None,
+                                   progress=False) -> PairAssignment:
     """Algorithm 1 as printed: every round, evaluate all remaining triples and take the maximum.
 
     Vectorised per round (one ``argmax`` over the remaining ``(N', N', L')`` block); ties go to
     the smallest ``(i, j, l)`` with ``i < j``. From geometry it recomputes the weights of the
     remaining sensors and targets every round, as the algorithm's "compute all possible omega"
     says (with the kernel of :func:`obslib.pair_bounds`, so the weights are the same). Quadratic
-    in the number of rounds; for tests and benchmarks.
+    in the number of rounds; for tests and benchmarks. ``progress`` shows a tqdm bar over the
+    rounds on stderr.
 
     Examples
     --------
@@ -334,12 +331,12 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
             return arr[np.ix_(s_free, s_free, t_free)]
         counted = None
     elif sensors is not None and targets is not None and u_max is not None:
-        v, u2 = _geometry(sensors, targets, u_max, cov)
-        n, n_targets = v.shape[0], v.shape[1]
+        X, Y, u2 = target_rows(sensors, targets, u_max, cov)
+        n_targets, n = X.shape
         check_weight_memory(n, n_targets)  # the first round evaluates the whole (N, N, L) block
 
         def block(s_free, t_free):
-            x, y = v[np.ix_(s_free, t_free, [0])][..., 0], v[np.ix_(s_free, t_free, [1])][..., 0]
+            x, y = X[np.ix_(t_free, s_free)].T, Y[np.ix_(t_free, s_free)].T
             return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2[t_free])
         counted = 0
     else:
@@ -348,6 +345,7 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
     s_free = np.arange(n)
     t_free = np.arange(n_targets)
     triples, value = [], 0.0
+    bar = _progress(progress, n_targets, "literal Algorithm 1")
     while t_free.size and s_free.size >= 2:
         w = block(s_free, t_free)
         m = s_free.size
@@ -361,6 +359,10 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
         value += float(w[a, b, c])
         s_free = s_free[(s_free != i) & (s_free != j)]
         t_free = t_free[t_free != l]
+        if bar is not None:
+            bar.update()
+    if bar is not None:
+        bar.close()
     return PairAssignment(triples=triples, value=float(value), n_evaluations=counted)
 
 
@@ -383,9 +385,8 @@ def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 <
     >>> [(l0, l1, block.shape) for l0, l1, block in blocks]
     [(0, 1, (1, 6)), (1, 2, (1, 6))]
     """
-    v, u2 = _geometry(sensors, targets, u_max, cov)
-    ii, jj = np.triu_indices(v.shape[0], 1)
-    xt, yt = np.ascontiguousarray(v[..., 0].T), np.ascontiguousarray(v[..., 1].T)  # (L, N)
+    xt, yt, u2 = target_rows(sensors, targets, u_max, cov)  # (L, N)
+    ii, jj = np.triu_indices(xt.shape[1], 1)
     step = max(1, chunk // max(ii.size, 1))
     for a in range(0, xt.shape[0], step):
         b = min(a + step, xt.shape[0])
@@ -416,7 +417,7 @@ def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
 
 
 def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targets=None, u_max=None,
-                            cov=None) -> PairAssignment:
+                            cov=None, progress=False) -> PairAssignment:
     """Problem 3: maximum-weight matching of sensor pairs to targets.
 
     Each unordered pair serves at most one target and each target gets at most one pair, but a
@@ -432,6 +433,9 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
         which one unordered pair can serve two targets (as ``(i, j)`` and ``(j, i)``).
     sensors, targets, u_max, cov : optional
         Instead of ``W``: the geometry (only the ``i < j`` weights are computed).
+    progress : bool
+        Show a progress bar (tqdm, on stderr): from geometry over the targets' candidate
+        searches, from ``W`` over the one matching.
 
     Examples
     --------
@@ -440,28 +444,37 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
     [(0, 1, 0), (2, 3, 1)]
     """
     ordered = as_bool(ordered, "ordered")
+    as_bool(progress, "progress")
     if W is not None:
         arr = as_weights(W)
         n = arr.shape[0]
         ii, jj = np.triu_indices(n, 1)
-        return _relaxed_from_cost(n, ii, jj, arr[ii, jj, :].T, ordered, counted=None)
+        bar = _progress(progress, 1, "matching")
+        try:
+            return _relaxed_from_cost(n, ii, jj, arr[ii, jj, :].T, ordered, counted=None)
+        finally:
+            if bar is not None:
+                bar.update()
+                bar.close()
     if sensors is not None and targets is not None and u_max is not None:
-        return relaxed_from_geometry(sensors, targets, u_max, cov, orders=(ordered,))[0]
+        return relaxed_from_geometry(sensors, targets, u_max, cov, orders=(ordered,),
+                                     progress=progress)[0]
     raise ValueError("give W, or sensors=, targets= and u_max=")
 
 
-def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True)) -> list:
+def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True), progress=False) -> list:
     """Problem 3 from geometry, evaluating only each target's ``L`` best pairs.
 
     A target matched to a pair outside its ``L`` heaviest could move to one of them, since the
     other ``L - 1`` targets hold at most ``L - 1`` pairs; it would gain weight, so every optimum
     uses only those candidates (with ``(i, j)`` and ``(j, i)`` for the ordered variant, whose
     ``L``-th best ordered weight is at least the ``L``-th best unordered one). The candidates are
-    found with the greedy's exact distance pruning (``_GeometrySource``), without computing most
+    found with the greedy's exact pruning (:mod:`obslib._pair_search`), without computing most
     weights, and the sparse matching is solved with
     ``scipy.sparse.csgraph.min_weight_full_bipartite_matching``. Returns one
     :class:`PairAssignment` per entry of ``orders`` (``ordered`` flags), sharing the candidates;
-    ``n_evaluations`` counts the weights computed (once, for all of them).
+    ``n_evaluations`` counts the weights computed (once, for all of them). ``progress`` shows a
+    tqdm bar (stderr) over the targets' searches.
 
     Examples
     --------
@@ -472,20 +485,26 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
     from scipy.sparse import csr_array
     from scipy.sparse.csgraph import min_weight_full_bipartite_matching
 
-    v, u2 = _geometry(sensors, targets, u_max, cov)
-    n, n_targets = v.shape[0], v.shape[1]
+    x, y, u2 = target_rows(sensors, targets, u_max, cov)
+    n_targets, n = x.shape
     if n_targets < 1:
         raise ValueError("there must be at least one target")
     if n < 2:
         raise ValueError(f"pairs need at least two sensors, got {n}")
-    source = _GeometrySource(v, u2)
+    source = PairSearch(x, y, u2)
     every = np.arange(n)
     rows, ids, ws = [], [], []
+    bar = _progress(progress, n_targets, "candidate pairs")
     for l in range(n_targets):
-        a, b, w, _ = source.top_pairs(l, every, n_targets)
+        a, b, w, _ = source.best(l, every, n_targets)
+        a, b, w = keep_top(a, b, w, n_targets)
         rows.append(np.full(w.size, l))
         ids.append(np.minimum(a, b) * n + np.maximum(a, b))
         ws.append(w)
+        if bar is not None:
+            bar.update()
+    if bar is not None:
+        bar.close()
     rows, ids, ws = np.concatenate(rows), np.concatenate(ids), np.concatenate(ws)
     pairs, col = np.unique(ids, return_inverse=True)
     ii, jj = pairs // n, pairs % n
@@ -526,7 +545,45 @@ def _relaxed_from_cost(n, ii, jj, cost, ordered, counted) -> PairAssignment:
     return PairAssignment(triples=triples, value=float(cost[rows, cols].sum()), n_evaluations=counted)
 
 
-def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignment:
+class OptimumNotProven(RuntimeError):
+    """:func:`optimal_pair_assignment` reached its ``time_limit`` before proving an optimum.
+
+    ``best`` is the best assignment found by then (a :class:`PairAssignment`, one pair per
+    target; at worst Algorithm 1's), ``bound`` an upper bound on the optimum (``None`` when the
+    limit came before the linear relaxation gave one), so ``best.value / bound`` bounds how far
+    from optimal ``best`` can be.
+    """
+
+    def __init__(self, message, best, bound):
+        super().__init__(message)
+        self.best, self.bound = best, bound
+
+
+#: Largest memory :func:`optimal_pair_assignment` may use beyond ``W``: 2 GiB, at
+#: :data:`obslib._exact_pairs.BYTES_PER_VARIABLE` bytes per pair-target variable.
+MAX_EXACT_BYTES = exact_pairs.MAX_BYTES
+
+
+def _check_exact_memory(n, n_targets):
+    """Refuse, before any work, an exact solve whose estimated memory exceeds the limit."""
+    need = exact_pairs.memory_bytes(n, n_targets)
+    if need <= MAX_EXACT_BYTES:
+        return
+    per = exact_pairs.BYTES_PER_VARIABLE
+    most = max(0, MAX_EXACT_BYTES - exact_pairs.SEARCH_BYTES) // per
+    top = 0
+    while (top + 1) * (2 * top + 2) * (2 * top + 1) // 2 <= most:
+        top += 1
+    raise ValueError(
+        f"the exact solver would need about {need / 2**30:.1f} GiB for N = {n}, L = {n_targets} "
+        f"({n * (n - 1) // 2 * n_targets:,} pair-target variables, {per} bytes each), over the "
+        f"limit of {MAX_EXACT_BYTES / 2**30:.0f} GiB: it fits up to {most:,} variables "
+        f"(N (N - 1) / 2 * L), e.g. N = 2L up to L = {top}; for larger instances use "
+        "greedy_pair_assignment (within 1/3 of the optimum, Theorem 6) or "
+        "relaxed_pair_assignment (an upper bound)")
+
+
+def optimal_pair_assignment(W, time_limit: float | None = None, progress=False) -> PairAssignment:
     """Problem 1 solved exactly: a 0-1 program over pair-target variables.
 
     Variables ``x[p, l]`` for unordered pairs ``p = (i, j)`` and targets ``l``; each target takes
@@ -550,15 +607,39 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
     loss per target and per sensor. It proves the optimum up to
     :math:`10^{-10}` of the bound (floating-point noise; HiGHS's default gap is :math:`10^{-4}`);
     if the search grows beyond a fixed node count it hands the reduced model to
-    ``scipy.optimize.milp``. Fig. 8's random instances at ``L = 20``, ``N = 2L`` take 0.1 to 1 s
-    (one HiGHS 0-1 program: about 4 s).
+    ``scipy.optimize.milp``. The LP is solved by column generation (each target's heaviest pairs
+    first, then the pairs the duals price as profitable), so HiGHS never sees all
+    ``N (N - 1) / 2 * L`` variables at once. Fig. 8's random instances at ``L = 20``, ``N = 2L``
+    take 0.1 to 1 s (one HiGHS 0-1 program: about 4 s).
+
+    Limits. Memory is estimated before any work, at
+    :data:`obslib._exact_pairs.BYTES_PER_VARIABLE` bytes per pair-target variable beyond ``W``
+    itself, and the branch and bound's lists at most
+    :data:`obslib._exact_pairs.SEARCH_BYTES`; above :data:`MAX_EXACT_BYTES` (2 GiB: about 33
+    million variables, ``N = 2L`` up to ``L = 254``) the call raises ``ValueError`` saying what
+    fits. The HiGHS 0-1 program that takes over a search grown too large needs
+    about :data:`obslib._exact_pairs.MILP_BYTES_PER_VARIABLE` bytes per variable left; it runs
+    only when that fits the same limit, and otherwise the call raises :class:`OptimumNotProven`.
+    ``time_limit`` bounds the whole call: every HiGHS call gets the time left, the local search
+    and the branch and bound check the clock, and when it runs out the call raises
+    :class:`OptimumNotProven` (a ``RuntimeError``) carrying the best assignment found and the LP
+    bound, within a fraction of a second of the limit (0.2 s over at ``L = 100`` and
+    ``L = 200``: one HiGHS call on a restricted LP, one sort, or a few search nodes). It stops
+    earlier when the one step left, HiGHS's 0-1 program over the variables the bound could not
+    fix (for more than :data:`obslib._exact_pairs.SEARCH_MAX_VARIABLES` of them, instead of the
+    branch and bound), could not even read its model in the time left (about
+    :data:`obslib._exact_pairs.HIGHS_SECONDS_PER_VARIABLE` seconds per variable).
 
     Parameters
     ----------
     W : array_like, shape (N, N, L)
         Pair weights: finite, non-negative, symmetric in ``i, j`` (the diagonal is ignored).
     time_limit : float, optional
-        Seconds after which the call gives up (RuntimeError).
+        Seconds the call may take (from after the validation of ``W`` and the import of
+        ``scipy.optimize``).
+    progress : bool
+        Show the phase (LP relaxation, incumbent, branch and bound) and the gap between the
+        bound and the best assignment in a tqdm bar on stderr.
 
     Returns
     -------
@@ -569,7 +650,9 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
     Raises
     ------
     ValueError
-        For bad ``W`` or ``N < 2L``; RuntimeError if the solver stops without a proven optimum.
+        For bad ``W``, ``N < 2L``, or an instance over the memory limit.
+    OptimumNotProven
+        When ``time_limit`` passes before an optimum is proven.
 
     Examples
     --------
@@ -586,7 +669,29 @@ def optimal_pair_assignment(W, time_limit: float | None = None) -> PairAssignmen
             raise ArgumentTypeError(f"time_limit must be a number of seconds or None, got {time_limit!r}")
         if not (np.isfinite(time_limit) and time_limit > 0):
             raise ValueError(f"time_limit must be positive and finite, got {time_limit!r}")
+    as_bool(progress, "progress")
+    _check_exact_memory(n, n_targets)
+    import scipy.optimize  # noqa: F401  (1 s on a first call: imported before the clock starts)
+
     deadline = None if not time_limit else time.perf_counter() + float(time_limit)
-    start = _greedy(_WeightSource(arr), n, n_targets).triples  # one of the search's incumbents
-    triples = sorted(exact_pairs.solve(arr, deadline, start), key=lambda t: t[2])
+    bar = _progress(progress, None, "exact optimum")
+    try:
+        # Algorithm 1 (one of the search's incumbents) on the weights validated above
+        picks, _ = _rounds(_WeightHeads.of(arr), np.ones((1, n), dtype=bool), n_targets)
+        start = [tuple(t) for t in picks[0].tolist()]
+        triples = exact_pairs.solve(arr, deadline, start, bar)
+    except exact_pairs.Stopped as e:
+        best = sorted(e.triples, key=lambda t: t[2])
+        best = PairAssignment(triples=best, value=assignment_value(arr, best))
+        gap = "" if e.bound is None else f", the bound {e.bound:.6g}"
+        why = (f"within time_limit = {time_limit} s" if e.reason == "time" else
+               f"within {MAX_EXACT_BYTES / 2**30:.0f} GiB: the search left more variables than "
+               "the HiGHS 0-1 program it hands them to could hold")
+        raise OptimumNotProven(
+            f"no proven optimum {why}; the best assignment found is worth {best.value:.6g}{gap} "
+            "(attributes best and bound)", best, e.bound) from None
+    finally:
+        if bar is not None:
+            bar.close()
+    triples = sorted(triples, key=lambda t: t[2])
     return PairAssignment(triples=triples, value=assignment_value(arr, triples))

@@ -10,6 +10,7 @@ from obslib.assignment import (
     assignment_value,
     greedy_pair_assignment,
     greedy_pair_assignment_literal,
+    greedy_pairs_batch,
     optimal_pair_assignment,
     relaxed_pair_assignment,
 )
@@ -69,6 +70,66 @@ def test_greedy_equals_literal_on_thousands_of_instances(grid):
         assert greedy_pair_assignment(sensors=S, targets=T, u_max=1.0, k=k).triples == lit.triples
         if k == 1:  # the literal algorithm recomputing weights each round agrees too
             assert greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0).triples == lit.triples
+
+
+def greedy_by_enumeration(W):
+    """Algorithm 1 replayed round by round in plain Python: every remaining triple (i < j) is
+    listed, the heaviest taken, ties to the smallest (i, j, l)."""
+    n, _, L = W.shape
+    free, open_, picks = set(range(n)), set(range(L)), []
+    while open_ and len(free) >= 2:
+        best = max((W[i, j, l], (-i, -j, -l)) for i in free for j in free if i < j for l in open_)
+        i, j, l = (-v for v in best[1])
+        picks.append((i, j, l))
+        free -= {i, j}
+        open_.discard(l)
+    return picks
+
+
+def test_batched_kernel_equals_the_literal_algorithm_and_enumeration_with_ties():
+    """The kernel of every greedy in obslib on batches of instances (integer weights: many
+    exact ties) against the vectorised literal Algorithm 1 and the plain enumeration."""
+    rng = np.random.default_rng(21)
+    for n, L in [(2, 1), (4, 2), (5, 2), (7, 3), (8, 4), (9, 3)]:
+        W = rng.integers(0, 3, size=(40, n, n, L)).astype(float)
+        W = W + W.transpose(0, 2, 1, 3)
+        ii, jj = np.triu_indices(n, 1)
+        picks, weights = greedy_pairs_batch(W[:, ii, jj], n)
+        for b in range(40):
+            got = [tuple(t) for t in picks[b].tolist()]
+            assert got == greedy_pair_assignment_literal(W[b]).triples
+            assert got == greedy_by_enumeration(W[b])
+            assert weights[b].tolist() == [W[b][t] for t in got]
+
+
+def test_batched_kernel_rejects_bad_input():
+    with pytest.raises(ValueError, match="shape"):
+        greedy_pairs_batch(np.zeros((1, 5, 1)), 4)
+    with pytest.raises(ValueError, match="N >= 2L"):
+        greedy_pairs_batch(np.zeros((1, 6, 3)), 4)
+    with pytest.raises(ValueError, match="finite"):
+        greedy_pairs_batch(np.full((1, 6, 1), np.nan), 4)
+
+
+def test_greedy_from_geometry_equals_literal_on_larger_scenes():
+    """The pruned search from geometry against the literal algorithm (which weighs every
+    remaining triple each round) where most pairs are never weighed: uniform scenes, a grid
+    (exact ties) and Mahalanobis distances."""
+    rng = np.random.default_rng(22)
+    for n, L, kind in [(160, 80, "uniform"), (144, 60, "grid"), (120, 50, "cov")]:
+        S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (L, 2))
+        cov = None
+        if kind == "grid":
+            side = int(np.ceil(np.sqrt(n)))
+            S = np.array([(a, b) for a in range(side) for b in range(side)], float)[:n] * 8.0
+            T = np.round(T / 8.0) * 8.0 + 4.0
+        elif kind == "cov":
+            A = rng.normal(size=(L, 2, 2))
+            cov = A @ A.transpose(0, 2, 1) + 0.5 * np.eye(2)
+        fast = greedy_pair_assignment(sensors=S, targets=T, u_max=1.0, cov=cov)
+        lit = greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0, cov=cov)
+        assert fast.triples == lit.triples and fast.value == lit.value
+        assert fast.n_evaluations < 0.05 * lit.n_evaluations
 
 
 def test_greedy_from_geometry_with_mahalanobis_equals_weights():
@@ -269,6 +330,60 @@ def test_exact_solver_hands_large_searches_to_highs(monkeypatch):
     assert calls  # the hand-over happened
 
 
+def test_exact_solver_honours_a_tiny_time_limit_at_L_100():
+    """At L = 100, N = 200 (2 million pair-target variables) the call stops within its limit
+    plus 1 s with the best assignment found, at least Algorithm 1's, and the LP bound once it
+    is known."""
+    import time
+
+    import scipy.optimize  # noqa: F401  (the clock starts after this import)
+
+    from obslib.assignment import OptimumNotProven
+
+    rng = np.random.default_rng([0, 100])
+    W = ob.pair_bounds(rng.uniform(0, 100, (200, 2)), rng.uniform(0, 100, (100, 2)), 1.0)
+    greedy = greedy_pair_assignment(W).value
+    for limit in (0.2, 2.0):
+        t0 = time.perf_counter()
+        with pytest.raises(OptimumNotProven, match="no proven optimum within time_limit") as err:
+            optimal_pair_assignment(W, time_limit=limit)
+        assert time.perf_counter() - t0 < limit + 1.0
+        best = err.value.best
+        assert _feasible(best, 200, 100) and sorted(l for *_, l in best.triples) == list(range(100))
+        assert best.value == assignment_value(W, best.triples) >= greedy
+        assert err.value.bound is None or best.value <= err.value.bound + 1e-9
+
+
+def test_exact_solver_refuses_what_would_not_fit_in_memory(monkeypatch):
+    from obslib import _exact_pairs as exact
+    from obslib import assignment
+    from obslib.assignment import OptimumNotProven
+
+    rng = np.random.default_rng(14)
+    _, _, W = random_instance(rng, 5, 0)
+    # 45 * 5 variables do not fit in what leaves room for 56
+    monkeypatch.setattr(assignment, "MAX_EXACT_BYTES",
+                        exact.SEARCH_BYTES + 56 * exact.BYTES_PER_VARIABLE)
+    with pytest.raises(ValueError, match=r"over the limit .* fits up to 56 variables"):
+        optimal_pair_assignment(W)
+    monkeypatch.undo()
+    # the 0-1 program a large search hands over runs only within the limit: every search that
+    # branches is handed over (no node allowed), and no program fits
+    monkeypatch.setattr(exact, "MAX_NODES", 0)
+    monkeypatch.setattr(exact, "MAX_BYTES", exact.memory_bytes(10, 5))
+    stopped = 0
+    for _ in range(20):
+        _, _, W = random_instance(rng, 5, 0)
+        want = _highs(W)
+        try:
+            assert optimal_pair_assignment(W).value == pytest.approx(want, rel=1e-9)
+        except OptimumNotProven as err:
+            assert "GiB" in str(err)
+            assert err.best.value <= want + 1e-12 <= err.bound + 2e-12
+            stopped += 1
+    assert stopped
+
+
 def test_exact_solver_time_limit_and_zero_weights():
     rng = np.random.default_rng([0, 20])
     W = ob.pair_bounds(rng.uniform(0, 100, (40, 2)), rng.uniform(0, 100, (20, 2)), 1.0)
@@ -278,3 +393,56 @@ def test_exact_solver_time_limit_and_zero_weights():
         with pytest.raises(ValueError, match="time_limit"):
             optimal_pair_assignment(W, time_limit=bad)
     assert optimal_pair_assignment(np.zeros((4, 4, 2))).triples == []
+
+
+def test_progress_bars_go_to_stderr_and_change_nothing(capsys):
+    rng = np.random.default_rng(15)
+    S, T, W = random_instance(rng, 6, 2)
+    runs = [
+        (lambda p: greedy_pair_assignment(sensors=S, targets=T, u_max=1.0, progress=p), "greedy"),
+        (lambda p: greedy_pair_assignment(W, progress=p), "greedy"),
+        (lambda p: relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0, progress=p),
+         "candidate pairs"),
+        (lambda p: relaxed_pair_assignment(W, progress=p), "matching"),
+        (lambda p: optimal_pair_assignment(W, progress=p), "exact optimum"),
+        (lambda p: greedy_pair_assignment_literal(W, progress=p), "literal Algorithm 1"),
+    ]
+    for run, label in runs:
+        quiet = run(False)
+        assert capsys.readouterr().err == ""
+        shown = run(True)
+        out = capsys.readouterr()
+        assert label in out.err and out.out == ""
+        assert shown == quiet
+    with pytest.raises(ValueError, match="progress"):
+        greedy_pair_assignment(W, progress="yes")
+
+
+def test_pair_search_returns_every_pair_down_to_its_floor():
+    """PairSearch.best against all pairs weighed: the pairs it returns are exactly those at or
+    above the floor it reports (at least k of them), with the kernel's weights, from any first
+    threshold, on uniform scenes, a grid (ties) and clustered sensors."""
+    from obslib._pair_search import PairSearch, target_rows
+
+    rng = np.random.default_rng(23)
+    scenes = [(rng.uniform(0, 100, (300, 2)), rng.uniform(0, 100, (4, 2))),
+              (np.array([(a, b) for a in range(18) for b in range(18)], float) * 5.0,
+               np.array([[42.5, 42.5], [2.5, 87.5], [120.0, -10.0]])),
+              (rng.normal(50, 3, (250, 2)), np.array([[50.5, 50.5], [90.0, 50.0]]))]
+    for S, T in scenes:
+        x, y, u2 = target_rows(S, T, 1.0, None)
+        search = PairSearch(x, y, u2)
+        ii, jj = np.triu_indices(S.shape[0], 1)
+        for l in range(T.shape[0]):
+            every = search.weights(l, ii, jj)
+            for k, tau in [(1, None), (16, None), (40, 0.999), (16, 0.2)]:
+                idx = np.sort(rng.choice(S.shape[0], size=S.shape[0] - 7, replace=False))
+                a, b, w, floor = search.best(l, idx, k, tau)
+                inside = np.isin(ii, idx) & np.isin(jj, idx)
+                want = {(i, j) for i, j in zip(ii[inside & (every >= floor)].tolist(),
+                                               jj[inside & (every >= floor)].tolist())}
+                got = {(min(p, q), max(p, q)) for p, q in zip(a.tolist(), b.tolist())}
+                assert got == want and len(got) == a.size
+                assert floor == -np.inf or a.size >= k
+                W = {(i, j): v for i, j, v in zip(ii.tolist(), jj.tolist(), every.tolist())}
+                assert all(W[min(p, q), max(p, q)] == v for p, q, v in zip(a, b, w))

@@ -19,6 +19,7 @@ from itertools import combinations
 import numpy as np
 
 from .._kernels import normalise, pair_kernel
+from ..assignment import greedy_pairs_batch
 from .._validate import as_u_max, check_distinct, check_not_on_targets
 
 __all__ = [
@@ -137,10 +138,9 @@ def optimal_values(W) -> np.ndarray:
 def greedy_values(W) -> np.ndarray:
     """Algorithm 1's value for a batch of weight arrays ``W`` of shape ``(K, N, N, L)``.
 
-    Every round takes, in each instance at once, the heaviest triple ``(i, j, l)``, ``i < j``,
-    whose sensors and target are unused, the smallest ``(i, j, l)`` among equal weights (the
-    first maximum in C order), as :func:`obslib.greedy_pair_assignment` does; the values are
-    summed in pick order, so they equal its ``value`` exactly (the tests compare them).
+    The picks of :func:`obslib.assignment.greedy_pairs_batch` (ties to the smallest
+    ``(i, j, l)``, as :func:`obslib.greedy_pair_assignment`), their weights summed in pick
+    order, so the values equal its ``value`` exactly (the tests compare them).
 
     Examples
     --------
@@ -150,20 +150,10 @@ def greedy_values(W) -> np.ndarray:
     array([1.001])
     """
     W = _as_batch(W)
-    k, n, _, n_targets = W.shape
-    upper = np.triu(np.ones((n, n), dtype=bool), 1)[None, :, :, None]
-    w = np.where(upper, W, -np.inf)
-    rows = np.arange(k)
-    total = np.zeros(k)
-    for _ in range(n_targets):
-        flat = np.argmax(w.reshape(k, -1), axis=1)
-        i, j, l = np.unravel_index(flat, (n, n, n_targets))
-        total += w[rows, i, j, l]
-        for s in (i, j):
-            w[rows, s, :, :] = -np.inf
-            w[rows, :, s, :] = -np.inf
-        w[rows, :, :, l] = -np.inf
-    return total
+    n = W.shape[1]
+    ii, jj = np.triu_indices(n, 1)
+    _, weights = greedy_pairs_batch(W[:, ii, jj, :], n)
+    return np.cumsum(weights, axis=1)[:, -1]  # summed in pick order
 
 
 def batch_pair_bounds(sensors, targets, u_max) -> tuple[np.ndarray, np.ndarray]:

@@ -26,8 +26,9 @@ bounded unknown control): :math:`o_{k+1} = o_k + u_k`. Each filter predicts with
 :math:`\\hat x^- = \\hat x`, :math:`\\Sigma^- = \\Sigma + Q`, :math:`Q = (u_{max}^2 / 4) I`
 (the covariance of the uniform disc), and updates with the half squared ranges
 :math:`z_i = \\tfrac12 \\|p_i - o\\|^2 + n_i` (Section II; :func:`obslib.tracking.half_squared_range`)
-of its two sensors, :math:`n_i \\sim N(0, \\sigma^2)`, ``R = sigma^2 I``, in Joseph form as
-filterpy's ``ExtendedKalmanFilter.update`` (the tests compare the two).
+of its two sensors, :math:`n_i \\sim N(0, \\sigma^2)`, ``R = sigma^2 I``: the batched EKF of
+:mod:`obslib.tracking.kalman` (filterpy's equations, Joseph form), which stops with a
+``ValueError`` naming the target, step and seed where the innovation covariance is singular.
 
 Order within step ``k``, as in :mod:`obslib.tracking`: (1) assign from the current estimates and
 covariances; (2) log each target's error :math:`\\|\\hat x - o\\|` and :math:`\\operatorname{tr}
@@ -48,6 +49,8 @@ import numpy as np
 
 from .. import tracking as tr
 from .._kernels import pair_kernel
+from ..assignment import greedy_pairs_batch
+from ..tracking import kalman
 
 __all__ = [
     "RULES",
@@ -59,7 +62,6 @@ __all__ = [
     "info_gain_weights",
     "batch_greedy",
     "random_assignments",
-    "ekf_step",
     "run",
     "run_all",
 ]
@@ -266,11 +268,11 @@ def _bound_rows(sensors, xhat, cov, u_max, metric):
 
 def _scaled(v, cov, metric):
     """Rows ``v`` ``(M, K, 2)`` scaled as the tracking engine scales the bound's rows
-    (:func:`obslib.tracking.criteria.scaled_rows`): Mahalanobis lengths in ``cov`` ``(M, 2, 2)``
+    (:func:`obslib.tracking.choosers.scaled_rows`): Mahalanobis lengths in ``cov`` ``(M, 2, 2)``
     when ``metric`` says so, divided by each estimate's longest row."""
     c = (cov[:, 0, 0], cov[:, 0, 1], cov[:, 1, 0], cov[:, 1, 1])
     maha = np.full(v.shape[0], metric == "mahalanobis")
-    return tr.criteria.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
+    return tr.choosers.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
 
 
 def info_gain_weights(sensors, xhat, cov_pred, r) -> np.ndarray:
@@ -312,9 +314,8 @@ def info_gain_weights(sensors, xhat, cov_pred, r) -> np.ndarray:
 def batch_greedy(W) -> np.ndarray:
     """Algorithm 1 on a batch of weights ``W`` (B, N, N, L): each target's pair, (B, L, 2).
 
-    Every round takes, in each instance at once, the heaviest triple ``(i, j, l)`` with ``i < j``
-    whose sensors and target are unused, ties to the smallest ``(i, j, l)`` (the first maximum in
-    C order), as :func:`obslib.greedy_pair_assignment` does (the tests compare the picks).
+    The picks of :func:`obslib.assignment.greedy_pairs_batch` on the pairs ``i < j`` (ties to the
+    smallest ``(i, j, l)``, as :func:`obslib.greedy_pair_assignment`), arranged by target.
 
     Examples
     --------
@@ -332,20 +333,8 @@ def batch_greedy(W) -> np.ndarray:
     True
     """
     W = np.asarray(W, dtype=float)
-    B, n, _, L = W.shape
-    upper = np.triu(np.ones((n, n), dtype=bool), 1)[None, :, :, None]
-    w = np.where(upper, W, -np.inf)
-    rows = np.arange(B)
-    out = np.empty((B, L, 2), dtype=np.int64)
-    for _ in range(L):
-        flat = np.argmax(w.reshape(B, -1), axis=1)
-        i, j, l = np.unravel_index(flat, (n, n, L))
-        out[rows, l, 0], out[rows, l, 1] = i, j
-        for s in (i, j):
-            w[rows, s, :, :] = -np.inf
-            w[rows, :, s, :] = -np.inf
-        w[rows, :, :, l] = -np.inf
-    return out
+    ii, jj = np.triu_indices(W.shape[1], 1)
+    return _greedy_upper(W[:, ii, jj], W.shape[1])
 
 
 def _upper_bound_weights(sensors, xhat, cov, u_max, metric, ii, jj) -> np.ndarray:
@@ -368,22 +357,14 @@ def _upper_gain_weights(sensors, xhat, cov_pred, r, ii, jj) -> np.ndarray:
     return np.log(det)
 
 
-def _greedy_upper(w, ii, jj) -> np.ndarray:
-    """:func:`batch_greedy` on the weights of the pairs ``i < j`` only, ``w`` ``(B, P, L)`` with
-    pair ``p = (ii[p], jj[p])`` in ``(i, j)`` order: the first maximum over ``(p, l)`` is the
-    first over ``(i, j, l)``, so the picks are the same."""
-    w = np.array(w, dtype=float)
-    B, P, L = w.shape
-    rows = np.arange(B)
-    out = np.empty((B, L, 2), dtype=np.int64)
-    n = int(jj.max()) + 1 if jj.size else 0
-    touches = (ii == np.arange(n)[:, None]) | (jj == np.arange(n)[:, None])  # (N, P)
-    for _ in range(L):
-        p, l = np.divmod(np.argmax(w.reshape(B, -1), axis=1), L)
-        i, j = ii[p], jj[p]
-        out[rows, l, 0], out[rows, l, 1] = i, j
-        w[touches[i] | touches[j]] = -np.inf  # the pairs sharing a sensor with the pick
-        w[rows, :, l] = -np.inf
+def _greedy_upper(w, n) -> np.ndarray:
+    """Each target's pair ``(B, L, 2)`` picked by Algorithm 1
+    (:func:`obslib.assignment.greedy_pairs_batch`) from the weights ``w`` ``(B, P, L)`` of the
+    pairs ``i < j`` of ``n`` sensors."""
+    picks, _ = greedy_pairs_batch(w, n)
+    out = np.empty(picks.shape[:2] + (2,), dtype=np.int64)
+    rows = np.arange(picks.shape[0])[:, None]
+    out[rows, picks[..., 2]] = picks[..., :2]
     return out
 
 
@@ -400,64 +381,18 @@ def random_assignments(perm, n_targets) -> np.ndarray:
     return np.sort(p, axis=-1)
 
 
-def ekf_step(x, P, pair_sensors, z, q, r):
-    """One predict-update step of many independent EKFs at once (Joseph form).
-
-    Predict :math:`\\hat x^- = \\hat x`, :math:`\\Sigma^- = \\Sigma + qI`; update with the half
-    squared ranges of the two sensors: :math:`H = [(\\hat x^- - p_i)^T; (\\hat x^- - p_j)^T]`,
-    :math:`S = H\\Sigma^- H^T + rI`, :math:`K = \\Sigma^- H^T S^{-1}`,
-    :math:`\\hat x = \\hat x^- + K(z - h(\\hat x^-))`,
-    :math:`\\Sigma = (I - KH)\\Sigma^-(I - KH)^T + rKK^T`, as filterpy's
-    ``ExtendedKalmanFilter.predict``/``update``.
-
-    Parameters
-    ----------
-    x : (..., 2)
-    P : (..., 2, 2)
-    pair_sensors : (..., 2, 2), rows the two sensors' positions
-    z : (..., 2), the two measurements
-    q, r : float, process and measurement noise variances
-
-    Returns
-    -------
-    x, P : the updated estimates and covariances (new arrays).
-
-    Examples
-    --------
-    A case by hand: at :math:`\\hat x = 0` with sensors :math:`e_1, e_2`,
-    :math:`H = -I`; with :math:`\\Sigma = 0`, :math:`q = r = 1`,
-    :math:`S = 2I`, :math:`K = -I/2`, and :math:`h(\\hat x) = (1/2, 1/2)`:
-
-    >>> pair = np.array([[1.0, 0.0], [0.0, 1.0]])
-    >>> z = np.array([1.5, 0.5])  # innovation (1, 0)
-    >>> x, P = ekf_step(np.zeros(2), np.zeros((2, 2)), pair, z, 1.0, 1.0)
-    >>> x.tolist(), P.tolist()
-    ([-0.5, 0.0], [[0.5, 0.0], [0.0, 0.5]])
-
-    Batched, the covariance is the information form
-    :math:`((\\Sigma + qI)^{-1} + H^T H / r)^{-1}`:
-
-    >>> rng = np.random.default_rng(0)
-    >>> xs, ps = rng.uniform(0, 5, (3, 2)), rng.uniform(0, 5, (3, 2, 2))
-    >>> P0 = np.broadcast_to(np.eye(2), (3, 2, 2))
-    >>> x1, P1 = ekf_step(xs, P0, ps, rng.uniform(0, 5, (3, 2)), 0.5, 0.25)
-    >>> H = xs[:, None, :] - ps
-    >>> info = np.linalg.inv(P0 + 0.5 * np.eye(2)) + H.mT @ H / 0.25
-    >>> bool(np.allclose(P1, np.linalg.inv(info), rtol=1e-9, atol=1e-12))
-    True
-    """
-    eye = np.eye(2)
-    Pm = P + q * eye
-    H = x[..., None, :] - pair_sensors  # (..., 2, 2): rows (x - p_i)^T
-    d = pair_sensors - x[..., None, :]
-    hx = 0.5 * (d[..., 0] ** 2 + d[..., 1] ** 2)
-    PHt = Pm @ np.swapaxes(H, -1, -2)
-    S = H @ PHt + r * eye
-    K = PHt @ np.linalg.inv(S)
-    xn = x + np.einsum("...ij,...j->...i", K, z - hx)
-    IKH = eye - K @ H
-    Pn = IKH @ Pm @ np.swapaxes(IKH, -1, -2) + r * (K @ np.swapaxes(K, -1, -2))
-    return xn, Pn
+def _filter_step(x, P, ps, z, q, r):
+    """Predict and update every target's filter at once (:mod:`obslib.tracking.kalman`):
+    estimates ``x`` (..., 2), covariances ``P`` (..., 2, 2), pair sensors ``ps`` (..., 2, 2)
+    (rows the two sensors), measurements ``z`` (..., 2), noise variances ``q``, ``r`` per axis.
+    Returns the new ``x, P`` (new arrays); raises
+    :class:`~obslib.tracking.kalman.SingularInnovation` as the update does."""
+    Pm = kalman.predict((P[..., 0, 0], P[..., 0, 1], P[..., 1, 0], P[..., 1, 1]),
+                        ((q, 0.0), (0.0, q)))
+    xn, Pn = kalman.update((x[..., 0], x[..., 1]), Pm, (ps[..., 0, 0], ps[..., 0, 1]),
+                           (ps[..., 1, 0], ps[..., 1, 1]), (z[..., 0], z[..., 1]),
+                           ((r, 0.0), (0.0, r)))
+    return np.stack(xn, axis=-1), np.stack(Pn, axis=-1).reshape(P.shape)
 
 
 # --------------------------------------------------------------------------------------------
@@ -563,10 +498,10 @@ def _run(sc: Scenario, rules) -> dict:
         for rule, sl in rows.items():
             if rule == "bound":
                 w = _upper_bound_weights(S[sl], x[sl], P[sl], st.u_max, st.metric, ii, jj)
-                pr[sl] = _greedy_upper(w, ii, jj)
+                pr[sl] = _greedy_upper(w, S.shape[1])
             elif rule == "d-optimal":
                 w = _upper_gain_weights(S[sl], x[sl], P[sl] + q * np.eye(2), r, ii, jj)
-                pr[sl] = _greedy_upper(w, ii, jj)
+                pr[sl] = _greedy_upper(w, S.shape[1])
             else:
                 pr[sl] = random_assignments(sc.perm[:, k], L)
         pairs[:, k] = pr
@@ -578,7 +513,16 @@ def _run(sc: Scenario, rules) -> dict:
         ps = S[bb[..., None], pr]  # (B, L, 2, 2)
         d = ps - o[..., None, :]
         z = 0.5 * (d[..., 0] ** 2 + d[..., 1] ** 2) + noise[:, k][bb[..., None], pr]
-        x, P = ekf_step(x, P, ps, z, q, r)
+        try:
+            x, P = _filter_step(x, P, ps, z, q, r)
+        except kalman.SingularInnovation as e:
+            b, l = (int(v) for v in np.argwhere(~e.ok)[0])
+            raise ValueError(
+                f"the filter of target {l} failed at step {k + 1} of seed {sc.seeds[b % nb]} "
+                f"(rule {rules[b // nb]!r}): the innovation covariance H P H^T + R is singular in "
+                f"floating point (estimate {np.round(x[b, l], 6).tolist()}, pair sensors "
+                f"{ps[b, l].tolist()}); the estimate is too far from the sensors or its "
+                "covariance too large for the two ranges to tell it apart") from None
         dx = x - o
         post[:, k] = np.hypot(dx[..., 0], dx[..., 1])
         est[:, k] = x

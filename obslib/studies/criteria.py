@@ -167,7 +167,7 @@ def _scores(name, S, x, C, Q, R, u_max, u, metric):
     if name == "bound":  # Theorem 4 on the pairs only: the tracking engine's row scaling
         c = (C[:, 0, 0], C[:, 0, 1], C[:, 1, 0], C[:, 1, 1])
         maha = np.full(x.shape[0], metric == "mahalanobis")
-        vx, vy, inv = tr.criteria.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
+        vx, vy, inv = tr.choosers.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
         return pair_kernel(vx[:, ii], vy[:, ii], vx[:, jj], vy[:, jj], (u_max**2 * inv)[:, None])
     if name == "exact-icn":
         rows = np.stack([v[:, ii], v[:, jj], np.broadcast_to(u[:, None], v[:, ii].shape)], axis=-2)
@@ -200,7 +200,9 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
 
     Returns ``n``, the mean, median and standard deviation of ``other - reference``, the counts of runs
     where each is clearly lower (:func:`obslib.tracking.clearly_lower`) and of ties, the two-sided
-    sign-test p-value (ties dropped) and the Wilcoxon signed-rank p-value (``scipy.stats``).
+    sign-test p-value (ties dropped; ``scipy.stats.binomtest`` at :math:`p = 1/2`) and the
+    Wilcoxon signed-rank p-value of the nonzero differences (``scipy.stats.wilcoxon``: exact up
+    to 50 differences, beyond that the normal approximation with the tie correction).
 
     Examples
     --------
@@ -214,6 +216,8 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
     >>> round(t["mean_diff"], 12), round(t["median_diff"], 12), t["p_sign"]
     (0.35, 0.5, 0.625)
     """
+    from scipy import stats  # 0.6 s to import: only where a test is computed
+
     a = np.asarray(reference, dtype=float)
     b = np.asarray(other, dtype=float)
     if a.shape != b.shape or a.ndim != 1 or a.size < 2:
@@ -223,9 +227,9 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
     other_better = int(tr.clearly_lower(b, a, rtol).sum())
     ties = a.size - ref_better - other_better
     n_signed = ref_better + other_better
-    p_sign = _sign_test(ref_better, n_signed) if n_signed else 1.0
+    p_sign = float(stats.binomtest(ref_better, n_signed, 0.5).pvalue) if n_signed else 1.0
     nonzero = d[d != 0]
-    p_wil = _wilcoxon(nonzero) if nonzero.size >= 2 else 1.0
+    p_wil = float(stats.wilcoxon(nonzero).pvalue) if nonzero.size >= 2 else 1.0
     return {
         "n": int(a.size),
         "mean_diff": float(d.mean()),
@@ -237,54 +241,6 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
         "p_sign": p_sign,
         "p_wilcoxon": p_wil,
     }
-
-
-# scipy.stats costs about 0.6 s to import against 0.2 s for scipy.special, and this study needs
-# two textbook p-values; samples small enough for exact Wilcoxon tables go to scipy.stats.
-
-
-def _sign_test(k: int, n: int) -> float:
-    r"""Two-sided sign test of ``k`` successes in ``n`` trials at :math:`p = 1/2`.
-
-    .. math:: p = \min\bigl(1,\ 2\,P[X \le \min(k, n - k)]\bigr),
-       \quad X \sim \mathrm{Binomial}(n, 1/2)
-
-    (the distribution is symmetric, so both tails weigh the same).
-    """
-    from scipy.special import bdtr
-
-    if 2 * k == n:
-        return 1.0
-    return float(min(1.0, 2.0 * bdtr(min(k, n - k), n, 0.5)))
-
-
-def _wilcoxon(d) -> float:
-    r"""Two-sided Wilcoxon signed-rank p-value of the nonzero differences ``d``.
-
-    Beyond 50 differences, the normal approximation of the rank sum :math:`T^+` of the positive
-    differences, with the tie correction and no continuity correction (the default of
-    ``scipy.stats.wilcoxon``):
-
-    .. math:: z = \frac{T^+ - n(n+1)/4}
-       {\sqrt{n(n+1)(2n+1)/24 - \sum_g (t_g^3 - t_g)/48}}, \qquad p = 2\,\Phi(-|z|),
-
-    :math:`t_g` the sizes of the groups of equal :math:`|d|`. Up to 50 differences (exact or
-    permutation distributions), ``scipy.stats.wilcoxon`` itself.
-    """
-    n = d.size
-    if n <= 50:
-        from scipy import stats
-
-        return float(stats.wilcoxon(d).pvalue)
-    from scipy.special import ndtr
-
-    _, group, ties = np.unique(np.abs(d), return_inverse=True, return_counts=True)
-    first = np.cumsum(ties) - ties  # number of |d| below each group
-    rank = (first + (ties + 1) / 2.0)[group]  # average ranks, from 1
-    t_plus = float(rank[d > 0].sum())
-    var = n * (n + 1) * (2 * n + 1) / 24.0 - float(np.sum(ties**3.0 - ties)) / 48.0
-    z = (t_plus - n * (n + 1) / 4.0) / np.sqrt(var)
-    return float(2.0 * ndtr(-abs(z)))
 
 
 def significance(row: dict, alpha: float = 0.01) -> str:

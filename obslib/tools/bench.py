@@ -8,7 +8,10 @@ prints a few readable lines and, last, one JSON object.
     ``L = 1000``, over one vectorised evaluation of every pair bound for every target with the
     same kernel (target <= 2). ``literal_over_greedy``: Algorithm 1 as printed (recomputing all
     weights each round, vectorised per round) over the greedy at ``N = 400``, ``L = 200``
-    (target >= 100). ``peak_rss_gb``: the process's peak resident memory (target < 4).
+    (target >= 100). ``peak_rss_gb``: the process's peak resident memory (target < 4). With
+    ``--sensors N --targets L`` only the greedy from geometry runs, once, at that size:
+    ``greedy_s`` and ``peak_rss_gb`` (targets at ``N = 10,000``, ``L = 5,000``: 30 s, 2 GB).
+    Progress goes to stderr, the JSON line to stdout.
 
 ``scaling``
     Wall time of each assignment algorithm against ``N`` (``L = N / 2``), written with the
@@ -78,20 +81,29 @@ def _timed(fn, repeat: int = 1):
     return best, out
 
 
-def one_pass(sensors, targets, u_max, chunk: int = 1 << 20) -> float:
+def one_pass(sensors, targets, u_max, chunk: int = 1 << 20, progress: bool = False) -> float:
     """Evaluate every pair bound ``i < j`` for every target once, in blocks; return the maximum.
 
     The reference cost for the greedy: one vectorised sweep of all ``N (N - 1) / 2 * L``
-    weights with the kernel of :func:`obslib.pair_bounds`, without keeping them.
+    weights with the kernel of :func:`obslib.pair_bounds`, without keeping them. ``progress``
+    shows a tqdm bar over the targets on stderr.
 
     Examples
     --------
     >>> one_pass([[0, 0], [1, 0], [3, 1]], [[1, 1]], 1.0) >= 0  # in seconds
     True
     """
+    from tqdm import tqdm
+
     from ..assignment import upper_pair_weight_blocks
 
-    return max(float(block.max()) for _, _, block in upper_pair_weight_blocks(sensors, targets, u_max, chunk=chunk))
+    top = -np.inf
+    with tqdm(total=len(targets), desc="one pass", file=sys.stderr, leave=False,
+              mininterval=0.5, disable=not progress) as bar:
+        for a, b, block in upper_pair_weight_blocks(sensors, targets, u_max, chunk=chunk):
+            top = max(top, float(block.max()))
+            bar.update(b - a)
+    return top
 
 
 def evaluation_counts(sizes: dict, seed: int = 0) -> dict:
@@ -150,9 +162,23 @@ def literal_count(n_sensors: int, n_targets: int) -> int:
 COUNTED = ("greedy (geometry)", "literal Algorithm 1", "relaxed matching")
 
 
+def _peak_rss_gb() -> float:
+    """Peak resident memory of this process so far, in GiB (``ru_maxrss`` is in KiB on Linux)."""
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024**2
+
+
+def _say(line: str) -> None:
+    """A readable line of a benchmark, on stderr with the progress bars (stdout holds the JSON)."""
+    print(line, file=sys.stderr, flush=True)
+
+
 def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l_small: int = 200,
-                     seed: int = 0) -> dict:
+                     seed: int = 0, sensors: int | None = None, targets: int | None = None) -> dict:
     """Run the assignment benchmark; returns the JSON-ready dict (see the module docstring).
+
+    With ``sensors`` and ``targets``, only the greedy from geometry runs, once, on a uniform
+    scene of that size: ``greedy_s`` its wall time, ``peak_rss_gb`` the process's peak memory.
+    Progress (a line per phase and the greedy's bar over its rounds) goes to stderr.
 
     Examples
     --------
@@ -161,20 +187,34 @@ def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l
     from ..assignment import greedy_pair_assignment, greedy_pair_assignment_literal
 
     rng = np.random.default_rng(seed)
+    if sensors is not None:
+        S, T = rng.uniform(0, 100, (sensors, 2)), rng.uniform(0, 100, (targets, 2))
+        _say(f"greedy from geometry, N={sensors} L={targets}, one run")
+        greedy_s, g = _timed(lambda: greedy_pair_assignment(sensors=S, targets=T, u_max=1.0,
+                                                            progress=True))
+        _say(f"greedy      N={sensors} L={targets}: {greedy_s:8.2f} s  (value {g.value:.2f}, "
+             f"{g.n_evaluations:,} pair weights)")
+        return {"n_sensors": sensors, "n_targets": targets, "greedy_s": round(greedy_s, 3),
+                "n_evaluations": g.n_evaluations, "peak_rss_gb": round(_peak_rss_gb(), 3)}
     S, T = rng.uniform(0, 100, (n_big, 2)), rng.uniform(0, 100, (l_big, 2))
-    greedy_s, g = _timed(lambda: greedy_pair_assignment(sensors=S, targets=T, u_max=1.0), repeat=2)
-    print(f"greedy      N={n_big} L={l_big}: {greedy_s:8.2f} s  (value {g.value:.2f})", flush=True)
-    one_pass_s, _ = _timed(lambda: one_pass(S, T, 1.0))
-    print(f"one pass    N={n_big} L={l_big}: {one_pass_s:8.2f} s", flush=True)
+    _say(f"greedy from geometry, N={n_big} L={l_big}, best of 2")
+    greedy_s, g = _timed(lambda: greedy_pair_assignment(sensors=S, targets=T, u_max=1.0,
+                                                        progress=True), repeat=2)
+    _say(f"greedy      N={n_big} L={l_big}: {greedy_s:8.2f} s  (value {g.value:.2f})")
+    _say(f"one pass over every pair bound, N={n_big} L={l_big}")
+    one_pass_s, _ = _timed(lambda: one_pass(S, T, 1.0, progress=True))
+    _say(f"one pass    N={n_big} L={l_big}: {one_pass_s:8.2f} s")
 
     S2, T2 = rng.uniform(0, 100, (n_small, 2)), rng.uniform(0, 100, (l_small, 2))
+    _say(f"greedy from geometry, N={n_small} L={l_small}, best of 3")
     small_s, g2 = _timed(lambda: greedy_pair_assignment(sensors=S2, targets=T2, u_max=1.0), repeat=3)
-    literal_s, lit = _timed(lambda: greedy_pair_assignment_literal(sensors=S2, targets=T2, u_max=1.0))
+    _say(f"greedy      N={n_small} L={l_small}: {small_s:8.3f} s")
+    _say(f"literal Algorithm 1, N={n_small} L={l_small} (every remaining triple, every round)")
+    literal_s, lit = _timed(lambda: greedy_pair_assignment_literal(sensors=S2, targets=T2, u_max=1.0,
+                                                                   progress=True))
     if lit.triples != g2.triples:
         raise AssertionError("the greedy and the literal algorithm disagree")
-    print(f"greedy      N={n_small} L={l_small}: {small_s:8.3f} s", flush=True)
-    print(f"literal     N={n_small} L={l_small}: {literal_s:8.2f} s", flush=True)
-    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024**2  # KiB -> GiB on Linux
+    _say(f"literal     N={n_small} L={l_small}: {literal_s:8.2f} s")
     return {
         "n_sensors": n_big,
         "n_targets": l_big,
@@ -182,7 +222,7 @@ def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l
         "one_pass_s": round(one_pass_s, 3),
         "greedy_over_one_pass": round(greedy_s / one_pass_s, 4),
         "literal_over_greedy": round(literal_s / small_s, 1),
-        "peak_rss_gb": round(peak, 3),
+        "peak_rss_gb": round(_peak_rss_gb(), 3),
     }
 
 
@@ -424,7 +464,11 @@ def parse_args(argv=None) -> argparse.Namespace:
                     help="book: parameter profile of the notebooks (default: paper, their defaults)")
     ap.add_argument("--jobs", type=int, default=None,
                     help="book: notebooks side by side in the parallel runs (default: the cores)")
+    ap.add_argument("--sensors", type=int, help="assignment: only the greedy from geometry, with "
+                    "this many sensors (and --targets targets)")
+    ap.add_argument("--targets", type=int, help="assignment: the number of targets of --sensors")
     args = ap.parse_args(argv)
+    _check_assignment_size(ap, args)
     if args.write is not None:
         if args.which not in ("scaling", "criteria"):
             ap.error("--write applies to the scaling and criteria benchmarks only")
@@ -437,6 +481,20 @@ def parse_args(argv=None) -> argparse.Namespace:
     if args.jobs is not None and (args.which != "book" or args.jobs < 1):
         ap.error("--jobs applies to the book benchmark only and must be at least 1")
     return args
+
+
+def _check_assignment_size(ap, args) -> None:
+    """``--sensors N --targets L``: both or neither, for the assignment benchmark, ``N >= 2L >= 2``."""
+    given = (args.sensors is not None, args.targets is not None)
+    if not any(given):
+        return
+    if args.which != "assignment":
+        ap.error("--sensors and --targets apply to the assignment benchmark only")
+    if not all(given):
+        ap.error("give both --sensors and --targets")
+    if args.targets < 1 or args.sensors < 2 * args.targets:
+        ap.error(f"--sensors {args.sensors} --targets {args.targets}: need at least one target "
+                 "and at least two sensors per target (N >= 2L)")
 
 
 def main(argv=None) -> int:
@@ -452,7 +510,7 @@ def main(argv=None) -> int:
 
     args = parse_args(argv)
     if args.which == "assignment":
-        result = bench_assignment()
+        result = bench_assignment(sensors=args.sensors, targets=args.targets)
     elif args.which == "book":
         result = bench_book(args.profile, args.jobs)
     else:

@@ -11,7 +11,7 @@ the two measurements. The parts:
     :data:`PAPER_ADVERSARIAL`, the common noise tables;
 :mod:`~obslib.tracking.model`
     measurement function and Jacobian, the circle, the pair bound along a run;
-:mod:`~obslib.tracking.criteria`
+:mod:`~obslib.tracking.choosers`
     the pair choosers: the paper's :data:`STRATEGIES` (``"best-pair"``, ``"best-partner"``,
     ``"fixed-pair"``, by Theorem 4's bound) and, beyond the paper, :data:`CRITERIA`
     (``"d-optimal"``, ``"a-optimal"``, ``"e-optimal"`` on the filter's information,
@@ -19,12 +19,16 @@ the two measurements. The parts:
     both engines with the same decisions;
 :mod:`~obslib.tracking.adversary`
     the adversarial target's moves (Section V-B);
+:mod:`~obslib.tracking.kalman`
+    the extended Kalman filter's predict and update for many filters at once (filterpy's
+    equations on 2 x 2 component arrays);
 :mod:`~obslib.tracking.ekf`
     :func:`simulate`, the reference engine (filterpy's EKF, one run);
 :mod:`~obslib.tracking.batch`
     :func:`simulate_many`, :func:`simulate_batch`, :func:`monte_carlo`: the same runs
-    vectorised over seeds, strategies and setup variants (the tests hold the two engines to the
-    same picks and to rounding);
+    vectorised over seeds, strategies and setup variants, filtered by
+    :mod:`~obslib.tracking.kalman` (the tests hold the two engines to the same picks and to
+    rounding);
 :mod:`~obslib.tracking.results`
     :class:`TrackingResult` and :class:`BatchResult`;
 :mod:`~obslib.tracking.stats`
@@ -34,14 +38,13 @@ Noise is common to all strategies: entry ``[k-1, i]`` of a ``(steps, N)`` table 
 ``i``'s noise at step ``k``, whichever strategy asks for it (:func:`noise_table`).
 
 The drawings are in :mod:`obslib.viz.tracking` and the studies of the paper's claims in
-:mod:`obslib.studies.tracking`; their names are still reachable here (``tracking.animate``,
-``tracking.partner_study``, ...), imported on first use.
+:mod:`obslib.studies.tracking`.
 """
 
 from __future__ import annotations
 
 from .batch import monte_carlo, simulate_batch, simulate_many
-from .criteria import CRITERIA, STRATEGIES, choose_pairs
+from .choosers import CRITERIA, STRATEGIES, choose_pairs
 from .ekf import simulate
 from .model import (
     circle_truth,
@@ -126,25 +129,3 @@ __all__ = [
     "mirror_point",
     "track_loss",
 ]
-
-#: Names that moved out of this package, reachable here for existing code (imported on first
-#: access, so that importing :mod:`obslib.tracking` pulls in neither matplotlib nor the studies).
-_MOVED = {
-    **{name: "obslib.viz.tracking" for name in (
-        "cov_ellipse", "CHI2_2DOF_9973", "sensor_label", "draw_sensors", "draw_snapshot",
-        "RunAnimation", "animate", "animation_html")},
-    **{name: "obslib.studies.tracking" for name in (
-        "partner_study", "partner_arms", "partner_summary", "entrapment_summary",
-        "switch_mechanism", "adversary_variants")},
-    "PUBLISHED_CIRCLE": "obslib.studies.published",
-    "PUBLISHED_ADVERSARIAL": "obslib.studies.published",
-    "disc_controls": "obslib.controls",
-}
-
-
-def __getattr__(name):
-    if name in _MOVED:
-        import importlib
-
-        return getattr(importlib.import_module(_MOVED[name]), name)
-    raise AttributeError(f"module 'obslib.tracking' has no attribute {name!r}")

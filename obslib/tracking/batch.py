@@ -1,15 +1,9 @@
 """The batch engine: many tracking runs at once (noise seeds, strategies, setup variants), with
 the equations of :func:`~obslib.tracking.simulate` written as NumPy operations over runs.
 
-Per step, in the order of :func:`~obslib.tracking.simulate`: choose and log, predict
-:math:`P^- = P + Q`, measure the true position with the chosen pair, update with the EKF's gain
-:math:`K = P^- H^T (H P^- H^T + R)^{-1}` and the Joseph form
-
-.. math::
-
-    P \\leftarrow (I - K H) P^- (I - K H)^T + K R K^T
-
-(filterpy's equations, written out for 2 x 2 matrices), choose the next pair, move the target.
+Per step, in the order of :func:`~obslib.tracking.simulate`: choose and log, predict, measure
+the true position with the chosen pair, update (the batched EKF of :mod:`~obslib.tracking.kalman`,
+filterpy's equations for many filters at once), choose the next pair, move the target.
 A run does not depend on the other runs of its pass; the tests hold every run to the filterpy
 engine's run of the same seed.
 """
@@ -22,8 +16,9 @@ from typing import Iterable
 import numpy as np
 
 from .adversary import adversary_moves, control_basis
-from .criteria import PairChooser, candidates, check_strategy, fixed_pair_bound, pair_draws
-from .ekf import SINGULAR_RTOL, singular_update_message
+from .choosers import PairChooser, candidates, check_strategy, fixed_pair_bound, pair_draws
+from . import kalman
+from .ekf import singular_update_message
 from .model import circle_truth, pair_index
 from .results import BatchResult, TrackingResult, derived_arrays
 from .setup import TrackingSetup, check_count, check_noise, check_seed, noise_table
@@ -36,7 +31,8 @@ _ROW_FIELDS = ("metric", "anchor", "fixed_pair", "adversary", "controls")
 
 class _Filters:
     """The states of ``R`` extended Kalman filters (estimate ``xx, xy``, covariance entries
-    ``p00, p01, p10, p11``) and their predict-update step, written out for 2 x 2 matrices."""
+    ``p00, p01, p10, p11``) and their step: :func:`~obslib.tracking.kalman.predict`, then
+    :func:`~obslib.tracking.kalman.update`."""
 
     def __init__(self, setup: TrackingSetup, R_: int):
         self.xx = np.full(R_, float(setup.estimate0[0]))
@@ -45,9 +41,6 @@ class _Filters:
         self.p00, self.p01, self.p10, self.p11 = (np.full(R_, float(c)) for c in
                                                   (c00, c01, c10, c11))
         self.Q, self.R = setup.Q, setup.R
-        # adding a zero entry is skipped (x + 0 = x; the zero products of K R are exact zeros)
-        self.q_diag = setup.Q[0][1] == 0 and setup.Q[1][0] == 0
-        self.r_diag = setup.R[0][1] == 0 and setup.R[1][0] == 0
 
     def covariance(self):
         return self.p00, self.p01, self.p10, self.p11
@@ -55,56 +48,20 @@ class _Filters:
     def step(self, s0x, s0y, s1x, s1y, z0, z1, k: int) -> None:
         """Predict, then update with the measurements ``z0, z1`` of the sensors
         ``(s0x, s0y)``, ``(s1x, s1y)`` (one per run) at step ``k`` (0-based)."""
-        (q00, q01), (q10, q11) = self.Q
-        (r00, r01), (r10, r11) = self.R
-        xx, xy = self.xx, self.xy
-        # predict: F = I
-        pp00, pp11 = self.p00 + q00, self.p11 + q11
-        pp01, pp10 = (self.p01, self.p10) if self.q_diag else (self.p01 + q01, self.p10 + q10)
-        # Jacobian rows H_m = (xhat - p_m)^T and the innovation
-        h0x, h0y, h1x, h1y = xx - s0x, xy - s0y, xx - s1x, xy - s1y
-        y0 = z0 - 0.5 * (h0x * h0x + h0y * h0y)
-        y1 = z1 - 0.5 * (h1x * h1x + h1y * h1y)
-        # P H^T, S = H P H^T + R, K = P H^T S^-1
-        a00, a10 = pp00 * h0x + pp01 * h0y, pp10 * h0x + pp11 * h0y
-        a01, a11 = pp00 * h1x + pp01 * h1y, pp10 * h1x + pp11 * h1y
-        s00 = h0x * a00 + h0y * a10 + r00
-        s01 = h0x * a01 + h0y * a11
-        s10 = h1x * a00 + h1y * a10
-        s11 = h1x * a01 + h1y * a11 + r11
-        if not self.r_diag:
-            s01, s10 = s01 + r01, s10 + r10
-        det = s00 * s11 - s01 * s10
-        if not (det > SINGULAR_RTOL * (s00 * s11)).all():  # also false for NaN and inf
-            self._singular(det > SINGULAR_RTOL * (s00 * s11), k, s0x, s0y, s1x, s1y)
-        i00, i01, i10, i11 = s11 / det, -s01 / det, -s10 / det, s00 / det
-        k00, k01 = a00 * i00 + a01 * i10, a00 * i01 + a01 * i11
-        k10, k11 = a10 * i00 + a11 * i10, a10 * i01 + a11 * i11
-        self.xx = xx + (k00 * y0 + k01 * y1)
-        self.xy = xy + (k10 * y0 + k11 * y1)
-        # Joseph form with A = I - K H
-        A00 = 1.0 - (k00 * h0x + k01 * h1x)
-        A01 = -(k00 * h0y + k01 * h1y)
-        A10 = -(k10 * h0x + k11 * h1x)
-        A11 = 1.0 - (k10 * h0y + k11 * h1y)
-        b00, b01 = A00 * pp00 + A01 * pp10, A00 * pp01 + A01 * pp11
-        b10, b11 = A10 * pp00 + A11 * pp10, A10 * pp01 + A11 * pp11
-        if self.r_diag:
-            e00, e01, e10, e11 = k00 * r00, k01 * r11, k10 * r00, k11 * r11
-        else:
-            e00, e01 = k00 * r00 + k01 * r10, k00 * r01 + k01 * r11
-            e10, e11 = k10 * r00 + k11 * r10, k10 * r01 + k11 * r11
-        self.p00 = (b00 * A00 + b01 * A01) + (e00 * k00 + e01 * k01)
-        self.p01 = (b00 * A10 + b01 * A11) + (e00 * k10 + e01 * k11)
-        self.p10 = (b10 * A00 + b11 * A01) + (e10 * k00 + e11 * k01)
-        self.p11 = (b10 * A10 + b11 * A11) + (e10 * k10 + e11 * k11)
+        P = kalman.predict(self.covariance(), self.Q)
+        try:
+            (self.xx, self.xy), P = kalman.update((self.xx, self.xy), P, (s0x, s0y), (s1x, s1y),
+                                                  (z0, z1), self.R)
+        except kalman.SingularInnovation as e:
+            self._singular(e.ok, k, s0x, s0y, s1x, s1y)
+        self.p00, self.p01, self.p10, self.p11 = P
 
     def _singular(self, ok, k, s0x, s0y, s1x, s1y):
         r = int(np.flatnonzero(~ok)[0])
         pick = lambda a: a[r] if np.ndim(a) else a  # noqa: E731
         x = np.array([self.xx[r], self.xy[r]])
         ps = np.array([[pick(s0x), pick(s0y)], [pick(s1x), pick(s1y)]])
-        raise ValueError(singular_update_message(x, ps, k, run=r))
+        raise ValueError(singular_update_message(x, ps, k, run=r)) from None
 
 
 def _measure(sx, sy, i0, i1, ox, oy, noise_k, cols):
@@ -166,7 +123,7 @@ def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
               barred=None, kinds=None, draws=None) -> dict:
     """``R`` runs of one shared setup, each with its own pair candidates (``cand``, ``(R, P)``),
     metric (``maha``), adversary (``nextpair``), chooser (``kinds`` and ``draws`` of
-    :class:`~obslib.tracking.criteria.PairChooser`) and noise table: run ``r`` uses
+    :class:`~obslib.tracking.choosers.PairChooser`) and noise table: run ``r`` uses
     ``tables[r % B]``. An adversary's controls are ``controls`` (default: the setup's) less each
     run's ``barred`` ones (see :func:`~obslib.tracking.adversary.adversary_moves`).
 

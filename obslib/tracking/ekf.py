@@ -26,7 +26,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .criteria import CRITERIA, PairChooser, candidates, check_strategy, pair_draws
+from .choosers import CRITERIA, PairChooser, candidates, check_strategy, pair_draws
+from .kalman import innovation_is_regular
 from .model import circle_truth, half_squared_range, range_jacobian, target_objective
 from .results import TrackingResult, derived_arrays
 from .setup import TrackingSetup, check_noise, check_seed, check_setup, noise_table
@@ -34,15 +35,10 @@ from .setup import TrackingSetup, check_noise, check_seed, check_setup, noise_ta
 __all__ = ["simulate"]
 
 
-#: The update stops with a ValueError when the innovation covariance ``S = H P H^T + R`` is
-#: singular to this relative precision, ``det S <= SINGULAR_RTOL * S_00 S_11`` (its gain would
-#: carry no correct digit); both engines apply the same test.
-SINGULAR_RTOL = 1e-13
-
-
 def singular_update_message(x, ps, k: int, run: int | None = None) -> str:
     """The error of an update whose innovation covariance is singular (see
-    :data:`SINGULAR_RTOL`): estimate ``x``, pair sensors ``ps``, step ``k`` (0-based)."""
+    :data:`~obslib.tracking.kalman.SINGULAR_RTOL`): estimate ``x``, pair sensors ``ps``, step
+    ``k`` (0-based)."""
     where = f"step {k + 1}" + ("" if run is None else f" of run {run}")
     return (
         f"the filter's update at {where} failed: the innovation covariance H P H^T + R is "
@@ -55,12 +51,12 @@ def singular_update_message(x, ps, k: int, run: int | None = None) -> str:
 
 def _update(ekf, z, ps, k: int) -> None:
     """filterpy's EKF update (after its predict), with a ValueError naming the cause where the
-    innovation covariance is singular (:data:`SINGULAR_RTOL`) instead of filterpy's
-    LinAlgError or a silently wrong gain."""
+    innovation covariance is singular (:func:`~obslib.tracking.kalman.innovation_is_regular`)
+    instead of filterpy's LinAlgError or a silently wrong gain."""
     x = ekf.x[:, 0]
     H = range_jacobian(ekf.x, ps)
     S = H @ ekf.P @ H.T + ekf.R
-    if not S[0, 0] * S[1, 1] - S[0, 1] * S[1, 0] > SINGULAR_RTOL * (S[0, 0] * S[1, 1]):
+    if not innovation_is_regular(S[0, 0], S[0, 1], S[1, 0], S[1, 1]):
         raise ValueError(singular_update_message(x, ps, k))
     try:
         ekf.update(z, range_jacobian, half_squared_range, args=(ps,), hx_args=(ps,))
@@ -82,14 +78,14 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
         ``"best-pair"``, ``"best-partner"``, ``"fixed-pair"``: strategies (1), (2), (3) of
         Section V-A (:data:`~obslib.tracking.STRATEGIES`); or a criterion beyond the paper,
         ``"d-optimal"``, ``"a-optimal"``, ``"e-optimal"``, ``"exact-icn"``, ``"random"``
-        (:data:`~obslib.tracking.CRITERIA`, see :mod:`~obslib.tracking.criteria`). The logged
+        (:data:`~obslib.tracking.CRITERIA`, see :mod:`~obslib.tracking.choosers`). The logged
         ``bound`` is always the paper's pair bound of the chosen pair.
     noise : array_like, shape (steps, N), optional
         Explicit measurement noise, entry ``[k-1, i]`` for sensor ``i`` at step ``k`` (exact
         replay). Default: :func:`~obslib.tracking.noise_table` of ``seed``.
     seed : int
         Seed of the noise table when ``noise`` is not given, and of the ``"random"`` chooser's
-        draws (:func:`~obslib.tracking.criteria.pair_draws`, a separate stream) in any case.
+        draws (:func:`~obslib.tracking.choosers.pair_draws`, a separate stream) in any case.
 
     Returns
     -------

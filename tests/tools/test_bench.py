@@ -100,3 +100,39 @@ def test_stdout_piped_and_a_regular_file(tmp_path):
     subprocess.run([sys.executable, "-c", code, "criteria", "--write", str(target)], check=True,
                    capture_output=True)
     assert json.loads(target.read_text()) == {"a": 1}
+
+
+def test_assignment_benchmark_at_a_given_size_runs_the_greedy_alone(capsys):
+    import json
+
+    from obslib.assignment import greedy_pair_assignment
+    from obslib.tools.bench import main
+
+    assert main(["assignment", "--sensors", "60", "--targets", "30"]) == 0
+    out, err = capsys.readouterr()
+    result = json.loads(out.strip().splitlines()[-1])
+    assert set(result) == {"n_sensors", "n_targets", "greedy_s", "n_evaluations", "peak_rss_gb"}
+    assert (result["n_sensors"], result["n_targets"]) == (60, 30)
+    assert 0 < result["greedy_s"] and 0 < result["peak_rss_gb"] < 64
+    rng = np.random.default_rng(0)  # the benchmark's scene
+    S, T = rng.uniform(0, 100, (60, 2)), rng.uniform(0, 100, (30, 2))
+    assert result["n_evaluations"] == greedy_pair_assignment(sensors=S, targets=T,
+                                                             u_max=1.0).n_evaluations
+    assert "greedy from geometry, N=60 L=30" in err and "literal" not in err
+
+
+def test_assignment_size_options_are_checked_on_the_command_line(capsys):
+    import pytest
+
+    from obslib.tools.bench import parse_args
+
+    for argv, message in [
+        (["assignment", "--sensors", "100"], "give both"),
+        (["assignment", "--sensors", "10", "--targets", "6"], "N >= 2L"),
+        (["assignment", "--sensors", "10", "--targets", "0"], "at least one target"),
+        (["book", "--sensors", "10", "--targets", "5"], "assignment benchmark only"),
+    ]:
+        with pytest.raises(SystemExit) as exit_:
+            parse_args(argv)
+        assert exit_.value.code == 2
+        assert message in capsys.readouterr().err

@@ -1,12 +1,9 @@
-"""The package obslib.tracking: its public names, the names that moved out of it, and the
-direction of its imports."""
+"""The package obslib.tracking: its public names and the direction of its imports."""
 
 from __future__ import annotations
 
 import subprocess
 import sys
-
-import pytest
 
 from obslib import tracking as tr
 
@@ -16,19 +13,6 @@ def test_public_names_resolve():
         assert getattr(tr, name) is not None, name
     assert tr.STRATEGIES == ("best-pair", "best-partner", "fixed-pair")
     assert set(tr.CRITERIA) == {"d-optimal", "a-optimal", "e-optimal", "exact-icn", "random"}
-
-
-def test_moved_names_still_resolve_through_tracking():
-    from obslib.studies import published
-    from obslib.studies import tracking as study
-    from obslib.viz import tracking as viz
-
-    assert tr.animate is viz.animate and tr.draw_snapshot is viz.draw_snapshot
-    assert tr.partner_study is study.partner_study
-    assert tr.entrapment_summary is study.entrapment_summary
-    assert tr.PUBLISHED_CIRCLE is published.PUBLISHED_CIRCLE
-    with pytest.raises(AttributeError, match="no attribute 'nosuch'"):
-        tr.nosuch  # noqa: B018
 
 
 def test_importing_tracking_pulls_in_neither_matplotlib_nor_the_studies():

@@ -1,4 +1,4 @@
-"""The pair choosers (obslib.tracking.criteria) against brute-force evaluations of their
+"""The pair choosers (obslib.tracking.choosers) against brute-force evaluations of their
 formulas."""
 
 from __future__ import annotations
@@ -10,8 +10,8 @@ import pytest
 
 import obslib as ob
 from obslib import tracking as tr
-from obslib.tracking.criteria import PairChooser
-from obslib.tracking.criteria import candidates as strategy_candidates
+from obslib.tracking.choosers import PairChooser
+from obslib.tracking.choosers import candidates as strategy_candidates
 
 CIRCLE = tr.PAPER_CIRCLE
 ADV = tr.PAPER_ADVERSARIAL
@@ -133,7 +133,7 @@ def test_mahalanobis_length_is_scale_free():
     """v^T Sigma^-1 v for Sigma of scale 1e-170 (det underflows to 0) and 1e120 (det overflows)
     is the value at scale 1 divided by the scale (to rounding: the scaled path divides by the
     largest entry, a few ulps)."""
-    from obslib.tracking.criteria import mahalanobis_sq
+    from obslib.tracking.choosers import mahalanobis_sq
 
     rng = np.random.default_rng(0)
     vx, vy = rng.normal(size=(2, 50))
@@ -245,7 +245,7 @@ def test_criteria_disagree_somewhere():
 
 
 def test_random_pairs_follow_the_seeded_draws():
-    from obslib.tracking.criteria import pair_draws
+    from obslib.tracking.choosers import pair_draws
 
     setup = CIRCLE.replace(steps=50)
     r = tr.simulate(setup, "random", seed=3)
@@ -300,7 +300,7 @@ def test_choose_pairs_for_a_criterion_is_the_brute_force_optimum(name, random_st
 def test_icn_picks_equal_argmax_of_the_exact_scores():
     """The oracle's screened pick is the first maximiser of icn_scores, also on symmetric
     scenes (ties), with zero controls, on a baseline, and at extreme scales."""
-    from obslib.tracking.criteria import _icn_picks, icn_scores
+    from obslib.tracking.choosers import _icn_picks, icn_scores
 
     rng = np.random.default_rng(9)
     s = tr.PAPER_CIRCLE.sensor_array

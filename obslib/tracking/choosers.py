@@ -98,7 +98,7 @@ def check_strategy(strategy, known=NAMES) -> str:
 
     Examples
     --------
-    >>> from obslib.tracking.criteria import check_strategy
+    >>> from obslib.tracking.choosers import check_strategy
     >>> check_strategy("d-optimal")
     'd-optimal'
     >>> check_strategy("worst-pair")  # doctest: +ELLIPSIS
@@ -125,7 +125,7 @@ def candidates(setup, strategy: str) -> np.ndarray:
     Of the 15 pairs of six sensors, the anchor is in 5:
 
     >>> from obslib.tracking import PAPER_CIRCLE
-    >>> from obslib.tracking.criteria import candidates
+    >>> from obslib.tracking.choosers import candidates
     >>> [int(candidates(PAPER_CIRCLE, s).sum())
     ...  for s in ("best-pair", "best-partner", "fixed-pair")]
     [15, 5, 1]
@@ -152,7 +152,7 @@ def mahalanobis_sq(vx, vy, p00, p01, p10, p11):
     --------
     :math:`\\Sigma = \\operatorname{diag}(4, 1)`, :math:`v = (2, 1)`: :math:`4/4 + 1/1 = 2`.
 
-    >>> from obslib.tracking.criteria import mahalanobis_sq
+    >>> from obslib.tracking.choosers import mahalanobis_sq
     >>> float(mahalanobis_sq(2.0, 1.0, 4.0, 0.0, 0.0, 1.0))
     2.0
     """
@@ -192,7 +192,7 @@ def scaled_rows(vx, vy, c, maha):
     Euclidean rows :math:`(3, 4)` and :math:`(0, 1)` are divided by the longer one's length 5:
 
     >>> import numpy as np
-    >>> from obslib.tracking.criteria import scaled_rows
+    >>> from obslib.tracking.choosers import scaled_rows
     >>> vx, vy = np.array([[3.0, 0.0]]), np.array([[4.0, 1.0]])
     >>> c = (np.ones(1), np.zeros(1), np.zeros(1), np.ones(1))
     >>> vx, vy, inv = scaled_rows(vx, vy, c, np.array([False]))
@@ -338,7 +338,7 @@ def fixed_pair_bound(sx, sy, i, j, u2, x, c, maha) -> np.ndarray:
 
     >>> import numpy as np
     >>> import obslib as ob
-    >>> from obslib.tracking.criteria import fixed_pair_bound
+    >>> from obslib.tracking.choosers import fixed_pair_bound
     >>> sensors = np.array([[0.0, 0.0], [4.0, 0.0], [1.0, 3.0]])
     >>> x = np.array([[2.0, 1.0]])
     >>> b = fixed_pair_bound(sensors[:, 0], sensors[:, 1], np.array([0]),
@@ -394,7 +394,7 @@ def information_scores(name: str, hx, hy, pp, W, ii, jj) -> np.ndarray:
     Prior :math:`\\Sigma^- = I`, unit noise and orthogonal rows give :math:`J = 2 I`:
 
     >>> import numpy as np
-    >>> from obslib.tracking.criteria import information_scores
+    >>> from obslib.tracking.choosers import information_scores
     >>> hx, hy = np.array([[1.0, 0.0]]), np.array([[0.0, 1.0]])
     >>> pp = (np.ones(1), np.zeros(1), np.zeros(1), np.ones(1))
     >>> ii, jj = np.array([0]), np.array([1])
@@ -430,7 +430,7 @@ def icn_scores(hx, hy, control, ii, jj) -> np.ndarray:
     Orthogonal unit rows and a static target: :math:`C^{-1} = 1`; parallel rows: 0.
 
     >>> import numpy as np
-    >>> from obslib.tracking.criteria import icn_scores
+    >>> from obslib.tracking.choosers import icn_scores
     >>> hx, hy = np.array([[1.0, 0.0, 2.0]]), np.array([[0.0, 1.0, 0.0]])
     >>> ii, jj = np.array([0, 0]), np.array([1, 2])
     >>> icn_scores(hx, hy, np.zeros((1, 2)), ii, jj).round(12).tolist()
