@@ -174,7 +174,8 @@ RANGES: dict[str, dict[str, object]] = {
         "seed": SEED, "n_seeds": PAIRED, "metrics": METRICS, "loss_threshold": Range(1e-3, 1e3),
         "times_file": DATA_FILE, "assign_targets": Range(1, 10), "assign_seeds": PAIRED,
         "assign_steps": Range(2, 1000), "assign_side": Range(1.0, 1e4),
-        "assign_u_max": Range(1e-3, 100.0, "the tracking engine needs u_max > 0"),
+        "assign_u_max": Range(1e-3, 10.0, "the tracking engine needs u_max > 0; targets faster "
+                              "than 10 per step outrun their filters, which then diverge"),
         "assign_noise_std": Range(1e-3, 10.0, "the filter needs measurement noise"),
         "assign_p0": Range(1e-6, 1e3), "assign_loss": Range(1e-3, 1e3),
     },
