@@ -1,7 +1,7 @@
 """What the book's notebooks share: how figures are drawn inline, how numbers print.
 
-Superseded by :mod:`obsbook` beside the book (``obsbook.setup``, ``obsbook.formatted_table``):
-kept as it is for the notebooks not yet moved there, and removed when none imports it.
+Superseded by the book's own helpers, ``obsbook`` (``obsbook.setup``,
+``obsbook.formatted_table``): kept for the notebooks not yet moved there.
 
 Every notebook calls :func:`setup_figures` in its import cell, so the nine notebooks draw their
 figures the same way and each figure is drawn once. :func:`format_small` prints a
