@@ -78,8 +78,10 @@ def update(x, P, s0, s1, z, R):
 
     .. math::
 
-        S = H P H^T + R, \\quad K = P H^T S^{-1}, \\quad \\hat x \\leftarrow \\hat x + K y,
-        \\quad P \\leftarrow (I - K H) P (I - K H)^T + K R K^T.
+        \\begin{aligned}
+        S &= H P H^T + R, \\qquad K = P H^T S^{-1}, \\qquad \\hat x \\leftarrow \\hat x + K y, \\\\
+        P &\\leftarrow (I - K H) P (I - K H)^T + K R K^T.
+        \\end{aligned}
 
     Returns the new ``x`` and ``P`` (tuples of component arrays). Raises
     :class:`SingularInnovation` when ``S`` is singular for some filter
