@@ -58,6 +58,7 @@ PROFILES: dict[str, dict[str, dict]] = {
             "n_sensors": 6,
             "eps": 1.0,
             "min_size": 2,
+            "n_tiny": 500,
         },
         "05_two_sensors_tracking": {
             "seed": 0,
@@ -161,7 +162,7 @@ PROFILES: dict[str, dict[str, dict]] = {
             "n_weyl": 2000,
         },
         "03_greedy_unique_pairs": {"n_instances": 300, "n_starts": 4, "n_steps": 100},
-        "04_submodularity": {"n_instances": 200, "n_sensors": 5},
+        "04_submodularity": {"n_instances": 200, "n_sensors": 5, "n_tiny": 50},
         "05_two_sensors_tracking": {"n_seeds": 20, "anim_every": 15},
         "06_adversarial_target": {"n_seeds": 10, "n_seeds_strong": 2, "n_radii": 3, "n_angles": 36},
         "07_greedy_vs_relaxed": {"trials": 5, "optimum_max_L": 4, "L_extended": [50], "trials_extended": 1},
