@@ -141,6 +141,7 @@ RANGES: dict[str, dict[str, object]] = {
         "n_sensors": Range(2, 10, "all 2^N subsets of every instance are compared"),
         "eps": Range(1e-6, 1e6, "log det(eps I + O^T O) stays finite: 1e-300 underflows"),
         "min_size": Range(0, 2, "sets of fewer sensors are left out; omega needs two"),
+        "n_tiny": COUNT,
     },
     "05_two_sensors_tracking": {
         "seed": SEED, "n_seeds": COUNT,
@@ -234,7 +235,7 @@ PROFILES: dict[str, dict[str, dict]] = {
             "n_weyl": 2000,
         },
         "03_greedy_unique_pairs": {"n_instances": 300, "n_starts": 4, "n_steps": 100},
-        "04_submodularity": {"n_instances": 200, "n_sensors": 5},
+        "04_submodularity": {"n_instances": 200, "n_sensors": 5, "n_tiny": 50},
         "05_two_sensors_tracking": {"n_seeds": 20, "anim_every": 15},
         "06_adversarial_target": {"n_seeds": 10, "n_seeds_strong": 2, "n_radii": 3, "n_angles": 36},
         "07_greedy_vs_relaxed": {"trials": 5, "optimum_max_L": 4, "L_extended": [50], "trials_extended": 1},
