@@ -2,6 +2,7 @@
 
 import ast
 import json
+import re
 
 import pytest
 import yaml
@@ -125,3 +126,44 @@ def test_papermill_sees_every_parameter(path):
     import papermill as pm
 
     assert set(pm.inspect_notebook(str(path))) == set(params(path.stem, "paper"))
+
+
+VERDICT_BOX = re.compile(
+    r"```\{admonition\} Verdict: (?P<title>[a-z]+)\n:class: verdict verdict-(?P<cls>[a-z]+)\n"
+    r"(?P<body>.*?)```", re.S)
+
+
+def verdict_boxes():
+    """Every verdict box of the notebooks: (notebook, title status, class status, claim ids)."""
+    out = []
+    for path in NOTEBOOKS:
+        for cell in json.loads(path.read_text())["cells"]:
+            if cell["cell_type"] != "markdown":
+                continue
+            for m in VERDICT_BOX.finditer("".join(cell["source"])):
+                ids = re.findall(r"<claim-([a-z0-9-]+)>`", m.group("body"))
+                out.append((path.stem, m.group("title"), m.group("cls"), ids))
+    return out
+
+
+def test_every_claim_has_a_verdict_box_that_agrees_with_the_ledger():
+    """Each chapter ends a check with a verdict box: its title and colour say the ledger's status
+    of the claim it links to, and every claim of the ledger has such a box."""
+    statuses = report_statuses()
+    boxes = verdict_boxes()
+    wrong = []
+    for nb, title, cls, ids in boxes:
+        if title != cls or len(ids) != 1:
+            wrong.append(f"{nb}: box '{title}' (class {cls}) links to {ids or 'no claim'}")
+        elif statuses.get(ids[0]) != title:
+            wrong.append(f"{nb}: {ids[0]} is {statuses.get(ids[0], 'not a claim')}, its box says {title}")
+    assert not wrong, "\n".join(wrong)
+    boxed = {i for _, _, _, ids in boxes for i in ids}
+    assert not set(statuses) - boxed, f"claims without a verdict box: {sorted(set(statuses) - boxed)}"
+
+
+def test_verdict_box_pattern_reads_a_box():
+    cell = ("```{admonition} Verdict: partly\n:class: verdict verdict-partly\n\nHolds in part. "
+            "{ref}`The claim in words <claim-thm3>`\n```")
+    m = VERDICT_BOX.search(cell)
+    assert m and m.group("title") == "partly" and re.findall(r"<claim-([a-z0-9-]+)>`", m.group("body")) == ["thm3"]

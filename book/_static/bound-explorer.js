@@ -168,7 +168,19 @@
   const MAX_SENSORS = 12;
   const GRID = 72; // heat map cells per side: 5184 rank-one updates per redraw
 
-  function fmt6(v) { return Number.isFinite(v) ? v.toPrecision(6) : "undefined"; }
+  // Numbers as the book prints them: plain between 1e-3 and 1e6, else a power of ten written
+  // out (1.23457×10⁻⁵), never e-notation.
+  const SUPER = {"-": "\u207b", "0": "\u2070", "1": "\u00b9", "2": "\u00b2", "3": "\u00b3",
+                 "4": "\u2074", "5": "\u2075", "6": "\u2076", "7": "\u2077", "8": "\u2078",
+                 "9": "\u2079"};
+  function sig(v, digits) {
+    if (!Number.isFinite(v)) return "undefined";
+    const a = Math.abs(v);
+    if (a === 0 || (a >= 1e-3 && a < 1e6)) return v.toPrecision(digits);
+    const [mant, exp] = v.toExponential(digits - 1).split("e");
+    return `${mant}\u00d710${String(Number(exp)).replace(/[-0-9]/g, c => SUPER[c])}`;
+  }
+  function fmt6(v) { return sig(v, 6); }
   function fmt(v, d) { return Number.isFinite(v) ? v.toFixed(d) : "undefined"; }
 
   function el(tag, attrs, children) {
@@ -378,7 +390,7 @@
     root.dataset.exact = String(ex);
     this.boundEl.textContent = fmt6(bound);
     this.exactEl.textContent = fmt6(ex);
-    this.gapEl.textContent = Number.isFinite(ex - bound) ? (ex - bound).toExponential(2) : "undefined";
+    this.gapEl.textContent = sig(ex - bound, 3);
     if (N >= 2 && !this.error) {
       const pp = pairPolar(s.sensors[this.pair[0]], s.sensors[this.pair[1]], s.target);
       this.polar = pp;
