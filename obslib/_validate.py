@@ -1,8 +1,14 @@
 """Input validation shared by the public functions.
 
-Every public function of :mod:`obslib` checks its input here, at the boundary, so that
-bad input fails with a :class:`ValueError` that names the offending sensor or target
-instead of propagating NaN or failing deep inside NumPy.
+Every public function of :mod:`obslib` checks its input at the boundary with these functions,
+so that bad input fails with a :class:`ValueError` that names the offending argument, sensor or
+target instead of propagating NaN or failing deep inside NumPy. One contract:
+
+- every error is a :class:`ValueError`; an argument of the wrong type (a bool, a complex number,
+  text or ``None`` where a number is expected, ``2.5`` where an integer is) raises
+  :class:`ArgumentTypeError`, which is both a :class:`TypeError` and a :class:`ValueError`;
+- every ``as_*`` function takes ``(value, name, ...)`` and returns the clean value; every
+  ``check_*`` function takes validated arrays and returns nothing.
 """
 
 from __future__ import annotations
@@ -21,11 +27,17 @@ __all__ = [
     "as_int",
     "as_bool",
     "as_eps",
-    "positive_int",
-    "positive_float",
+    "as_positive",
+    "as_nonnegative",
     "as_rank_rtol",
     "as_measure_name",
     "as_weights",
+    "as_real_array",
+    "as_covariances",
+    "as_noise_table",
+    "as_instance",
+    "as_choice",
+    "check_spd_any_scale",
     "check_spd2",
     "check_distinct",
     "check_not_on_targets",
@@ -33,6 +45,7 @@ __all__ = [
     "check_weight_memory",
     "check_pair_sizes",
     "check_maximisable",
+    "check_scene_batch",
     "as_stack",
     "as_u_max_stack",
     "validated_vectors",
@@ -208,8 +221,174 @@ def check_differences(diff: np.ndarray, what: str = "target") -> None:
         )
 
 
+def _bad_kind(value) -> str | None:
+    """What makes ``value`` not a real number (or nested sequence of them): ``"a bool"``,
+    ``"a complex number"``, ``"text"``, or None."""
+    if isinstance(value, np.ndarray):
+        kind = value.dtype.kind
+        if kind == "O":
+            return next(filter(None, map(_bad_kind, value.ravel())), None)
+        return {"b": "a bool", "c": "a complex number", "U": "text", "S": "text"}.get(kind)
+    if isinstance(value, (bool, np.bool_)):
+        return "a bool"
+    if isinstance(value, (complex, np.complexfloating)):
+        return "a complex number"
+    if isinstance(value, (str, bytes)):
+        return "text"
+    if isinstance(value, (list, tuple)):
+        return next(filter(None, map(_bad_kind, value)), None)
+    return None
+
+
+def as_real_array(value, name: str, what: str) -> np.ndarray:
+    """``value`` as a float array, or a named error saying it must be ``what``: an
+    :class:`ArgumentTypeError` for text, bools and complex numbers (which ``float`` would coerce
+    silently or drop), a :class:`ValueError` for the rest (ragged nesting, ``None``).
+
+    Examples
+    --------
+    >>> as_real_array([1, 2.5], "x", "real numbers")
+    array([1. , 2.5])
+    >>> as_real_array([1, True], "x", "numbers")
+    Traceback (most recent call last):
+    ...
+    obslib._validate.ArgumentTypeError: x must be numbers, got a bool: [1, True]
+    """
+    got = _bad_kind(value)
+    if got:
+        raise ArgumentTypeError(f"{name} must be {what}, got {got}: {value!r}")
+    try:
+        return np.asarray(value, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"{name} must be {what}: {exc}") from None
+
+
+def check_spd_any_scale(m: np.ndarray, name: str, max_scale: float) -> None:
+    """:func:`check_spd2` on ``m`` divided by its largest entry, so that a positive definite
+    matrix of any scale passes (its determinant may underflow or overflow in floating point),
+    and entries over ``max_scale`` are refused with their name.
+
+    A Kalman filter's innovation covariance ``S = H P H^T + R`` has a determinant of the order
+    of the square of ``P``'s entries times the squared distances, so the tracking engine passes
+    the largest scale it can carry.
+    """
+    if not np.isfinite(m).all():
+        raise ValueError(f"{name} has a non-finite entry: {m.tolist()}")
+    top = float(np.abs(m).max())
+    if top == 0:
+        raise ValueError(f"{name} is not positive definite: {m.tolist()}")
+    try:
+        check_spd2(m / top, name)  # scaled: a determinant of any scale stays representable
+    except ValueError as exc:
+        raise ValueError(f"{str(exc).split(': [')[0]}: {m.tolist()}") from None
+    if top > max_scale:
+        raise ValueError(
+            f"{name} has entries of scale {top:.3g}; the filter's innovation covariance "
+            f"H P H^T + R would overflow: keep entries below {max_scale:g}"
+        )
+
+
+def as_covariances(cov, n: int, max_scale: float, name: str = "cov") -> np.ndarray:
+    """Covariances as an ``(n, 2, 2)`` array (one ``(2, 2)`` is shared), each finite, symmetric
+    and positive definite at any scale up to ``max_scale`` (checked divided by its largest
+    entry, so that a determinant that underflows does not reject it), or a named ValueError.
+
+    Examples
+    --------
+    A shared covariance is broadcast; a tiny one is accepted; an indefinite one is not:
+
+    >>> import numpy as np
+    >>> as_covariances(np.eye(2), 3, 1e100).shape
+    (3, 2, 2)
+    >>> as_covariances(1e-200 * np.eye(2), 1, 1e100).shape
+    (1, 2, 2)
+    >>> as_covariances([[1.0, 2.0], [2.0, 1.0]], 1, 1e100)
+    Traceback (most recent call last):
+    ...
+    ValueError: cov 0 is not positive definite: [[1.0, 2.0], [2.0, 1.0]]
+    """
+    c = as_real_array(cov, name, "real 2x2 matrices")
+    if c.shape == (2, 2):
+        c = np.broadcast_to(c, (n, 2, 2))
+    if c.shape != (n, 2, 2):
+        raise ValueError(f"{name} must have shape (2, 2) or ({n}, 2, 2), got {c.shape}")
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        top = np.abs(c).max(axis=(1, 2))
+        m = c / top[:, None, None]
+        ok = (np.isfinite(c).all(axis=(1, 2)) & (top > 0)
+              & (np.abs(m[:, 0, 1] - m[:, 1, 0]) <= 1e-12)
+              & (m[:, 0, 0] > 0) & (m[:, 0, 0] * m[:, 1, 1] - m[:, 0, 1] * m[:, 1, 0] > 0))
+    if not ok.all():
+        k = int(np.flatnonzero(~ok)[0])
+        check_spd_any_scale(c[k], f"{name} {k}", max_scale)
+    return c
+
+
+def as_noise_table(noise, shape: tuple) -> np.ndarray:
+    """A measurement-noise table as a finite float ``(steps, sensors)`` array of ``shape``, or a
+    ValueError naming the first non-finite entry or the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> table = np.zeros((2, 6))
+    >>> as_noise_table(table, (2, 6)).shape
+    (2, 6)
+    >>> table[1, 3] = np.nan
+    >>> as_noise_table(table, (2, 6))
+    Traceback (most recent call last):
+    ...
+    ValueError: noise of sensor 3 at step 2 is not finite
+    """
+    t = as_real_array(noise, "noise", "a real (steps, sensors) table")
+    if t.shape != tuple(shape):
+        raise ValueError(f"noise table must have shape {tuple(shape)} (steps, sensors), "
+                         f"got {t.shape}")
+    bad = ~np.isfinite(t)
+    if bad.any():
+        k, i = (int(v) for v in np.argwhere(bad)[0])
+        raise ValueError(f"noise of sensor {i} at step {k + 1} is not finite")
+    return t
+
+
+def as_instance(value, cls: type, name: str):
+    """``value`` if it is a ``cls``, else a ValueError naming ``name``.
+
+    Examples
+    --------
+    >>> as_instance("circle", dict, "base")
+    Traceback (most recent call last):
+    ...
+    ValueError: base must be a dict, got str
+    """
+    if not isinstance(value, cls):
+        raise ValueError(f"{name} must be a {cls.__name__}, got {type(value).__name__}")
+    return value
+
+
+def as_choice(value, known, what: str) -> str:
+    """``value`` if it is one of the names ``known``; an :class:`ArgumentTypeError` for a
+    non-string, a ValueError naming ``what`` and the known names otherwise.
+
+    Examples
+    --------
+    >>> as_choice("d-optimal", ("d-optimal", "random"), "strategy")
+    'd-optimal'
+    >>> as_choice("worst-pair", ("d-optimal", "random"), "strategy")
+    Traceback (most recent call last):
+    ...
+    ValueError: unknown strategy 'worst-pair'; known: ('d-optimal', 'random')
+    """
+    if not isinstance(value, str):
+        raise ArgumentTypeError(f"{what} must be a string, one of {tuple(known)}; got {value!r}")
+    if value not in known:
+        raise ValueError(f"unknown {what} {value!r}; known: {tuple(known)}")
+    return value
+
+
 def as_int(value, name: str, minimum: int | None = None) -> int:
-    """An integer argument: ``int`` or NumPy integer (not bool, not ``2.0``), at least ``minimum``."""
+    """An integer argument: ``int`` or NumPy integer (not bool, not ``2.0``), at least
+    ``minimum``."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
         raise ArgumentTypeError(f"{name} must be an integer, got {value!r}")
     if minimum is not None and value < minimum:
@@ -233,23 +412,19 @@ def _as_real(value, name: str) -> float:
     return float(arr)
 
 
-def positive_int(name: str, value) -> int:
-    """A positive integer parameter (a count or grid size); an integral float such as ``3.0`` is
-    accepted, a bool is not."""
-    if isinstance(value, (bool, np.bool_)):
-        raise ArgumentTypeError(f"{name} must be a positive integer, got {value!r}")
+def as_positive(value, name: str) -> float:
+    """A finite positive real parameter (a length, a step, a scale)."""
     x = _as_real(value, name)
-    if not np.isfinite(x) or int(x) != x or x < 1:
-        raise ValueError(f"{name} must be a positive integer, got {value!r}")
-    return int(x)
+    if not np.isfinite(x) or x <= 0:
+        raise ValueError(f"{name} must be finite and positive, got {value!r}")
+    return x
 
 
-def positive_float(name: str, value, allow_zero: bool = False) -> float:
-    """A finite positive (or, with ``allow_zero``, non-negative) real parameter."""
+def as_nonnegative(value, name: str) -> float:
+    """A finite non-negative real parameter (a speed bound, a ratio that may be 0)."""
     x = _as_real(value, name)
-    if not np.isfinite(x) or x < 0 or (x == 0 and not allow_zero):
-        kind = "non-negative" if allow_zero else "positive"
-        raise ValueError(f"{name} must be finite and {kind}, got {value!r}")
+    if not np.isfinite(x) or x < 0:
+        raise ValueError(f"{name} must be finite and non-negative, got {value!r}")
     return x
 
 
@@ -271,9 +446,7 @@ def as_rank_rtol(rank_rtol) -> float:
 
 def as_measure_name(name, known) -> str:
     """One of the measure names ``known``."""
-    if not isinstance(name, str) or name not in known:
-        raise ValueError(f"unknown measure {name!r}; known: {tuple(known)}")
-    return name
+    return as_choice(name, known, "measure")
 
 
 def as_weights(W) -> np.ndarray:
@@ -292,7 +465,9 @@ def as_weights(W) -> np.ndarray:
         raise ValueError(f"W[{i}, {j}, {l}] is not finite")
     if (arr < 0).any():
         i, j, l = (int(v) for v in np.argwhere(arr < 0)[0])
-        raise ValueError(f"W[{i}, {j}, {l}] = {float(arr[i, j, l])!r} is negative; pair weights must be >= 0")
+        raise ValueError(
+            f"W[{i}, {j}, {l}] = {float(arr[i, j, l])!r} is negative; pair weights must be >= 0"
+        )
     if not np.array_equal(arr, arr.transpose(1, 0, 2)):
         i, j, l = (int(v) for v in np.argwhere(arr != arr.transpose(1, 0, 2))[0])
         raise ValueError(f"W must be symmetric in its first two indices (pair weights): "
@@ -356,7 +531,8 @@ def check_maximisable(name: str, eps: float, known, maximisable) -> None:
     as_measure_name(name, known)
     if name not in maximisable:
         raise ValueError(
-            f"measure {name!r} decreases as sensors are added; maximise one of {tuple(maximisable)} "
+            f"measure {name!r} decreases as sensors are added; "
+            f"maximise one of {tuple(maximisable)} "
             "(e.g. 'neg_trace_inverse' instead of 'trace_inverse')"
         )
     if name in ("logdet", "neg_trace_inverse") and eps <= 0:
@@ -364,6 +540,47 @@ def check_maximisable(name: str, eps: float, known, maximisable) -> None:
             f"measure {name!r} is infinite for teams of fewer than two sensors unless eps > 0; "
             "pass a prior eps > 0"
         )
+
+
+def check_scene_batch(sensors, targets, counts) -> None:
+    """Validate padded stacked scenes as the per-scene functions would.
+
+    Raises ``ValueError`` naming the scene and sensor for a non-finite coordinate, a sensor on
+    the target (zero distance) or two coincident sensors (among the first ``counts[k]`` rows of
+    scene ``k``; the padding is not checked).
+
+    Examples
+    --------
+    >>> from obslib._validate import check_scene_batch
+    >>> check_scene_batch([[[0.0, 0.0], [1.0, 1.0]]], [[1.0, 1.0]], [2])
+    Traceback (most recent call last):
+    ...
+    ValueError: scene 0: sensor 1 is on the target (zero distance)
+    """
+    s = as_float_array(sensors, "sensors")
+    t = as_float_array(targets, "targets")
+    c = np.asarray(counts)
+    if c.dtype.kind not in "iu":
+        raise ArgumentTypeError(f"counts must be integers, got dtype {c.dtype}")
+    if s.ndim != 3 or s.shape[2] != 2 or t.shape != (s.shape[0], 2) or c.shape != (s.shape[0],):
+        raise ValueError(f"need sensors (S, M, 2), targets (S, 2), counts (S,); got "
+                         f"{s.shape}, {t.shape}, {c.shape}")
+    if (c < 0).any() or (c > s.shape[1]).any():
+        raise ValueError(f"counts must lie in [0, {s.shape[1]}]")
+    valid = np.arange(s.shape[1])[None, :] < c[:, None]
+    finite = np.isfinite(s).all(axis=2)
+    if not (finite | ~valid).all() or not np.isfinite(t).all():
+        bad = ~np.isfinite(t).all(axis=1) | (valid & ~finite).any(axis=1)
+        raise ValueError(f"scene {int(np.flatnonzero(bad)[0])} has a non-finite coordinate")
+    zero = valid & (s[..., 0] == t[:, None, 0]) & (s[..., 1] == t[:, None, 1])
+    if zero.any():
+        k, i = (int(v) for v in np.argwhere(zero)[0])
+        raise ValueError(f"scene {k}: sensor {i} is on the target (zero distance)")
+    a, b = np.triu_indices(s.shape[1], 1)
+    same = (s[:, a, 0] == s[:, b, 0]) & (s[:, a, 1] == s[:, b, 1]) & valid[:, b]
+    if same.any():
+        k, p = (int(v) for v in np.argwhere(same)[0])
+        raise ValueError(f"scene {k}: sensors {int(a[p])} and {int(b[p])} coincide")
 
 
 def validated_vectors(sensors, targets, cov=None):

@@ -77,7 +77,8 @@ def lower_bound(sensors, target, u_max) -> float:
 
 
 def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
-    """Validated vectors ``o_l - p_i``, shape ``(N, L, 2)``, optionally rescaled to Mahalanobis length.
+    """Validated vectors ``o_l - p_i``, shape ``(N, L, 2)``, optionally rescaled to Mahalanobis
+    length.
 
     With ``cov`` (the target estimate's covariance ``Sigma_l``), each vector keeps its Euclidean
     direction and gets the Mahalanobis length ``d_il = sqrt(v^T Sigma_l^{-1} v)``. Feeding these
@@ -156,7 +157,8 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
 
 
 def _pair_bounds(v: np.ndarray, u) -> np.ndarray:
-    """:func:`pair_bounds` of validated vectors ``v`` ``(N, L, 2)`` and speed bounds ``u`` in their unit."""
+    """:func:`pair_bounds` of validated vectors ``v`` ``(N, L, 2)`` and speed bounds ``u`` in
+    their unit."""
     v, u2 = normalise(v, u)
     x, y = v[..., 0], v[..., 1]  # (N, L)
     return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2)
@@ -267,7 +269,8 @@ def lower_bounds(rows, u_max) -> np.ndarray:
 
 
 def _lower_bounds(r: np.ndarray, u: np.ndarray) -> np.ndarray:
-    """:func:`lower_bounds` of validated rows ``r`` and speed bounds ``u`` of shape ``r.shape[:-2]``."""
+    """:func:`lower_bounds` of validated rows ``r`` and speed bounds ``u`` of shape
+    ``r.shape[:-2]``."""
     if r.shape[-2] < 2:
         return np.zeros(r.shape[:-2])
     # the bound does not depend on the unit: bring each scene into the safe range (exact)
@@ -280,7 +283,8 @@ def _lower_bounds(r: np.ndarray, u: np.ndarray) -> np.ndarray:
 
 
 def worst_case_controls(rows, u_max) -> np.ndarray:
-    """:func:`worst_case_control` for a stack of scenes: ``u_max v_max`` of each, shape ``(..., 2)``.
+    """:func:`worst_case_control` for a stack of scenes: ``u_max v_max`` of each, shape
+    ``(..., 2)``.
 
     ``v_max`` is the principal eigenvector of ``O(o)^T O(o)`` (``numpy.linalg.eigh`` on the
     stacked 2 x 2 matrices), signed so that its first nonzero component is positive. Zero rows
@@ -296,7 +300,8 @@ def worst_case_controls(rows, u_max) -> np.ndarray:
 
 
 def _worst_case_controls(r: np.ndarray, u: np.ndarray) -> np.ndarray:
-    """:func:`worst_case_controls` of validated rows ``r`` and speed bounds ``u`` (``r.shape[:-2]``)."""
+    """:func:`worst_case_controls` of validated rows ``r`` and speed bounds ``u``
+    (``r.shape[:-2]``)."""
     if r.shape[-2]:  # the direction does not depend on the unit: into the safe range (exact)
         r = rescale(r, pow2_scale(np.abs(r).max(axis=(-2, -1)))[..., None, None])
     _, vecs = np.linalg.eigh(np.swapaxes(r, -1, -2) @ r)

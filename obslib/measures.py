@@ -53,7 +53,15 @@ from __future__ import annotations
 import numpy as np
 
 from ._kernels import measure_from_tr_det, pow2_scale, tr_det
-from ._validate import ArgumentTypeError, as_eps, as_float_array, as_int, as_measure_name, as_point, as_rank_rtol
+from ._validate import (
+    ArgumentTypeError,
+    as_eps,
+    as_float_array,
+    as_int,
+    as_measure_name,
+    as_point,
+    as_rank_rtol,
+)
 from .observability import observability_matrix, relative_rows
 
 __all__ = [
@@ -80,7 +88,8 @@ DIRECTION = {
     "neg_trace_inverse": "increasing",
 }
 
-#: Default relative threshold on ``sigma_min / sigma_max`` below which ``O`` counts as rank-deficient.
+#: Default relative threshold on ``sigma_min / sigma_max`` below which ``O`` counts as
+#: rank-deficient.
 RANK_RTOL = 1e-10
 
 #: Largest ground set for which :func:`subset_masks` enumerates all subsets.
@@ -107,7 +116,9 @@ def subset_masks(n: int) -> np.ndarray:
     """
     n = as_int(n, "n", 0)
     if n > MAX_GROUND_SET:
-        raise ValueError(f"ground set of {n} elements is too large to enumerate (max {MAX_GROUND_SET})")
+        raise ValueError(
+            f"ground set of {n} elements is too large to enumerate (max {MAX_GROUND_SET})"
+        )
     k = np.arange(2**n)[:, None]
     return ((k >> np.arange(n)[None, :]) & 1).astype(bool)
 
@@ -196,7 +207,9 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
     (array([4.]), array([2.]))
     """
     if isinstance(names, str):
-        raise ArgumentTypeError(f"names must be a sequence of measure names, not the string {names!r}")
+        raise ArgumentTypeError(
+            f"names must be a sequence of measure names, not the string {names!r}"
+        )
     for name in names:
         _check_name(name)
     e = as_eps(eps)
@@ -216,7 +229,9 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
         try:
             uu = np.broadcast_to(uu, v.shape[:-2] + (2,))
         except ValueError:
-            raise ValueError(f"u must have shape (2,) or {v.shape[:-2] + (2,)}, got {uu.shape}") from None
+            raise ValueError(
+                f"u must have shape (2,) or {v.shape[:-2] + (2,)}, got {uu.shape}"
+            ) from None
     return _measures(v, m, names, e, r, uu)
 
 

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import positive_float, positive_int
+from ._validate import as_int, as_nonnegative, as_positive
 from .bounds import pair_bound_polar
 
 __all__ = [
@@ -50,9 +50,9 @@ def fine_grid(
     >>> theta / np.pi
     array([-1. , -0.5,  0. ,  0.5,  1. ])
     """
-    amax = positive_float("alpha_max", alpha_max)
-    per = positive_int("alpha_per_unit", alpha_per_unit)
-    m = positive_int("theta_quarter", theta_quarter)
+    amax = as_positive(alpha_max, "alpha_max")
+    per = as_int(alpha_per_unit, "alpha_per_unit", 1)
+    m = as_int(theta_quarter, "theta_quarter", 1)
     n_a = int(np.floor(amax * per + 1e-9)) + 1
     return np.arange(n_a) / per, np.pi * (np.arange(4 * m + 1) / (2 * m) - 1.0)
 
@@ -86,8 +86,8 @@ def bound_surface(alpha, theta, u_max: float = 1.0, d_io: float = 1.0) -> np.nda
     t = np.asarray(theta, dtype=float)
     if a.ndim != 1 or t.ndim != 1 or a.size == 0 or t.size == 0:
         raise ValueError("alpha and theta must be non-empty 1-D arrays")
-    u = positive_float("u_max", u_max, allow_zero=True)
-    d = positive_float("d_io", d_io)
+    u = as_nonnegative(u_max, "u_max")
+    d = as_positive(d_io, "d_io")
     A, T = np.meshgrid(a, t)
     return pair_bound_polar(A, T, u / d)
 
@@ -288,7 +288,7 @@ def random_symmetric_2x2(n: int, seed: int, psd: bool = False) -> np.ndarray:
     >>> bool((np.linalg.eigvalsh(X)[:, 0] >= -1e-9 * np.abs(X).max()).all())
     True
     """
-    n = positive_int("n", n)
+    n = as_int(n, "n", 1)
     rng = np.random.default_rng(seed)
     scale = 10.0 ** rng.uniform(-3, 3, size=(n, 1, 1))
     if not psd:
@@ -306,8 +306,9 @@ def weyl_2x2_slacks(X, Y) -> dict[str, np.ndarray]:
     :func:`obslib.symbolic.weyl_2x2_slacks`; each value is the right-hand side minus the left-hand
     side, oriented so that the inequality holds iff the slack is :math:`\ge 0`. Also ``"ratio"``:
     the slack of Eq. (19),
-    :math:`\lambda_1(X+Y)/\lambda_2(X+Y) - (\lambda_1(X) + \lambda_1(Y))/(\lambda_2(X) + \lambda_2(Y))`,
-    for positive semidefinite inputs with :math:`\lambda_2(X) + \lambda_2(Y) > 0` (NaN elsewhere).
+    :math:`\lambda_1(X+Y)/\lambda_2(X+Y) - (\lambda_1(X) + \lambda_1(Y))/(\lambda_2(X) +
+    \lambda_2(Y))`, for positive semidefinite inputs with :math:`\lambda_2(X) + \lambda_2(Y) >
+    0` (NaN elsewhere).
 
     Examples
     --------

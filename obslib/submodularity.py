@@ -13,8 +13,8 @@ Theorem 7 says Theorem 1's lower bound :math:`\omega(S)` is neither, by two coun
 (:mod:`obslib.measures`). This module decides such claims by brute force over a small ground
 set (:math:`N \le 10`): every subset is evaluated **once** into a table of :math:`2^N` values,
 and all additions :math:`(A, x)` and all nested triples :math:`(A, B, x)` are compared at once
-with NumPy (fewer than :math:`N 3^{N-1}` triples: 191 710 for :math:`N = 10`). For thousands of random
-instances, :func:`audit_flags` reaches the same verdicts (and the size of each smallest
+with NumPy (fewer than :math:`N 3^{N-1}` triples: 191 710 for :math:`N = 10`). For thousands of
+random instances, :func:`audit_flags` reaches the same verdicts (and the size of each smallest
 witness) with a min / max sum-over-subsets transform of the gains instead of every triple; the
 random audits use it and run the full comparison only on the instance whose witness they report.
 
@@ -50,10 +50,10 @@ Order of witnesses (documented, deterministic).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import asdict, dataclass
-from functools import lru_cache
+from functools import cache
 from numbers import Real
-from typing import Callable
 
 import numpy as np
 
@@ -88,7 +88,7 @@ def _members(mask: int, n: int) -> tuple:
     return tuple(i for i in range(n) if (mask >> i) & 1)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _lex_rank(n: int) -> np.ndarray:
     """Rank of each bitmask among all subsets ordered as sorted tuples, lexicographically."""
     order = sorted(range(2**n), key=lambda m: _members(m, n))
@@ -97,12 +97,12 @@ def _lex_rank(n: int) -> np.ndarray:
     return rank
 
 
-@lru_cache(maxsize=None)
+@cache
 def _popcount(n: int) -> np.ndarray:
     return subset_masks(n).sum(axis=1)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _additions(n: int, min_size: int):
     """All ``(A, x)``, ``x`` not in ``A``, ``|A| >= min_size``, in witness order."""
     pc, lex = _popcount(n), _lex_rank(n)
@@ -115,7 +115,7 @@ def _additions(n: int, min_size: int):
     return a[order], x[order]
 
 
-@lru_cache(maxsize=None)
+@cache
 def _triples(n: int, min_size: int):
     """All ``(A, B, x)``, ``A`` proper subset of ``B``, ``x`` not in ``B``, in witness order."""
     pc, lex = _popcount(n), _lex_rank(n)
@@ -439,15 +439,24 @@ def audit_tables(values, n: int, min_size: int = 0, rtol: float = RTOL,
             sw = SubmodularityWitness(_members(a, n), _members(b, n), x, float(row[a]),
                                       float(row[a | (1 << x)]), float(row[b]),
                                       float(row[b | (1 << x)]))
-        out.append(SetFunctionAudit(
-            n=n, min_size=m, tol=float(tol[i]), n_additions=len(pa),
-            n_decreases=int(res["dec"][i]), n_increases=int(res["inc"][i]), n_triples=len(ta),
-            n_submodular_violations=int(res["sub"][i]),
-            n_supermodular_violations=int(res["sup"][i]),
-            max_decrease=float(max_dec[i]), max_excess=float(max_ex[i]),
-            monotone_witness=mono(int(first["dec"][i])), increase_witness=mono(int(first["inc"][i])),
-            submodular_witness=sw,
-        ))
+        out.append(
+            SetFunctionAudit(
+                n=n,
+                min_size=m,
+                tol=float(tol[i]),
+                n_additions=len(pa),
+                n_decreases=int(res["dec"][i]),
+                n_increases=int(res["inc"][i]),
+                n_triples=len(ta),
+                n_submodular_violations=int(res["sub"][i]),
+                n_supermodular_violations=int(res["sup"][i]),
+                max_decrease=float(max_dec[i]),
+                max_excess=float(max_ex[i]),
+                monotone_witness=mono(int(first["dec"][i])),
+                increase_witness=mono(int(first["inc"][i])),
+                submodular_witness=sw,
+            )
+        )
     return out
 
 
@@ -465,7 +474,7 @@ class TableFlags:
     submodular_witness_size: np.ndarray
 
 
-@lru_cache(maxsize=None)
+@cache
 def _gain_index(n: int):
     """Sets ``S`` not containing ``x`` for every ``x``: bitmasks ``S``, ``S + x`` and ``|S|``.
 
@@ -578,8 +587,15 @@ def audit_flags(values, n: int, min_size: int = 0, rtol: float = RTOL,
     )
 
 
-def audit_set_function(ground, f: Callable[[tuple], float] | None = None, *, values=None,
-                       min_size: int = 0, rtol: float = RTOL, atol: float = ATOL) -> SetFunctionAudit:
+def audit_set_function(
+    ground,
+    f: Callable[[tuple], float] | None = None,
+    *,
+    values=None,
+    min_size: int = 0,
+    rtol: float = RTOL,
+    atol: float = ATOL,
+) -> SetFunctionAudit:
     """Check a set function for monotonicity and submodularity over all nested subsets.
 
     Parameters

@@ -9,7 +9,7 @@ the results are the same whatever the backend, worker count or completion order.
 from __future__ import annotations
 
 import sys
-from typing import Callable
+from collections.abc import Callable
 
 __all__ = ["BACKENDS", "run_sweep"]
 

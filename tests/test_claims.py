@@ -251,8 +251,14 @@ def test_findings_read_as_prose(records, paper_records):
                 bad = MACHINE.search(plain)
                 assert not bad, f"{r.id} {where}: {bad.group(0)!r} in {plain!r}"
             # one or two sentences (three at most where a sentence cites a later fact)
-            ends = re.findall(r"[.;:]?\.(?=\s+[A-Z(])", _outside_math(r.ours).replace("Eq.", "Eq")
-                              .replace("Fig.", "Fig").replace("Sec.", "Sec").replace("Figs.", "Figs"))
+            ends = re.findall(
+                r"[.;:]?\.(?=\s+[A-Z(])",
+                _outside_math(r.ours)
+                .replace("Eq.", "Eq")
+                .replace("Fig.", "Fig")
+                .replace("Sec.", "Sec")
+                .replace("Figs.", "Figs"),
+            )
             assert len(ends) <= 2, f"{r.id}: {len(ends) + 1} sentences: {r.ours!r}"
             assert len(r.ours) < 700, f"{r.id}: the finding is {len(r.ours)} characters"
 
@@ -384,13 +390,18 @@ def test_typeset_numbers_sets_and_long_formulas():
 
 
 def test_notebook_targets_read_labels_and_their_sections(tmp_path):
-    nb = {"cells": [
-        {"cell_type": "markdown", "source": ["# The chapter\n"]},
-        {"cell_type": "markdown", "source": ["(thm1-evidence)=\n", "## Audit\n", "text (not)= here\n"]},
-        {"cell_type": "code", "source": ["(code-label)=\n"]},
-        {"cell_type": "markdown", "source": "(a-b)=\n(c)=\n### H $x$\n"},
-        {"cell_type": "markdown", "source": "(d)=\n**Misprints** (no heading)\n"},
-    ]}
+    nb = {
+        "cells": [
+            {"cell_type": "markdown", "source": ["# The chapter\n"]},
+            {
+                "cell_type": "markdown",
+                "source": ["(thm1-evidence)=\n", "## Audit\n", "text (not)= here\n"],
+            },
+            {"cell_type": "code", "source": ["(code-label)=\n"]},
+            {"cell_type": "markdown", "source": "(a-b)=\n(c)=\n### H $x$\n"},
+            {"cell_type": "markdown", "source": "(d)=\n**Misprints** (no heading)\n"},
+        ]
+    }
     (tmp_path / "x.ipynb").write_text(json.dumps(nb))
     assert rep.notebook_targets(tmp_path) == {
         "thm1-evidence": ("x", "Audit"), "a-b": ("x", "H $x$"), "c": ("x", "H $x$"),
@@ -421,7 +432,6 @@ def test_list_table_formats_numbers_with_the_book_formatter():
 
 def test_claims_sit_above_the_studies_and_below_the_book():
     import ast
-
     import warnings
 
     pkg = ROOT / "obslib"

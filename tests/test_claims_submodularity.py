@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 
 import obslib as ob
+import obslib.bound_tables as sm  # its lower_bound is patched below
 import obslib.claims.submodularity as cs  # registers the claims
 import obslib.studies.submodularity as studies
-import obslib.bound_tables as sm  # its lower_bound is patched below
 from obslib import claims
 
 IDS = ["thm7-case1", "thm7-case2", "thm7", "thm7-exact", "thm8-trace", "thm8-logdet",

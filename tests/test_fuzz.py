@@ -20,7 +20,6 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import obslib as ob
-from obslib import teams as tm
 
 # deadline: far above any example's time (milliseconds) even on a loaded machine, far below a hang
 FUZZ = settings(max_examples=40, deadline=10_000, suppress_health_check=[HealthCheck.too_slow])
@@ -48,8 +47,11 @@ def points(draw, min_n=0, max_n=6, hostile=True):
     arr = base * scale
     if not hostile:
         return arr
-    kind = draw(st.sampled_from(["ok"] * 6 + ["nan", "inf", "shape", "bool", "complex", "str", "none",
-                                               "int", "huge"]))
+    kind = draw(
+        st.sampled_from(
+            ["ok"] * 6 + ["nan", "inf", "shape", "bool", "complex", "str", "none", "int", "huge"]
+        )
+    )
     if kind == "nan" and n:
         arr[draw(st.integers(0, n - 1)), 0] = np.nan
     elif kind == "inf" and n:
@@ -143,7 +145,11 @@ def test_pair_bounds_and_relative_vectors(sensors, targets, u_max, cov_kind):
 @FUZZ
 @given(numbers, numbers, numbers, st.sampled_from([(), (3,), (2, 2)]))
 def test_pair_bound_polar(alpha, theta, q, shape):
-    a = np.full(shape, alpha, dtype=object) if shape and not isinstance(alpha, (str, type(None))) else alpha
+    a = (
+        np.full(shape, alpha, dtype=object)
+        if shape and not isinstance(alpha, (str, type(None)))
+        else alpha
+    )
     with named_errors("alpha", "theta", "u_over_d"):
         out = finite(ob.pair_bound_polar(a, theta, q))
         assert ((out >= 0) & (out <= 1)).all()
@@ -181,9 +187,15 @@ def test_measures(sensors, target, name, eps, u, rank_rtol):
 def weights(draw):
     n = draw(st.integers(0, 6))
     L = draw(st.integers(0, 3))
-    w = np.array(draw(st.lists(st.floats(0, 1), min_size=n * n * L, max_size=n * n * L))).reshape(n, n, L)
+    w = np.array(draw(st.lists(st.floats(0, 1), min_size=n * n * L, max_size=n * n * L))).reshape(
+        n, n, L
+    )
     w = w + w.transpose(1, 0, 2)
-    kind = draw(st.sampled_from(["ok"] * 4 + ["neg", "nan", "asym", "bool", "complex", "2d", "none", "huge"]))
+    kind = draw(
+        st.sampled_from(
+            ["ok"] * 4 + ["neg", "nan", "asym", "bool", "complex", "2d", "none", "huge"]
+        )
+    )
     if kind == "neg" and w.size:
         w[0, -1, 0] = w[-1, 0, 0] = -0.5
     elif kind == "nan" and w.size:
@@ -214,7 +226,11 @@ def valid_pairs(res, n, L, unique_sensors=True):
 
 
 @FUZZ
-@given(weights(), st.sampled_from([None, 1, 3, 2.5, 0, True, "2"]), st.sampled_from([False, True, "no", None]))
+@given(
+    weights(),
+    st.sampled_from([None, 1, 3, 2.5, 0, True, "2"]),
+    st.sampled_from([False, True, "no", None]),
+)
 def test_pair_assignment_from_weights(W, k, ordered):
     shape = np.shape(W) if W is not None else (0, 0, 0)
     n, L = (shape[0], shape[-1]) if len(shape) == 3 else (0, 0)
@@ -234,7 +250,9 @@ def test_pair_assignment_from_geometry(sensors, targets, u_max, k):
     L = np.shape(targets)[0] if np.ndim(targets) == 2 else 0
     args = ("sensor", "target", "u_max", "k", "give", "pairs need")
     with named_errors(*args):
-        valid_pairs(ob.greedy_pair_assignment(sensors=sensors, targets=targets, u_max=u_max, k=k), n, L)
+        valid_pairs(
+            ob.greedy_pair_assignment(sensors=sensors, targets=targets, u_max=u_max, k=k), n, L
+        )
     with named_errors(*args):
         valid_pairs(ob.relaxed_pair_assignment(sensors=sensors, targets=targets, u_max=u_max), n, L,
                     unique_sensors=False)
@@ -266,13 +284,20 @@ def test_team_assignment(sensors, targets, name, eps):
 @st.composite
 def moderate_points(draw, min_n, max_n):
     n = draw(st.integers(min_n, max_n))
-    pts = np.array(draw(st.lists(st.tuples(st.integers(-3, 3), st.integers(-3, 3)), min_size=n, max_size=n)),
-                   dtype=float).reshape(n, 2)
+    pts = np.array(
+        draw(st.lists(st.tuples(st.integers(-3, 3), st.integers(-3, 3)), min_size=n, max_size=n)),
+        dtype=float,
+    ).reshape(n, 2)
     return pts * draw(st.sampled_from([1e-20, 1e-3, 1.0, 1e3, 1e20]))
 
 
 @FUZZ
-@given(moderate_points(1, 4), moderate_points(1, 1), st.floats(0, 10), st.sampled_from(list(ob.MEASURES)))
+@given(
+    moderate_points(1, 4),
+    moderate_points(1, 1),
+    st.floats(0, 10),
+    st.sampled_from(list(ob.MEASURES)),
+)
 def test_audits(sensors, target, u_max, name):
     # The set-function audits at moderate scales (1e-20 to 1e20); extreme scales are tested below.
     with named_errors("sensor", "target", "u_max", "overflow"):
@@ -294,15 +319,42 @@ def test_lower_bound_table_at_extreme_scale(c):
     np.testing.assert_allclose(table, ob.lower_bound_table(S, o, 1.0), rtol=1e-9)
     for k in range(8):
         idx = [i for i in range(3) if k >> i & 1]
-        assert table[k] == pytest.approx(ob.lower_bound(S[idx].reshape(-1, 2) * c, o * c, c), rel=1e-9, abs=0)
+        assert table[k] == pytest.approx(
+            ob.lower_bound(S[idx].reshape(-1, 2) * c, o * c, c), rel=1e-9, abs=0
+        )
 
 
 # --------------------------------------------------------------------------- command lines
 
 
-argv_words = st.sampled_from(["--profile", "paper", "quick", "nosuch", "--id", "thm1", "--write",
-                              "/nonexistent/x.md", "--json", "-p", "n_seeds", "seed", "abc", "-5", "2.5",
-                              "05", "01", "99", "--in-place", "book", "scaling", "assignment", "[1]", ""])
+argv_words = st.sampled_from(
+    [
+        "--profile",
+        "paper",
+        "quick",
+        "nosuch",
+        "--id",
+        "thm1",
+        "--write",
+        "/nonexistent/x.md",
+        "--json",
+        "-p",
+        "n_seeds",
+        "seed",
+        "abc",
+        "-5",
+        "2.5",
+        "05",
+        "01",
+        "99",
+        "--in-place",
+        "book",
+        "scaling",
+        "assignment",
+        "[1]",
+        "",
+    ]
+)
 
 
 @settings(max_examples=60, deadline=10_000)
@@ -326,8 +378,8 @@ def test_run_cli_parsing(argv):
 @settings(max_examples=60, deadline=10_000)
 @given(st.lists(argv_words, max_size=6))
 def test_claims_and_bench_cli_parsing(argv):
-    from obslib.tools.bench import parse_args as bench_args
     from obslib.claims.__main__ import parse_args as claims_args
+    from obslib.tools.bench import parse_args as bench_args
 
     for parse in (claims_args, bench_args):
         with contextlib.redirect_stderr(io.StringIO()), contextlib.redirect_stdout(io.StringIO()):
@@ -349,7 +401,9 @@ def test_geometry_greedy_with_a_far_target_terminates():
         valid_pairs(res, 6, T.shape[0])
         assert len(res.triples) == T.shape[0]
     for c in (1e200, 1e-170):  # all coordinates scaled (u_max not): weights are finite limits
-        res = ob.greedy_pair_assignment(sensors=S * c, targets=np.array([[3.0, 3.0], [0.5, 0.5]]) * c, u_max=1.0)
+        res = ob.greedy_pair_assignment(
+            sensors=S * c, targets=np.array([[3.0, 3.0], [0.5, 0.5]]) * c, u_max=1.0
+        )
         valid_pairs(res, 6, 2)
         assert len(res.triples) == 2
 
@@ -361,14 +415,20 @@ def test_teams_at_extreme_scale_are_valid_or_refused():
         ob.greedy_team_assignment(S * 1e155, T * 1e155)
     base = ob.greedy_team_assignment(S, T)
     assert ob.greedy_team_assignment(S * 1e150, T * 1e150, eps=1e300) == base
-    assert ob.greedy_team_assignment(S * 1e155, T * 1e155, "rank") == ob.greedy_team_assignment(S, T, "rank")
+    assert ob.greedy_team_assignment(S * 1e155, T * 1e155, "rank") == ob.greedy_team_assignment(
+        S, T, "rank"
+    )
 
 
 def test_negative_weights_are_refused_by_every_solver():
     W = np.zeros((4, 4, 2))
     W[0, 1, 0] = W[1, 0, 0] = -0.3
     W[2, 3, 1] = W[3, 2, 1] = 0.5
-    for solve in (ob.greedy_pair_assignment, ob.relaxed_pair_assignment, ob.optimal_pair_assignment):
+    for solve in (
+        ob.greedy_pair_assignment,
+        ob.relaxed_pair_assignment,
+        ob.optimal_pair_assignment,
+    ):
         with pytest.raises(ValueError, match=r"W\[0, 1, 0\] = -0.3 is negative"):
             solve(W)
 
@@ -452,18 +512,24 @@ def test_unit_invariant_quantities_do_not_depend_on_the_unit(c):
         assert ob.measure(S[:1] * c, o * c, name) == 1.0
     assert ob.measure(S * c, o * c, "logdet", eps=c * c) == pytest.approx(
         ob.measure(S, o, "logdet", eps=1.0) + 4 * np.log(c), rel=1e-9)
-    assert ob.measure(S * c, o * c, "trace") == pytest.approx(ob.measure(S, o, "trace") * c * c, rel=1e-9)
+    assert ob.measure(S * c, o * c, "trace") == pytest.approx(
+        ob.measure(S, o, "trace") * c * c, rel=1e-9
+    )
     g = ob.greedy_pair_assignment(sensors=S, targets=T, u_max=u)
     assert ob.greedy_pair_assignment(sensors=S * c, targets=T * c, u_max=u * c).triples == g.triples
     assert ob.greedy_pair_assignment(ob.pair_bounds(S * c, T * c, u * c)).triples == g.triples
     r = ob.relaxed_pair_assignment(sensors=S, targets=T, u_max=u)
-    assert ob.relaxed_pair_assignment(sensors=S * c, targets=T * c, u_max=u * c).triples == r.triples
+    assert (
+        ob.relaxed_pair_assignment(sensors=S * c, targets=T * c, u_max=u * c).triples == r.triples
+    )
     assert ob.optimal_pair_assignment(ob.pair_bounds(S * c, T * c, u * c)).triples == \
         ob.optimal_pair_assignment(W).triples
     small_S = S[:5]
     for name, eps in (("rank", 1.0), ("logdet", 1.0), ("trace", 1.0), ("neg_trace_inverse", 1.0)):
         e = eps if name == "rank" else eps * c * c
-        assert ob.greedy_team_assignment(S * c, T * c, name, e) == ob.greedy_team_assignment(S, T, name, eps)
+        assert ob.greedy_team_assignment(S * c, T * c, name, e) == ob.greedy_team_assignment(
+            S, T, name, eps
+        )
         assert ob.optimal_team_assignment(small_S * c, T * c, name, e)[0] == \
             ob.optimal_team_assignment(small_S, T, name, eps)[0]
 

@@ -1,4 +1,5 @@
-"""Safe output writes: regular files replaced atomically, other paths written once, bad paths refused."""
+"""Safe output writes: regular files replaced atomically, other paths written once, bad paths
+refused."""
 
 import os
 import stat

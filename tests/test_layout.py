@@ -22,7 +22,8 @@ PACKAGE = ROOT / "obslib"
 MODULES = sorted(PACKAGE.rglob("*.py"))
 MAX_LINES = 700
 
-#: Modules allowed to import matplotlib besides obslib/viz: the figure settings every notebook applies.
+#: Modules allowed to import matplotlib besides obslib/viz: the figure settings every notebook
+#: applies.
 MATPLOTLIB_OUTSIDE_VIZ = {"obslib/notebook.py"}
 
 #: Known violations in modules this test does not fix, each a strict xfail: it turns red as soon as
@@ -35,8 +36,16 @@ def rel(path: Path) -> str:
 
 
 def params(kind: str):
-    return [pytest.param(p, id=rel(p), marks=[pytest.mark.xfail(strict=True, reason=KNOWN[kind, rel(p)])]
-                         if (kind, rel(p)) in KNOWN else []) for p in MODULES]
+    return [
+        pytest.param(
+            p,
+            id=rel(p),
+            marks=[pytest.mark.xfail(strict=True, reason=KNOWN[kind, rel(p)])]
+            if (kind, rel(p)) in KNOWN
+            else [],
+        )
+        for p in MODULES
+    ]
 
 
 def module_name(path: Path) -> str:
@@ -83,8 +92,13 @@ def private_imports(path: Path, source: str | None = None) -> list[str]:
                 elif private(a.name) and not private(mod.split(".")[-1]):
                     found.append(f"{rel(path)}:{node.lineno}: from {mod} import {a.name}")
     for node in ast.walk(tree):
-        if (isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and private(node.attr)
-                and node.value.id in modules and not private(modules[node.value.id].split(".")[-1])):
+        if (
+            isinstance(node, ast.Attribute)
+            and isinstance(node.value, ast.Name)
+            and private(node.attr)
+            and node.value.id in modules
+            and not private(modules[node.value.id].split(".")[-1])
+        ):
             found.append(f"{rel(path)}:{node.lineno}: {modules[node.value.id]}.{node.attr}")
     return found
 
@@ -95,12 +109,25 @@ def test_the_import_resolution_of_this_test():
     assert resolve(PACKAGE / "studies" / "teams.py", node) == "obslib.bounds"
     node = ast.parse("from . import tracking").body[0]
     assert resolve(PACKAGE / "__init__.py", node) == "obslib"
-    assert is_module("obslib._kernels") and is_module("obslib.studies") and not is_module("obslib.bounds.pair_bounds")
+    assert (
+        is_module("obslib._kernels")
+        and is_module("obslib.studies")
+        and not is_module("obslib.bounds.pair_bounds")
+    )
     probe = PACKAGE / "studies" / "probe.py"
-    assert private_imports(probe, "from ..bounds import _x\n") == ["obslib/studies/probe.py:1: from obslib.bounds import _x"]
-    assert private_imports(probe, "from .._kernels import pair_kernel, _y\nfrom .. import _kernels\n") == []
-    assert private_imports(probe, "import obslib.bounds as b\nb._y\n") == ["obslib/studies/probe.py:2: obslib.bounds._y"]
-    assert private_imports(probe, "from .. import bounds\nbounds._z\n") == ["obslib/studies/probe.py:2: obslib.bounds._z"]
+    assert private_imports(probe, "from ..bounds import _x\n") == [
+        "obslib/studies/probe.py:1: from obslib.bounds import _x"
+    ]
+    assert (
+        private_imports(probe, "from .._kernels import pair_kernel, _y\nfrom .. import _kernels\n")
+        == []
+    )
+    assert private_imports(probe, "import obslib.bounds as b\nb._y\n") == [
+        "obslib/studies/probe.py:2: obslib.bounds._y"
+    ]
+    assert private_imports(probe, "from .. import bounds\nbounds._z\n") == [
+        "obslib/studies/probe.py:2: obslib.bounds._z"
+    ]
 
 
 def test_no_module_imports_a_private_name_of_another():
@@ -126,7 +153,9 @@ def test_module_opens_with_a_one_sentence_docstring(path):
     text = ABBREVIATIONS.sub("", first)
     breaks = re.findall(r"[.?!]\s+(?=[A-Z])", text)  # a sentence ends and the next begins
     assert text.endswith((".", "?")) and not breaks, (
-        f"{rel(path)}: the opening paragraph should be one sentence saying what the module is for: {first!r}")
+        f"{rel(path)}: the opening paragraph should be one sentence saying what the module is "
+        f"for: {first!r}"
+    )
 
 
 def test_matplotlib_only_in_viz():
@@ -137,7 +166,11 @@ def test_matplotlib_only_in_viz():
         for node in ast.walk(ast.parse(p.read_text())):
             names = ([a.name for a in node.names] if isinstance(node, ast.Import)
                      else [node.module or ""] if isinstance(node, ast.ImportFrom) else [])
-            found += [f"{rel(p)}:{node.lineno}: {n}" for n in names if n.split(".")[0].startswith("matplotlib")]
+            found += [
+                f"{rel(p)}:{node.lineno}: {n}"
+                for n in names
+                if n.split(".")[0].startswith("matplotlib")
+            ]
     assert not found, "matplotlib imported outside obslib/viz:\n" + "\n".join(found)
 
 
@@ -147,10 +180,26 @@ OUTSIDE = ("../" + "shared", "/work/" + "shared", "EXPERIMENTS" + ".md", "DESIGN
 
 def repository_files():
     yield from MODULES
-    for sub, pattern in (("tests", "*"), ("notebooks", "*.ipynb"), (".ci", "*"), ("book/_ext", "*.py")):
-        yield from (p for p in sorted((ROOT / sub).rglob(pattern)) if p.is_file() and "__pycache__" not in p.parts)
+    for sub, pattern in (
+        ("tests", "*"),
+        ("notebooks", "*.ipynb"),
+        (".ci", "*"),
+        ("book/_ext", "*.py"),
+    ):
+        yield from (
+            p
+            for p in sorted((ROOT / sub).rglob(pattern))
+            if p.is_file() and "__pycache__" not in p.parts
+        )
     yield from sorted((ROOT / "book").glob("*.md"))
-    for name in ("README.md", "Makefile", "_config.yml", "_toc.yml", "pyproject.toml", "requirements.txt"):
+    for name in (
+        "README.md",
+        "Makefile",
+        "_config.yml",
+        "_toc.yml",
+        "pyproject.toml",
+        "requirements.txt",
+    ):
         if (ROOT / name).is_file():
             yield ROOT / name
 

@@ -19,7 +19,9 @@ def code_cells(path):
 def literal_assignments(source):
     out = {}
     for node in ast.parse(source).body:
-        assert isinstance(node, ast.Assign) and len(node.targets) == 1, "parameters cell: only NAME = literal"
+        assert isinstance(node, ast.Assign) and len(node.targets) == 1, (
+            "parameters cell: only NAME = literal"
+        )
         out[node.targets[0].id] = ast.literal_eval(node.value)
     return out
 
@@ -53,7 +55,9 @@ def test_committed_with_outputs_and_no_errors(path):
         tags = cell["metadata"].get("tags", [])
         assert "injected-parameters" not in tags, f"cell {i}: papermill-injected parameters"
         assert cell["execution_count"] is not None, f"cell {i} never executed"
-        assert all(o["output_type"] != "error" for o in cell["outputs"]), f"cell {i} stores an error"
+        assert all(o["output_type"] != "error" for o in cell["outputs"]), (
+            f"cell {i} stores an error"
+        )
     meta = json.loads(path.read_text())["metadata"]
     assert "papermill" not in meta and "version" not in meta.get("language_info", {})
 
@@ -87,7 +91,9 @@ def test_toc_lists_every_notebook_and_every_entry_exists():
     for f in files:
         if f in generated:
             continue
-        assert any((ROOT / f"{f}{ext}").exists() for ext in (".md", ".ipynb")), f"toc entry {f} missing"
+        assert any((ROOT / f"{f}{ext}").exists() for ext in (".md", ".ipynb")), (
+            f"toc entry {f} missing"
+        )
     for nb in NOTEBOOKS:
         assert f"notebooks/{nb.stem}" in files, f"{nb.name} is not in _toc.yml"
     assert NOTEBOOK_DIR.exists()
@@ -113,15 +119,22 @@ def test_summary_verdicts_typed_in_prose_match_the_ledger(path):
         if cell["cell_type"] != "markdown":
             continue
         for line in "".join(cell["source"]).splitlines():
-            m = re.match(r"\|.*\(`([a-z0-9-]+)`\) \| (reproduced|partly|refuted|untestable|answered|open) \|", line)
+            m = re.match(
+                r"\|.*\(`([a-z0-9-]+)`\) \| "
+                r"(reproduced|partly|refuted|untestable|answered|open) \|",
+                line,
+            )
             if m:
                 assert m.group(1) in statuses, f"{path.name}: {m.group(1)} is not in the report"
-                assert statuses[m.group(1)] == m.group(2), f"{path.name}: {m.group(1)} typed as {m.group(2)}"
+                assert statuses[m.group(1)] == m.group(2), (
+                    f"{path.name}: {m.group(1)} typed as {m.group(2)}"
+                )
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_papermill_sees_every_parameter(path):
-    """papermill cannot parse a parameter line whose comment holds '=' or quotes; -p would then fail."""
+    """papermill cannot parse a parameter line whose comment holds '=' or quotes; -p would then
+    fail."""
     import papermill as pm
 
     assert set(pm.inspect_notebook(str(path))) == set(params(path.stem, "paper"))

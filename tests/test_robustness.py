@@ -44,12 +44,23 @@ def test_dimensions_follow_the_notebook_parameters():
 
 
 def test_table_says_where_a_verdict_changes():
-    rows = [{"id": "a", "base": "partly",
-             "variants": {"u_max": [("x2", "partly", False)],
-                          "metric": [("euclidean", "refuted", False)],
-                          "size": [("n_seeds x0.5", "partly", True), ("n_seeds x2", "partly", True)]}},
-            {"id": "b", "base": "reproduced", "fixed": ["u_max", "noise_std", "metric", "size"],
-             "variants": {}}]
+    rows = [
+        {
+            "id": "a",
+            "base": "partly",
+            "variants": {
+                "u_max": [("x2", "partly", False)],
+                "metric": [("euclidean", "refuted", False)],
+                "size": [("n_seeds x0.5", "partly", True), ("n_seeds x2", "partly", True)],
+            },
+        },
+        {
+            "id": "b",
+            "base": "reproduced",
+            "fixed": ["u_max", "noise_std", "metric", "size"],
+            "variants": {},
+        },
+    ]
     assert rb.describe(rows[0], "refuted") == (
         "refuted (partly at the smaller sizes)",
         ["holds", "n/a", "refuted at Euclidean", "unchanged finding"])

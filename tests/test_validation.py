@@ -13,10 +13,16 @@ T = O[None]
 def callers():
     """Each public function as f(sensors, target_or_targets, u_max)."""
     return {
-        "observability_matrix": lambda s, o, u: ob.observability_matrix(s, o[0] if np.ndim(o) == 2 else o),
-        "inverse_condition_number": lambda s, o, u: ob.inverse_condition_number(s, o[0] if np.ndim(o) == 2 else o, [0.1, 0.2]),
+        "observability_matrix": lambda s, o, u: ob.observability_matrix(
+            s, o[0] if np.ndim(o) == 2 else o
+        ),
+        "inverse_condition_number": lambda s, o, u: ob.inverse_condition_number(
+            s, o[0] if np.ndim(o) == 2 else o, [0.1, 0.2]
+        ),
         "lower_bound": lambda s, o, u: ob.lower_bound(s, o[0] if np.ndim(o) == 2 else o, u),
-        "worst_case_control": lambda s, o, u: ob.worst_case_control(s, o[0] if np.ndim(o) == 2 else o, u),
+        "worst_case_control": lambda s, o, u: ob.worst_case_control(
+            s, o[0] if np.ndim(o) == 2 else o, u
+        ),
         "pair_bounds": lambda s, o, u: ob.pair_bounds(s, o if np.ndim(o) == 2 else o[None], u),
     }
 
@@ -34,7 +40,12 @@ FUNCS = callers()
         (np.zeros((3, 3)), T, 1.0, "sensors must have shape (n, 2)"),
         (S, np.array([[1.0, 1.0, 1.0]]), 1.0, "shape"),
         (S, np.array([[np.nan, 1.0]]), 1.0, "non-finite"),
-        (np.array([[0.0, 0.0], [1.0, 1.0], [5.0, 5.0]]), T, 1.0, "sensor 1 coincides with target 0"),
+        (
+            np.array([[0.0, 0.0], [1.0, 1.0], [5.0, 5.0]]),
+            T,
+            1.0,
+            "sensor 1 coincides with target 0",
+        ),
         (np.array([[0.0, 0.0], [2.0, 2.0], [0.0, 0.0]]), T, 1.0, "sensors 0 and 2 coincide"),
     ],
 )
@@ -44,7 +55,10 @@ def test_bad_geometry(name, sensors, target, u_max, message):
 
 
 @pytest.mark.parametrize("name", ["lower_bound", "worst_case_control", "pair_bounds"])
-@pytest.mark.parametrize("u_max, message", [(-1.0, "non-negative"), (np.nan, "finite"), (np.inf, "finite"), ("fast", "u_max")])
+@pytest.mark.parametrize(
+    "u_max, message",
+    [(-1.0, "non-negative"), (np.nan, "finite"), (np.inf, "finite"), ("fast", "u_max")],
+)
 def test_bad_u_max(name, u_max, message):
     with pytest.raises(ValueError, match=message):
         FUNCS[name](S, T, u_max)
@@ -76,7 +90,12 @@ def test_bad_covariance(cov, message):
 
 @pytest.mark.parametrize(
     "args, message",
-    [((-1.0, 0.5, 0.1), "alpha"), ((1.0, np.nan, 0.1), "theta"), ((1.0, 0.5, -2.0), "u_over_d"), ((np.inf, 0.5, 0.1), "alpha")],
+    [
+        ((-1.0, 0.5, 0.1), "alpha"),
+        ((1.0, np.nan, 0.1), "theta"),
+        ((1.0, 0.5, -2.0), "u_over_d"),
+        ((np.inf, 0.5, 0.1), "alpha"),
+    ],
 )
 def test_bad_polar_arguments(args, message):
     with pytest.raises(ValueError, match=message):

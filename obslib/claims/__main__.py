@@ -15,10 +15,10 @@ import argparse
 import json
 import sys
 
-from . import as_json, evaluate, registry
-from . import robustness as rb
 from .._io import OutputPathError, check_output_path, write_output
 from ..profiles import profile_names
+from . import as_json, evaluate, registry
+from . import robustness as rb
 
 
 def parse_args(argv=None) -> argparse.Namespace:

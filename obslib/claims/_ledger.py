@@ -21,8 +21,8 @@ of the numbers behind the sentence.
 from __future__ import annotations
 
 import numbers
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 __all__ = [
     "KINDS",

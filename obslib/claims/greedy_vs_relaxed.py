@@ -6,10 +6,10 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..studies import greedy_vs_relaxed as st
-from ..studies.published import FIG8_PUBLISHED_L20
 from .._format import fixed, number
 from ..profiles import params
+from ..studies import greedy_vs_relaxed as st
+from ..studies.published import FIG8_PUBLISHED_L20
 from ._ledger import Finding, Table, claim
 
 NB = "07_greedy_vs_relaxed"

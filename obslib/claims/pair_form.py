@@ -8,9 +8,9 @@ from dataclasses import asdict
 
 import numpy as np
 
+from .._format import listing, number, setting, small, span
 from ..profiles import params
 from ..studies import pair_form as pf
-from .._format import listing, number, setting, small, span
 from ._ledger import Finding, Table, claim
 
 NB = "02_pair_closed_form"
@@ -115,7 +115,7 @@ def _fig2_max(profile: str) -> Finding:
     return Finding(
         "reproduced" if ok else "refuted",
         r"On a grid that contains $\theta_{ji} = \pm\pi/2$ the maximum is "
-        rf"$1/\sqrt{{1 + u_{{\max}}^2/d_{{io}}^2}}$ at $\alpha = 1$, $\theta_{{ji}} = \pm\pi/2$, "
+        r"$1/\sqrt{1 + u_{\max}^2/d_{io}^2}$ at $\alpha = 1$, $\theta_{ji} = \pm\pi/2$, "
         r"as the paper says; the paper's own grid misses $\pm\pi/2$, so its plotted maximum sits "
         "at the nearest grid point, slightly lower.",
         {"fine_max": mf.value, "fine_at": mf.points, "paper_max": mp.value, "paper_at": mp.points,
@@ -146,7 +146,11 @@ def _thm5(profile: str) -> Finding:
     p = params(NB, profile)
     qs = _qs(p)
     a = pf.theorem5_audit(
-        qs, p["alpha_max"], p["fine_alpha_per_unit"], p["fine_theta_quarter"], p["n_rational_points"]
+        qs,
+        p["alpha_max"],
+        p["fine_alpha_per_unit"],
+        p["fine_theta_quarter"],
+        p["n_rational_points"],
     )
     only_peak = [
         {(round(al, 12), round(abs(th), 12)) for al, th in pts} == {(1.0, round(np.pi / 2, 12))}

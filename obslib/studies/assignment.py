@@ -19,8 +19,8 @@ from itertools import combinations
 import numpy as np
 
 from .._kernels import normalise, pair_kernel
-from ..assignment import greedy_pairs_batch
 from .._validate import as_u_max, check_distinct, check_not_on_targets
+from ..assignment import greedy_pairs_batch
 
 __all__ = [
     "pair_assignments",
@@ -69,7 +69,9 @@ def pair_assignments(n: int, n_targets: int) -> tuple[np.ndarray, np.ndarray]:
         if l == n_targets:
             out.append(tuple(chosen))
             if len(out) > MAX_ASSIGNMENTS:
-                raise ValueError(f"more than {MAX_ASSIGNMENTS} assignments for N = {n}, L = {n_targets}")
+                raise ValueError(
+                    f"more than {MAX_ASSIGNMENTS} assignments for N = {n}, L = {n_targets}"
+                )
             return
         for p in pairs:
             if p[0] not in used and p[1] not in used:
@@ -80,7 +82,8 @@ def pair_assignments(n: int, n_targets: int) -> tuple[np.ndarray, np.ndarray]:
     return arr[:, :, 0], arr[:, :, 1]
 
 
-#: Largest ``N`` :func:`optimal_values` accepts (its tables have up to ``2^N`` entries per instance).
+#: Largest ``N`` :func:`optimal_values` accepts (its tables have up to ``2^N`` entries per
+#: instance).
 MAX_DP_SENSORS = 16
 
 
@@ -118,7 +121,9 @@ def optimal_values(W) -> np.ndarray:
     W = _as_batch(W)
     k, n, _, n_targets = W.shape
     if n > MAX_DP_SENSORS:
-        raise ValueError(f"N = {n} sensors is too many for the exact optimum (at most {MAX_DP_SENSORS})")
+        raise ValueError(
+            f"N = {n} sensors is too many for the exact optimum (at most {MAX_DP_SENSORS})"
+        )
     ii, jj = np.triu_indices(n, 1)
     pair_mask = (np.int64(1) << ii) | (np.int64(1) << jj)
     states = np.zeros(1, dtype=np.int64)  # sensor sets reachable after the targets so far
@@ -144,7 +149,8 @@ def greedy_values(W) -> np.ndarray:
 
     Examples
     --------
-    On :func:`tight_weights` the greedy takes the heavy pair and is stuck with :math:`1 + \\varepsilon`:
+    On :func:`tight_weights` the greedy takes the heavy pair and is stuck with
+    :math:`1 + \\varepsilon`:
 
     >>> greedy_values(tight_weights(eps=1e-3)[None])
     array([1.001])
@@ -176,7 +182,9 @@ def batch_pair_bounds(sensors, targets, u_max) -> tuple[np.ndarray, np.ndarray]:
     S = np.asarray(sensors, dtype=float)
     T = np.asarray(targets, dtype=float)
     if S.ndim != 3 or T.ndim != 3 or S.shape[2] != 2 or T.shape[2] != 2 or S.shape[0] != T.shape[0]:
-        raise ValueError(f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}")
+        raise ValueError(
+            f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}"
+        )
     if not (np.isfinite(S).all() and np.isfinite(T).all()):
         raise ValueError("sensor and target positions must be finite")
     u = float(as_u_max(u_max))
@@ -191,7 +199,13 @@ def batch_pair_bounds(sensors, targets, u_max) -> tuple[np.ndarray, np.ndarray]:
         v = v.reshape(n, k, n_targets, 2).transpose(1, 0, 2, 3)  # (K, N, L, 2)
         u2 = u2.reshape(k, n_targets)
         x, y = v[..., 0], v[..., 1]  # (K, N, L)
-        W = pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
+        W = pair_kernel(
+            x[:, :, None, :],
+            y[:, :, None, :],
+            x[:, None, :, :],
+            y[:, None, :, :],
+            u2[:, None, None, :],
+        )
     return W, valid
 
 
@@ -240,9 +254,9 @@ def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2),
     r"""Algorithm 1 against the exact optimum on random instances of the Fig. 8 kind.
 
     Each instance draws ``L`` uniformly from ``targets`` and :math:`N = 2L + e` with :math:`e` from
-    ``extra`` (both inclusive), positions uniform in :math:`[0, \mathrm{side}]^2`, weights the pair bounds
-    with ``u_max`` (Euclidean). Instances are drawn one after the other from one generator, then
-    solved in batches per ``(N, L)`` (:func:`greedy_values`, :func:`optimal_values`).
+    ``extra`` (both inclusive), positions uniform in :math:`[0, \mathrm{side}]^2`, weights the pair
+    bounds with ``u_max`` (Euclidean). Instances are drawn one after the other from one generator,
+    then solved in batches per ``(N, L)`` (:func:`greedy_values`, :func:`optimal_values`).
 
     Examples
     --------
@@ -261,7 +275,9 @@ def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2),
     greedy, optimum = np.zeros(n_instances), np.zeros(n_instances)
     for n, L in sorted(set(sizes)):
         idx = np.flatnonzero((sizes_arr[:, 0] == n) & (sizes_arr[:, 1] == L))
-        W, _ = batch_pair_bounds(np.stack([geoms[i][0] for i in idx]), np.stack([geoms[i][1] for i in idx]), u_max)
+        W, _ = batch_pair_bounds(
+            np.stack([geoms[i][0] for i in idx]), np.stack([geoms[i][1] for i in idx]), u_max
+        )
         greedy[idx] = greedy_values(W)
         optimum[idx] = optimal_values(W)
     return GreedyStudy(sizes_arr[:, 0], sizes_arr[:, 1], greedy, optimum)
@@ -353,7 +369,9 @@ def charging(W, greedy_triples, optimal_triples) -> list[dict]:
             "charged_w": [float(W[t]) for t in hit],
         })
     if left:
-        raise ValueError(f"optimal triples never charged: {left} (greedy did not assign every target?)")
+        raise ValueError(
+            f"optimal triples never charged: {left} (greedy did not assign every target?)"
+        )
     return rounds
 
 
@@ -361,9 +379,9 @@ def tight_weights(eps: float = 1e-3) -> np.ndarray:
     r"""Weights (not from geometry) on which Algorithm 1 gets :math:`(1 + \varepsilon) / 3` of the
     optimum.
 
-    Six sensors and three targets: the triple ``(0, 1, t0)`` weighs :math:`1 + \varepsilon` and blocks the
-    optimal ``(0, 2, t1)``, ``(1, 3, t2)``, ``(4, 5, t0)`` of weight 1 each; every other weight
-    is 0. Theorem 6 holds for any :math:`\omega`, and this shows its 1/3 cannot be improved.
+    Six sensors and three targets: the triple ``(0, 1, t0)`` weighs :math:`1 + \varepsilon` and
+    blocks the optimal ``(0, 2, t1)``, ``(1, 3, t2)``, ``(4, 5, t0)`` of weight 1 each; every other
+    weight is 0. Theorem 6 holds for any :math:`\omega`, and this shows its 1/3 cannot be improved.
 
     Examples
     --------
@@ -372,6 +390,11 @@ def tight_weights(eps: float = 1e-3) -> np.ndarray:
     0.333667
     """
     W = np.zeros((6, 6, 3))
-    for (i, j, l), w in {(0, 1, 0): 1 + eps, (0, 2, 1): 1.0, (1, 3, 2): 1.0, (4, 5, 0): 1.0}.items():
+    for (i, j, l), w in {
+        (0, 1, 0): 1 + eps,
+        (0, 2, 1): 1.0,
+        (1, 3, 2): 1.0,
+        (4, 5, 0): 1.0,
+    }.items():
         W[i, j, l] = W[j, i, l] = w
     return W

@@ -25,10 +25,11 @@ Target ``l`` moves by a control drawn uniformly from the disc of radius ``u_max`
 bounded unknown control): :math:`o_{k+1} = o_k + u_k`. Each filter predicts with the random walk
 :math:`\\hat x^- = \\hat x`, :math:`\\Sigma^- = \\Sigma + Q`, :math:`Q = (u_{max}^2 / 4) I`
 (the covariance of the uniform disc), and updates with the half squared ranges
-:math:`z_i = \\tfrac12 \\|p_i - o\\|^2 + n_i` (Section II; :func:`obslib.tracking.half_squared_range`)
-of its two sensors, :math:`n_i \\sim N(0, \\sigma^2)`, ``R = sigma^2 I``: the batched EKF of
-:mod:`obslib.tracking.kalman` (filterpy's equations, Joseph form), which stops with a
-``ValueError`` naming the target, step and seed where the innovation covariance is singular.
+:math:`z_i = \\tfrac12 \\|p_i - o\\|^2 + n_i` (Section II;
+:func:`obslib.tracking.half_squared_range`) of its two sensors, :math:`n_i \\sim N(0, \\sigma^2)`,
+``R = sigma^2 I``: the batched EKF of :mod:`obslib.tracking.kalman` (filterpy's equations, Joseph
+form), which stops with a ``ValueError`` naming the target, step and seed where the innovation
+covariance is singular.
 
 Order within step ``k``, as in :mod:`obslib.tracking`: (1) assign from the current estimates and
 covariances; (2) log each target's error :math:`\\|\\hat x - o\\|` and :math:`\\operatorname{tr}
@@ -77,7 +78,9 @@ def _positive(v, name, *, allow_zero=False):
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be a number, got {v!r}") from None
     if not np.isfinite(x) or x < 0 or (x == 0 and not allow_zero):
-        raise ValueError(f"{name} must be {'non-negative' if allow_zero else 'positive'} and finite, got {v!r}")
+        raise ValueError(
+            f"{name} must be {'non-negative' if allow_zero else 'positive'} and finite, got {v!r}"
+        )
     return x
 
 
@@ -149,7 +152,7 @@ class AssignmentTrackingSetup:
         """Measurement-noise variance, ``noise_std^2``."""
         return self.noise_std**2
 
-    def replace(self, **changes) -> "AssignmentTrackingSetup":
+    def replace(self, **changes) -> AssignmentTrackingSetup:
         """A validated copy with some fields changed."""
         return replace(self, **changes)
 
@@ -175,7 +178,9 @@ class Scenario:
     @property
     def truth(self) -> np.ndarray:
         """True positions ``o_k``, ``k = 1..steps + 1``, shape (B, steps + 1, L, 2)."""
-        return np.concatenate([self.start[:, None], self.start[:, None] + np.cumsum(self.controls, axis=1)], axis=1)
+        return np.concatenate(
+            [self.start[:, None], self.start[:, None] + np.cumsum(self.controls, axis=1)], axis=1
+        )
 
 
 def _seeds(seeds) -> tuple:
@@ -252,7 +257,9 @@ def bound_weights(sensors, xhat, cov, u_max, metric="mahalanobis") -> np.ndarray
     True
     """
     x, y, u2 = _bound_rows(sensors, xhat, cov, u_max, metric)
-    return pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
+    return pair_kernel(
+        x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :]
+    )
 
 
 def _bound_rows(sensors, xhat, cov, u_max, metric):
@@ -434,7 +441,11 @@ class AssignmentRuns:
 
     def lost(self, threshold: float, skip_first: bool = True) -> np.ndarray:
         """(B, L) bool: targets whose mean error after the update exceeds ``threshold``."""
-        e = self.post_error[:, 1:] if skip_first and self.post_error.shape[1] > 1 else self.post_error
+        e = (
+            self.post_error[:, 1:]
+            if skip_first and self.post_error.shape[1] > 1
+            else self.post_error
+        )
         return e.mean(axis=1) > threshold
 
     def mirrored(self) -> np.ndarray:

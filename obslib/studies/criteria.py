@@ -175,7 +175,11 @@ def _scores(name, S, x, C, Q, R, u_max, u, metric):
     # J = (Sigma + Q)^{-1} + H^T R^{-1} H entry by entry (2x2 closed forms, no LAPACK calls)
     M = C + Q
     mdet = M[:, 0, 0] * M[:, 1, 1] - M[:, 0, 1] * M[:, 1, 0]
-    p00, p01, p11 = (M[:, 1, 1] / mdet)[:, None], (-M[:, 0, 1] / mdet)[:, None], (M[:, 0, 0] / mdet)[:, None]
+    p00, p01, p11 = (
+        (M[:, 1, 1] / mdet)[:, None],
+        (-M[:, 0, 1] / mdet)[:, None],
+        (M[:, 0, 0] / mdet)[:, None],
+    )
     rdet = R[0, 0] * R[1, 1] - R[0, 1] * R[1, 0]
     r00, r01, r11 = R[1, 1] / rdet, -R[0, 1] / rdet, R[0, 0] / rdet
     xi, yi, xj, yj = v[:, ii, 0], v[:, ii, 1], v[:, jj, 0], v[:, jj, 1]  # (B, P)
@@ -198,9 +202,9 @@ def _scores(name, S, x, C, Q, R, u_max, u, metric):
 def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
     """Paired comparison of per-run values (lower is better), run ``b`` against run ``b``.
 
-    Returns ``n``, the mean, median and standard deviation of ``other - reference``, the counts of runs
-    where each is clearly lower (:func:`obslib.tracking.clearly_lower`) and of ties, the two-sided
-    sign-test p-value (ties dropped; ``scipy.stats.binomtest`` at :math:`p = 1/2`) and the
+    Returns ``n``, the mean, median and standard deviation of ``other - reference``, the counts of
+    runs where each is clearly lower (:func:`obslib.tracking.clearly_lower`) and of ties, the
+    two-sided sign-test p-value (ties dropped; ``scipy.stats.binomtest`` at :math:`p = 1/2`) and the
     Wilcoxon signed-rank p-value of the nonzero differences (``scipy.stats.wilcoxon``: exact up
     to 50 differences, beyond that the normal approximation with the tie correction).
 
@@ -221,7 +225,9 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
     a = np.asarray(reference, dtype=float)
     b = np.asarray(other, dtype=float)
     if a.shape != b.shape or a.ndim != 1 or a.size < 2:
-        raise ValueError(f"need two equal-length 1-D samples of at least 2 runs, got {a.shape}, {b.shape}")
+        raise ValueError(
+            f"need two equal-length 1-D samples of at least 2 runs, got {a.shape}, {b.shape}"
+        )
     d = b - a
     ref_better = int(tr.clearly_lower(a, b, rtol).sum())
     other_better = int(tr.clearly_lower(b, a, rtol).sum())
@@ -335,7 +341,9 @@ def relog_bound(batch, setup):
 
     B, K = batch.pairs.shape[:2]
     cov = batch.cov.reshape(-1, 2, 2) if setup.metric == "mahalanobis" else None
-    bound = tr.pair_bound_series(setup, batch.estimate.reshape(-1, 2), batch.pairs.reshape(-1, 2), cov)
+    bound = tr.pair_bound_series(
+        setup, batch.estimate.reshape(-1, 2), batch.pairs.reshape(-1, 2), cov
+    )
     return dataclasses.replace(batch, setup=setup, bound=bound.reshape(B, K))
 
 
@@ -466,18 +474,26 @@ def assignment_study(p: dict, metric: str = "mahalanobis") -> dict:
     True
     """
     targets = tuple(int(L) for L in p["assign_targets"])
-    return _assignment_study(targets, int(p["assign_seeds"]), int(p["seed"]), int(p["assign_steps"]),
-                             float(p["assign_side"]), float(p["assign_u_max"]),
-                             float(p["assign_noise_std"]), float(p["assign_p0"]), metric)
+    return _assignment_study(
+        targets,
+        int(p["assign_seeds"]),
+        int(p["seed"]),
+        int(p["assign_steps"]),
+        float(p["assign_side"]),
+        float(p["assign_u_max"]),
+        float(p["assign_noise_std"]),
+        float(p["assign_p0"]),
+        metric,
+    )
 
 
 def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float = 0.5) -> list:
     """One row per ``(L, rule)``: mean, spread and median over runs of the per-run mean error
     summed over targets (after the update), ``lost`` (targets, over all runs, whose mean error
     exceeds ``loss_threshold``), ``lost_mirrored`` (those whose last estimate is nearer the
-    target's mirror image across its last pair's baseline than the target), ``switch_rate`` (fraction of steps where a target's pair
-    changes), the chosen pairs' bound and information gain summed over targets, and the paired
-    test against ``reference``.
+    target's mirror image across its last pair's baseline than the target), ``switch_rate``
+    (fraction of steps where a target's pair changes), the chosen pairs' bound and information gain
+    summed over targets, and the paired test against ``reference``.
 
     Examples
     --------

@@ -19,9 +19,9 @@ target's objective than the 64 controls did.
 
 from __future__ import annotations
 
-import numpy as np
-
 from functools import lru_cache
+
+import numpy as np
 
 from .. import tracking as tr
 from .._kernels import normalise, pair_kernel

@@ -19,8 +19,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import teams as ts
 from ..bounds import relative_vectors
+from . import teams as ts
 
 __all__ = ["NAN_RULES", "literal_logdet_counts", "literal_fig9_sweep", "control_row_fig9_sweep"]
 
@@ -144,7 +144,9 @@ def literal_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, sid
             S, T = ts.fig9_geometry(n, t, seed, n_targets, side)
             v[a, t, :n] = relative_vectors(S, T)
     n_sensors = np.repeat(np.array(N_values, dtype=int), trials)
-    out = _counts(v.reshape(-1, n_max, n_targets, 2), n_sensors, np.full(n_sensors.size, nan == "first"))
+    out = _counts(
+        v.reshape(-1, n_max, n_targets, 2), n_sensors, np.full(n_sensors.size, nan == "first")
+    )
     return out.reshape(len(N_values), trials, n_targets)
 
 

@@ -15,9 +15,9 @@ from functools import lru_cache
 
 import numpy as np
 
-from . import assignment as st
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..bounds import pair_bounds
+from . import assignment as st
 
 __all__ = ["tight_geometry", "TIGHT_SENSORS", "TIGHT_TARGETS", "TIGHT_U_MAX", "tight_witness",
            "spread", "first_pick_margin", "jitter_ratios", "jitter_summary"]

@@ -18,7 +18,14 @@ from ..bounds import pair_bounds
 from ..sweep import run_sweep
 from .assignment import MAX_DP_SENSORS, greedy_values, optimal_values
 
-__all__ = ["FIG8_KEYS", "FIG8_DENSE_WEIGHTS", "fig8_trial", "fig8_sweep", "Fig8Summary", "fig8_summary"]
+__all__ = [
+    "FIG8_KEYS",
+    "FIG8_DENSE_WEIGHTS",
+    "fig8_trial",
+    "fig8_sweep",
+    "Fig8Summary",
+    "fig8_summary",
+]
 
 #: The values each trial reports.
 FIG8_KEYS = ("greedy", "relaxed", "relaxed_ordered", "optimum")
@@ -83,8 +90,11 @@ def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float
     """
     L_values = [int(L) for L in L_values]
     tasks = [
-        dict(n_targets=L, trial=t, seed=seed, u_max=u_max, side=side, with_optimum=L <= optimum_max_L)
-        for L in L_values for t in range(trials)
+        dict(
+            n_targets=L, trial=t, seed=seed, u_max=u_max, side=side, with_optimum=L <= optimum_max_L
+        )
+        for L in L_values
+        for t in range(trials)
     ]
     results = run_sweep(fig8_trial, tasks, backend, n_jobs, scheduler, progress)
     out = {k: np.array([r[k] for r in results]).reshape(len(L_values), trials) for k in FIG8_KEYS}

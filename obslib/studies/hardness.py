@@ -162,7 +162,8 @@ def exact_solver_reach(L_values, time_budget: float, seed: int = 0, u_max: float
     """Time the exact optimum of Problem 1 on random Fig. 8 instances (``N = 2L``).
 
     Sizes are tried in the given order until one does not finish within ``time_budget``
-    seconds (the solver's ``time_limit``); that size is reported as not solved and larger ones skipped.
+    seconds (the solver's ``time_limit``); that size is reported as not solved and larger ones
+    skipped.
 
     Returns
     -------

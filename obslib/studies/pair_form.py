@@ -15,7 +15,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._validate import positive_float, positive_int
+from .._validate import as_int, as_nonnegative, as_positive
 from ..bounds import pair_bound_polar, pair_bounds
 from ..pair_form import (
     GridMax,
@@ -25,45 +25,31 @@ from ..pair_form import (
     maximising_alpha,
     maximising_alpha_closed,
 )
-from .weyl import WeylAudit, dual_weyl_printed_range, weyl_audit  # the audits of notebook 02 are read here
 
-__all__ = [
-    "audit_ratios",
-    "max_difference_at_rational_points",
-    "paper_grid",
-    "Fig2Grid",
-    "fig2_grids",
-    "dual_weyl_printed_range",
-    "Theorem4Audit",
-    "theorem4_audit",
-    "PrintedMatrixAudit",
-    "printed_matrix_audit",
-    "Theorem5Audit",
-    "theorem5_audit",
-    "ThetaDerivativeAudit",
-    "theta_derivative_audit",
-    "AlphaDerivativeAudit",
-    "alpha_derivative_audit",
-    "alpha_star_thetas",
-    "AlphaStarAudit",
-    "alpha_star_audit",
-    "WeylAudit",
-    "weyl_audit",
-]
+# the audits of notebook 02 are read here
+from .weyl import WeylAudit, dual_weyl_printed_range, weyl_audit
+
+__all__ = ["audit_ratios", "max_difference_at_rational_points", "paper_grid", "Fig2Grid",
+           "fig2_grids", "dual_weyl_printed_range", "Theorem4Audit", "theorem4_audit",
+           "PrintedMatrixAudit", "printed_matrix_audit", "Theorem5Audit", "theorem5_audit",
+           "ThetaDerivativeAudit", "theta_derivative_audit", "AlphaDerivativeAudit",
+           "alpha_derivative_audit", "alpha_star_thetas", "AlphaStarAudit", "alpha_star_audit",
+           "WeylAudit", "weyl_audit"]
 
 
 def audit_ratios(u_max: float, d_io: float, u_over_d_curves) -> tuple:
     r"""The values of :math:`q = u_{\max} / d_{io}` the Theorem 5 audits use, sorted: Fig. 2's
-    :math:`u_{\max} / d_{io}`, the ``u_over_d_curves`` of the maximiser plot, and 0 (a stationary target).
+    :math:`u_{\max} / d_{io}`, the ``u_over_d_curves`` of the maximiser plot, and 0 (a stationary
+    target).
 
     Examples
     --------
     >>> audit_ratios(u_max=1.0, d_io=2.0, u_over_d_curves=[1.0])
     (0.0, 0.5, 1.0)
     """
-    u = positive_float("u_max", u_max, allow_zero=True)
-    d = positive_float("d_io", d_io)
-    curves = [positive_float("u_over_d_curves", c, allow_zero=True) for c in u_over_d_curves]
+    u = as_nonnegative(u_max, "u_max")
+    d = as_positive(d_io, "d_io")
+    curves = [as_nonnegative(c, "u_over_d_curves") for c in u_over_d_curves]
     return tuple(sorted({0.0, u / d, *curves}))
 
 
@@ -101,8 +87,9 @@ def max_difference_at_rational_points(
         Working precision in decimal digits, at least 15.
     point_map : callable, optional
         ``point -> dict`` of extra substitutions computed from the drawn point, e.g.
-        :func:`obslib.symbolic.cartesian_ratio_values`: exact SymPy values, evaluated to ``digits + 10`` digits,
-        or mpmath numbers already evaluated (at ``digits + 10`` digits, say), used as they are.
+        :func:`obslib.symbolic.cartesian_ratio_values`: exact SymPy values, evaluated to
+        ``digits + 10`` digits, or mpmath numbers already evaluated (at ``digits + 10`` digits,
+        say), used as they are.
 
     Returns
     -------
@@ -178,8 +165,8 @@ def paper_grid(alpha_max: float = 5.0, step: float = 0.1) -> tuple[np.ndarray, n
     >>> alpha.size, theta.size, bool(np.isclose(theta, np.pi / 2).any())
     (51, 63, False)
     """
-    amax = positive_float("alpha_max", alpha_max)
-    h = positive_float("step", step)
+    amax = as_positive(alpha_max, "alpha_max")
+    h = as_positive(step, "step")
     n_a = int(np.floor(amax / h + 1e-9)) + 1
     n_t = int(np.floor(2 * np.pi / h + 1e-9)) + 1
     return np.arange(n_a) * h, -np.pi + np.arange(n_t) * h
@@ -249,11 +236,12 @@ class Theorem4Audit:
 
 
 def _random_pair_scenes(n: int, seed: int):
-    """``n`` random two-sensor scenes ``(sensors (2, 2), target (2,), u_max)``, scales 1e-2 .. 1e2."""
+    """``n`` random two-sensor scenes ``(sensors (2, 2), target (2,), u_max)``, scales 1e-2 ..
+    1e2."""
     from ..scenes import random_scenes
 
-    return [(sc.sensors, sc.target, sc.u_max)
-            for sc in random_scenes(n, seed, n_sensors=(2, 2), scale=(1e-2, 1e2), kinds=("generic",))]
+    scenes = random_scenes(n, seed, n_sensors=(2, 2), scale=(1e-2, 1e2), kinds=("generic",))
+    return [(sc.sensors, sc.target, sc.u_max) for sc in scenes]
 
 
 @lru_cache(maxsize=8)
@@ -288,8 +276,8 @@ def theorem4_audit(
 
     from .. import symbolic as sy
 
-    n_rat = positive_int("n_rational_points", n_rational_points)
-    n_rand = positive_int("n_random_points", n_random_points)
+    n_rat = as_int(n_rational_points, "n_rational_points", 1)
+    n_rand = as_int(n_random_points, "n_random_points", 1)
     res = sy.theorem4_residuals()
     polar_ok = all(e == 0 for e in res["polar matrix"])
     eig_ok = all(
@@ -432,7 +420,7 @@ def theorem5_audit(
 
     from .. import symbolic as sy
 
-    qs = tuple(float(positive_float("u_over_d", q, allow_zero=True)) for q in u_over_d)
+    qs = tuple(float(as_nonnegative(q, "u_over_d")) for q in u_over_d)
     if not qs:
         raise ValueError("u_over_d must list at least one value")
     alpha, theta = fine_grid(alpha_max, alpha_per_unit, theta_quarter)
@@ -498,7 +486,7 @@ def theta_derivative_audit(n_rational_points: int, seed: int) -> ThetaDerivative
 
     from .. import symbolic as sy
 
-    n = positive_int("n_rational_points", n_rational_points)
+    n = as_int(n_rational_points, "n_rational_points", 1)
     a, th, q = sy.ALPHA, sy.THETA, sy.Q
     closed_ok = sy.closed_forms_hold()["dtheta"]
     deriv = sy.lambdify_expr(sy.dbound_dtheta_closed(), sy.RATIO_ARGS, "mpmath", cse=True)
@@ -578,7 +566,7 @@ def alpha_derivative_audit(n_rational_points: int, seed: int) -> AlphaDerivative
 
     from .. import symbolic as sy
 
-    n = positive_int("n_rational_points", n_rational_points)
+    n = as_int(n_rational_points, "n_rational_points", 1)
     a, q = sy.ALPHA, sy.Q
     closed_ok = sy.closed_forms_hold()["dalpha"]
     num_ok = sp.expand(sy.stationarity_alpha() - sy.printed_stationarity_alpha()) == 0
@@ -629,7 +617,7 @@ def alpha_star_thetas(n_theta: int) -> np.ndarray:
     >>> (alpha_star_thetas(7) / np.pi).round(4)
     array([0.125, 0.25 , 0.375, 0.625, 0.75 , 0.875])
     """
-    n = positive_int("n_theta", n_theta)
+    n = as_int(n_theta, "n_theta", 1)
     theta = np.pi * (np.arange(1, n + 1) / (n + 1))
     return theta[np.abs(np.cos(theta)) > 1e-3]
 
@@ -669,7 +657,7 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
 
     from .. import symbolic as sy
 
-    qs = tuple(float(positive_float("u_over_d", q, allow_zero=True)) for q in u_over_d)
+    qs = tuple(float(as_nonnegative(q, "u_over_d")) for q in u_over_d)
     theta = alpha_star_thetas(n_theta)
     coarse = np.linspace(0.0, 10.0, 1001)
     local = 1e-4 * np.arange(-50, 51)

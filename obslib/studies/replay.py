@@ -14,7 +14,7 @@ and every entry the replay's pairs read must be known.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache, lru_cache
 
 import numpy as np
 
@@ -229,7 +229,7 @@ def compare_replay(name: str) -> ReplayComparison:
     return _compare_replay(_check_name(name))
 
 
-@lru_cache(maxsize=None)
+@cache
 def _compare_replay(name: str) -> ReplayComparison:
     pub = published_run(name)
     n = _replayable_steps(name)

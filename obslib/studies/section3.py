@@ -13,9 +13,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .._validate import check_scene_batch
 from ..bounds import lower_bounds, worst_case_controls
 from ..observability import inverse_condition_numbers, inverse_condition_numbers_polar
-from ..scenes import check_batch, random_scene_batch
+from ..scenes import random_scene_batch
 
 __all__ = [
     "Theorem1Audit",
@@ -164,13 +165,14 @@ def theorem3_audit(n_trials: int, seed: int) -> Theorem3Audit:
     r"""Check Theorem 3 and the condition printed in its proof on random configurations.
 
     Each trial draws a "before" and an "after" set of 2-4 sensors, uniform in a square of
-    half-side :math:`10^{U(-1, 1)}` around a target at the origin, and a speed :math:`u \sim U(0, 2)`. The
-    theorem's condition ("stated") is that both :math:`C^{-1}(O(o))` and :math:`\sigma_{\min}(O(o))` do
-    not decrease; the proof's Eq. (27) ("printed") asks instead for the ratio not to decrease
-    and :math:`\lambda'_{\min} \ge \lambda_{\max}`. Also counted: each half of the stated condition alone,
-    and the weaker condition of Remark 2 (:math:`T_1 + T_2 \ge 0`), which is necessary and sufficient.
-    All trials are drawn and evaluated at once (``eigvalsh`` of the stacked 2x2 matrices
-    :math:`O(o)^T O(o)`); a witness is the first trial, in draw order, of its row.
+    half-side :math:`10^{U(-1, 1)}` around a target at the origin, and a speed
+    :math:`u \sim U(0, 2)`. The theorem's condition ("stated") is that both :math:`C^{-1}(O(o))` and
+    :math:`\sigma_{\min}(O(o))` do not decrease; the proof's Eq. (27) ("printed") asks instead for
+    the ratio not to decrease and :math:`\lambda'_{\min} \ge \lambda_{\max}`. Also counted: each
+    half of the stated condition alone, and the weaker condition of Remark 2
+    (:math:`T_1 + T_2 \ge 0`), which is necessary and sufficient. All trials are drawn and evaluated
+    at once (``eigvalsh`` of the stacked 2x2 matrices :math:`O(o)^T O(o)`); a witness is the first
+    trial, in draw order, of its row.
 
     Examples
     --------
@@ -187,7 +189,7 @@ def theorem3_audit(n_trials: int, seed: int) -> Theorem3Audit:
     u = rng.uniform(0, 2, size=T)
     valid = np.arange(4) < counts_n[..., None]  # (T, 2, 4)
     flat = np.where(valid[..., None], sensors, np.nan).reshape(2 * T, 4, 2)
-    check_batch(flat, np.zeros((2 * T, 2)), counts_n.reshape(-1))
+    check_scene_batch(flat, np.zeros((2 * T, 2)), counts_n.reshape(-1))
     rows = np.where(valid[..., None], -sensors, 0.0)  # o - p_i with o = 0, zero padding
     lam = np.linalg.eigvalsh(np.swapaxes(rows, -1, -2) @ rows)  # (T, 2, 2)
     u2 = u**2
@@ -246,10 +248,11 @@ def remark1_audit(n_scenes: int, seed: int, n_radii: int = 8, n_angles: int = 64
     For every scene: the exact :math:`C^{-1}` of the stationary target (:math:`O(o, 0)`, zero
     row included) against the bound in eigenvalue form with :math:`u_{\max} = 0` (``eigvalsh`` of
     :math:`O(o)^T O(o)`; compared as squares, since a tiny :math:`\lambda_{\min}` is only known to
-    :math:`\varepsilon \lambda_{\max}`); the exact :math:`C^{-1}` at the worst-case control (norm :math:`u_{\max}` along
-    the principal eigenvector) against the bound (SVD); and the minimum of the exact value
-    over a polar grid of the disc (:func:`obslib.controls.disc_controls`), which can only approach the bound
-    from above. All scenes at once, with the batched functions of :func:`theorem1_audit`.
+    :math:`\varepsilon \lambda_{\max}`); the exact :math:`C^{-1}` at the worst-case control (norm
+    :math:`u_{\max}` along the principal eigenvector) against the bound (SVD); and the minimum of
+    the exact value over a polar grid of the disc (:func:`obslib.controls.disc_controls`), which can
+    only approach the bound from above. All scenes at once, with the batched functions of
+    :func:`theorem1_audit`.
 
     Examples
     --------

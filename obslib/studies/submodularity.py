@@ -13,8 +13,8 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..measures import MEASURES, measures_from_vectors, subset_masks
 from ..bound_tables import lower_bound_set_function, lower_bound_tables
+from ..measures import MEASURES, measures_from_vectors, subset_masks
 from ..submodularity import (
     ATOL,
     MAX_GROUND_SET,

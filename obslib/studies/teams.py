@@ -18,9 +18,24 @@ from .._validate import as_eps, check_maximisable
 from ..bounds import relative_vectors
 from ..measures import MEASURES, measure_from_vectors, subset_masks
 from ..sweep import run_sweep
-from ..teams import MAXIMISABLE, best_team_labelling, greedy_team_assignment, greedy_team_counts, greedy_team_picks
+from ..teams import (
+    MAXIMISABLE,
+    best_team_labelling,
+    greedy_team_assignment,
+    greedy_team_counts,
+    greedy_team_picks,
+)
 
-__all__ = ["fig9_geometry", "fig9_trial", "fig9_trials", "fig9_sweep", "random_spread", "Evenness", "evenness", "greedy_vs_optimal_teams"]
+__all__ = [
+    "fig9_geometry",
+    "fig9_trial",
+    "fig9_trials",
+    "fig9_sweep",
+    "random_spread",
+    "Evenness",
+    "evenness",
+    "greedy_vs_optimal_teams",
+]
 
 
 def fig9_geometry(n_sensors, trial, seed, n_targets, side):
@@ -72,8 +87,12 @@ def fig9_trials(n_sensors: int, trials, seed: int, n_targets: int = 5, measure: 
     array([20, 20])
     """
     geoms = [fig9_geometry(n_sensors, t, seed, n_targets, side) for t in trials]
-    return greedy_team_counts(np.array([g[0] for g in geoms]).reshape(-1, n_sensors, 2),
-                              np.array([g[1] for g in geoms]).reshape(-1, n_targets, 2), measure, eps)
+    return greedy_team_counts(
+        np.array([g[0] for g in geoms]).reshape(-1, n_sensors, 2),
+        np.array([g[1] for g in geoms]).reshape(-1, n_targets, 2),
+        measure,
+        eps,
+    )
 
 
 def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: str = "logdet",
@@ -92,8 +111,15 @@ def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: st
     """
     N_values = [int(n) for n in N_values]
     tasks = [
-        dict(n_sensors=n, trials=list(range(trials)), seed=seed, n_targets=n_targets, measure=measure, eps=eps,
-             side=side)
+        dict(
+            n_sensors=n,
+            trials=list(range(trials)),
+            seed=seed,
+            n_targets=n_targets,
+            measure=measure,
+            eps=eps,
+            side=side,
+        )
         for n in N_values
     ]
     counts = run_sweep(fig9_trials, tasks, backend, n_jobs, scheduler, progress)
@@ -152,8 +178,15 @@ def evenness(counts, N_values, n_targets: int) -> Evenness:
     return Evenness(fair, within, baseline, within / baseline, float(dev.max()), z)
 
 
-def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets=(1, 3),
-                            measure: str = "logdet", eps: float = 1.0, side: float = 100.0) -> np.ndarray:
+def greedy_vs_optimal_teams(
+    n_instances: int,
+    seed: int,
+    sensors=(3, 7),
+    targets=(1, 3),
+    measure: str = "logdet",
+    eps: float = 1.0,
+    side: float = 100.0,
+) -> np.ndarray:
     """Greedy / exact optimum of Problem 2 on tiny random instances (array of ratios).
 
     Instances are drawn one after the other (``N``, then ``L``, then sensors and targets); those of
@@ -178,15 +211,21 @@ def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets
     out = np.ones(n_instances)
     for n, L in sorted({(d[0], d[1]) for d in draws}):
         idx = [k for k, d in enumerate(draws) if d[:2] == (n, L)]
-        V = np.stack([relative_vectors(draws[k][2], draws[k][3]) for k in idx])  # (K, N, L, 2), validated
-        tables = [measure_from_vectors(V[:, :, l, :], subset_masks(n), measure, e) for l in range(L)]  # (K, 2^N)
+        V = np.stack(
+            [relative_vectors(draws[k][2], draws[k][3]) for k in idx]
+        )  # (K, N, L, 2), validated
+        tables = [
+            measure_from_vectors(V[:, :, l, :], subset_masks(n), measure, e) for l in range(L)
+        ]  # (K, 2^N)
         bits = 1 << np.arange(n, dtype=np.int64)
         opt = best_team_labelling(np.stack(tables))[1]
         picks_i, picks_l = greedy_team_picks(np.stack([draws[k][2] for k in idx]),
                                              np.stack([draws[k][3] for k in idx]), measure, e)
         g = np.zeros(len(idx))
         for l in range(L):
-            g += np.take_along_axis(tables[l], (np.where(picks_l == l, bits[picks_i], 0)).sum(axis=1)[:, None], 1)[:, 0]
+            g += np.take_along_axis(
+                tables[l], (np.where(picks_l == l, bits[picks_i], 0)).sum(axis=1)[:, None], 1
+            )[:, 0]
         with np.errstate(divide="ignore", invalid="ignore"):
             out[idx] = np.where(opt > 0, g / opt, 1.0)
     return out

@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import tracking as tr
+from .._validate import as_instance, as_int
 from ..controls import disc_controls
 from ..tracking import BatchResult, TrackingResult, TrackingSetup
 
@@ -141,9 +142,9 @@ def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> di
     >>> bool(np.isclose(ps[0]["mean_error"], e, rtol=1e-9))
     True
     """
-    tr.check_setup(setup)
-    n_seeds = tr.check_count(n_seeds, "n_seeds")
-    first_seed = tr.check_seed(first_seed, "first_seed")
+    as_instance(setup, tr.TrackingSetup, "setup")
+    n_seeds = as_int(n_seeds, "n_seeds", 1)
+    first_seed = as_int(first_seed, "first_seed", 0)
     seeds = range(first_seed, first_seed + n_seeds)
     return partner_summary(tr.simulate_many(partner_arms(setup), seeds=seeds))
 
@@ -307,9 +308,9 @@ def adversary_variants(setup: TrackingSetup, n_radii: int, n_angles: int) -> dic
     >>> list(v), len(v["disc"].controls), v["disc, next-pair"].adversary
     (['paper', 'next-pair', 'disc', 'disc, next-pair'], 9, 'next-pair')
     """
-    tr.check_setup(setup)
-    disc = disc_controls(setup.u_max, tr.check_count(n_radii, "n_radii"),
-                         tr.check_count(n_angles, "n_angles"))
+    as_instance(setup, tr.TrackingSetup, "setup")
+    disc = disc_controls(setup.u_max, as_int(n_radii, "n_radii", 1),
+                         as_int(n_angles, "n_angles", 1))
     return {
         "paper": setup,
         "next-pair": setup.replace(adversary="next-pair"),
@@ -341,7 +342,7 @@ def entrapment_summary(batch: BatchResult) -> dict:
     ...  s["max_from_start"] <= s["reach"])
     (2, True, True)
     """
-    batch.true_icn, batch.objective  # computed once for all runs
+    _ = (batch.true_icn, batch.objective)  # computed once for all runs
     es = [tr.entrapment(batch.run(b)) for b in range(batch.n_runs)]
     return {
         "entrapped": float(np.mean([tr.is_entrapped(e) for e in es])),

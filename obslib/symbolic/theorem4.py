@@ -15,17 +15,38 @@ the paper as residuals that are 0 exactly when the two agree.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
 from ._common import (
-    ALPHA, CARTESIAN_ARGS, D_IO, D_JO, OX, OY, PIX, PIY, PJX, PJY, Q, THETA, THETA_I, THETA_J, U,
-    _COS2, _D, _N,
+    _COS2,
+    _D,
+    _N,
+    ALPHA,
+    CARTESIAN_ARGS,
+    D_IO,
+    D_JO,
+    OX,
+    OY,
+    PIX,
+    PIY,
+    PJX,
+    PJY,
+    THETA,
+    THETA_I,
+    THETA_J,
+    Q,
+    U,
 )  # fmt: skip
 from .gram import (
-    discriminant_cartesian, eigenvalues, polar_eigenvalues, polar_gram, printed_eigenvalues,
-    printed_polar_gram, pythagorean_remainder,
+    discriminant_cartesian,
+    eigenvalues,
+    polar_eigenvalues,
+    polar_gram,
+    printed_eigenvalues,
+    printed_polar_gram,
+    pythagorean_remainder,
 )  # fmt: skip
 
 __all__ = [
@@ -78,7 +99,7 @@ def pull_out_of_roots(expr: sp.Expr) -> sp.Expr:
     )
 
 
-@lru_cache(maxsize=None)
+@cache
 def polar_ratio() -> sp.Expr:
     r""":math:`\lambda_{\min} / (\lambda_{\max} + u^2)` of :func:`polar_eigenvalues` after
     :func:`ratio_substitution`: :math:`d_{io}^2` leaves the square root
@@ -150,7 +171,7 @@ def _ratio_values(v: dict, hypot, atan2) -> dict:
     return {ALPHA: dj / di, THETA: atan2(vjy, vjx) - atan2(viy, vix), Q: v[U] / di}
 
 
-@lru_cache(maxsize=None)
+@cache
 def theorem4_residuals() -> dict[str, sp.Expr]:
     r"""Every comparison of the derivation of Theorem 4 with the paper, as a residual that is 0
     exactly when the two agree (computed once).
@@ -202,7 +223,7 @@ def theorem4_radicand() -> sp.Expr:
     return 1 + ALPHA**4 + 2 * ALPHA**2 * _COS2
 
 
-@lru_cache(maxsize=None)
+@cache
 def theorem4_bound(squared: bool = False) -> sp.Expr:
     r"""Theorem 4 (Eq. (9)) in :math:`\alpha`, :math:`\theta = \theta_{ji}` and
     :math:`q = u / d_{io}`.

@@ -31,12 +31,12 @@ prints a few readable lines and, last, one JSON object.
     trivial notebooks the same way, the fixed cost of a kernel per notebook, each one just
     before a notebook; ``exec_over_floor`` their ratio (target <= 3). ``stack_floor_s``: as many
     minimal notebooks of this book, each importing the stack every notebook starts with
-    (matplotlib, NumPy, pandas, myst-nb's ``glue``, ``obslib``, :func:`obslib.notebook.setup_figures`)
-    and showing one small figure; ``stack_over_floor`` is what that start costs before any
-    content, and ``exec_over_stack`` what the notebooks cost over it (a regression guard: at
-    most 2.5). The notebooks also run ``jobs`` at a time as ``make book`` runs them
-    (``--jobs``, default the cores available), in groups of similar length, each group right
-    after its notebooks ran alone: ``parallel_s`` sums the groups' wall times and
+    (matplotlib, NumPy, pandas, myst-nb's ``glue``, ``obslib``,
+    :func:`obslib.notebook.setup_figures`) and showing one small figure; ``stack_over_floor`` is
+    what that start costs before any content, and ``exec_over_stack`` what the notebooks cost over
+    it (a regression guard: at most 2.5). The notebooks also run ``jobs`` at a time as ``make book``
+    runs them (``--jobs``, default the cores available), in groups of similar length, each group
+    right after its notebooks ran alone: ``parallel_s`` sums the groups' wall times and
     ``parallel_speedup`` is ``exec_s`` over it (target at least 1.6 on two cores).
     ``--profile quick`` runs the notebooks at the ``quick`` profile's tiny sizes instead: what
     the same notebooks, figures and derivations cost with almost no computation.
@@ -57,9 +57,16 @@ import time
 import numpy as np
 
 __all__ = [
-    "one_pass", "bench_assignment", "bench_book", "bench_criteria", "bench_scaling", "evaluation_counts", "literal_count",
+    "one_pass",
+    "bench_assignment",
+    "bench_book",
+    "bench_criteria",
+    "bench_scaling",
+    "evaluation_counts",
+    "literal_count",
     "COUNTED",
-    "SCALING_SIZES", "main",
+    "SCALING_SIZES",
+    "main",
 ]
 
 #: Sizes ``N`` at which :func:`bench_scaling` times each algorithm (``L = N / 2``).
@@ -155,7 +162,10 @@ def literal_count(n_sensors: int, n_targets: int) -> int:
     >>> literal_count(4, 2)  # 6 pairs x 2 targets, then 1 pair x 1 target
     13
     """
-    return sum((n_sensors - 2 * r) * (n_sensors - 2 * r - 1) // 2 * (n_targets - r) for r in range(n_targets))
+    return sum(
+        (n_sensors - 2 * r) * (n_sensors - 2 * r - 1) // 2 * (n_targets - r)
+        for r in range(n_targets)
+    )
 
 
 #: Algorithms :func:`evaluation_counts` can run.
@@ -207,11 +217,14 @@ def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l
 
     S2, T2 = rng.uniform(0, 100, (n_small, 2)), rng.uniform(0, 100, (l_small, 2))
     _say(f"greedy from geometry, N={n_small} L={l_small}, best of 3")
-    small_s, g2 = _timed(lambda: greedy_pair_assignment(sensors=S2, targets=T2, u_max=1.0), repeat=3)
+    small_s, g2 = _timed(
+        lambda: greedy_pair_assignment(sensors=S2, targets=T2, u_max=1.0), repeat=3
+    )
     _say(f"greedy      N={n_small} L={l_small}: {small_s:8.3f} s")
     _say(f"literal Algorithm 1, N={n_small} L={l_small} (every remaining triple, every round)")
-    literal_s, lit = _timed(lambda: greedy_pair_assignment_literal(sensors=S2, targets=T2, u_max=1.0,
-                                                                   progress=True))
+    literal_s, lit = _timed(
+        lambda: greedy_pair_assignment_literal(sensors=S2, targets=T2, u_max=1.0, progress=True)
+    )
     if lit.triples != g2.triples:
         raise AssertionError("the greedy and the literal algorithm disagree")
     _say(f"literal     N={n_small} L={l_small}: {literal_s:8.2f} s")
@@ -239,7 +252,9 @@ def bench_scaling(seed: int = 0, repeat: int = 3) -> dict:
     algos = {
         "greedy (geometry)": lambda S, T: a.greedy_pair_assignment(sensors=S, targets=T, u_max=1.0),
         "greedy (from W)": lambda S, T: a.greedy_pair_assignment(pair_bounds(S, T, 1.0)),
-        "literal Algorithm 1": lambda S, T: a.greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0),
+        "literal Algorithm 1": lambda S, T: a.greedy_pair_assignment_literal(
+            sensors=S, targets=T, u_max=1.0
+        ),
         "relaxed matching": lambda S, T: a.relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0),
         "exact optimum": lambda S, T: a.optimal_pair_assignment(pair_bounds(S, T, 1.0)),
     }
@@ -279,7 +294,9 @@ def _machine() -> str:
             cpu = f"{models[0]} ({cpu})"
     except OSError:  # not Linux: the architecture only
         pass
-    return f"{cpu}, {os.cpu_count()} cores, Python {platform.python_version()}, numpy {np.__version__}"
+    return (
+        f"{cpu}, {os.cpu_count()} cores, Python {platform.python_version()}, numpy {np.__version__}"
+    )
 
 
 def bench_criteria(n_timing: int = 1000, seed: int = 0, repeat: int = 3) -> dict:
@@ -458,10 +475,16 @@ def parse_args(argv=None) -> argparse.Namespace:
 
     ap = argparse.ArgumentParser(prog="python -m obslib.bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("which", choices=["assignment", "book", "criteria", "scaling"], help="benchmark to run")
+    ap.add_argument(
+        "which", choices=["assignment", "book", "criteria", "scaling"], help="benchmark to run"
+    )
     ap.add_argument("--write", help="scaling, criteria: also write the JSON to this file")
-    ap.add_argument("--profile", default="paper", choices=profile_names(),
-                    help="book: parameter profile of the notebooks (default: paper, their defaults)")
+    ap.add_argument(
+        "--profile",
+        default="paper",
+        choices=profile_names(),
+        help="book: parameter profile of the notebooks (default: paper, their defaults)",
+    )
     ap.add_argument("--jobs", type=int, default=None,
                     help="book: notebooks side by side in the parallel runs (default: the cores)")
     ap.add_argument("--sensors", type=int, help="assignment: only the greedy from geometry, with "
@@ -484,7 +507,8 @@ def parse_args(argv=None) -> argparse.Namespace:
 
 
 def _check_assignment_size(ap, args) -> None:
-    """``--sensors N --targets L``: both or neither, for the assignment benchmark, ``N >= 2L >= 2``."""
+    """``--sensors N --targets L``: both or neither, for the assignment benchmark,
+    ``N >= 2L >= 2``."""
     given = (args.sensors is not None, args.targets is not None)
     if not any(given):
         return

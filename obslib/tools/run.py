@@ -52,6 +52,7 @@ __all__ = [
 ]
 
 from . import ROOT  # noqa: E402  the checkout obslib is installed from
+
 NOTEBOOK_DIR = ROOT / "notebooks"
 RUNS_DIR = ROOT / "_build" / "runs"
 TIMES_FILE = ROOT / "_build" / "execution_times.json"
@@ -427,7 +428,7 @@ def _record(run: Run, seconds: float) -> None:
         "overrides": run.overrides,  # the -p values
         "injected": run.parameters,  # the profile's and the -p values, injected by papermill
         "parameters": {**declared_parameters(run.notebook), **run.parameters},  # all of them
-        "finished": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+        "finished": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
         "seconds": round(seconds, 2),
     }
     run.dst.parent.mkdir(parents=True, exist_ok=True)  # the runner's own folder under _build/

@@ -11,17 +11,18 @@ engine's run of the same seed.
 from __future__ import annotations
 
 import dataclasses
-from typing import Iterable
+from collections.abc import Iterable
 
 import numpy as np
 
-from .adversary import adversary_moves, control_basis
-from .choosers import PairChooser, candidates, check_strategy, fixed_pair_bound, pair_draws
+from .._validate import ArgumentTypeError, as_choice, as_float_array, as_int, as_noise_table
 from . import kalman
+from .adversary import adversary_moves, control_basis
+from .choosers import NAMES, PairChooser, candidates, fixed_pair_bound, pair_draws
 from .ekf import singular_update_message
 from .model import circle_truth, pair_index
 from .results import BatchResult, TrackingResult, derived_arrays
-from .setup import TrackingSetup, check_count, check_noise, check_seed, noise_table
+from .setup import TrackingSetup, noise_table
 
 __all__ = ["simulate_many", "simulate_batch", "monte_carlo"]
 
@@ -222,7 +223,7 @@ def _check_arms(arms) -> dict:
             raise ValueError(
                 f"arm {name!r}: setup must be a TrackingSetup, got {type(setup).__name__}"
             )
-        check_strategy(strategy)
+        as_choice(strategy, NAMES, "strategy")
     return arms
 
 
@@ -230,13 +231,14 @@ def _check_seeds(seeds, noise):
     if (seeds is None) == (noise is None):
         raise ValueError("give either seeds or noise tables")
     if noise is not None:
-        given = np.asarray(noise, dtype=float)
+        given = as_float_array(noise, "noise")
         if given.ndim != 3:
             raise ValueError(f"noise must have shape (B, steps, N), got {given.shape}")
         return (), given
     if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
-        raise TypeError(f"seeds must be an iterable of non-negative integers, got {seeds!r}")
-    seeds = tuple(check_seed(x, "each seed") for x in seeds)
+        raise ArgumentTypeError(
+            f"seeds must be an iterable of non-negative integers, got {seeds!r}")
+    seeds = tuple(as_int(x, "each seed", 0) for x in seeds)
     if not seeds:
         raise ValueError("seeds is empty")
     return seeds, None
@@ -357,7 +359,7 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
                 drawn[tkey] = np.stack([noise_table(base, x) for x in seeds])
             tables = drawn[tkey]
         else:
-            tables = np.stack([check_noise(base, t) for t in given])
+            tables = np.stack([as_noise_table(t, (base.steps, base.n_sensors)) for t in given])
         B = tables.shape[0]
         cand = np.concatenate([np.tile(candidates(*arms[n]), (B, 1)) for n in names])
         maha = np.repeat([arms[n][0].metric == "mahalanobis" for n in names], B)
@@ -412,7 +414,7 @@ def simulate_batch(setup: TrackingSetup, strategy: str, seeds=None, noise=None) 
     >>> b.n_runs, b.run(0).pairs[:2].tolist()
     (2, [[3, 5], [3, 5]])
     """
-    check_strategy(strategy)
+    as_choice(strategy, NAMES, "strategy")
     return simulate_many({strategy: (setup, strategy)}, seeds=seeds, noise=noise)[strategy]
 
 
@@ -447,15 +449,15 @@ def monte_carlo(
     >>> bool((mc["random"].noise == mc["best-pair"].noise).all())
     True
     """
-    n_seeds = check_count(n_seeds, "n_seeds")
-    batch = check_count(batch, "batch")
-    first_seed = check_seed(first_seed, "first_seed")
+    n_seeds = as_int(n_seeds, "n_seeds", 1)
+    batch = as_int(batch, "batch", 1)
+    first_seed = as_int(first_seed, "first_seed", 0)
     if isinstance(strategies, str):
-        raise TypeError(f"strategies must be a list of names, got the string {strategies!r}; "
-                        f"write [{strategies!r}]")
+        raise ArgumentTypeError(f"strategies must be a list of names, got the string "
+                                f"{strategies!r}; write [{strategies!r}]")
     strategies = list(strategies)
     for s in strategies:
-        check_strategy(s)
+        as_choice(s, NAMES, "strategy")
     if not strategies:
         return {}
     seeds = list(range(first_seed, first_seed + n_seeds))

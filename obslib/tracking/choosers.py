@@ -64,6 +64,7 @@ from __future__ import annotations
 import numpy as np
 
 from .._kernels import pair_kernel
+from .._validate import as_choice, as_covariances, as_instance
 from .model import inverse_condition, pair_index
 
 __all__ = [
@@ -73,7 +74,6 @@ __all__ = [
     "pair_draws",
     "information_scores",
     "icn_scores",
-    "check_strategy",
     "candidates",
     "mahalanobis_sq",
     "scaled_rows",
@@ -91,26 +91,6 @@ CRITERIA = ("d-optimal", "a-optimal", "e-optimal", "exact-icn", "random")
 
 #: Every name :func:`~obslib.tracking.simulate` and the batch engine accept.
 NAMES = STRATEGIES + CRITERIA
-
-
-def check_strategy(strategy, known=NAMES) -> str:
-    """``strategy`` if it is one of ``known``, else a ValueError (TypeError for a non-string).
-
-    Examples
-    --------
-    >>> from obslib.tracking.choosers import check_strategy
-    >>> check_strategy("d-optimal")
-    'd-optimal'
-    >>> check_strategy("worst-pair")  # doctest: +ELLIPSIS
-    Traceback (most recent call last):
-    ...
-    ValueError: unknown strategy 'worst-pair'; known: ...
-    """
-    if not isinstance(strategy, str):
-        raise TypeError(f"strategy must be a string, one of {known}; got {strategy!r}")
-    if strategy not in known:
-        raise ValueError(f"unknown strategy {strategy!r}; known: {known}")
-    return strategy
 
 
 def candidates(setup, strategy: str) -> np.ndarray:
@@ -514,10 +494,10 @@ def choose_pairs(setup, strategy: str, xhat, cov, control=None):
     [[0, 2], [2, 5], [3, 5]]
     """
     from .._validate import as_points
-    from .setup import check_covariances, check_setup
+    from .setup import MAX_COV_SCALE, TrackingSetup
 
-    check_setup(setup)
-    check_strategy(strategy)
+    as_instance(setup, TrackingSetup, "setup")
+    as_choice(strategy, NAMES, "strategy")
     if strategy == "random":
         raise ValueError("the random chooser has no state-based pick: its picks are "
                          "pair_draws(seed, steps, n_pairs)")
@@ -526,7 +506,7 @@ def choose_pairs(setup, strategy: str, xhat, cov, control=None):
     if cov is None and setup.metric == "euclidean" and strategy in STRATEGIES:
         c = np.broadcast_to(np.eye(2), (b, 2, 2))
     else:
-        c = check_covariances(cov, b)
+        c = as_covariances(cov, b, MAX_COV_SCALE)
     if strategy == "exact-icn":
         if control is None:
             raise ValueError("exact-icn needs the targets' control, shape (B, 2)")

@@ -20,8 +20,9 @@ import numpy as np
 __all__ = ["SINGULAR_RTOL", "SingularInnovation", "innovation_is_regular", "predict", "update"]
 
 #: The update stops with :class:`SingularInnovation` when the innovation covariance
-#: ``S = H P H^T + R`` is singular to this relative precision, ``det S <= SINGULAR_RTOL * S_00 S_11``
-#: (its gain would carry no correct digit); the filterpy engine applies the same test.
+#: ``S = H P H^T + R`` is singular to this relative precision,
+#: ``det S <= SINGULAR_RTOL * S_00 S_11`` (its gain would carry no correct digit); the filterpy
+#: engine applies the same test.
 SINGULAR_RTOL = 1e-13
 
 

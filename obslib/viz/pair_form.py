@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import positive_float
+from .._validate import as_positive
 from .style import OKABE_ITO, SEQUENTIAL, look
 
 __all__ = ["plot_fig1", "plot_fig2"]
@@ -29,8 +29,8 @@ def plot_fig1(
     """
     import matplotlib.pyplot as plt
 
-    d_io = positive_float("d_io", d_io)
-    d_jo = positive_float("d_jo", d_jo)
+    d_io = as_positive(d_io, "d_io")
+    d_jo = as_positive(d_jo, "d_jo")
     if not (np.isfinite(theta_i) and np.isfinite(theta_j)):
         raise ValueError("theta_i and theta_j must be finite")
     if ax is None:
@@ -160,7 +160,8 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     Parameters
     ----------
     alpha, theta : 1-D arrays
-        Grid axes; ``Z`` has shape ``(len(theta), len(alpha))`` (:func:`obslib.pair_form.bound_surface`).
+        Grid axes; ``Z`` has shape ``(len(theta), len(alpha))``
+        (:func:`obslib.pair_form.bound_surface`).
     levels : sequence of float
         Contour levels (Fig. 2: 0.1 ... 0.7).
     title : str

@@ -5,14 +5,19 @@ import numpy as np
 import pytest
 
 import obslib as ob
-from obslib.studies import assignment as st
 from obslib import claims
+from obslib.studies import assignment as st
 
 
 def test_enumerated_optimum_equals_milp():
     rng = np.random.default_rng(0)
     for n, L in [(4, 2), (5, 2), (6, 3), (7, 3), (8, 4)]:
-        Ws = np.stack([ob.pair_bounds(rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (L, 2)), 1.0) for _ in range(5)])
+        Ws = np.stack(
+            [
+                ob.pair_bounds(rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (L, 2)), 1.0)
+                for _ in range(5)
+            ]
+        )
         for W, v in zip(Ws, st.optimal_values(Ws)):
             assert v == pytest.approx(ob.optimal_pair_assignment(W).value, abs=1e-12)
 
@@ -46,17 +51,23 @@ def test_tight_weights_give_one_third():
 def test_search_result_is_what_it_claims():
     r, S, T = st.worst_instance_search(6, 3, seed=3, n_starts=2, n_steps=50)
     W = ob.pair_bounds(S, T, 1.0)
-    assert r == pytest.approx(ob.greedy_pair_assignment(W).value / ob.optimal_pair_assignment(W).value)
+    assert r == pytest.approx(
+        ob.greedy_pair_assignment(W).value / ob.optimal_pair_assignment(W).value
+    )
     assert r >= 1 / 3
 
 
 def test_section_4a_statuses_follow_the_evidence():
     recs = {r.id: r for r in claims.evaluate("quick", ids=["thm6", "thm6-practice"])}
     ev = recs["thm6"].evidence
-    assert recs["thm6"].status == ("reproduced" if min(ev["min_ratio"], ev["worst_search_ratio"]) >= 1 / 3 else "refuted")
+    assert recs["thm6"].status == (
+        "reproduced" if min(ev["min_ratio"], ev["worst_search_ratio"]) >= 1 / 3 else "refuted"
+    )
     assert ev["tight_weights_ratio"] == pytest.approx(1.001 / 3)
     pe = recs["thm6-practice"].evidence
-    expected = "refuted" if pe["quantile_05"] < 0.75 else "reproduced"  # searched layouts: thm6-tight
+    expected = (
+        "refuted" if pe["quantile_05"] < 0.75 else "reproduced"
+    )  # searched layouts: thm6-tight
     assert recs["thm6-practice"].status == expected
 
 
@@ -81,7 +92,9 @@ def test_batch_greedy_and_weights_equal_the_single_instance_functions():
         assert valid.tolist() == [False, False] + [True] * 28
         for k in range(2, 30):
             np.testing.assert_array_equal(W[k], ob.pair_bounds(S[k], T[k], 2.5))
-        np.testing.assert_array_equal(st.greedy_values(W[2:]), [ob.greedy_pair_assignment(w).value for w in W[2:]])
+        np.testing.assert_array_equal(
+            st.greedy_values(W[2:]), [ob.greedy_pair_assignment(w).value for w in W[2:]]
+        )
 
 
 @pytest.mark.parametrize("c", [1e-200, 1e200, 2.0**1000])
