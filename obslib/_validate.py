@@ -29,6 +29,14 @@ __all__ = [
     "as_eps",
     "as_positive",
     "as_nonnegative",
+    "as_real",
+    "as_str",
+    "as_path",
+    "as_names",
+    "as_argv",
+    "as_mapping",
+    "as_callable",
+    "as_sequence",
     "as_rank_rtol",
     "as_measure_name",
     "as_weights",
@@ -426,6 +434,78 @@ def as_nonnegative(value, name: str) -> float:
     if not np.isfinite(x) or x < 0:
         raise ValueError(f"{name} must be finite and non-negative, got {value!r}")
     return x
+
+
+def as_str(value, name: str) -> str:
+    """A string argument (a name, a label, a format); anything else is an
+    :class:`ArgumentTypeError`."""
+    if not isinstance(value, str):
+        raise ArgumentTypeError(f"{name} must be a string, got {value!r}")
+    return value
+
+
+def as_path(value, name: str):
+    """A path argument (``str`` or ``os.PathLike``) as a :class:`pathlib.Path`."""
+    import os
+    from pathlib import Path
+
+    if not isinstance(value, (str, os.PathLike)):
+        raise ArgumentTypeError(f"{name} must be a path, got {value!r}")
+    return Path(value)
+
+
+def as_names(value, name: str, known=None) -> tuple:
+    """A sequence of strings (not one string), each one of ``known`` if given."""
+    if isinstance(value, (str, bytes)) or not isinstance(value, (list, tuple, np.ndarray)):
+        raise ArgumentTypeError(f"{name} must be a list of names, got {value!r}")
+    out = tuple(value.tolist() if isinstance(value, np.ndarray) else value)
+    for v in out:
+        if not isinstance(v, str):
+            raise ArgumentTypeError(f"{name} must be a list of names, got {v!r} in it")
+        if known is not None and v not in known:
+            raise ValueError(f"{name}: unknown name {v!r}; known: {tuple(known)}")
+    return out
+
+
+def as_argv(argv) -> list | None:
+    """A command line (``None``: ``sys.argv[1:]``) as a list of strings."""
+    if argv is None:
+        return None
+    if isinstance(argv, (str, bytes)) or not isinstance(argv, (list, tuple)) or not all(
+            isinstance(a, str) for a in argv):
+        raise ArgumentTypeError(f"argv must be a list of strings, got {argv!r}")
+    return list(argv)
+
+
+def as_mapping(value, name: str) -> dict:
+    """A mapping argument as a ``dict``."""
+    from collections.abc import Mapping
+
+    if not isinstance(value, Mapping):
+        raise ArgumentTypeError(f"{name} must be a mapping, got {value!r}")
+    return dict(value)
+
+
+def as_callable(value, name: str):
+    """A function argument."""
+    if not callable(value):
+        raise ArgumentTypeError(f"{name} must be callable, got {value!r}")
+    return value
+
+
+def as_real(value, name: str) -> float:
+    """A finite real number (any sign)."""
+    x = _as_real(value, name)
+    if not np.isfinite(x):
+        raise ValueError(f"{name} must be finite, got {value!r}")
+    return x
+
+
+def as_sequence(value, name: str) -> list:
+    """A list or tuple argument (not a string), as a list."""
+    if isinstance(value, (str, bytes)) or not isinstance(value, (list, tuple)):
+        raise ArgumentTypeError(f"{name} must be a list, got {value!r}")
+    return list(value)
 
 
 def as_eps(eps) -> float:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validate import as_int, as_nonnegative
+from ._validate import as_float_array, as_int, as_nonnegative
 
 __all__ = ["disc_controls", "disc_mesh"]
 
@@ -79,8 +79,8 @@ def disc_mesh(controls, values, n_radii: int, n_angles: int):
     """
     n_radii = as_int(n_radii, "n_radii", 1)
     n_angles = as_int(n_angles, "n_angles", 1)
-    c = np.asarray(controls, dtype=float)
-    v = np.asarray(values, dtype=float)
+    c = as_float_array(controls, "controls")
+    v = as_float_array(values, "values")
     k = 1 + n_radii * n_angles
     if c.shape != (k, 2) or v.shape != (k,):
         raise ValueError(f"need controls ({k}, 2) and values ({k},), got {c.shape}, {v.shape}")

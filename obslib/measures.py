@@ -124,7 +124,7 @@ def subset_masks(n: int) -> np.ndarray:
 
 
 def _sensors_or_empty(sensors) -> np.ndarray:
-    arr = np.asarray(sensors, dtype=float) if not isinstance(sensors, np.ndarray) else sensors
+    arr = as_float_array(sensors, "sensors") if not isinstance(sensors, np.ndarray) else sensors
     if arr.size == 0:
         return np.zeros((0, 2))
     return arr

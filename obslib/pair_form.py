@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import as_int, as_nonnegative, as_positive
+from ._validate import as_float_array, as_int, as_nonnegative, as_positive
 from .bounds import pair_bound_polar
 
 __all__ = [
@@ -82,8 +82,8 @@ def bound_surface(alpha, theta, u_max: float = 1.0, d_io: float = 1.0) -> np.nda
     array([[0.    , 0.    , 0.    ],
            [0.    , 0.7071, 0.4472]])
     """
-    a = np.asarray(alpha, dtype=float)
-    t = np.asarray(theta, dtype=float)
+    a = as_float_array(alpha, "alpha")
+    t = as_float_array(theta, "theta")
     if a.ndim != 1 or t.ndim != 1 or a.size == 0 or t.size == 0:
         raise ValueError("alpha and theta must be non-empty 1-D arrays")
     u = as_nonnegative(u_max, "u_max")
@@ -111,9 +111,9 @@ def grid_maximum(alpha, theta, Z, atol: float = 1e-12) -> GridMax:
     >>> round(m.value, 6), [(a, round(t / np.pi, 6)) for a, t in m.points]
     (0.707107, [(1.0, -0.5), (1.0, 0.5)])
     """
-    Z = np.asarray(Z, dtype=float)
-    a = np.asarray(alpha, dtype=float)
-    t = np.asarray(theta, dtype=float)
+    Z = as_float_array(Z, "Z")
+    a = as_float_array(alpha, "alpha")
+    t = as_float_array(theta, "theta")
     if Z.shape != (t.size, a.size):
         raise ValueError(
             f"Z must have shape (len(theta), len(alpha)) = {(t.size, a.size)}, got {Z.shape}"
@@ -126,8 +126,8 @@ def grid_maximum(alpha, theta, Z, atol: float = 1e-12) -> GridMax:
 
 # --- Theorem 5: the maximising alpha for a fixed theta -------------------------------------------
 def _check_theta_q(theta, u_over_d):
-    th = np.asarray(theta, dtype=float)
-    q = np.asarray(u_over_d, dtype=float)
+    th = as_float_array(theta, "theta")
+    q = as_float_array(u_over_d, "u_over_d")
     if not np.isfinite(th).all():
         raise ValueError("theta must be finite")
     if not np.isfinite(q).all() or (q < 0).any():
@@ -165,9 +165,9 @@ def stationarity_alpha(alpha, theta, u_over_d):
     0.414214
     -2.876894
     """
-    a = np.asarray(alpha, dtype=float)
-    th = np.asarray(theta, dtype=float)
-    q = np.asarray(u_over_d, dtype=float)
+    a = as_float_array(alpha, "alpha")
+    th = as_float_array(theta, "theta")
+    q = as_float_array(u_over_d, "u_over_d")
     if not (np.isfinite(a).all() and np.isfinite(th).all() and np.isfinite(q).all()):
         raise ValueError("alpha, theta and u_over_d must be finite")
     if (a < 0).any() or (q < 0).any():
@@ -323,8 +323,8 @@ def weyl_2x2_slacks(X, Y) -> dict[str, np.ndarray]:
     l2 >= l2+l1: 0.0
     ratio: 0.8
     """
-    X = np.asarray(X, dtype=float)
-    Y = np.asarray(Y, dtype=float)
+    X = as_float_array(X, "X")
+    Y = as_float_array(Y, "Y")
     if X.shape != Y.shape or X.ndim < 2 or X.shape[-2:] != (2, 2):
         raise ValueError(
             f"X and Y must have the same shape (..., 2, 2), got {X.shape} and {Y.shape}"

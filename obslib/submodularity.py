@@ -57,7 +57,7 @@ from numbers import Real
 
 import numpy as np
 
-from ._validate import as_points, check_distinct
+from ._validate import as_float_array, as_points, check_distinct
 from .measures import subset_masks
 
 __all__ = [
@@ -345,7 +345,7 @@ def _prepare_tables(values, n: int, min_size: int, rtol: float, atol: float):
     """Validate tables for :func:`audit_tables` / :func:`audit_flags`; return ``n, m, v, tol``."""
     n = _ground_size(int(n))
     m = _check_min_size(min_size, n)
-    v = np.asarray(values, dtype=float)
+    v = as_float_array(values, "values")
     if v.ndim == 1:
         v = v[None, :]
     if v.ndim != 2 or v.shape[1] != 2**n:
@@ -643,7 +643,7 @@ def table_values(table) -> dict:
     >>> table_values([0.0, 1.0, 2.0, 4.0])
     {(): 0.0, (0,): 1.0, (1,): 2.0, (0, 1): 4.0}
     """
-    t = np.asarray(table, dtype=float)
+    t = as_float_array(table, "table")
     n = t.size.bit_length() - 1
     if t.ndim != 1 or t.size != 1 << n:
         raise ValueError(f"table must be 1-D of length 2**N, got shape {t.shape}")

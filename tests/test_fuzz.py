@@ -9,14 +9,25 @@ geometry (coincident and collinear points). The whole file runs in well under a 
 from __future__ import annotations
 
 import contextlib
+import dataclasses
+import importlib
+import inspect
 import io
+import pkgutil
+import re
+import signal
 import tempfile
+import warnings
 from pathlib import Path
 from unittest import mock
 
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
 import obslib as ob
@@ -546,3 +557,129 @@ def test_integers_beyond_the_float_range_are_named():
         ob.pair_bounds([[0, 10**400], [1, 1]], [[2, 2]], 1.0)
     with pytest.raises(ValueError, match="u_max has an integer beyond the float range"):
         ob.lower_bound([[0, 0], [1, 1]], [2, 2], 10**400)
+
+
+# --------------------------------------------------------------------------- every public function
+
+
+def _public_functions() -> dict:
+    """Every function in the ``__all__`` of a public module of obslib (no part of its dotted name
+    begins with an underscore), once, under the module that defines it."""
+    found = {}
+    for info in pkgutil.walk_packages(ob.__path__, "obslib."):
+        if any(part.startswith("_") for part in info.name.split(".")[1:]):
+            continue
+        mod = importlib.import_module(info.name)
+        for name in getattr(mod, "__all__", ()):
+            obj = getattr(mod, name)
+            if inspect.isfunction(inspect.unwrap(obj)):
+                found.setdefault(f"{obj.__module__}.{obj.__qualname__}", obj)
+    return found
+
+
+PUBLIC = _public_functions()
+
+#: Wrong types and wrong values, one of which is given to one argument at a time.
+HOSTILE = [None, True, "x", 1 + 1j, np.nan, -np.inf, -1, 2.5, 0, [], [[np.nan, 0.0]],
+           np.zeros((2, 3)), np.array(["a", "b"]), {"a": 1}, object()]
+
+#: Where an argument's error may be named by a part of it: an entry or a row of an array
+#: (``sensor 1 ...``, ``W[0, 1, 0] ...``, ``cov 0 ...``, ``each seed ...``).
+ALIASES = {"sensors": ("sensor",), "targets": ("target",), "strategies": ("strategy",),
+           "seeds": ("seed",), "values": ("value", "f("), "names": ("measure", "name"),
+           "masks": ("mask",), "kinds": ("kind",), "ids": ("id",), "counts": ("count", "scene"),
+           "profile": ("profile",), "notebook": ("notebook",), "u": ("control",)}
+
+
+def _names(fn) -> list[str]:
+    return [p.name for p in inspect.signature(fn).parameters.values()
+            if p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
+
+
+def _named(message: str, names) -> bool:
+    low = message.lower()
+    return any(re.search(rf"(?<![a-z_]){re.escape(w.lower())}", low)
+               for n in names for w in (n, *ALIASES.get(n, ())))
+
+
+def _has_nan(x, depth=0) -> bool:
+    if depth > 4:
+        return False
+    if isinstance(x, float):
+        return x != x
+    if isinstance(x, np.ndarray) and x.dtype.kind in "fc":
+        return bool(np.isnan(x).any())
+    if isinstance(x, dict):
+        return any(_has_nan(v, depth + 1) for v in x.values())
+    if isinstance(x, (list, tuple)):
+        return any(_has_nan(v, depth + 1) for v in x[:50])
+    if dataclasses.is_dataclass(x) and not isinstance(x, type):
+        return any(_has_nan(getattr(x, f.name), depth + 1) for f in dataclasses.fields(x))
+    return False
+
+
+class _Hang(Exception):
+    pass
+
+
+@contextlib.contextmanager
+def _time_limit(seconds: int):
+    """A call that takes longer than ``seconds`` is stopped with :class:`_Hang`."""
+    def stop(signum, frame):
+        raise _Hang(f"no answer within {seconds} s")
+
+    old = signal.signal(signal.SIGALRM, stop)
+    signal.alarm(seconds)
+    try:
+        yield
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, old)
+
+
+def _raised_in(exc: BaseException) -> str:
+    """The file of the innermost frame of ``exc``'s traceback."""
+    tb = exc.__traceback__
+    while tb.tb_next is not None:
+        tb = tb.tb_next
+    return tb.tb_frame.f_code.co_filename
+
+
+LIBRARY = (str(Path(ob.__file__).parent), str(Path(ob.__file__).parents[1] / "obsbook"))
+
+
+def test_every_public_function_is_found():
+    # the enumeration reaches every layer, so a new public function cannot be left out
+    for expected in ("obslib.bounds.lower_bound", "obslib.tracking.ekf.simulate",
+                     "obslib.studies.tracking.partner_study", "obslib.claims.robustness.",
+                     "obslib.viz.tracking.", "obslib.tools.run.", "obslib.profiles.params",
+                     "obslib.symbolic.theorem4.", "obslib.scenes.random_scenes"):
+        assert any(k.startswith(expected) for k in PUBLIC), expected
+    assert len(PUBLIC) > 250
+
+
+@pytest.mark.parametrize("qualname", sorted(k for k, f in PUBLIC.items() if _names(f)))
+@settings(max_examples=12, deadline=None, derandomize=True, phases=(Phase.generate,),
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(data=st.data())
+def test_public_function_refuses_a_wrong_argument_by_name(qualname, data, tmp_path, monkeypatch):
+    # Every argument gets a wrong type or value (one of HOSTILE), so the call must refuse: a
+    # ValueError (ArgumentTypeError is one) raised by the library itself, naming one of the
+    # function's arguments; or, where every such value happens to be accepted, a result
+    # without NaN. Never another exception, a hang, or an error from inside NumPy.
+    fn = PUBLIC[qualname]
+    monkeypatch.chdir(tmp_path)  # a path argument "x" is written here, not in the checkout
+    names = _names(fn)
+    args = {n: data.draw(st.sampled_from(HOSTILE), label=n) for n in names}
+    try:
+        with _time_limit(30), warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            out = fn(**args)
+    except ValueError as exc:
+        where = _raised_in(exc)
+        assert where.startswith(LIBRARY), f"{qualname}: raised inside {where}: {exc!r}"
+        assert _named(str(exc), names), f"{qualname}: the error names no argument: {exc!r}"
+    else:
+        assert not _has_nan(out), f"{qualname}({args}) returned NaN: {out!r}"
+    finally:
+        plt.close("all")

@@ -19,7 +19,7 @@ from itertools import combinations
 import numpy as np
 
 from .._kernels import normalise, pair_kernel
-from .._validate import as_u_max, check_distinct, check_not_on_targets
+from .._validate import as_float_array, as_u_max, check_distinct, check_not_on_targets
 from ..assignment import greedy_pairs_batch
 
 __all__ = [
@@ -88,7 +88,7 @@ MAX_DP_SENSORS = 16
 
 
 def _as_batch(W) -> np.ndarray:
-    W = np.asarray(W, dtype=float)
+    W = as_float_array(W, "W")
     if W.ndim != 4 or W.shape[1] != W.shape[2]:
         raise ValueError(f"W must be a batch of weight arrays of shape (K, N, N, L), got {W.shape}")
     k, n, _, n_targets = W.shape
@@ -179,8 +179,8 @@ def batch_pair_bounds(sensors, targets, u_max) -> tuple[np.ndarray, np.ndarray]:
     >>> W.shape, valid, bool(np.array_equal(W[0], ob.pair_bounds(S[0], T[0], 1.0)))
     ((1, 4, 4, 2), array([ True]), True)
     """
-    S = np.asarray(sensors, dtype=float)
-    T = np.asarray(targets, dtype=float)
+    S = as_float_array(sensors, "sensors")
+    T = as_float_array(targets, "targets")
     if S.ndim != 3 or T.ndim != 3 or S.shape[2] != 2 or T.shape[2] != 2 or S.shape[0] != T.shape[0]:
         raise ValueError(
             f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}"
@@ -356,7 +356,7 @@ def charging(W, greedy_triples, optimal_triples) -> list[dict]:
     >>> [(r["pick"], len(r["charged"])) for r in rounds]
     [((0, 1, 0), 3), ((2, 3, 1), 0), ((4, 5, 2), 0)]
     """
-    W = np.asarray(W, dtype=float)
+    W = as_float_array(W, "W")
     left = list(optimal_triples)
     rounds = []
     for i, j, l in greedy_triples:

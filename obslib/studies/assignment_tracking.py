@@ -50,6 +50,7 @@ import numpy as np
 
 from .. import tracking as tr
 from .._kernels import pair_kernel
+from .._validate import as_float_array
 from ..assignment import greedy_pairs_batch
 from ..tracking import kalman
 
@@ -339,7 +340,7 @@ def batch_greedy(W) -> np.ndarray:
     True
     True
     """
-    W = np.asarray(W, dtype=float)
+    W = as_float_array(W, "W")
     ii, jj = np.triu_indices(W.shape[1], 1)
     return _greedy_upper(W[:, ii, jj], W.shape[1])
 

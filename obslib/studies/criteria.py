@@ -33,6 +33,7 @@ import numpy as np
 
 from .. import tracking as tr
 from .._kernels import inverse_condition, pair_kernel
+from .._validate import as_float_array
 from . import assignment_tracking as at
 
 __all__ = [
@@ -144,9 +145,9 @@ def criterion_scores(name: str, sensors, xhat, cov, Q, R, u_max, control=None,
     """
     if name not in SCORES:
         raise ValueError(f"unknown criterion {name!r}; known: {SCORES}")
-    S = np.asarray(sensors, dtype=float)
-    x = np.atleast_2d(np.asarray(xhat, dtype=float))
-    C = np.asarray(cov, dtype=float).reshape(-1, 2, 2)
+    S = as_float_array(sensors, "sensors")
+    x = np.atleast_2d(as_float_array(xhat, "xhat"))
+    C = as_float_array(cov, "cov").reshape(-1, 2, 2)
     if S.ndim != 2 or S.shape[1] != 2 or S.shape[0] < 2:
         raise ValueError(f"sensors must have shape (N, 2) with N >= 2, got {S.shape}")
     if x.shape[1] != 2 or C.shape[0] != x.shape[0]:
@@ -154,7 +155,7 @@ def criterion_scores(name: str, sensors, xhat, cov, Q, R, u_max, control=None,
     if name == "exact-icn":
         if control is None:
             raise ValueError("exact-icn needs the target's control")
-        u = np.broadcast_to(np.asarray(control, dtype=float), x.shape)
+        u = np.broadcast_to(as_float_array(control, "control"), x.shape)
     if metric not in ("mahalanobis", "euclidean"):
         raise ValueError(f"metric must be 'mahalanobis' or 'euclidean', got {metric!r}")
     return _scores(name, S, x, C, np.asarray(Q, float), np.asarray(R, float), float(u_max),
@@ -222,8 +223,8 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
     """
     from scipy import stats  # 0.6 s to import: only where a test is computed
 
-    a = np.asarray(reference, dtype=float)
-    b = np.asarray(other, dtype=float)
+    a = as_float_array(reference, "reference")
+    b = as_float_array(other, "other")
     if a.shape != b.shape or a.ndim != 1 or a.size < 2:
         raise ValueError(
             f"need two equal-length 1-D samples of at least 2 runs, got {a.shape}, {b.shape}"

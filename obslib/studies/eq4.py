@@ -25,6 +25,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from .._validate import as_float_array
 from ..bounds import lower_bound, lower_bounds, pair_bounds
 from ..observability import relative_rows
 
@@ -54,7 +55,7 @@ def _u_max(u_max) -> float:
 
 def _control(u) -> np.ndarray:
     try:
-        a = np.asarray(u, dtype=float)
+        a = as_float_array(u, "u")
     except (TypeError, ValueError):
         raise ValueError(f"u must be a 2-vector, got {u!r}") from None
     if a.shape != (2,) or not np.isfinite(a).all():
@@ -239,7 +240,7 @@ def bound_ratios(rows, counts, u_max) -> tuple[np.ndarray, np.ndarray]:
     True
     """
     um = _u_max(u_max)
-    r = np.asarray(rows, dtype=float)
+    r = as_float_array(rows, "rows")
     n = np.asarray(counts)
     if r.ndim != 3 or r.shape[-1] != 2 or n.shape != r.shape[:1] or not np.isfinite(r).all():
         raise ValueError(f"rows must be finite (n_scenes, rows, 2) with one count per scene, "

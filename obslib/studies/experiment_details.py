@@ -25,6 +25,7 @@ import numpy as np
 
 from .. import tracking as tr
 from .._kernels import normalise, pair_kernel
+from .._validate import as_float_array
 from ..bounds import pair_bounds
 from ..controls import disc_controls
 from ..published_runs import published_run
@@ -45,12 +46,12 @@ def whiten(points, cov) -> np.ndarray:
     >>> whiten([[2.0, 1.0]], np.diag([4.0, 1.0])).round(12).tolist()
     [[1.0, 1.0]]
     """
-    c = np.asarray(cov, dtype=float)
+    c = as_float_array(cov, "cov")
     if c.shape != (2, 2) or not np.allclose(c, c.T) or np.linalg.eigvalsh(c)[0] <= 0:
         raise ValueError(f"cov must be a symmetric positive-definite 2x2 matrix, got {c.tolist()}")
     lam, V = np.linalg.eigh(c)
     inv_sqrt = V @ np.diag(lam**-0.5) @ V.T
-    return np.asarray(points, dtype=float) @ inv_sqrt.T
+    return as_float_array(points, "points") @ inv_sqrt.T
 
 
 def _best_per_target(W) -> np.ndarray:

@@ -15,6 +15,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from .._validate import as_float_array
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..bounds import pair_bounds
 from . import assignment as st
@@ -174,8 +175,8 @@ def jitter_ratios(sensors, targets, fractions, n_draws: int, seed: int = 0, u_ma
     >>> r.shape, bool(np.allclose(r[0], first_pick_margin(S, T)["ratio"]))
     ((2, 3), True)
     """
-    S = np.asarray(sensors, dtype=float)
-    T = np.asarray(targets, dtype=float)
+    S = as_float_array(sensors, "sensors")
+    T = as_float_array(targets, "targets")
     if S.ndim != 2 or S.shape[1] != 2 or T.ndim != 2 or T.shape[1] != 2:
         raise ValueError(f"need sensors (N, 2) and targets (L, 2), got {S.shape} and {T.shape}")
     if S.shape[0] < 2 * T.shape[0] or T.shape[0] < 1:
@@ -184,7 +185,7 @@ def jitter_ratios(sensors, targets, fractions, n_draws: int, seed: int = 0, u_ma
         )
     if not (np.isfinite(S).all() and np.isfinite(T).all()):
         raise ValueError("sensor and target positions must be finite")
-    f = np.asarray(fractions, dtype=float).reshape(-1)
+    f = as_float_array(fractions, "fractions").reshape(-1)
     if f.size == 0 or not np.isfinite(f).all() or (f < 0).any():
         raise ValueError(f"fractions must be non-negative finite numbers, got {fractions!r}")
     if isinstance(n_draws, bool) or not isinstance(n_draws, (int, np.integer)) or n_draws < 1:
@@ -210,7 +211,7 @@ def jitter_summary(ratios, fractions) -> list[dict]:
     >>> row["median"], row["min"], row["below_half"], round(row["q05"], 12)
     (0.75, 0.5, 0.0, 0.525)
     """
-    r = np.asarray(ratios, dtype=float)
+    r = as_float_array(ratios, "ratios")
     rows = []
     for frac, row in zip(fractions, r):
         v = row[np.isfinite(row)]

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validate import as_eps, check_maximisable
+from .._validate import as_eps, as_float_array, check_maximisable
 from ..bounds import relative_vectors
 from ..measures import MEASURES, measure_from_vectors, subset_masks
 from ..sweep import run_sweep
@@ -169,7 +169,7 @@ def evenness(counts, N_values, n_targets: int) -> Evenness:
     (array([4., 5.]), True)
     """
     C = np.asarray(counts)
-    fair = np.asarray(N_values, dtype=float) / n_targets
+    fair = as_float_array(N_values, "N_values") / n_targets
     dev = np.abs(C.mean(axis=1) - fair[:, None])
     se = C.std(axis=1, ddof=1) / np.sqrt(C.shape[1]) if C.shape[1] > 1 else np.zeros(dev.shape)
     z = dev / np.where(se > 0, se, np.inf)

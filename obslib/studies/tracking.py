@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import tracking as tr
-from .._validate import as_instance, as_int
+from .._validate import as_float_array, as_instance, as_int
 from ..controls import disc_controls
 from ..tracking import BatchResult, TrackingResult, TrackingSetup
 
@@ -50,7 +50,7 @@ def near_published(ours, published, rtol: float = FIGURE_TOLERANCE):
     >>> near_published([0.70, 0.60], 0.79).tolist()
     [True, False]
     """
-    ours = np.asarray(ours, dtype=float)
+    ours = as_float_array(ours, "ours")
     if published == 0:
         return ours == 0
     return np.abs(ours - published) <= rtol * abs(published)
@@ -232,7 +232,7 @@ def hot_windows(rate, window=K50_WINDOW, level=None) -> list:
     """
     lo, hi = window
     width = hi - lo
-    rate = np.asarray(rate, dtype=float)
+    rate = as_float_array(rate, "rate")
     if level is None:
         level = window_rates(rate, window)[0]
     roll = np.convolve(rate, np.ones(width) / width, mode="valid")  # roll[m]: k = m+1 .. m+width

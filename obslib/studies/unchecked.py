@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._validate import as_float_array
 from ..bounds import relative_vectors
 from ..observability import inverse_condition_number
 from ..teams import greedy_team_assignment
@@ -46,7 +47,7 @@ def one_sensor_best(distance, u_max):
     >>> one_sensor_best([0.5, 2.0], 1.0).tolist()
     [1.0, 0.5]
     """
-    d = np.asarray(distance, dtype=float)
+    d = as_float_array(distance, "distance")
     u_max = float(u_max)
     if not (np.isfinite(d).all() and (d > 0).all()):
         raise ValueError("distances must be positive and finite")

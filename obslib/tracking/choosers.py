@@ -64,7 +64,7 @@ from __future__ import annotations
 import numpy as np
 
 from .._kernels import pair_kernel
-from .._validate import as_choice, as_covariances, as_instance
+from .._validate import as_choice, as_covariances, as_float_array, as_instance
 from .model import inverse_condition, pair_index
 
 __all__ = [
@@ -256,8 +256,8 @@ class PairChooser:
         # the criteria's rows; their bound, like the single candidates', is evaluated afterwards
         self.criteria = [(c, np.flatnonzero(kinds == c)) for c in CRITERIA if (kinds == c).any()]
         self.deferred = np.flatnonzero(~by_bound | (counts == 1))
-        self.Q = None if Q is None else np.asarray(Q, dtype=float)
-        self.W = None if R is None else np.linalg.inv(np.asarray(R, dtype=float))
+        self.Q = None if Q is None else as_float_array(Q, "Q")
+        self.W = None if R is None else np.linalg.inv(as_float_array(R, "R"))
         self.draws = draws
 
     def __call__(self, xx, xy, p00, p01, p10, p11, control=None, k: int = 0):
@@ -420,7 +420,7 @@ def icn_scores(hx, hy, control, ii, jj) -> np.ndarray:
     stack = np.empty((M, P, 3, 2))
     stack[:, :, 0, 0], stack[:, :, 0, 1] = hx[:, ii], hy[:, ii]
     stack[:, :, 1, 0], stack[:, :, 1, 1] = hx[:, jj], hy[:, jj]
-    stack[:, :, 2, :] = np.asarray(control, dtype=float)[:, None, :]
+    stack[:, :, 2, :] = as_float_array(control, "control")[:, None, :]
     return inverse_condition(stack)
 
 
@@ -435,7 +435,7 @@ def _icn_picks(hx, hy, control, ii, jj) -> np.ndarray:
     and only they get :func:`icn_scores`'s exact value; the first exact maximum wins, as
     ``argmax``. Rows with a non-finite ratio or extreme lengths get every pair's exact
     value. (200 estimates x 15 pairs: 0.3 ms against 1.0 ms.)"""
-    u = np.asarray(control, dtype=float)
+    u = as_float_array(control, "control")
     ux, uy = u[:, 0, None], u[:, 1, None]
     with np.errstate(all="ignore"):  # extreme scales: such rows take the exact path below
         cu = hx * uy - hy * ux  # h_k x u, (M, N)
@@ -501,7 +501,7 @@ def choose_pairs(setup, strategy: str, xhat, cov, control=None):
     if strategy == "random":
         raise ValueError("the random chooser has no state-based pick: its picks are "
                          "pair_draws(seed, steps, n_pairs)")
-    x = as_points(np.atleast_2d(np.asarray(xhat, dtype=float)), "xhat")
+    x = as_points(np.atleast_2d(as_float_array(xhat, "xhat")), "xhat")
     b = x.shape[0]
     if cov is None and setup.metric == "euclidean" and strategy in STRATEGIES:
         c = np.broadcast_to(np.eye(2), (b, 2, 2))
@@ -510,7 +510,7 @@ def choose_pairs(setup, strategy: str, xhat, cov, control=None):
     if strategy == "exact-icn":
         if control is None:
             raise ValueError("exact-icn needs the targets' control, shape (B, 2)")
-        u = as_points(np.atleast_2d(np.asarray(control, dtype=float)), "control")
+        u = as_points(np.atleast_2d(as_float_array(control, "control")), "control")
         if u.shape[0] != b:
             raise ValueError(f"control must have one row per estimate ({b}), got {u.shape[0]}")
     else:

@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _kernels
+from .._validate import as_float_array
 from ..bounds import relative_vectors
 
 __all__ = [
@@ -59,8 +60,8 @@ def half_squared_range(x, pair_sensors) -> np.ndarray:
     >>> half_squared_range([1.0, 2.0], [[0.0, 0.0], [4.0, 6.0]]).tolist()
     [2.5, 12.5]
     """
-    x = np.asarray(x, dtype=float)
-    ps = np.asarray(pair_sensors, dtype=float)
+    x = as_float_array(x, "x")
+    ps = as_float_array(pair_sensors, "pair_sensors")
     if x.shape == (2, 1):
         d = ps - x[:, 0]
         return (0.5 * (d[:, 0] ** 2 + d[:, 1] ** 2))[:, None]
@@ -76,8 +77,8 @@ def range_jacobian(x, pair_sensors) -> np.ndarray:
     >>> range_jacobian([1.0, 2.0], [[0.0, 0.0], [4.0, 6.0]]).tolist()
     [[1.0, 2.0], [-3.0, -4.0]]
     """
-    x = np.asarray(x, dtype=float)
-    ps = np.asarray(pair_sensors, dtype=float)
+    x = as_float_array(x, "x")
+    ps = as_float_array(pair_sensors, "pair_sensors")
     if x.shape == (2, 1):
         return x[:, 0][None, :] - ps
     return x[..., None, :] - ps
@@ -139,7 +140,7 @@ def inverse_condition(rows) -> np.ndarray:
     >>> inverse_condition(rows).round(12).tolist()
     [0.5, 0.0]
     """
-    return _kernels.inverse_condition(np.asarray(rows, dtype=float))
+    return _kernels.inverse_condition(as_float_array(rows, "rows"))
 
 
 def target_objective(pair_sensors, position, controls) -> np.ndarray:
@@ -166,9 +167,9 @@ def target_objective(pair_sensors, position, controls) -> np.ndarray:
     ...                  [[0.0, 0.0], [0.1, 0.0]]).round(4)
     array([1.    , 0.9512])
     """
-    ps = np.asarray(pair_sensors, dtype=float)
-    o = np.asarray(position, dtype=float)
-    u = np.asarray(controls, dtype=float)
+    ps = as_float_array(pair_sensors, "pair_sensors")
+    o = as_float_array(position, "position")
+    u = as_float_array(controls, "controls")
     nxt = o[..., None, :] + u  # (..., K, 2)
     rows = nxt[..., :, None, :] - ps[..., None, :, :]  # (..., K, 2, 2)
     uu = np.broadcast_to(u, nxt.shape)[..., None, :]  # (..., K, 1, 2)

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._kernels import pair_series
+from .._validate import as_float_array
 from .results import BatchResult, TrackingResult
 
 __all__ = [
@@ -62,7 +63,7 @@ def clearly_lower(a, b, rtol: float = TIE_RTOL) -> np.ndarray:
     >>> clearly_lower([1.0, 1.0], [2.0, 1.0 + 1e-12]).tolist()
     [True, False]
     """
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    a, b = as_float_array(a, "a"), as_float_array(b, "b")
     return a < b - rtol * np.maximum(np.abs(a), np.abs(b))
 
 
@@ -151,8 +152,8 @@ def spearman(a, b, axis: int = -1) -> np.ndarray:
     """
     from scipy import stats  # 0.6 s to import: not at ``import obslib``
 
-    ra = stats.rankdata(np.asarray(a, dtype=float), axis=axis)
-    rb = stats.rankdata(np.asarray(b, dtype=float), axis=axis)
+    ra = stats.rankdata(as_float_array(a, "a"), axis=axis)
+    rb = stats.rankdata(as_float_array(b, "b"), axis=axis)
     return _pearson(ra, rb, axis)
 
 
@@ -262,10 +263,10 @@ def mirror_point(points, a, b) -> np.ndarray:
     >>> mirror_point([1.0, 1.0], [0.0, 0.0], [2.0, 0.0]).tolist()
     [1.0, -1.0]
     """
-    a = np.asarray(a, dtype=float)
-    d = np.asarray(b, dtype=float) - a
+    a = as_float_array(a, "a")
+    d = as_float_array(b, "b") - a
     d = d / np.hypot(*d)
-    v = np.asarray(points, dtype=float) - a
+    v = as_float_array(points, "points") - a
     return a + 2 * (v @ d)[..., None] * d - v
 
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import as_positive
+from .._validate import as_float_array, as_positive
 from .style import OKABE_ITO, SEQUENTIAL, look
 
 __all__ = ["plot_fig1", "plot_fig2"]
@@ -83,7 +83,7 @@ def _ray_hits(cs, start, direction) -> list:
     """For each level of the contour set ``cs``, the distance along the ray from ``start`` in
     the unit ``direction`` (data units) to its first crossing of that level's lines, or None
     where the ray never crosses them."""
-    d = np.asarray(direction, dtype=float)
+    d = as_float_array(direction, "direction")
     hits = []
     for path in cs.get_paths():
         best = None
@@ -113,8 +113,8 @@ def _label_along_ray(ax, cs, start, direction, box_in, fontsize: float = 10.0,
     between labelled ones. Levels the ray never crosses, or crosses less than a text height
     from the axes' edge, are labelled where matplotlib puts them.
     """
-    start = np.asarray(start, dtype=float)
-    d = np.asarray(direction, dtype=float) / np.hypot(*direction)
+    start = as_float_array(start, "start")
+    d = as_float_array(direction, "direction") / np.hypot(*direction)
     x0, x1 = ax.get_xlim()
     y0, y1 = ax.get_ylim()
     per_unit = np.array([box_in[0] / (x1 - x0), box_in[1] / (y1 - y0)])  # inches per data unit
@@ -195,9 +195,9 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
 
     if panels not in ("all", "contour"):
         raise ValueError(f"panels must be 'all' or 'contour', got {panels!r}")
-    a = np.asarray(alpha, dtype=float)
-    t = np.asarray(theta, dtype=float)
-    Z = np.asarray(Z, dtype=float)
+    a = as_float_array(alpha, "alpha")
+    t = as_float_array(theta, "theta")
+    Z = as_float_array(Z, "Z")
     if Z.shape != (t.size, a.size):
         raise ValueError(f"Z must have shape {(t.size, a.size)}, got {Z.shape}")
     A, T = np.meshgrid(a, t)

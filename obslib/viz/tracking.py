@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._validate import as_float_array
 from .style import LOOKS, PUBLISHED_STYLE, REPLAY_STYLE, look
 
 __all__ = [
@@ -49,10 +50,10 @@ def cov_ellipse(mean, cov, chi2: float = CHI2_2DOF_9973, n: int = 100) -> np.nda
     >>> e.shape, bool(np.allclose(e[:, 0] ** 2 / 4 + e[:, 1] ** 2, 1.0))
     ((50, 2), True)
     """
-    w, v = np.linalg.eigh(np.asarray(cov, dtype=float))
+    w, v = np.linalg.eigh(as_float_array(cov, "cov"))
     t = np.linspace(0, 2 * np.pi, n)
     circle = np.column_stack([np.cos(t), np.sin(t)])
-    return np.asarray(mean, dtype=float) + (circle * np.sqrt(chi2 * np.clip(w, 0, None))) @ v.T
+    return as_float_array(mean, "mean") + (circle * np.sqrt(chi2 * np.clip(w, 0, None))) @ v.T
 
 
 _SUBSCRIPT = str.maketrans("0123456789", "".join(chr(0x2080 + d) for d in range(10)))
@@ -91,7 +92,7 @@ def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
     ['s₁', 's₂']
     >>> plt.close(fig)
     """
-    s = np.asarray(sensors, dtype=float)
+    s = as_float_array(sensors, "sensors")
     ax.plot(*s.T, **look("sensor").kw(ms=ms, label=label or "_sensors"))
     ax.set_ymargin(max(ax.get_ymargin(), 0.12))
     for n, p in enumerate(s):
@@ -373,7 +374,7 @@ def animation_html(anim, uid: str = "anim") -> str:
 
 def _float_array(name: str, a, ndim: tuple) -> np.ndarray:
     try:
-        out = np.asarray(a, dtype=float)
+        out = as_float_array(a, "a")
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be an array of numbers") from None
     if out.ndim not in ndim:
