@@ -19,6 +19,7 @@ from ._kernels import mahalanobis_rescale
 
 __all__ = [
     "ArgumentTypeError",
+    "MissingFileError",
     "as_float_array",
     "as_points",
     "as_point",
@@ -37,6 +38,7 @@ __all__ = [
     "as_mapping",
     "as_callable",
     "as_sequence",
+    "broadcast",
     "as_rank_rtol",
     "as_measure_name",
     "as_weights",
@@ -60,6 +62,11 @@ __all__ = [
     "vectors_between",
     "MAX_WEIGHT_BYTES",
 ]
+
+
+class MissingFileError(FileNotFoundError, ValueError):
+    """A path argument that names no file: both a :class:`FileNotFoundError` and, like every
+    other bad input of the library, a :class:`ValueError`."""
 
 
 class ArgumentTypeError(TypeError, ValueError):
@@ -444,14 +451,18 @@ def as_str(value, name: str) -> str:
     return value
 
 
-def as_path(value, name: str):
-    """A path argument (``str`` or ``os.PathLike``) as a :class:`pathlib.Path`."""
+def as_path(value, name: str, exists: bool = False):
+    """A path argument (``str`` or ``os.PathLike``) as a :class:`pathlib.Path`; with ``exists``,
+    the path of an existing file (else :class:`MissingFileError`)."""
     import os
     from pathlib import Path
 
     if not isinstance(value, (str, os.PathLike)):
         raise ArgumentTypeError(f"{name} must be a path, got {value!r}")
-    return Path(value)
+    path = Path(value)
+    if exists and not path.is_file():
+        raise MissingFileError(f"{name} {path}: no such file")
+    return path
 
 
 def as_names(value, name: str, known=None) -> tuple:
@@ -506,6 +517,15 @@ def as_sequence(value, name: str) -> list:
     if isinstance(value, (str, bytes)) or not isinstance(value, (list, tuple)):
         raise ArgumentTypeError(f"{name} must be a list, got {value!r}")
     return list(value)
+
+
+def broadcast(arrays: dict) -> list:
+    """The arrays ``{name: array}`` broadcast to one shape, or a ValueError naming them."""
+    try:
+        return np.broadcast_arrays(*arrays.values())
+    except ValueError:
+        shapes = ", ".join(f"{k} {np.shape(v)}" for k, v in arrays.items())
+        raise ValueError(f"the shapes of {shapes} do not broadcast together") from None
 
 
 def as_eps(eps) -> float:

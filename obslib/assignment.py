@@ -36,11 +36,13 @@ from . import _exact_pairs as exact_pairs
 from ._kernels import pair_kernel
 from ._pair_search import GeometryHeads, PairSearch, keep_top, target_rows
 from ._validate import (
+    ArgumentTypeError,
     as_bool,
     as_float_array,
     as_int,
     as_points,
     as_positive,
+    as_sequence,
     as_weights,
     check_pair_sizes,
     check_weight_memory,
@@ -82,7 +84,18 @@ def assignment_value(W, triples) -> float:
     0.25
     """
     W = as_float_array(W, "W")
-    return float(sum(W[i, j, l] for i, j, l in triples))
+    if W.ndim != 3 or W.shape[0] != W.shape[1]:
+        raise ValueError(f"W must have shape (N, N, L), got {W.shape}")
+    total = 0.0
+    for t in as_sequence(triples, "triples"):
+        if (len(t) != 3 if isinstance(t, (tuple, list)) else True) or not all(
+                isinstance(a, (int, np.integer)) and not isinstance(a, bool) for a in t):
+            raise ArgumentTypeError(f"triples must be (i, j, l) of integers, got {t!r}")
+        i, j, l = t
+        if not (0 <= i < W.shape[0] and 0 <= j < W.shape[0] and 0 <= l < W.shape[2]):
+            raise ValueError(f"triples: {t!r} is outside W of shape {W.shape}")
+        total += float(W[i, j, l])
+    return total
 
 
 # --------------------------------------------------------------------------------------------

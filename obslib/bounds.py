@@ -26,6 +26,7 @@ from ._validate import (
     as_stack,
     as_u_max,
     as_u_max_stack,
+    broadcast,
     check_weight_memory,
     validated_vectors,
     vectors_between,
@@ -202,6 +203,7 @@ def pair_bound_polar(alpha, theta, u_over_d):
             raise ValueError(f"{name} must be finite")
         if nonneg and (x < 0).any():
             raise ValueError(f"{name} must be non-negative")
+    a, th, q = broadcast({"alpha": a, "theta": th, "u_over_d": q})
     # The bound is homogeneous of degree 0 in (d_io, d_jo, u_max) = d_io (1, alpha, u/d): for
     # alpha beyond the safe range, divide all three by a power of two m (exact), so that alpha^2
     # cannot overflow; b = 1/m is then the first length (b = 1 and the plain formula otherwise).

@@ -59,6 +59,7 @@ from ._validate import (
     as_float_array,
     as_int,
     as_measure_name,
+    as_names,
     as_point,
     as_rank_rtol,
 )
@@ -210,8 +211,7 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
         raise ArgumentTypeError(
             f"names must be a sequence of measure names, not the string {names!r}"
         )
-    for name in names:
-        _check_name(name)
+    names = as_names(names, "names", MEASURES)
     e = as_eps(eps)
     r = as_rank_rtol(rank_rtol)
     v = as_float_array(vectors, "vectors")

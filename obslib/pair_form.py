@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import as_float_array, as_int, as_nonnegative, as_positive
+from ._validate import as_float_array, as_int, as_nonnegative, as_positive, broadcast
 from .bounds import pair_bound_polar
 
 __all__ = [
@@ -136,7 +136,7 @@ def _check_theta_q(theta, u_over_d):
         raise ValueError(
             "theta = 0 or pi (mod 2 pi): the bound is 0 for every alpha, so there is no maximiser"
         )
-    return np.broadcast_arrays(th, q)
+    return broadcast({"theta": th, "u_over_d": q})
 
 
 def stationarity_alpha(alpha, theta, u_over_d):
@@ -223,7 +223,7 @@ def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):
     array([1., 1.])
     """
     th, q = _check_theta_q(theta, u_over_d)
-    th, q = np.broadcast_arrays(th, q)
+    xtol = as_positive(xtol, "xtol")
     shape = th.shape
     th, q = th.ravel(), q.ravel()
     out = np.ones(th.size)

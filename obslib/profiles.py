@@ -37,6 +37,8 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
+from ._validate import MissingFileError, as_mapping, as_path, as_str
+
 __all__ = ["PROFILES", "RANGES", "CONSTRAINTS", "Range", "Choice", "File", "Constraint",
            "notebook_dir", "defaults", "parameter_cell", "params", "profile_names",
            "check_parameters"]
@@ -311,12 +313,15 @@ def parameter_cell(path) -> dict:
     >>> parameter_cell(notebook_dir() / "05_two_sensors_tracking.ipynb")["metric"]
     'mahalanobis'
     """
-    path = Path(path)
+    path = as_path(path, "path", exists=True)
     st = path.stat()
     key = (st.st_mtime_ns, st.st_size)
     if path in _CELLS and _CELLS[path][0] == key:
         return copy.deepcopy(_CELLS[path][1])
-    cells = json.loads(path.read_text())["cells"]
+    try:
+        cells = json.loads(path.read_text())["cells"]
+    except (ValueError, KeyError, TypeError, UnicodeDecodeError):
+        raise ValueError(f"path {path}: not a notebook (no JSON with cells)") from None
     tagged = [c for c in cells if "parameters" in c.get("metadata", {}).get("tags", [])]
     if len(tagged) != 1 or tagged[0]["cell_type"] != "code":
         raise ValueError(f"{path.name}: needs exactly one code cell tagged 'parameters'")
@@ -343,11 +348,11 @@ def defaults(notebook: str) -> dict:
     >>> defaults("05_two_sensors_tracking")["n_seeds"]
     200
     """
-    if notebook not in RANGES:
+    if as_str(notebook, "notebook") not in RANGES:
         raise ValueError(f"no parameters for notebook {notebook!r}; known: {list(RANGES)}")
     path = notebook_dir() / f"{notebook}.ipynb"
     if not path.exists():
-        raise FileNotFoundError(f"{path} is missing: its parameters cell holds the paper's values")
+        raise MissingFileError(f"{path} is missing: its parameters cell holds the paper's values")
     return parameter_cell(path)
 
 
@@ -372,7 +377,7 @@ def params(notebook: str, profile: str = "paper") -> dict:
     >>> params("05_two_sensors_tracking", "quick")["n_seeds"]
     20
     """
-    if profile not in PROFILES:
+    if as_str(profile, "profile") not in PROFILES:
         raise ValueError(f"unknown profile {profile!r}; known: {profile_names()}")
     out = defaults(notebook)
     out.update(copy.deepcopy(PROFILES[profile].get(notebook, {})))
@@ -485,8 +490,10 @@ def check_parameters(notebook: str, values: dict, defaults: dict | None = None) 
     ...
     ValueError: notebook 05_two_sensors_tracking: ...; expected an integer >= 1
     """
+    values = as_mapping(values, "values")
     if defaults is None:
         defaults = globals()["defaults"](notebook)
+    defaults = as_mapping(defaults, "defaults")
     unknown = sorted(set(values) - set(defaults))
     if unknown:
         raise ValueError(f"notebook {notebook} has no parameter(s) {unknown}; "

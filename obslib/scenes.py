@@ -24,7 +24,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import ArgumentTypeError, as_float_array, as_int, check_scene_batch
+from ._validate import (
+    ArgumentTypeError,
+    as_float_array,
+    as_instance,
+    as_int,
+    as_positive,
+    as_str,
+    check_scene_batch,
+)
 
 __all__ = [
     "Scene",
@@ -66,10 +74,11 @@ def random_scene(
     >>> s.sensors.shape, s.kind
     ((3, 2), 'generic')
     """
-    if kind not in SCENE_KINDS:
+    rng = as_instance(rng, np.random.Generator, "rng")
+    if as_str(kind, "kind") not in SCENE_KINDS:
         raise ValueError(f"kind must be one of {SCENE_KINDS}, got {kind!r}")
-    if n_sensors < 1:
-        raise ValueError(f"n_sensors must be at least 1, got {n_sensors}")
+    n_sensors = as_int(n_sensors, "n_sensors", 1)
+    scale = as_positive(scale, "scale")
     target = rng.uniform(-scale, scale, size=2)
     if kind == "generic":
         offsets = rng.uniform(-scale, scale, size=(n_sensors, 2))

@@ -57,7 +57,14 @@ from numbers import Real
 
 import numpy as np
 
-from ._validate import as_float_array, as_points, check_distinct
+from ._validate import (
+    as_callable,
+    as_float_array,
+    as_int,
+    as_nonnegative,
+    as_points,
+    check_distinct,
+)
 from .measures import subset_masks
 
 __all__ = [
@@ -149,8 +156,7 @@ def _ground_size(ground) -> int:
 
 
 def _check_min_size(min_size, n: int) -> int:
-    if not isinstance(min_size, (int, np.integer)) or isinstance(min_size, bool) or min_size < 0:
-        raise ValueError(f"min_size must be a non-negative integer, got {min_size!r}")
+    min_size = as_int(min_size, "min_size", 0)
     if min_size > n:
         raise ValueError(f"min_size {min_size} exceeds the ground set size {n}")
     return int(min_size)
@@ -324,8 +330,7 @@ def set_function_table(ground, f: Callable[[tuple], float], min_size: int = 0) -
     """
     n = _ground_size(ground)
     m = _check_min_size(min_size, n)
-    if not callable(f):
-        raise ValueError(f"f must be callable, got {type(f).__name__}")
+    as_callable(f, "f")
     pc = _popcount(n)
     out = np.full(2**n, np.nan)
     for k in range(2**n):
@@ -343,8 +348,9 @@ def set_function_table(ground, f: Callable[[tuple], float], min_size: int = 0) -
 
 def _prepare_tables(values, n: int, min_size: int, rtol: float, atol: float):
     """Validate tables for :func:`audit_tables` / :func:`audit_flags`; return ``n, m, v, tol``."""
-    n = _ground_size(int(n))
+    n = _ground_size(as_int(n, "n", 0))
     m = _check_min_size(min_size, n)
+    rtol, atol = as_nonnegative(rtol, "rtol"), as_nonnegative(atol, "atol")
     v = as_float_array(values, "values")
     if v.ndim == 1:
         v = v[None, :]
@@ -644,7 +650,7 @@ def table_values(table) -> dict:
     {(): 0.0, (0,): 1.0, (1,): 2.0, (0, 1): 4.0}
     """
     t = as_float_array(table, "table")
-    n = t.size.bit_length() - 1
+    n = max(t.size.bit_length() - 1, 0)
     if t.ndim != 1 or t.size != 1 << n:
         raise ValueError(f"table must be 1-D of length 2**N, got shape {t.shape}")
     return {_members(k, n): float(t[k]) for k in range(t.size)}

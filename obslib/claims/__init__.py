@@ -17,6 +17,7 @@ depends on the profile. The book's reproduction report is rendered from :func:`e
 Entries live in one submodule per section of the paper, imported below in paper order.
 """
 
+from .._validate import as_instance, as_sequence
 from ._ledger import (
     BEYOND_STATUSES,
     KINDS,
@@ -75,4 +76,7 @@ def as_json(records) -> list[dict]:
     """
     from dataclasses import asdict
 
+    records = as_sequence(records, "records")
+    for r in records:
+        as_instance(r, Record, "each of records")
     return [asdict(r) for r in records]

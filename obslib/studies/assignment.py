@@ -19,7 +19,7 @@ from itertools import combinations
 import numpy as np
 
 from .._kernels import normalise, pair_kernel
-from .._validate import as_float_array, as_u_max, check_distinct, check_not_on_targets
+from .._validate import as_float_array, as_int, as_u_max, check_distinct, check_not_on_targets
 from ..assignment import greedy_pairs_batch
 
 __all__ = [
@@ -38,7 +38,6 @@ __all__ = [
 MAX_ASSIGNMENTS = 200_000
 
 
-@lru_cache(maxsize=32)
 def pair_assignments(n: int, n_targets: int) -> tuple[np.ndarray, np.ndarray]:
     """All ways to give each of ``L`` targets its own pair out of ``N`` sensors, no sensor twice.
 
@@ -60,6 +59,11 @@ def pair_assignments(n: int, n_targets: int) -> tuple[np.ndarray, np.ndarray]:
     [(1, 3), (0, 2)]
     [(2, 3), (0, 1)]
     """
+    return _pair_assignments(as_int(n, "n", 0), as_int(n_targets, "n_targets", 0))
+
+
+@lru_cache(maxsize=32)
+def _pair_assignments(n, n_targets):
     if n < 2 * n_targets or n_targets < 1:
         raise ValueError(f"need L >= 1 and N >= 2L, got N = {n}, L = {n_targets}")
     out = []

@@ -60,10 +60,6 @@ __all__ = [
     "Scenario",
     "AssignmentRuns",
     "scenario",
-    "bound_weights",
-    "info_gain_weights",
-    "batch_greedy",
-    "random_assignments",
     "run",
     "run_all",
 ]
@@ -264,7 +260,7 @@ def bound_weights(sensors, xhat, cov, u_max, metric="mahalanobis") -> np.ndarray
 
 
 def _bound_rows(sensors, xhat, cov, u_max, metric):
-    """The scaled rows ``x, y`` ``(B, N, L)`` of :func:`bound_weights` and their ``u_max^2``
+    """The scaled rows ``x, y`` ``(B, N, L)`` of ``bound_weights`` and their ``u_max^2``
     ``(B, L)``."""
     B, N, L = sensors.shape[0], sensors.shape[1], xhat.shape[1]
     v = xhat[:, :, None, :] - sensors[:, None, :, :]  # (B, L, N, 2)
@@ -276,7 +272,7 @@ def _bound_rows(sensors, xhat, cov, u_max, metric):
 
 def _scaled(v, cov, metric):
     """Rows ``v`` ``(M, K, 2)`` scaled as the tracking engine scales the bound's rows
-    (:func:`obslib.tracking.choosers.scaled_rows`): Mahalanobis lengths in ``cov`` ``(M, 2, 2)``
+    (``choosers.scaled_rows``): Mahalanobis lengths in ``cov`` ``(M, 2, 2)``
     when ``metric`` says so, divided by each estimate's longest row."""
     c = (cov[:, 0, 0], cov[:, 0, 1], cov[:, 1, 0], cov[:, 1, 1])
     maha = np.full(v.shape[0], metric == "mahalanobis")
@@ -346,14 +342,14 @@ def batch_greedy(W) -> np.ndarray:
 
 
 def _upper_bound_weights(sensors, xhat, cov, u_max, metric, ii, jj) -> np.ndarray:
-    """The entries ``W[b, ii[p], jj[p], l]`` of :func:`bound_weights`, ``(B, P, L)``: the same
+    """The entries ``W[b, ii[p], jj[p], l]`` of ``bound_weights``, ``(B, P, L)``: the same
     rows and kernel for the pairs ``i < j`` only (half the kernel's work)."""
     x, y, u2 = _bound_rows(sensors, xhat, cov, u_max, metric)
     return pair_kernel(x[:, ii], y[:, ii], x[:, jj], y[:, jj], u2[:, None, :])
 
 
 def _upper_gain_weights(sensors, xhat, cov_pred, r, ii, jj) -> np.ndarray:
-    """The entries ``G[b, ii[p], jj[p], l]`` of :func:`info_gain_weights`, ``(B, P, L)``, with
+    """The entries ``G[b, ii[p], jj[p], l]`` of ``info_gain_weights``, ``(B, P, L)``, with
     its arithmetic, for the pairs ``i < j`` only."""
     h = xhat[:, None, :, :] - sensors[:, :, None, :]  # (B, N, L, 2)
     hx, hy = h[..., 0] / np.sqrt(r), h[..., 1] / np.sqrt(r)  # (B, N, L)
@@ -472,7 +468,7 @@ class AssignmentRuns:
 
 def _chosen_values(S, x, P, pr, u_max, metric, q, r):
     """The bound and the information gain of the chosen pairs ``pr`` (B, L, 2), each (B, L):
-    the entries of :func:`bound_weights` and :func:`info_gain_weights` at the chosen pairs, up
+    the entries of ``bound_weights`` and ``info_gain_weights`` at the chosen pairs, up
     to rounding, without scoring the other pairs."""
     bb = np.arange(S.shape[0])[:, None]
     ps = S[bb[..., None], pr]  # (B, L, 2, 2)

@@ -25,7 +25,7 @@ import numpy as np
 
 from .. import tracking as tr
 from .._kernels import normalise, pair_kernel
-from .._validate import as_float_array
+from .._validate import as_float_array, as_int
 from ..bounds import pair_bounds
 from ..controls import disc_controls
 from ..published_runs import published_run
@@ -131,7 +131,7 @@ def metric_choices(name: str = "best-pair") -> dict:
 
 def _smallest_objective(ps, o, controls) -> np.ndarray:
     """``target_objective(ps, o, controls).min(axis=-1)``: the objective at the adversary's
-    pick (:func:`~obslib.tracking.adversary.adversary_moves`, the first minimiser), evaluated
+    pick (``adversary.adversary_moves``, the first minimiser), evaluated
     with target_objective's arithmetic for that control only (7201 controls x 315 steps:
     0.013 s against 1.1 s for every control's exact value)."""
     u = controls[adversary_moves(ps, o, controls)]
@@ -180,7 +180,6 @@ def control_set_gap(n_radii: int = 20, n_angles: int = 360) -> dict:
     }
 
 
-@lru_cache(maxsize=4)
 def control_set_entrapment(n_seeds: int, seed: int, n_radii: int, n_angles: int) -> dict:
     """The adversarial experiment (Sec. V-B) over ``n_seeds`` noise seeds from ``seed``, with the
     published controls and with a polar grid of the whole disc: does the ball free the target?
@@ -199,6 +198,16 @@ def control_set_entrapment(n_seeds: int, seed: int, n_radii: int, n_angles: int)
     >>> sorted(d), 0.0 <= d["disc"]["entrapped"] <= 1.0
     (['disc', 'paper'], True)
     """
+    return _control_set_entrapment(
+        as_int(n_seeds, "n_seeds", 1),
+        as_int(seed, "seed", 0),
+        as_int(n_radii, "n_radii", 1),
+        as_int(n_angles, "n_angles", 1),
+    )
+
+
+@lru_cache(maxsize=4)
+def _control_set_entrapment(n_seeds, seed, n_radii, n_angles):
     variants = adversary_variants(tr.PAPER_ADVERSARIAL, n_radii, n_angles)
     seeds = range(seed, seed + n_seeds)
     # both control sets in one batched pass (a run does not depend on the others of its pass)

@@ -13,6 +13,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from .._validate import as_eps, as_int, as_nonnegative
 from ..bound_tables import lower_bound_set_function, lower_bound_tables
 from ..measures import MEASURES, measures_from_vectors, subset_masks
 from ..submodularity import (
@@ -313,7 +314,6 @@ def measure_audit(name: str, n_instances: int, n_sensors: int, seed: int, eps: f
     return _measure_audits((name,), n_instances, n_sensors, seed, eps, u_max, config)[name]
 
 
-@lru_cache(maxsize=8)
 def theorem8_audit(n_instances: int, n_sensors: int, seed: int, eps: float,
                    u_max: float) -> tuple[MeasureAudit, ...]:
     """Every measure of :data:`obslib.measures.MEASURES` under every one of :data:`CONFIGS`.
@@ -329,6 +329,17 @@ def theorem8_audit(n_instances: int, n_sensors: int, seed: int, eps: float,
     ...  sorted({r.measure for r in rows if not r.submodular}))
     (True, ['neg_trace_inverse', 'trace_inverse'])
     """
+    return _theorem8_audit(
+        as_int(n_instances, "n_instances", 1),
+        as_int(n_sensors, "n_sensors", 1),
+        as_int(seed, "seed", 0),
+        as_eps(eps),
+        as_nonnegative(u_max, "u_max"),
+    )
+
+
+@lru_cache(maxsize=8)
+def _theorem8_audit(n_instances, n_sensors, seed, eps, u_max):
     by_config = {c[0]: _measure_audits(MEASURES, n_instances, n_sensors, seed, eps, u_max, c[0])
                  for c in CONFIGS}
     return tuple(by_config[c[0]][name] for name in MEASURES for c in CONFIGS)
@@ -384,7 +395,6 @@ class LowerBoundAudit:
         return asdict(self)
 
 
-@lru_cache(maxsize=8)
 def lower_bound_audit(n_instances: int, n_sensors: int, seed: int, u_max: float,
                       min_size: int = 2) -> LowerBoundAudit:
     """Exhaustive monotonicity/submodularity check of ``omega`` on ``generic`` random instances.
@@ -397,6 +407,17 @@ def lower_bound_audit(n_instances: int, n_sensors: int, seed: int, u_max: float,
     >>> a.n_not_increasing > 0, a.n_not_submodular > 0
     (True, True)
     """
+    return _lower_bound_audit(
+        as_int(n_instances, "n_instances", 1),
+        as_int(n_sensors, "n_sensors", 1),
+        as_int(seed, "seed", 0),
+        as_nonnegative(u_max, "u_max"),
+        as_int(min_size, "min_size", 0),
+    )
+
+
+@lru_cache(maxsize=8)
+def _lower_bound_audit(n_instances, n_sensors, seed, u_max, min_size):
     s, t = random_instances(n_instances, n_sensors, seed, "generic")
     vals = lower_bound_tables(t[:, None, :] - s, u_max)
     fl = audit_flags(vals, n_sensors, min_size)

@@ -50,7 +50,6 @@ class WeylAudit:
     invalid_indices: tuple  #: those with index < 1
 
 
-@lru_cache(maxsize=4)
 def weyl_audit(n_pairs: int, seed: int) -> WeylAudit:
     """Symbolic (triangle inequality) and random checks of Eqs. (18)-(19) for 2x2 matrices.
 
@@ -63,6 +62,11 @@ def weyl_audit(n_pairs: int, seed: int) -> WeylAudit:
     >>> a.invalid_indices
     ((1, 1, 0),)
     """
+    return _weyl_audit(as_int(n_pairs, "n_pairs", 1), as_int(seed, "seed", 0))
+
+
+@lru_cache(maxsize=4)
+def _weyl_audit(n_pairs, seed):
     import sympy as sp
 
     from .. import symbolic as sy

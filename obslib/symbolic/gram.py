@@ -26,6 +26,7 @@ from ._common import (
     THETA_J,
     _double_angle,
     _eigen_parts,
+    as_expr,
 )  # fmt: skip
 
 __all__ = [
@@ -261,7 +262,7 @@ def pythagorean_remainder(expr: sp.Expr) -> sp.Expr:
     """
     ci, si, cj, sj = sp.symbols("c_i s_i c_j s_j", real=True)
     rep = {sp.cos(THETA_I): ci, sp.sin(THETA_I): si, sp.cos(THETA_J): cj, sp.sin(THETA_J): sj}
-    poly = sp.expand(sp.expand_trig(expr).subs(rep))
+    poly = sp.expand(sp.expand_trig(as_expr(expr, "expr")).subs(rep))
     if poly.has(THETA_I, THETA_J):
         raise ValueError("expr is not a polynomial in cos and sin of theta_i, theta_j")
     gens = (ci, cj, si, sj)

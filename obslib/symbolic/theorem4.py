@@ -17,8 +17,10 @@ from __future__ import annotations
 
 from functools import cache
 
+import numpy as np
 import sympy as sp
 
+from .._validate import ArgumentTypeError, as_bool, as_int, as_mapping
 from ._common import (
     _COS2,
     _D,
@@ -38,6 +40,7 @@ from ._common import (
     THETA_J,
     Q,
     U,
+    as_expr,
 )  # fmt: skip
 from .gram import (
     discriminant_cartesian,
@@ -66,6 +69,7 @@ def bound_from_eigenvalues(lmin, lmax, u=U) -> sp.Expr:
     >>> sy.bound_from_eigenvalues(sp.Integer(1), 3, u=1)
     1/2
     """
+    lmin, lmax, u = as_expr(lmin, "lmin"), as_expr(lmax, "lmax"), as_expr(u, "u")
     return sp.sqrt(lmin / (lmax + u**2))
 
 
@@ -93,7 +97,7 @@ def pull_out_of_roots(expr: sp.Expr) -> sp.Expr:
     >>> sy.pull_out_of_roots(sp.sqrt(sy.D_IO**4 + sy.D_IO**4 * sy.ALPHA**2))
     d_io**2*sqrt(alpha**2 + 1)
     """
-    return sp.sympify(expr).replace(
+    return as_expr(expr, "expr").replace(
         lambda e: e.is_Pow and e.exp.is_Rational and e.exp.q == 2,
         lambda e: sp.factor_terms(e.base) ** e.exp,
     )
@@ -148,6 +152,13 @@ def cartesian_ratio_values(point: dict, digits: int | None = None) -> dict:
     >>> v[sy.ALPHA], v[sy.THETA], v[sy.Q]
     (2, pi/2, 1)
     """
+    point = as_mapping(point, "point")
+    for k, x in point.items():
+        if not isinstance(x, (int, float, sp.Rational, sp.Integer)) or isinstance(x, bool) or (
+                isinstance(x, float) and not np.isfinite(x)):
+            raise ArgumentTypeError(f"point: the value of {k} must be a finite number, got {x!r}")
+    if digits is not None:
+        digits = as_int(digits, "digits", 1)
     missing = [s for s in CARTESIAN_ARGS if s not in point]
     if missing:
         raise ValueError(f"point lacks values for {missing}")
@@ -223,7 +234,6 @@ def theorem4_radicand() -> sp.Expr:
     return 1 + ALPHA**4 + 2 * ALPHA**2 * _COS2
 
 
-@cache
 def theorem4_bound(squared: bool = False) -> sp.Expr:
     r"""Theorem 4 (Eq. (9)) in :math:`\alpha`, :math:`\theta = \theta_{ji}` and
     :math:`q = u / d_{io}`.
@@ -241,6 +251,11 @@ def theorem4_bound(squared: bool = False) -> sp.Expr:
     >>> sy.theorem4_bound().subs({sy.ALPHA: 1, sy.THETA: sp.pi / 2, sy.Q: 0})
     1
     """
+    return _theorem4_bound(as_bool(squared, "squared"))
+
+
+@cache
+def _theorem4_bound(squared):
     ratio = _N / _D
     return ratio if squared else sp.sqrt(ratio)
 
@@ -278,14 +293,16 @@ def vanishes_with_radicals(expr: sp.Expr, radicals) -> bool:
     >>> sy.vanishes_with_radicals(r - sy.ALPHA - 1, [r])
     False
     """
-    radicals = [sp.sympify(r) for r in radicals]
+    if isinstance(radicals, (str, bytes)) or not isinstance(radicals, (list, tuple)):
+        raise ArgumentTypeError(f"radicals must be a list of square roots, got {radicals!r}")
+    radicals = [as_expr(r, "radicals") for r in radicals]
     if not all(r.is_Pow and r.exp == sp.S.Half for r in radicals):
         raise ValueError("radicals must be square roots")
     for k, r in enumerate(radicals):
         if any(r.base.has(outer) for outer in radicals[:k]):
             raise ValueError("radicals must be listed outermost first")
     ys = [sp.Dummy(f"y{k}") for k in range(len(radicals))]
-    e = sp.sympify(expr)
+    e = as_expr(expr, "expr")
     for r, y in zip(radicals, ys):
         e = e.subs(r, y)
     bases = [r.base.subs(dict(zip(radicals[k + 1:], ys[k + 1:]))) for k, r in enumerate(radicals)]

@@ -13,6 +13,7 @@ from functools import cache
 
 import sympy as sp
 
+from .._validate import as_bool
 from ._common import _COS2, _D, _S, ALPHA, C_SYM, D_SYM, S_SYM, THETA, Q
 from .theorem4 import pull_out_of_roots, theorem4_bound, vanishes_with_radicals
 
@@ -59,7 +60,7 @@ def dbound_dtheta() -> sp.Expr:
 
 
 def _parts(abbreviate: bool):
-    if abbreviate:
+    if as_bool(abbreviate, "abbreviate"):
         return S_SYM, C_SYM, D_SYM
     return _S, theorem4_bound(), _D
 

@@ -32,8 +32,8 @@ _ROW_FIELDS = ("metric", "anchor", "fixed_pair", "adversary", "controls")
 
 class _Filters:
     """The states of ``R`` extended Kalman filters (estimate ``xx, xy``, covariance entries
-    ``p00, p01, p10, p11``) and their step: :func:`~obslib.tracking.kalman.predict`, then
-    :func:`~obslib.tracking.kalman.update`."""
+    ``p00, p01, p10, p11``) and their step: ``kalman.predict``, then
+    ``kalman.update``."""
 
     def __init__(self, setup: TrackingSetup, R_: int):
         self.xx = np.full(R_, float(setup.estimate0[0]))
@@ -79,7 +79,7 @@ class _Adversaries:
 
     Runs with different control sets (``barred``: each run's own set is a contiguous block of
     ``controls``) are screened block by block, each against its own controls only: the pick
-    within a block is the one :func:`~obslib.tracking.adversary.adversary_moves` makes with the
+    within a block is the one ``adversary.adversary_moves`` makes with the
     other blocks barred, without evaluating them (notebook 06's stronger adversaries: 20 runs
     with 9 controls next to 20 with 1801; 0.3 s against 1.7 s for their 315 moves)."""
 
@@ -126,7 +126,7 @@ def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
     metric (``maha``), adversary (``nextpair``), chooser (``kinds`` and ``draws`` of
     :class:`~obslib.tracking.choosers.PairChooser`) and noise table: run ``r`` uses
     ``tables[r % B]``. An adversary's controls are ``controls`` (default: the setup's) less each
-    run's ``barred`` ones (see :func:`~obslib.tracking.adversary.adversary_moves`).
+    run's ``barred`` ones (see ``adversary.adversary_moves``).
 
     With an ``"exact-icn"`` run in the pass, the target moves before the next choice (the
     oracle needs the control that brings it to its next position; no run of such a pass may

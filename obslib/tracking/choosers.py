@@ -50,7 +50,7 @@ noise of the pair):
     :math:`u_{k-1} = o_k - o_{k-1}` that brought the target to :math:`o_k` (zero at step 1;
     the control of :attr:`~obslib.tracking.TrackingResult.true_icn`);
 ``"random"``
-    a uniformly random pair, drawn from :func:`pair_draws` of the run's seed.
+    a uniformly random pair, drawn from ``pair_draws`` of the run's seed.
 
 The logged bound of every run stays the paper's pair bound of the chosen pair (the setup's
 metric), so all runs compare with Fig. 6. Ties keep the first maximum in ``(i, j)`` order (the
@@ -71,14 +71,8 @@ __all__ = [
     "STRATEGIES",
     "CRITERIA",
     "NAMES",
-    "pair_draws",
-    "information_scores",
-    "icn_scores",
     "candidates",
-    "mahalanobis_sq",
-    "scaled_rows",
     "PairChooser",
-    "fixed_pair_bound",
     "choose_pairs",
 ]
 
@@ -94,7 +88,7 @@ NAMES = STRATEGIES + CRITERIA
 
 
 def candidates(setup, strategy: str) -> np.ndarray:
-    """Which pairs (in ``(i, j)`` order, :func:`~obslib.tracking.model.pair_index`) a strategy
+    """Which pairs (in ``(i, j)`` order, ``model.pair_index``) a strategy
     chooses among, ``(P,)`` bool.
 
     Best pair and the :data:`CRITERIA`: all; best partner: the pairs containing the anchor (in
@@ -110,6 +104,10 @@ def candidates(setup, strategy: str) -> np.ndarray:
     ...  for s in ("best-pair", "best-partner", "fixed-pair")]
     [15, 5, 1]
     """
+    from .setup import TrackingSetup
+
+    as_instance(setup, TrackingSetup, "setup")
+    as_choice(strategy, NAMES, "strategy")
     ii, jj = pair_index(setup.n_sensors)
     if strategy == "fixed-pair":
         i, j = sorted(setup.fixed_pair)
@@ -212,14 +210,14 @@ class PairChooser:
     Built once per batched pass from each run's candidate pairs ``cand`` (``(R, P)`` bool,
     :func:`candidates`) and metric (``maha``, ``(R,)`` bool). Calling it with the runs'
     estimates and covariance entries returns the chosen pair's index (in
-    :func:`~obslib.tracking.model.pair_index` order) and bound: the rows of
-    :func:`scaled_rows`, then the kernel of :func:`obslib.pair_bounds` for the run's candidate
+    ``model.pair_index`` order) and bound: the rows of
+    ``scaled_rows``, then the kernel of :func:`obslib.pair_bounds` for the run's candidate
     pairs only. The pick is the first maximum among the candidates in ``(i, j)`` order.
 
     Runs of the :data:`CRITERIA` (``kinds``, ``(R,)``: ``"bound"`` for the paper's strategies
-    or a criterion's name) choose among all pairs by :func:`information_scores` (with the
-    setup's ``Q`` and ``R``), :func:`icn_scores` or the ``draws`` ``(R, steps + 1)`` of
-    :func:`pair_draws`.
+    or a criterion's name) choose among all pairs by ``information_scores`` (with the
+    setup's ``Q`` and ``R``), ``icn_scores`` or the ``draws`` ``(R, steps + 1)`` of
+    ``pair_draws``.
 
     Runs with a single candidate (the fixed pair) need no scores to choose, and the criteria do
     not compute the bound, so the call leaves their bound out (NaN) (the rows
@@ -309,7 +307,7 @@ class PairChooser:
 
 def fixed_pair_bound(sx, sy, i, j, u2, x, c, maha) -> np.ndarray:
     """Theorem 4's bound of the pair ``(i[m], j[m])`` at estimate ``x[m]`` (covariance ``c[m]``,
-    Mahalanobis where ``maha[m]``), ``(M,)``: the rows of :func:`scaled_rows` for the pair's two
+    Mahalanobis where ``maha[m]``), ``(M,)``: the rows of ``scaled_rows`` for the pair's two
     sensors only, in chunks that stay in cache.
 
     Examples
@@ -426,13 +424,13 @@ def icn_scores(hx, hy, control, ii, jj) -> np.ndarray:
 
 def _icn_picks(hx, hy, control, ii, jj) -> np.ndarray:
     """``icn_scores(hx, hy, control, ii, jj).argmax(axis=1)`` without the exact value of every
-    pair: the screen of :func:`~obslib.tracking.adversary.adversary_moves`, maximised.
+    pair: the screen of ``adversary.adversary_moves``, maximised.
 
     :math:`C^{-1}` increases with :math:`\\det G / \\operatorname{tr}^2 G` of the stacked rows,
     here :math:`(h_i \\times h_j)^2 + (h_i \\times u)^2 + (h_j \\times u)^2` over
     :math:`(|h_i|^2 + |h_j|^2 + |u|^2)^2` from per-sensor terms; the pairs within ``1e-11`` of
     a row's largest ratio (the screen's rounding is some 1e-15) contain the exact maximiser,
-    and only they get :func:`icn_scores`'s exact value; the first exact maximum wins, as
+    and only they get ``icn_scores``'s exact value; the first exact maximum wins, as
     ``argmax``. Rows with a non-finite ratio or extreme lengths get every pair's exact
     value. (200 estimates x 15 pairs: 0.3 ms against 1.0 ms.)"""
     u = as_float_array(control, "control")
@@ -471,7 +469,7 @@ def choose_pairs(setup, strategy: str, xhat, cov, control=None):
     ``strategy`` is one of the paper's :data:`STRATEGIES` or a state-based criterion
     (``"d-optimal"``, ``"a-optimal"``, ``"e-optimal"`` with the setup's ``Q`` and ``R``;
     ``"exact-icn"`` with the targets' ``control`` ``(B, 2)``). ``"random"`` has no state-based
-    pick: its picks are :func:`pair_draws` of the run's seed.
+    pick: its picks are ``pair_draws`` of the run's seed.
 
     Returns
     -------

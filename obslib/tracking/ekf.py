@@ -52,7 +52,7 @@ def singular_update_message(x, ps, k: int, run: int | None = None) -> str:
 
 def _update(ekf, z, ps, k: int) -> None:
     """filterpy's EKF update (after its predict), with a ValueError naming the cause where the
-    innovation covariance is singular (:func:`~obslib.tracking.kalman.innovation_is_regular`)
+    innovation covariance is singular (``kalman.innovation_is_regular``)
     instead of filterpy's LinAlgError or a silently wrong gain."""
     x = ekf.x[:, 0]
     H = range_jacobian(ekf.x, ps)
@@ -86,7 +86,7 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
         replay). Default: :func:`~obslib.tracking.noise_table` of ``seed``.
     seed : int
         Seed of the noise table when ``noise`` is not given, and of the ``"random"`` chooser's
-        draws (:func:`~obslib.tracking.choosers.pair_draws`, a separate stream) in any case.
+        draws (``choosers.pair_draws``, a separate stream) in any case.
 
     Returns
     -------

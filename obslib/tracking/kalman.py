@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["SINGULAR_RTOL", "SingularInnovation", "innovation_is_regular", "predict", "update"]
+__all__ = ["SINGULAR_RTOL", "SingularInnovation"]
 
 #: The update stops with :class:`SingularInnovation` when the innovation covariance
 #: ``S = H P H^T + R`` is singular to this relative precision,
@@ -84,7 +84,7 @@ def update(x, P, s0, s1, z, R):
 
     Returns the new ``x`` and ``P`` (tuples of component arrays). Raises
     :class:`SingularInnovation` when ``S`` is singular for some filter
-    (:func:`innovation_is_regular`).
+    (``innovation_is_regular``).
 
     Examples
     --------

@@ -17,8 +17,11 @@ import numpy as np
 from .._validate import (
     as_instance,
     as_int,
+    as_mapping,
+    as_nonnegative,
     as_point,
     as_points,
+    as_positive,
     as_real_array,
     check_distinct,
     check_spd_any_scale,
@@ -66,8 +69,9 @@ def paper_controls(u_max: float, n_angles: int = 63, dphi: float = 0.1) -> np.nd
     >>> paper_controls(0.1).shape
     (64, 2)
     """
-    phi = dphi * np.arange(n_angles)
-    ring = float(u_max) * np.column_stack([np.cos(phi), np.sin(phi)])
+    u_max = as_nonnegative(u_max, "u_max")
+    phi = as_positive(dphi, "dphi") * np.arange(as_int(n_angles, "n_angles", 1))
+    ring = u_max * np.column_stack([np.cos(phi), np.sin(phi)])
     return np.vstack([np.zeros((1, 2)), ring])
 
 
@@ -307,7 +311,8 @@ def setup_from_params(base: TrackingSetup, params: dict) -> TrackingSetup:
     >>> setup_from_params(PAPER_CIRCLE, {"q": 0.2, "n_seeds": 5}).Q
     ((0.2, 0.0), (0.0, 0.2))
     """
-    as_instance(base, TrackingSetup, "setup")
+    as_instance(base, TrackingSetup, "base")
+    params = as_mapping(params, "params")
     changes = {PARAM_FIELDS[k]: v for k, v in params.items() if k in PARAM_FIELDS}
     return base.replace(**changes)
 

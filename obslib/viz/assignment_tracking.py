@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+from .._validate import as_mapping
 from .criteria import draw_boxes
+from .style import as_figsize
 
 __all__ = ["plot_assignment_errors"]
 
@@ -39,6 +41,8 @@ def plot_assignment_errors(runs: dict, figsize=(7.5, 3.6)):
     """
     import matplotlib.pyplot as plt
 
+    runs = as_mapping(runs, "runs")
+    figsize = as_figsize(figsize)
     if not runs:
         raise ValueError("no assignment runs to plot")
     Ls = list(runs)

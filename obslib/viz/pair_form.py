@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import as_float_array, as_positive
+from .._validate import as_float_array, as_point, as_positive, as_str
 from .style import OKABE_ITO, SEQUENTIAL, look
 
 __all__ = ["plot_fig1", "plot_fig2"]
@@ -193,13 +193,23 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     import matplotlib.pyplot as plt
     from matplotlib.ticker import MaxNLocator
 
-    if panels not in ("all", "contour"):
+    if as_str(panels, "panels") not in ("all", "contour"):
         raise ValueError(f"panels must be 'all' or 'contour', got {panels!r}")
     a = as_float_array(alpha, "alpha")
     t = as_float_array(theta, "theta")
     Z = as_float_array(Z, "Z")
-    if Z.shape != (t.size, a.size):
-        raise ValueError(f"Z must have shape {(t.size, a.size)}, got {Z.shape}")
+    if Z.shape != (t.size, a.size) or a.ndim != 1 or t.ndim != 1:
+        raise ValueError(f"Z must have shape (len(theta), len(alpha)) = {(t.size, a.size)}, "
+                         f"got {Z.shape}")
+    for name, x in (("alpha", a), ("theta", t), ("Z", Z)):
+        if not np.isfinite(x).all():
+            raise ValueError(f"{name} must be finite")
+    levels = as_float_array(levels, "levels")
+    if levels.ndim != 1 or not np.isfinite(levels).all() or (np.diff(levels) <= 0).any():
+        raise ValueError("levels must be finite and increasing")
+    as_str(title, "title")
+    if mark is not None:
+        mark = as_point(mark, "mark")
     A, T = np.meshgrid(a, t)
     X, Y = A * np.cos(T), A * np.sin(T)
     if mark is not None:

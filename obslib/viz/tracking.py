@@ -10,8 +10,19 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import as_float_array
-from .style import LOOKS, PUBLISHED_STYLE, REPLAY_STYLE, look
+from .._validate import (
+    as_bool,
+    as_float_array,
+    as_instance,
+    as_int,
+    as_nonnegative,
+    as_point,
+    as_points,
+    as_positive,
+    as_str,
+)
+from ..tracking import TrackingResult
+from .style import LOOKS, PUBLISHED_STYLE, REPLAY_STYLE, as_axes, as_figsize, look
 
 __all__ = [
     "CHI2_2DOF_9973",
@@ -50,10 +61,15 @@ def cov_ellipse(mean, cov, chi2: float = CHI2_2DOF_9973, n: int = 100) -> np.nda
     >>> e.shape, bool(np.allclose(e[:, 0] ** 2 / 4 + e[:, 1] ** 2, 1.0))
     ((50, 2), True)
     """
-    w, v = np.linalg.eigh(as_float_array(cov, "cov"))
+    mean = as_point(mean, "mean")
+    cov = as_float_array(cov, "cov")
+    if cov.shape != (2, 2) or not np.isfinite(cov).all():
+        raise ValueError(f"cov must be a finite 2 x 2 matrix, got shape {cov.shape}")
+    chi2, n = as_nonnegative(chi2, "chi2"), as_int(n, "n", 2)
+    w, v = np.linalg.eigh(cov)
     t = np.linspace(0, 2 * np.pi, n)
     circle = np.column_stack([np.cos(t), np.sin(t)])
-    return as_float_array(mean, "mean") + (circle * np.sqrt(chi2 * np.clip(w, 0, None))) @ v.T
+    return mean + (circle * np.sqrt(chi2 * np.clip(w, 0, None))) @ v.T
 
 
 _SUBSCRIPT = str.maketrans("0123456789", "".join(chr(0x2080 + d) for d in range(10)))
@@ -69,7 +85,7 @@ def sensor_label(i: int) -> str:
     >>> sensor_label(0), sensor_label(11)
     ('s₁', 's₁₂')
     """
-    return "s" + str(int(i) + 1).translate(_SUBSCRIPT)
+    return "s" + str(as_int(i, "i", 0) + 1).translate(_SUBSCRIPT)
 
 
 def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
@@ -92,7 +108,11 @@ def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
     ['s₁', 's₂']
     >>> plt.close(fig)
     """
-    s = as_float_array(sensors, "sensors")
+    as_axes(ax)
+    s = as_points(sensors, "sensors")
+    ms = as_positive(ms, "ms")
+    if label is not None:
+        as_str(label, "label")
     ax.plot(*s.T, **look("sensor").kw(ms=ms, label=label or "_sensors"))
     ax.set_ymargin(max(ax.get_ymargin(), 0.12))
     for n, p in enumerate(s):
@@ -122,6 +142,13 @@ def draw_snapshot(ax, result, k: int, *, legend: bool = True, ellipse_scale=1.0)
     (True, 6)
     >>> plt.close(fig)
     """
+    as_axes(ax)
+    as_instance(result, TrackingResult, "result")
+    k = as_int(k, "k", 1)
+    if k > result.pairs.shape[0]:
+        raise ValueError(f"k must be a step of the run, 1..{result.pairs.shape[0]}, got {k}")
+    as_bool(legend, "legend")
+    ellipse_scale = as_positive(ellipse_scale, "ellipse_scale")
     i = k - 1
     s = result.setup.sensor_array
     draw_sensors(ax, s, label="sensors")
@@ -266,10 +293,11 @@ def animate(result, every: int = 3, dpi: int = 100, figsize=(7.5, 3.6), interval
     """
     import matplotlib.pyplot as plt
 
-    if int(every) < 1:
-        raise ValueError(f"every must be at least 1, got {every}")
-    if not dpi > 0:
-        raise ValueError(f"dpi must be positive, got {dpi}")
+    as_instance(result, TrackingResult, "result")
+    every = as_int(every, "every", 1)
+    dpi = as_positive(dpi, "dpi")
+    figsize = as_figsize(figsize)
+    interval = as_positive(interval, "interval")
     s = result.setup.sensor_array
     fig, (ax, axb) = plt.subplots(1, 2, figsize=figsize, dpi=dpi, layout="constrained",
                                   gridspec_kw={"width_ratios": [1, 1.15]})
@@ -345,6 +373,10 @@ def animation_html(anim, uid: str = "anim") -> str:
     """
     import re
 
+    from matplotlib.animation import Animation
+
+    as_instance(anim, Animation, "anim")
+    as_str(uid, "uid")
     fig = getattr(anim, "_fig", None)  # a matplotlib animation's figure
     canvas = None if fig is None else fig.canvas
     if canvas is not None and not hasattr(canvas, "get_renderer"):

@@ -11,7 +11,7 @@ import sympy as sp
 import obslib as ob
 from obslib import symbolic as sy
 from obslib.scenes import random_scenes
-from obslib.studies.pair_form import max_difference_at_rational_points
+from obslib.symbolic.evaluation import max_difference_at_rational_points
 
 A, TH, Q = sy.ALPHA, sy.THETA, sy.Q
 CART_RANGES = {**{s: (-3.0, 3.0) for s in sy.CARTESIAN_ARGS[:-1]}, sy.U: (0.0, 2.0)}
