@@ -38,6 +38,7 @@ __all__ = [
     "as_mapping",
     "as_callable",
     "as_sequence",
+    "as_ints",
     "broadcast",
     "as_rank_rtol",
     "as_measure_name",
@@ -510,6 +511,18 @@ def as_real(value, name: str) -> float:
     if not np.isfinite(x):
         raise ValueError(f"{name} must be finite, got {value!r}")
     return x
+
+
+def as_ints(value, name: str, minimum: int | None = None) -> list:
+    """A non-empty list of integers (each at least ``minimum``), e.g. the sizes of a sweep."""
+    if isinstance(value, np.ndarray) and value.ndim == 1:
+        value = value.tolist()
+    if isinstance(value, range):
+        value = list(value)
+    out = [as_int(v, name, minimum) for v in as_sequence(value, name)]
+    if not out:
+        raise ValueError(f"{name} must not be empty")
+    return out
 
 
 def as_sequence(value, name: str) -> list:

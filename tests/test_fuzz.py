@@ -588,7 +588,7 @@ HOSTILE = [None, True, "x", 1 + 1j, np.nan, -np.inf, -1, 2.5, 0, [], [[np.nan, 0
 ALIASES = {"sensors": ("sensor",), "targets": ("target",), "strategies": ("strategy",),
            "seeds": ("seed",), "values": ("value", "f("), "names": ("measure", "name"),
            "masks": ("mask",), "kinds": ("kind",), "ids": ("id",), "counts": ("count", "scene"),
-           "u": ("control",), "ground": ("sensor",), "name": ("measure",), "arms": ("arm",)}
+           "u": ("control",), "ground": ("sensor",), "name": ("measure", "criterion"), "arms": ("arm",)}
 
 
 def _names(fn) -> list[str]:

@@ -19,7 +19,17 @@ from itertools import combinations
 import numpy as np
 
 from .._kernels import normalise, pair_kernel
-from .._validate import as_float_array, as_int, as_u_max, check_distinct, check_not_on_targets
+from .._validate import (
+    ArgumentTypeError,
+    as_float_array,
+    as_int,
+    as_nonnegative,
+    as_positive,
+    as_sequence,
+    as_u_max,
+    check_distinct,
+    check_not_on_targets,
+)
 from ..assignment import greedy_pairs_batch
 
 __all__ = [
@@ -253,6 +263,16 @@ def _ratios(S, T, u_max) -> np.ndarray:
     return out
 
 
+def _range_iv(value, name: str, minimum: int) -> tuple:
+    """An integer range ``(lo, hi)`` with ``minimum <= lo <= hi``."""
+    if not (isinstance(value, (tuple, list)) and len(value) == 2):
+        raise ValueError(f"{name} must be a pair (lo, hi), got {value!r}")
+    lo, hi = as_int(value[0], name, minimum), as_int(value[1], name, minimum)
+    if hi < lo:
+        raise ValueError(f"{name} must have lo <= hi, got {value!r}")
+    return lo, hi
+
+
 def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2), u_max=1.0,
                       side=100.0) -> GreedyStudy:
     r"""Algorithm 1 against the exact optimum on random instances of the Fig. 8 kind.
@@ -268,6 +288,9 @@ def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2),
     >>> study.ratio.shape, bool(study.ratio.min() >= 1 / 3)
     ((20,), True)
     """
+    n_instances, seed = as_int(n_instances, "n_instances", 1), as_int(seed, "seed", 0)
+    targets, extra = _range_iv(targets, "targets", 1), _range_iv(extra, "extra", 0)
+    u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
     rng = np.random.default_rng(seed)
     sizes, geoms = [], []
     for _ in range(n_instances):
@@ -308,9 +331,10 @@ def worst_instance_search(n_sensors: int, n_targets: int, seed: int, n_starts: i
     >>> 1 / 3 <= ratio <= 1, sensors.shape, targets.shape
     (True, (4, 2), (2, 2))
     """
-    if n_starts < 1 or n_steps < 0:
-        raise ValueError(f"need n_starts >= 1 and n_steps >= 0, got {n_starts} and {n_steps}")
-    rng = np.random.default_rng(seed)
+    n_sensors, n_targets = as_int(n_sensors, "n_sensors", 2), as_int(n_targets, "n_targets", 1)
+    n_starts, n_steps = as_int(n_starts, "n_starts", 1), as_int(n_steps, "n_steps", 0)
+    u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
+    rng = np.random.default_rng(as_int(seed, "seed", 0))
     m = n_sensors + n_targets
     P = np.empty((n_starts, m, 2))  # sensors then targets, per start
     moved = np.empty((n_starts, n_steps), dtype=np.int64)
@@ -332,6 +356,21 @@ def worst_instance_search(n_sensors: int, n_targets: int, seed: int, n_starts: i
         P[keep], r[keep] = P2[keep], r2[keep]
     c = int(np.argmin(r))
     return float(r[c]), P[c, :n_sensors].copy(), P[c, n_sensors:].copy()
+
+
+def _triples_iv(triples, W, name: str) -> list:
+    """Triples ``(i, j, l)`` of integers indexing ``W`` ``(N, N, L)``."""
+    if W.ndim != 3 or W.shape[0] != W.shape[1]:
+        raise ValueError(f"W must have shape (N, N, L), got {W.shape}")
+    out = []
+    for t in as_sequence(triples, name):
+        if not (isinstance(t, (tuple, list)) and len(t) == 3 and all(
+                isinstance(a, (int, np.integer)) and not isinstance(a, bool) for a in t)):
+            raise ArgumentTypeError(f"{name} must be triples (i, j, l) of integers, got {t!r}")
+        if not (0 <= t[0] < W.shape[0] and 0 <= t[1] < W.shape[0] and 0 <= t[2] < W.shape[2]):
+            raise ValueError(f"{name}: {tuple(t)} is outside W of shape {W.shape}")
+        out.append(tuple(int(a) for a in t))
+    return out
 
 
 def charging(W, greedy_triples, optimal_triples) -> list[dict]:
@@ -361,7 +400,8 @@ def charging(W, greedy_triples, optimal_triples) -> list[dict]:
     [((0, 1, 0), 3), ((2, 3, 1), 0), ((4, 5, 2), 0)]
     """
     W = as_float_array(W, "W")
-    left = list(optimal_triples)
+    greedy_triples = _triples_iv(greedy_triples, W, "greedy_triples")
+    left = _triples_iv(optimal_triples, W, "optimal_triples")
     rounds = []
     for i, j, l in greedy_triples:
         hit = [t for t in left if {t[0], t[1]} & {i, j} or t[2] == l]
@@ -393,6 +433,7 @@ def tight_weights(eps: float = 1e-3) -> np.ndarray:
     >>> round(float(greedy_values(W[None])[0] / optimal_values(W[None])[0]), 6)
     0.333667
     """
+    eps = as_nonnegative(eps, "eps")
     W = np.zeros((6, 6, 3))
     for (i, j, l), w in {
         (0, 1, 0): 1 + eps,

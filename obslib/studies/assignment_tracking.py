@@ -50,7 +50,16 @@ import numpy as np
 
 from .. import tracking as tr
 from .._kernels import pair_kernel
-from .._validate import as_float_array
+from .._validate import (
+    as_choice,
+    as_float_array,
+    as_instance,
+    as_int,
+    as_names,
+    as_positive,
+    as_sequence,
+    as_str,
+)
 from ..assignment import greedy_pairs_batch
 from ..tracking import kalman
 
@@ -67,26 +76,6 @@ __all__ = [
 #: The assignment rules, in the order the studies report them.
 RULES = ("bound", "d-optimal", "random")
 METRICS = ("mahalanobis", "euclidean")
-
-
-def _positive(v, name, *, allow_zero=False):
-    try:
-        x = float(v)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a number, got {v!r}") from None
-    if not np.isfinite(x) or x < 0 or (x == 0 and not allow_zero):
-        raise ValueError(
-            f"{name} must be {'non-negative' if allow_zero else 'positive'} and finite, got {v!r}"
-        )
-    return x
-
-
-def _count(v, name, minimum):
-    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
-        raise ValueError(f"{name} must be an integer, got {v!r}")
-    if v < minimum:
-        raise ValueError(f"{name} must be at least {minimum}, got {v}")
-    return int(v)
 
 
 @dataclass(frozen=True)
@@ -125,18 +114,18 @@ class AssignmentTrackingSetup:
 
     def __post_init__(self):
         put = lambda k, v: object.__setattr__(self, k, v)  # noqa: E731
-        L = _count(self.n_targets, "n_targets", 1)
+        L = as_int(self.n_targets, "n_targets", 1)
         put("n_targets", L)
-        n = 2 * L if self.n_sensors is None else _count(self.n_sensors, "n_sensors", 2)
+        n = 2 * L if self.n_sensors is None else as_int(self.n_sensors, "n_sensors", 2)
         if n < 2 * L:
             raise ValueError(f"n_sensors must be at least 2 n_targets = {2 * L}, got {n}")
         put("n_sensors", n)
-        put("steps", _count(self.steps, "steps", 1))
-        put("side", _positive(self.side, "side"))
-        put("u_max", _positive(self.u_max, "u_max"))
-        put("noise_std", _positive(self.noise_std, "noise_std"))
-        put("p0", _positive(self.p0, "p0"))
-        if self.metric not in METRICS:
+        put("steps", as_int(self.steps, "steps", 1))
+        put("side", as_positive(self.side, "side"))
+        put("u_max", as_positive(self.u_max, "u_max"))
+        put("noise_std", as_positive(self.noise_std, "noise_std"))
+        put("p0", as_positive(self.p0, "p0"))
+        if as_str(self.metric, "metric") not in METRICS:
             raise ValueError(f"metric must be one of {METRICS}, got {self.metric!r}")
 
     @property
@@ -181,11 +170,13 @@ class Scenario:
 
 
 def _seeds(seeds) -> tuple:
-    out = tuple(int(s) for s in np.atleast_1d(np.asarray(seeds)))
+    if isinstance(seeds, range):
+        seeds = list(seeds)
+    if isinstance(seeds, (int, np.integer)) and not isinstance(seeds, bool):
+        seeds = [seeds]
+    out = tuple(as_int(s, "seeds", 0) for s in as_sequence(seeds, "seeds"))
     if not out:
         raise ValueError("seeds must name at least one seed")
-    if any(s < 0 for s in out):
-        raise ValueError(f"seeds must be non-negative, got {out}")
     return out
 
 
@@ -206,8 +197,7 @@ def scenario(setup: AssignmentTrackingSetup, seeds) -> Scenario:
     >>> bool((np.sort(sc.perm, axis=-1) == np.arange(4)).all())
     True
     """
-    if not isinstance(setup, AssignmentTrackingSetup):
-        raise ValueError(f"setup must be an AssignmentTrackingSetup, got {type(setup).__name__}")
+    as_instance(setup, AssignmentTrackingSetup, "setup")
     seeds = _seeds(seeds)
     L, n, T = setup.n_targets, setup.n_sensors, setup.steps
     parts = {k: [] for k in ("sensors", "start", "estimate0", "controls", "noise", "perm")}
@@ -567,8 +557,7 @@ def run(setup: AssignmentTrackingSetup, rule: str, seeds) -> AssignmentRuns:
     >>> sorted(t) == sorted((i, j, l) for l, (i, j) in enumerate(r.pairs[0, 0]))
     True
     """
-    if rule not in RULES:
-        raise ValueError(f"unknown rule {rule!r}; known: {RULES}")
+    as_choice(rule, RULES, "rule")
     return _run(scenario(setup, seeds), [rule])[rule]
 
 
@@ -589,8 +578,5 @@ def run_all(setup: AssignmentTrackingSetup, seeds, rules=RULES) -> dict:
     >>> bool((runs["bound"].error[:, 0] == runs["random"].error[:, 0]).all())
     True
     """
-    rules = list(rules)
-    bad = [r for r in rules if r not in RULES]
-    if bad:
-        raise ValueError(f"unknown rule(s) {bad}; known: {RULES}")
+    rules = list(as_names(rules, "rules", RULES))
     return _run(scenario(setup, seeds), rules)

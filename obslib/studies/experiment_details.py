@@ -25,7 +25,7 @@ import numpy as np
 
 from .. import tracking as tr
 from .._kernels import normalise, pair_kernel
-from .._validate import as_float_array, as_int
+from .._validate import as_float_array, as_int, as_str
 from ..bounds import pair_bounds
 from ..controls import disc_controls
 from ..published_runs import published_run
@@ -96,7 +96,7 @@ def metric_choices(name: str = "best-pair") -> dict:
     ...  0.0 <= m["agree_euclidean"] <= 1.0)
     (['euclidean', 'mixed', 'whitened'], 2, True)
     """
-    if name not in ("best-pair", "adversarial"):
+    if as_str(name, "name") not in ("best-pair", "adversarial"):
         raise ValueError(
             f"name must be 'best-pair' or 'adversarial' (runs of strategy (1)), got {name!r}"
         )

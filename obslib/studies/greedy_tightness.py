@@ -15,7 +15,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._validate import as_float_array
+from .._validate import as_float_array, as_points
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..bounds import pair_bounds
 from . import assignment as st
@@ -96,7 +96,9 @@ def spread(sensors, targets) -> float:
     >>> round(spread([[0.0, 0.0], [2.0, 0.0]], [[1.0, 0.0]]) ** 2, 12)
     0.666666666667
     """
-    P = np.vstack([np.asarray(sensors, float), np.asarray(targets, float)])
+    P = np.vstack([as_points(sensors, "sensors"), as_points(targets, "targets")])
+    if P.shape[0] == 0:
+        raise ValueError("sensors and targets are both empty")
     return float(np.sqrt(((P - P.mean(axis=0)) ** 2).sum(axis=1).mean()))
 
 
@@ -212,8 +214,13 @@ def jitter_summary(ratios, fractions) -> list[dict]:
     (0.75, 0.5, 0.0, 0.525)
     """
     r = as_float_array(ratios, "ratios")
+    f = as_float_array(fractions, "fractions")
+    if r.ndim != 2 or f.shape != (r.shape[0],) or not np.isfinite(f).all():
+        raise ValueError(f"ratios (F, D) and fractions (F,) must match, got {r.shape}, {f.shape}")
+    if not all(np.isfinite(row).any() for row in r):
+        raise ValueError("ratios must hold a finite value for every fraction")
     rows = []
-    for frac, row in zip(fractions, r):
+    for frac, row in zip(f, r):
         v = row[np.isfinite(row)]
         rows.append({
             "fraction": float(frac),

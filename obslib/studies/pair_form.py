@@ -14,7 +14,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._validate import as_int, as_nonnegative, as_positive
+from .._validate import as_int, as_nonnegative, as_positive, as_sequence
 from ..bounds import pair_bound_polar, pair_bounds
 from ..pair_form import (
     GridMax,
@@ -314,14 +314,18 @@ class Theorem5Audit:
     n_theta: int
 
 
-@lru_cache(maxsize=8)
-def theorem5_audit(
-    u_over_d: tuple,
-    alpha_max: float,
-    alpha_per_unit: int,
-    theta_quarter: int,
-    n_rational_points: int = 50,
-) -> Theorem5Audit:
+def _ratios_iv(u_over_d) -> tuple:
+    """The values of ``q = u_max / d_io`` of a Theorem 5 audit, a non-empty tuple of floats."""
+    if isinstance(u_over_d, np.ndarray):
+        u_over_d = u_over_d.tolist()
+    qs = tuple(as_nonnegative(q, "u_over_d") for q in as_sequence(u_over_d, "u_over_d"))
+    if not qs:
+        raise ValueError("u_over_d must list at least one value")
+    return qs
+
+
+def theorem5_audit(u_over_d: tuple, alpha_max: float, alpha_per_unit: int, theta_quarter: int,
+                   n_rational_points: int = 50) -> Theorem5Audit:
     """Locate the maximum and the zeros of the bound on :func:`fine_grid` for each ``q``.
 
     Theorem 5: the maximum ``1 / sqrt(1 + q^2)`` at ``alpha = 1``, ``theta = +-pi/2``; the
@@ -338,14 +342,20 @@ def theorem5_audit(
     >>> a.symbolic_max_exact
     True
     """
+    return _theorem5_audit(_ratios_iv(u_over_d), as_positive(alpha_max, "alpha_max"),
+                           as_int(alpha_per_unit, "alpha_per_unit", 1),
+                           as_int(theta_quarter, "theta_quarter", 1),
+                           as_int(n_rational_points, "n_rational_points", 1))
+
+
+@lru_cache(maxsize=8)
+def _theorem5_audit(u_over_d, alpha_max, alpha_per_unit, theta_quarter, n_rational_points):
     import sympy as sp
 
     from .. import symbolic as sy
     from ..symbolic.evaluation import max_difference_at_rational_points as mdiff
 
-    qs = tuple(float(as_nonnegative(q, "u_over_d")) for q in u_over_d)
-    if not qs:
-        raise ValueError("u_over_d must list at least one value")
+    qs = u_over_d
     alpha, theta = fine_grid(alpha_max, alpha_per_unit, theta_quarter)
     gmax, argm, pred = [], [], []
     zero_lines = 0.0
@@ -573,7 +583,6 @@ class AlphaStarAudit:
     stationarity_at_1: str  #: Eq. (34) at alpha = 1, factored
 
 
-@lru_cache(maxsize=8)
 def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50) -> AlphaStarAudit:
     """Solve Eq. (34) numerically and in closed form on ``theta`` in ``(0, pi)`` for each ``q``.
 
@@ -588,12 +597,18 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
     >>> a.max_closed_vs_numeric < 1e-12, a.min_distance_from_1 > 0
     (True, True)
     """
+    return _alpha_star_audit(_ratios_iv(u_over_d), as_int(n_theta, "n_theta", 1),
+                             as_int(n_rational_points, "n_rational_points", 1))
+
+
+@lru_cache(maxsize=8)
+def _alpha_star_audit(u_over_d, n_theta, n_rational_points):
     import sympy as sp
 
     from .. import symbolic as sy
     from ..symbolic.evaluation import max_difference_at_rational_points as mdiff
 
-    qs = tuple(float(as_nonnegative(q, "u_over_d")) for q in u_over_d)
+    qs = u_over_d
     theta = alpha_star_thetas(n_theta)
     coarse = np.linspace(0.0, 10.0, 1001)
     local = 1e-4 * np.arange(-50, 51)

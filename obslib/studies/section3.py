@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validate import check_scene_batch
+from .._validate import as_float_array, as_int, broadcast, check_scene_batch
 from ..bounds import lower_bounds, worst_case_controls
 from ..observability import inverse_condition_numbers, inverse_condition_numbers_polar
 from ..scenes import random_scene_batch
@@ -144,6 +144,15 @@ def theorem3_terms(lam_before, lam_after, u2):
     >>> theorem3_terms((1.0, 4.0), (2.0, 4.0), u2=1.0)
     (4.0, 1.0)
     """
+    checked = {}
+    for name, lam in (("lam_before", lam_before), ("lam_after", lam_after), ("u2", u2)):
+        a = checked[name] = as_float_array(lam, name)
+        if name != "u2" and (a.ndim < 1 or a.shape[0] != 2):
+            raise ValueError(f"{name} must be (lambda_min, lambda_max), got shape {a.shape}")
+        if not np.isfinite(a).all() or (name == "u2" and (a < 0).any()):
+            raise ValueError(f"{name} must be finite" + (" and non-negative" * (name == "u2")))
+    broadcast({"lam_before": checked["lam_before"][0], "lam_after": checked["lam_after"][0],
+               "u2": checked["u2"]})
     (lmin, lmax), (lmin2, lmax2) = lam_before, lam_after
     return lmin2 * lmax - lmax2 * lmin, u2 * (lmin2 - lmin)
 
@@ -181,8 +190,8 @@ def theorem3_audit(n_trials: int, seed: int) -> Theorem3Audit:
     ...  a.remark2_necessary_violations)
     ((168, 0), True, 0)
     """
-    rng = np.random.default_rng(seed)
-    T = int(n_trials)
+    rng = np.random.default_rng(as_int(seed, "seed", 0))
+    T = as_int(n_trials, "n_trials", 1)
     counts_n = rng.integers(2, 5, size=(T, 2))  # sensors before / after
     scale = 10.0 ** rng.uniform(-1, 1, size=(T, 2))
     sensors = rng.uniform(-1, 1, size=(T, 2, 4, 2)) * scale[..., None, None]

@@ -14,7 +14,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validate import as_eps, as_float_array, check_maximisable
+from .._validate import (
+    as_eps,
+    as_float_array,
+    as_int,
+    as_ints,
+    as_positive,
+    as_str,
+    check_maximisable,
+)
 from ..bounds import relative_vectors
 from ..measures import MEASURES, measure_from_vectors, subset_masks
 from ..sweep import run_sweep
@@ -54,6 +62,9 @@ def fig9_geometry(n_sensors, trial, seed, n_targets, side):
     >>> bool((S1 != S).any())
     True
     """
+    n_sensors, trial = as_int(n_sensors, "n_sensors", 0), as_int(trial, "trial", 0)
+    seed, n_targets = as_int(seed, "seed", 0), as_int(n_targets, "n_targets", 0)
+    side = as_positive(side, "side")
     rng = np.random.default_rng([seed, n_sensors, trial])
     return rng.uniform(0, side, size=(n_sensors, 2)), rng.uniform(0, side, size=(n_targets, 2))
 
@@ -86,6 +97,7 @@ def fig9_trials(n_sensors: int, trials, seed: int, n_targets: int = 5, measure: 
     >>> fig9_trials(20, [0, 1], seed=0).sum(axis=1)
     array([20, 20])
     """
+    trials = as_ints(trials, "trials", 0)
     geoms = [fig9_geometry(n_sensors, t, seed, n_targets, side) for t in trials]
     return greedy_team_counts(
         np.array([g[0] for g in geoms]).reshape(-1, n_sensors, 2),
@@ -109,7 +121,9 @@ def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: st
     >>> fig9_sweep([20, 25], trials=2, seed=0).shape
     (2, 2, 5)
     """
-    N_values = [int(n) for n in N_values]
+    N_values = as_ints(N_values, "N_values", 0)
+    trials, seed = as_int(trials, "trials", 1), as_int(seed, "seed", 0)
+    as_str(measure, "measure")
     tasks = [
         dict(
             n_sensors=n,
@@ -136,6 +150,7 @@ def random_spread(n_sensors: int, n_targets: int) -> float:
     >>> round(random_spread(20, 5), 4)
     1.7889
     """
+    n_sensors, n_targets = as_int(n_sensors, "n_sensors", 0), as_int(n_targets, "n_targets", 1)
     p = 1.0 / n_targets
     return float(np.sqrt(n_sensors * p * (1 - p)))
 
@@ -168,8 +183,13 @@ def evenness(counts, N_values, n_targets: int) -> Evenness:
     >>> e.fair, bool((e.relative < 1).all())
     (array([4., 5.]), True)
     """
-    C = np.asarray(counts)
-    fair = as_float_array(N_values, "N_values") / n_targets
+    C = as_float_array(counts, "counts")
+    N = as_float_array(N_values, "N_values")
+    n_targets = as_int(n_targets, "n_targets", 1)
+    if C.ndim != 3 or N.shape != (C.shape[0],) or C.shape[1] < 1:
+        raise ValueError(f"counts (len(N_values), trials, n_targets) and N_values must match, "
+                         f"got {C.shape} and {N.shape}")
+    fair = N / n_targets
     dev = np.abs(C.mean(axis=1) - fair[:, None])
     se = C.std(axis=1, ddof=1) / np.sqrt(C.shape[1]) if C.shape[1] > 1 else np.zeros(dev.shape)
     z = dev / np.where(se > 0, se, np.inf)
