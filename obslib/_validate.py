@@ -39,6 +39,7 @@ __all__ = [
     "as_callable",
     "as_sequence",
     "as_ints",
+    "as_int_range",
     "broadcast",
     "as_rank_rtol",
     "as_measure_name",
@@ -523,6 +524,16 @@ def as_ints(value, name: str, minimum: int | None = None) -> list:
     if not out:
         raise ValueError(f"{name} must not be empty")
     return out
+
+
+def as_int_range(value, name: str, minimum: int | None = None) -> tuple:
+    """An integer range ``(lo, hi)``, both inclusive, with ``minimum <= lo <= hi``."""
+    if not (isinstance(value, (tuple, list)) and len(value) == 2):
+        raise ValueError(f"{name} must be a pair (lo, hi), got {value!r}")
+    lo, hi = as_int(value[0], name, minimum), as_int(value[1], name, minimum)
+    if hi < lo:
+        raise ValueError(f"{name} must have lo <= hi, got {value!r}")
+    return lo, hi
 
 
 def as_sequence(value, name: str) -> list:

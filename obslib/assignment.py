@@ -251,7 +251,8 @@ def _source_iv(W, sensors, targets, u_max, cov):
             raise ValueError("give either W or sensors/targets, not both")
         return True
     if any(g is None for g in geometry):
-        raise ValueError("give W, or sensors=, targets= and u_max=")
+        raise ValueError("give W, or sensors=, targets= and u_max=" +
+                         (" (cov= goes with them)" if cov is not None else ""))
     return False
 
 

@@ -114,10 +114,14 @@ def grid_maximum(alpha, theta, Z, atol: float = 1e-12) -> GridMax:
     Z = as_float_array(Z, "Z")
     a = as_float_array(alpha, "alpha")
     t = as_float_array(theta, "theta")
-    if Z.shape != (t.size, a.size):
+    if Z.shape != (t.size, a.size) or a.ndim != 1 or t.ndim != 1 or not Z.size:
         raise ValueError(
             f"Z must have shape (len(theta), len(alpha)) = {(t.size, a.size)}, got {Z.shape}"
         )
+    for name, x in (("alpha", a), ("theta", t), ("Z", Z)):
+        if not np.isfinite(x).all():
+            raise ValueError(f"{name} must be finite")
+    atol = as_nonnegative(atol, "atol")
     top = float(Z.max())
     k, l = np.nonzero(Z >= top - atol)
     pts = tuple(sorted((float(a[j]), float(t[i])) for i, j in zip(k, l)))
@@ -172,6 +176,7 @@ def stationarity_alpha(alpha, theta, u_over_d):
         raise ValueError("alpha, theta and u_over_d must be finite")
     if (a < 0).any() or (q < 0).any():
         raise ValueError("alpha and u_over_d must be non-negative")
+    broadcast({"alpha": a, "theta": th, "u_over_d": q})
     return _stationarity(a, th, q)
 
 

@@ -29,6 +29,8 @@ from ._validate import (
     as_float_array,
     as_instance,
     as_int,
+    as_int_range,
+    as_names,
     as_positive,
     as_str,
     check_scene_batch,
@@ -100,26 +102,22 @@ def random_scene(
     return Scene(sensors=sensors, target=target, u_max=u_max, kind=kind)
 
 
-def _check_draw(n_scenes, seed, n_sensors, scale, kinds, min_scenes):
+def _draw_iv(n_scenes, seed, n_sensors, scale, kinds, min_scenes):
     """Validated arguments of :func:`random_scenes` and :func:`random_scene_batch`."""
     n_scenes = as_int(n_scenes, "n_scenes", min_scenes)
     seed = as_int(seed, "seed", 0)
-    if isinstance(kinds, str) or not all(isinstance(k, str) for k in kinds) or not len(kinds):
+    if isinstance(kinds, str):
         raise ArgumentTypeError(
             f"kinds must be a non-empty sequence of names from {SCENE_KINDS}, got {kinds!r}"
         )
-    for kind in kinds:
-        if kind not in SCENE_KINDS:
-            raise ValueError(f"kind must be one of {SCENE_KINDS}, got {kind!r}")
-    if len(n_sensors) != 2:
-        raise ValueError(f"n_sensors must be (lo, hi), got {n_sensors!r}")
-    lo_n, hi_n = as_int(n_sensors[0], "n_sensors[0]", 1), as_int(n_sensors[1], "n_sensors[1]", 1)
-    if hi_n < lo_n:
-        raise ValueError(f"n_sensors must be (lo, hi) with 1 <= lo <= hi, got {n_sensors}")
+    kinds = as_names(kinds, "kinds", SCENE_KINDS)
+    if not kinds:
+        raise ValueError(f"kinds must be a non-empty sequence of names from {SCENE_KINDS}")
+    lo_n, hi_n = as_int_range(n_sensors, "n_sensors", 1)
     sc = as_float_array(scale, "scale")
     if sc.shape != (2,) or not np.isfinite(sc).all() or (sc <= 0).any() or sc[1] < sc[0]:
         raise ValueError(f"scale must be (lo, hi) with 0 < lo <= hi finite, got {scale!r}")
-    return n_scenes, seed, (lo_n, hi_n), (float(sc[0]), float(sc[1])), tuple(kinds)
+    return n_scenes, seed, (lo_n, hi_n), (float(sc[0]), float(sc[1])), kinds
 
 
 def random_scenes(
@@ -139,7 +137,7 @@ def random_scenes(
     >>> [s.kind for s in random_scenes(4, seed=0)]
     ['generic', 'collinear', 'near-parallel', 'spread']
     """
-    n_scenes, seed, n_sensors, scale, kinds = _check_draw(
+    n_scenes, seed, n_sensors, scale, kinds = _draw_iv(
         n_scenes, seed, n_sensors, scale, kinds, 0
     )
     rng = np.random.default_rng(seed)
@@ -215,7 +213,7 @@ def random_scene_batch(
     >>> len(b), int(b.counts.min()) >= 2
     (5, True)
     """
-    n_scenes, seed, n_sensors, scale, kinds = _check_draw(
+    n_scenes, seed, n_sensors, scale, kinds = _draw_iv(
         n_scenes, seed, n_sensors, scale, kinds, 1
     )
     lo_n, hi_n = n_sensors

@@ -634,7 +634,8 @@ def audit_set_function(
     """
     n = _ground_size(ground)
     if (f is None) == (values is None):
-        raise ValueError("give exactly one of f and values")
+        raise ValueError("give exactly one of f and values, got "
+                         + ("both" if f is not None else "neither"))
     if values is None:
         values = set_function_table(n, f, min_size)
     return audit_tables(values, n, min_size, rtol, atol)[0]

@@ -16,6 +16,7 @@ import json
 import sys
 
 from .._io import OutputPathError, check_output_path, write_output
+from .._validate import as_argv
 from ..profiles import profile_names
 from . import as_json, evaluate, registry
 from . import robustness as rb
@@ -39,7 +40,7 @@ def parse_args(argv=None) -> argparse.Namespace:
     ap.add_argument("--robustness", action="store_true",
                     help="vary u_max, noise, metric and sizes one at a time for the claims that "
                     "are partly or refuted and the tracking claims")
-    args = ap.parse_args(argv)
+    args = ap.parse_args(as_argv(argv))
     if args.profile is None:
         args.profile = "quick" if args.robustness else "paper"
     if args.ids:

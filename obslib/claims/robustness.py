@@ -168,7 +168,7 @@ def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[d
     dims = list(DIMENSIONS) if dimensions is None else list(as_names(dimensions, "dimensions"))
     unknown = [d for d in dims if d not in DIMENSIONS]
     if unknown:
-        raise ValueError(f"unknown dimension(s) {unknown}; known: {list(DIMENSIONS)}")
+        raise ValueError(f"dimensions: unknown {unknown}; known: {list(DIMENSIONS)}")
     ids = default_ids(base) if ids is None else list(as_names(ids, "ids"))
     reg = registry()
     missing = [i for i in ids if i not in reg]
@@ -330,7 +330,7 @@ def read_json(path) -> dict:
     try:
         data = json.loads(path.read_text())
     except (OSError, ValueError) as exc:
-        raise ValueError(f"{path}: not a robustness data file ({exc})") from None
+        raise ValueError(f"path {path}: not a robustness data file ({exc})") from None
     if not isinstance(data, dict) or not {"base", "dimensions", "rows"} <= set(data):
-        raise ValueError(f"{path}: not a robustness data file (keys base, dimensions, rows)")
+        raise ValueError(f"path {path}: not a robustness data file (keys base, dimensions, rows)")
     return data

@@ -23,6 +23,7 @@ from .._validate import (
     ArgumentTypeError,
     as_float_array,
     as_int,
+    as_int_range,
     as_nonnegative,
     as_positive,
     as_sequence,
@@ -263,16 +264,6 @@ def _ratios(S, T, u_max) -> np.ndarray:
     return out
 
 
-def _range_iv(value, name: str, minimum: int) -> tuple:
-    """An integer range ``(lo, hi)`` with ``minimum <= lo <= hi``."""
-    if not (isinstance(value, (tuple, list)) and len(value) == 2):
-        raise ValueError(f"{name} must be a pair (lo, hi), got {value!r}")
-    lo, hi = as_int(value[0], name, minimum), as_int(value[1], name, minimum)
-    if hi < lo:
-        raise ValueError(f"{name} must have lo <= hi, got {value!r}")
-    return lo, hi
-
-
 def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2), u_max=1.0,
                       side=100.0) -> GreedyStudy:
     r"""Algorithm 1 against the exact optimum on random instances of the Fig. 8 kind.
@@ -289,7 +280,7 @@ def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2),
     ((20,), True)
     """
     n_instances, seed = as_int(n_instances, "n_instances", 1), as_int(seed, "seed", 0)
-    targets, extra = _range_iv(targets, "targets", 1), _range_iv(extra, "extra", 0)
+    targets, extra = as_int_range(targets, "targets", 1), as_int_range(extra, "extra", 0)
     u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
     rng = np.random.default_rng(seed)
     sizes, geoms = [], []

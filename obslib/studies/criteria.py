@@ -252,7 +252,8 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
         raise ValueError("reference and other must be finite")
     if a.shape != b.shape or a.ndim != 1 or a.size < 2:
         raise ValueError(
-            f"need two equal-length 1-D samples of at least 2 runs, got {a.shape}, {b.shape}"
+            f"reference and other must be two equal-length 1-D samples of at least 2 runs, got "
+            f"{a.shape}, {b.shape}"
         )
     d = b - a
     ref_better = int(tr.clearly_lower(a, b, rtol).sum())

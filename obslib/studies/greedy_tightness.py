@@ -15,7 +15,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._validate import as_float_array, as_points
+from .._validate import as_float_array, as_int, as_nonnegative, as_points
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..bounds import pair_bounds
 from . import assignment as st
@@ -75,13 +75,12 @@ def tight_geometry(n_sensors: int = 6, n_targets: int = 3, seed: int = 0, n_star
     >>> sensors.shape, targets.shape, 1 / 3 <= ratio <= 1
     ((6, 2), (3, 2), True)
     """
-    for name, v in (("n_sensors", n_sensors), ("n_targets", n_targets), ("n_starts", n_starts)):
-        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
-            raise ValueError(f"{name} must be a positive integer, got {v!r}")
+    n_sensors, n_targets = as_int(n_sensors, "n_sensors", 1), as_int(n_targets, "n_targets", 1)
+    n_starts, n_steps = as_int(n_starts, "n_starts", 1), as_int(n_steps, "n_steps", 0)
+    seed, u_max = as_int(seed, "seed", 0), as_nonnegative(u_max, "u_max")
     if n_sensors < 2 * n_targets:
         raise ValueError(f"need n_sensors >= 2 n_targets, got {n_sensors} and {n_targets}")
-    r, S, T = _search(int(n_sensors), int(n_targets), int(seed), int(n_starts), int(n_steps),
-                      float(u_max))
+    r, S, T = _search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
     return r, S.copy(), T.copy()
 
 

@@ -48,7 +48,8 @@ def audit_ratios(u_max: float, d_io: float, u_over_d_curves) -> tuple:
     """
     u = as_nonnegative(u_max, "u_max")
     d = as_positive(d_io, "d_io")
-    curves = [as_nonnegative(c, "u_over_d_curves") for c in u_over_d_curves]
+    curves = [as_nonnegative(c, "u_over_d_curves")
+              for c in as_sequence(u_over_d_curves, "u_over_d_curves")]
     return tuple(sorted({0.0, u / d, *curves}))
 
 

@@ -18,6 +18,7 @@ from .._validate import (
     as_eps,
     as_float_array,
     as_int,
+    as_int_range,
     as_ints,
     as_positive,
     as_str,
@@ -222,6 +223,9 @@ def greedy_vs_optimal_teams(
     """
     e = as_eps(eps)
     check_maximisable(measure, e, MEASURES, MAXIMISABLE)
+    n_instances, seed = as_int(n_instances, "n_instances", 1), as_int(seed, "seed", 0)
+    sensors, targets = as_int_range(sensors, "sensors", 1), as_int_range(targets, "targets", 1)
+    side = as_positive(side, "side")
     rng = np.random.default_rng(seed)
     draws = []
     for _ in range(n_instances):

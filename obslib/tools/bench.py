@@ -56,6 +56,8 @@ import time
 
 import numpy as np
 
+from .._validate import as_argv, as_bool, as_int, as_mapping, as_nonnegative, as_points, as_str
+
 __all__ = [
     "one_pass",
     "bench_assignment",
@@ -100,6 +102,9 @@ def one_pass(sensors, targets, u_max, chunk: int = 1 << 20, progress: bool = Fal
     >>> one_pass([[0, 0], [1, 0], [3, 1]], [[1, 1]], 1.0) >= 0  # in seconds
     True
     """
+    sensors, targets = as_points(sensors, "sensors"), as_points(targets, "targets")
+    u_max, chunk = as_nonnegative(u_max, "u_max"), as_int(chunk, "chunk", 1)
+    as_bool(progress, "progress")
     from tqdm import tqdm
 
     from ..assignment import upper_pair_weight_blocks
@@ -127,6 +132,15 @@ def evaluation_counts(sizes: dict, seed: int = 0) -> dict:
     >>> sorted(evaluation_counts({"N=6, L=2": (6, 2)}))  # doctest: +SKIP
     ['N=6, L=2']
     """
+    sizes = as_mapping(sizes, "sizes")
+    for k, v in sizes.items():
+        if not (isinstance(v, (list, tuple)) and v and all(
+                isinstance(x, (list, tuple)) and len(x) == 2 for x in v)):
+            raise ValueError(f"sizes must map names to lists of (N, L), got {k!r}: {v!r}")
+        for n, L in v:
+            if as_int(L, "sizes", 1) * 2 > as_int(n, "sizes", 2):
+                raise ValueError(f"sizes: N = {n} < 2L = {2 * L}")
+    seed = as_int(seed, "seed", 0)
     from .. import assignment as a
 
     algos = {
@@ -162,6 +176,9 @@ def literal_count(n_sensors: int, n_targets: int) -> int:
     >>> literal_count(4, 2)  # 6 pairs x 2 targets, then 1 pair x 1 target
     13
     """
+    n_sensors, n_targets = as_int(n_sensors, "n_sensors", 0), as_int(n_targets, "n_targets", 0)
+    if n_sensors < 2 * n_targets:
+        raise ValueError(f"n_sensors must be at least 2 n_targets, got {n_sensors}, {n_targets}")
     return sum(
         (n_sensors - 2 * r) * (n_sensors - 2 * r - 1) // 2 * (n_targets - r)
         for r in range(n_targets)
@@ -196,7 +213,13 @@ def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l
     """
     from ..assignment import greedy_pair_assignment, greedy_pair_assignment_literal
 
-    rng = np.random.default_rng(seed)
+    n_big, l_big = as_int(n_big, "n_big", 2), as_int(l_big, "l_big", 1)
+    n_small, l_small = as_int(n_small, "n_small", 2), as_int(l_small, "l_small", 1)
+    if (sensors is None) != (targets is None):
+        raise ValueError("give both sensors and targets, or neither")
+    if sensors is not None:
+        sensors, targets = as_int(sensors, "sensors", 2), as_int(targets, "targets", 1)
+    rng = np.random.default_rng(as_int(seed, "seed", 0))
     if sensors is not None:
         S, T = rng.uniform(0, 100, (sensors, 2)), rng.uniform(0, 100, (targets, 2))
         _say(f"greedy from geometry, N={sensors} L={targets}, one run")
@@ -246,6 +269,7 @@ def bench_scaling(seed: int = 0, repeat: int = 3) -> dict:
     --------
     >>> bench_scaling()  # doctest: +SKIP
     """
+    seed, repeat = as_int(seed, "seed", 0), as_int(repeat, "repeat", 1)
     from .. import assignment as a
     from ..bounds import pair_bounds
 
@@ -310,6 +334,8 @@ def bench_criteria(n_timing: int = 1000, seed: int = 0, repeat: int = 3) -> dict
     --------
     >>> bench_criteria(20, repeat=1)["per_pair_us"].keys()  # doctest: +SKIP
     """
+    n_timing, repeat = as_int(n_timing, "n_timing", 1), as_int(repeat, "repeat", 1)
+    seed = as_int(seed, "seed", 0)
     import timeit
 
     from .. import tracking as tr
@@ -364,11 +390,9 @@ def bench_book(profile: str = "paper", jobs: int | None = None) -> dict:
     from ..profiles import PROFILES, profile_names
     from .run import Run, default_jobs, execute, execute_all, longest_first, notebooks, precompile
 
-    if profile not in PROFILES:
+    if as_str(profile, "profile") not in PROFILES:
         raise ValueError(f"unknown profile {profile!r}; known: {profile_names()}")
-    jobs = default_jobs() if jobs is None else int(jobs)
-    if jobs < 1:
-        raise ValueError(f"jobs must be >= 1, got {jobs}")
+    jobs = default_jobs() if jobs is None else as_int(jobs, "jobs", 1)
     nbs = notebooks()
     precompile()  # as make book does
     with tempfile.TemporaryDirectory() as tmp:
@@ -490,7 +514,7 @@ def parse_args(argv=None) -> argparse.Namespace:
     ap.add_argument("--sensors", type=int, help="assignment: only the greedy from geometry, with "
                     "this many sensors (and --targets targets)")
     ap.add_argument("--targets", type=int, help="assignment: the number of targets of --sensors")
-    args = ap.parse_args(argv)
+    args = ap.parse_args(as_argv(argv))
     _check_assignment_size(ap, args)
     if args.write is not None:
         if args.which not in ("scaling", "criteria"):

@@ -15,7 +15,14 @@ from collections.abc import Iterable
 
 import numpy as np
 
-from .._validate import ArgumentTypeError, as_choice, as_float_array, as_int, as_noise_table
+from .._validate import (
+    ArgumentTypeError,
+    as_choice,
+    as_float_array,
+    as_int,
+    as_names,
+    as_noise_table,
+)
 from . import kalman
 from .adversary import adversary_moves, control_basis
 from .choosers import NAMES, PairChooser, candidates, fixed_pair_bound, pair_draws
@@ -455,9 +462,7 @@ def monte_carlo(
     if isinstance(strategies, str):
         raise ArgumentTypeError(f"strategies must be a list of names, got the string "
                                 f"{strategies!r}; write [{strategies!r}]")
-    strategies = list(strategies)
-    for s in strategies:
-        as_choice(s, NAMES, "strategy")
+    strategies = list(as_names(strategies, "strategies", NAMES))
     if not strategies:
         return {}
     seeds = list(range(first_seed, first_seed + n_seeds))

@@ -163,9 +163,9 @@ def spearman(a, b, axis: int = -1) -> np.ndarray:
 
     a, b = as_float_array(a, "a"), as_float_array(b, "b")
     axis = as_int(axis, "axis")
-    if a.shape != b.shape or a.ndim == 0 or not -a.ndim <= axis < a.ndim:
-        raise ValueError(f"a and b must have the same shape with an axis {axis}, got {a.shape} "
-                         f"and {b.shape}")
+    if a.shape != b.shape or a.ndim == 0 or not -a.ndim <= axis < a.ndim or a.shape[axis] < 2:
+        raise ValueError(f"a and b must have the same shape, with at least 2 values along axis "
+                         f"{axis}, got {a.shape} and {b.shape}")
     ra = stats.rankdata(a, axis=axis)
     rb = stats.rankdata(b, axis=axis)
     return _pearson(ra, rb, axis)

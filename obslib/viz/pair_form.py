@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import as_float_array, as_point, as_positive, as_str
-from .style import OKABE_ITO, SEQUENTIAL, look
+from .._validate import as_float_array, as_point, as_positive, as_real, as_str
+from .style import OKABE_ITO, SEQUENTIAL, as_axes, look
 
 __all__ = ["plot_fig1", "plot_fig2"]
 
@@ -31,8 +31,9 @@ def plot_fig1(
 
     d_io = as_positive(d_io, "d_io")
     d_jo = as_positive(d_jo, "d_jo")
-    if not (np.isfinite(theta_i) and np.isfinite(theta_j)):
-        raise ValueError("theta_i and theta_j must be finite")
+    theta_i, theta_j = as_real(theta_i, "theta_i"), as_real(theta_j, "theta_j")
+    if ax is not None:
+        as_axes(ax)
     if ax is None:
         fig, ax = plt.subplots(figsize=(4.1, 3), layout="constrained")
     pi_ = d_io * np.array([np.cos(theta_i), np.sin(theta_i)])

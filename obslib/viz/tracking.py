@@ -465,6 +465,7 @@ def draw_published_overlay(ax, published, replay=None, *, x=None, color=None, la
     >>> [line.get_label() for line in ax.get_lines()]
     ['bound, published', 'bound, replay']
     """
+    as_axes(ax)
     pub, rep, x = _check_overlay(published, replay, x)
 
     def xy(a):
@@ -510,6 +511,7 @@ def draw_pair_overlay(ax, published, replay=None, *, color=None, label=None):
     >>> [line.get_ydata().tolist() for line in ax.get_lines()]
     [[3.0, 3.0, 5.0], [3.0, 3.0, 5.0]]
     """
+    as_axes(ax)
     pub = _check_codes("published", published)
     rep = None if replay is None else _check_codes("replay", replay, pub.size)
     k = np.arange(1, pub.size + 1)
