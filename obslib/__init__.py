@@ -21,7 +21,8 @@ symbolic
 scenes
     Seeded random scenes, including near-degenerate ones.
 assignment
-    Unique pair assignment: greedy Algorithm 1, relaxed matching, exact MILP optimum.
+    Unique pair assignment: greedy Algorithm 1, relaxed matching, exact optimum (branch and
+    bound).
 measures
     Theorem 8's measures of the symmetric observability matrix (trace, log det, rank, trace
     inverse).

@@ -17,53 +17,15 @@ import numpy as np
 
 from ._kernels import mahalanobis_rescale
 
-__all__ = [
-    "ArgumentTypeError",
-    "MissingFileError",
-    "as_float_array",
-    "as_points",
-    "as_point",
-    "as_u_max",
-    "as_cov",
-    "as_int",
-    "as_bool",
-    "as_eps",
-    "as_positive",
-    "as_nonnegative",
-    "as_real",
-    "as_str",
-    "as_path",
-    "as_names",
-    "as_argv",
-    "as_mapping",
-    "as_callable",
-    "as_sequence",
-    "as_ints",
-    "as_int_range",
-    "broadcast",
-    "as_rank_rtol",
-    "as_measure_name",
-    "as_weights",
-    "as_real_array",
-    "as_covariances",
-    "as_noise_table",
-    "as_instance",
-    "as_choice",
-    "check_spd_any_scale",
-    "check_spd2",
-    "check_distinct",
-    "check_not_on_targets",
-    "check_differences",
-    "check_weight_memory",
-    "check_pair_sizes",
-    "check_maximisable",
-    "check_scene_batch",
-    "as_stack",
-    "as_u_max_stack",
-    "validated_vectors",
-    "vectors_between",
-    "MAX_WEIGHT_BYTES",
-]
+__all__ = ["ArgumentTypeError", "MissingFileError", "as_float_array", "as_points", "as_point",
+           "as_u_max", "as_cov", "as_int", "as_bool", "as_eps", "as_positive", "as_nonnegative",
+           "as_real", "as_str", "as_path", "as_names", "as_argv", "as_mapping", "as_callable",
+           "as_sequence", "as_ints", "as_triples", "as_int_range", "broadcast", "as_rank_rtol",
+           "as_measure_name", "as_weights", "as_real_array", "as_covariances", "as_noise_table",
+           "as_instance", "as_choice", "check_spd_any_scale", "check_spd2", "check_distinct",
+           "check_not_on_targets", "check_differences", "check_weight_memory", "check_pair_sizes",
+           "check_maximisable", "check_scene_batch", "as_stack", "as_u_max_stack",
+           "validated_vectors", "vectors_between", "MAX_WEIGHT_BYTES"]
 
 
 class MissingFileError(FileNotFoundError, ValueError):
@@ -282,13 +244,8 @@ def as_real_array(value, name: str, what: str) -> np.ndarray:
 
 def check_spd_any_scale(m: np.ndarray, name: str, max_scale: float) -> None:
     """:func:`check_spd2` on ``m`` divided by its largest entry, so that a positive definite
-    matrix of any scale passes (its determinant may underflow or overflow in floating point),
-    and entries over ``max_scale`` are refused with their name.
-
-    A Kalman filter's innovation covariance ``S = H P H^T + R`` has a determinant of the order
-    of the square of ``P``'s entries times the squared distances, so the tracking engine passes
-    the largest scale it can carry.
-    """
+    matrix of any scale passes (its determinant may underflow or overflow in floating point);
+    entries over ``max_scale`` (the largest scale the tracking filter can carry) are refused."""
     if not np.isfinite(m).all():
         raise ValueError(f"{name} has a non-finite entry: {m.tolist()}")
     top = float(np.abs(m).max())
@@ -330,11 +287,8 @@ def as_covariances(cov, n: int, max_scale: float, name: str = "cov") -> np.ndarr
     if c.shape != (n, 2, 2):
         raise ValueError(f"{name} must have shape (2, 2) or ({n}, 2, 2), got {c.shape}")
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        top = np.abs(c).max(axis=(1, 2))
-        m = c / top[:, None, None]
-        ok = (np.isfinite(c).all(axis=(1, 2)) & (top > 0)
-              & (np.abs(m[:, 0, 1] - m[:, 1, 0]) <= 1e-12)
-              & (m[:, 0, 0] > 0) & (m[:, 0, 0] * m[:, 1, 1] - m[:, 0, 1] * m[:, 1, 0] > 0))
+        sym, pd = _spd2_flags(c)
+    ok = np.isfinite(c).all(axis=(1, 2)) & sym & pd
     if not ok.all():
         k = int(np.flatnonzero(~ok)[0])
         check_spd_any_scale(c[k], f"{name} {k}", max_scale)
@@ -534,6 +488,21 @@ def as_int_range(value, name: str, minimum: int | None = None) -> tuple:
     if hi < lo:
         raise ValueError(f"{name} must have lo <= hi, got {value!r}")
     return lo, hi
+
+
+def as_triples(triples, W: np.ndarray, name: str = "triples") -> list:
+    """Triples ``(i, j, l)`` of integers that index the weights ``W`` ``(N, N, L)``."""
+    if W.ndim != 3 or W.shape[0] != W.shape[1]:
+        raise ValueError(f"W must have shape (N, N, L), got {W.shape}")
+    out = []
+    for t in as_sequence(triples, name):
+        if not (isinstance(t, (tuple, list)) and len(t) == 3 and all(
+                isinstance(a, (int, np.integer)) and not isinstance(a, bool) for a in t)):
+            raise ArgumentTypeError(f"{name} must be triples (i, j, l) of integers, got {t!r}")
+        if not (0 <= t[0] < W.shape[0] and 0 <= t[1] < W.shape[0] and 0 <= t[2] < W.shape[2]):
+            raise ValueError(f"{name}: {tuple(t)} is outside W of shape {W.shape}")
+        out.append(tuple(int(a) for a in t))
+    return out
 
 
 def as_sequence(value, name: str) -> list:

@@ -21,7 +21,7 @@ Weights are ``W[i, j, l]`` = the pair bound of sensors ``i, j`` for target ``l``
 Ties
 ----
 Among triples of equal weight every algorithm here takes the lexicographically smallest
-``(i, j, l)`` with ``i < j`` (greedy); the matching and MILP solvers return one optimum.
+``(i, j, l)`` with ``i < j`` (greedy); the matching and the exact solver return one optimum.
 """
 
 from __future__ import annotations
@@ -36,13 +36,12 @@ from . import _exact_pairs as exact_pairs
 from ._kernels import pair_kernel
 from ._pair_search import GeometryHeads, PairSearch, keep_top, target_rows
 from ._validate import (
-    ArgumentTypeError,
     as_bool,
     as_float_array,
     as_int,
     as_points,
     as_positive,
-    as_sequence,
+    as_triples,
     as_weights,
     check_pair_sizes,
     check_weight_memory,
@@ -84,18 +83,7 @@ def assignment_value(W, triples) -> float:
     0.25
     """
     W = as_float_array(W, "W")
-    if W.ndim != 3 or W.shape[0] != W.shape[1]:
-        raise ValueError(f"W must have shape (N, N, L), got {W.shape}")
-    total = 0.0
-    for t in as_sequence(triples, "triples"):
-        if (len(t) != 3 if isinstance(t, (tuple, list)) else True) or not all(
-                isinstance(a, (int, np.integer)) and not isinstance(a, bool) for a in t):
-            raise ArgumentTypeError(f"triples must be (i, j, l) of integers, got {t!r}")
-        i, j, l = t
-        if not (0 <= i < W.shape[0] and 0 <= j < W.shape[0] and 0 <= l < W.shape[2]):
-            raise ValueError(f"triples: {t!r} is outside W of shape {W.shape}")
-        total += float(W[i, j, l])
-    return total
+    return float(sum(W[i, j, l] for i, j, l in as_triples(triples, W)))
 
 
 # --------------------------------------------------------------------------------------------

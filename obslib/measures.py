@@ -97,10 +97,6 @@ RANK_RTOL = 1e-10
 MAX_GROUND_SET = 16
 
 
-def _check_name(name: str) -> str:
-    return as_measure_name(name, MEASURES)
-
-
 def subset_masks(n: int) -> np.ndarray:
     """Membership matrix of all ``2**n`` subsets of ``{0, ..., n-1}``, shape ``(2**n, n)``.
 
@@ -188,7 +184,7 @@ def measure_from_vectors(vectors, masks, name: str, eps: float = 0.0, u=None,
     >>> measure_from_vectors([[1, 1], [-1, 1]], subset_masks(2), "trace")
     array([0., 2., 2., 4.])
     """
-    _check_name(name)
+    as_measure_name(name, MEASURES)
     return measures_from_vectors(vectors, masks, (name,), eps, u, rank_rtol)[name]
 
 
@@ -310,7 +306,7 @@ def measure_table(sensors, target, name: str, eps: float = 0.0, u=None, masks=No
     if masks is None:
         masks = subset_masks(rows.shape[0])
     uu = None if u is None else as_point(u, "u")
-    _check_name(name)
+    as_measure_name(name, MEASURES)
     e, r = as_eps(eps), as_rank_rtol(rank_rtol)
     m = _mask_booleans(masks)
     _check_mask_shape(m, rows.shape[0])
@@ -351,7 +347,7 @@ def measure(sensors, target, name: str, eps: float = 0.0, u=None,
     """
     rows = relative_rows(_sensors_or_empty(sensors), target)
     uu = None if u is None else as_point(u, "u")
-    _check_name(name)
+    as_measure_name(name, MEASURES)
     e, r = as_eps(eps), as_rank_rtol(rank_rtol)
     mask = np.ones((1, rows.shape[0]), dtype=bool)
     return float(_measures(rows, mask, (name,), e, r, uu)[name][0])

@@ -321,17 +321,17 @@ def test_exact_solver_at_the_reach_sizes_equals_highs():
 
 
 def test_exact_solver_hands_large_searches_to_highs(monkeypatch):
-    from obslib import _exact_pairs as exact
+    from obslib import _exact_pairs as exact_pairs
 
-    reference = exact.milp
+    reference = exact_pairs.milp
     calls = []
 
     def counted(*args, **kwargs):
         calls.append(args)
         return reference(*args, **kwargs)
 
-    monkeypatch.setattr(exact, "MAX_NODES", 0)  # every search that branches goes to HiGHS
-    monkeypatch.setattr(exact, "milp", counted)
+    monkeypatch.setattr(exact_pairs, "MAX_NODES", 0)  # every search that branches goes to HiGHS
+    monkeypatch.setattr(exact_pairs, "milp", counted)
     rng = np.random.default_rng(13)
     for _ in range(10):
         L, extra = int(rng.integers(2, 6)), int(rng.integers(0, 3))
@@ -366,7 +366,7 @@ def test_exact_solver_honours_a_tiny_time_limit_at_L_100():
 
 
 def test_exact_solver_refuses_what_would_not_fit_in_memory(monkeypatch):
-    from obslib import _exact_pairs as exact
+    from obslib import _exact_pairs as exact_pairs
     from obslib import assignment
     from obslib.assignment import OptimumNotProven
 
@@ -374,14 +374,14 @@ def test_exact_solver_refuses_what_would_not_fit_in_memory(monkeypatch):
     _, _, W = random_instance(rng, 5, 0)
     # 45 * 5 variables do not fit in what leaves room for 56
     monkeypatch.setattr(assignment, "MAX_EXACT_BYTES",
-                        exact.SEARCH_BYTES + 56 * exact.BYTES_PER_VARIABLE)
+                        exact_pairs.SEARCH_BYTES + 56 * exact_pairs.BYTES_PER_VARIABLE)
     with pytest.raises(ValueError, match=r"over the limit .* fits up to 56 variables"):
         optimal_pair_assignment(W)
     monkeypatch.undo()
     # the 0-1 program a large search hands over runs only within the limit: every search that
     # branches is handed over (no node allowed), and no program fits
-    monkeypatch.setattr(exact, "MAX_NODES", 0)
-    monkeypatch.setattr(exact, "MAX_BYTES", exact.memory_bytes(10, 5))
+    monkeypatch.setattr(exact_pairs, "MAX_NODES", 0)
+    monkeypatch.setattr(exact_pairs, "MAX_BYTES", exact_pairs.memory_bytes(10, 5))
     stopped = 0
     for _ in range(20):
         _, _, W = random_instance(rng, 5, 0)

@@ -12,9 +12,7 @@ both): no glued value shown in quotes, no TeX left raw in the text, no element w
 container, every image of a notebook in a figure with a caption, captions at WCAG AA contrast
 (4.5:1, in light and dark mode), no dead internal link, and no request leaving the page's origin;
 and on a 390 px screen: no page wider than the screen, every control of the animation players on
-the screen, and every figure linked to its image file (shown full size in an overlay). Pages that
-fail a check today are marked ``xfail(strict=True)`` in :data:`KNOWN_FAILURES`, so that the mark
-must go as soon as the page is fixed.
+the screen, and every figure linked to its image file (shown full size in an overlay).
 
 The bound explorer on the pair closed-form page is driven through its contract
 (``window.boundExplorer.set``, ``.bound-value``, ``.exact-value``, the ``data-`` state) at random
@@ -342,16 +340,9 @@ CHECKS = {
     "external_requests": "requests to another origin",
 }
 
-#: (check, page) -> why it fails today, as a strict xfail: a page with a known defect is listed
-#: here with the reason, and the entry must go when the page is fixed (an unexpected pass fails).
-#: Every page passes every check today.
-KNOWN_FAILURES: dict[tuple[str, str], str] = {}
-
-
 def _param(check: str, rel: str):
-    reason = KNOWN_FAILURES.get((check, rel))
-    marks = [pytest.mark.xfail(strict=True, reason=reason)] if reason else []
-    return pytest.param(check, rel, marks=marks, id=f"{check}-{rel.removesuffix('.html')}")
+    """One test per check and page, named by both."""
+    return pytest.param(check, rel, id=f"{check}-{rel.removesuffix('.html')}")
 
 
 @pytest.mark.parametrize("check, rel", [_param(c, p) for c in CHECKS for p in toc_pages()])

@@ -3,7 +3,8 @@
 - No module imports another module's private name (``from .bounds import _x`` or ``bounds._x``);
   private modules (``obslib/_kernels.py``, ``obslib/_validate.py``, ...) are shared inside the
   package and may be imported freely.
-- Every module is at most :data:`MAX_LINES` lines and opens with a one-sentence docstring.
+- Every module is at most :data:`MAX_LINES` lines and opens with a one-sentence docstring (line
+  widths and the rest of the code style are ruff's, in ``tests/test_lint.py``).
 - Only ``obslib/viz`` (and the notebooks' figure settings in ``obslib/notebook.py``) imports
   matplotlib.
 - Nothing in the repository refers to files outside it.
@@ -15,8 +16,6 @@ import ast
 import re
 from pathlib import Path
 
-import pytest
-
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGE = ROOT / "obslib"
 MODULES = sorted(PACKAGE.rglob("*.py"))
@@ -26,26 +25,8 @@ MAX_LINES = 700
 #: applies.
 MATPLOTLIB_OUTSIDE_VIZ = {"obslib/notebook.py"}
 
-#: Known violations in modules this test does not fix, each a strict xfail: it turns red as soon as
-#: the module is fixed, so the entry is removed then.
-KNOWN: dict = {}
-
-
 def rel(path: Path) -> str:
     return path.relative_to(ROOT).as_posix()
-
-
-def params(kind: str):
-    return [
-        pytest.param(
-            p,
-            id=rel(p),
-            marks=[pytest.mark.xfail(strict=True, reason=KNOWN[kind, rel(p)])]
-            if (kind, rel(p)) in KNOWN
-            else [],
-        )
-        for p in MODULES
-    ]
 
 
 def module_name(path: Path) -> str:
@@ -135,27 +116,32 @@ def test_no_module_imports_a_private_name_of_another():
     assert not found, "private names imported across modules:\n" + "\n".join(found)
 
 
-@pytest.mark.parametrize("path", params("lines"))
-def test_module_length(path):
-    n = len(path.read_text().splitlines())
-    assert n <= MAX_LINES, f"{rel(path)} has {n} lines (at most {MAX_LINES})"
+def test_module_length():
+    long = [f"{rel(p)}: {n} lines" for p in MODULES
+            if (n := len(p.read_text().splitlines())) > MAX_LINES]
+    assert not long, f"modules over {MAX_LINES} lines:\n" + "\n".join(long)
 
 
 #: Abbreviations whose period does not end a sentence.
 ABBREVIATIONS = re.compile(r"\b(Figs?|Eqs?|Secs?|Thms?|al|cf|e\.g|i\.e|vs|etc)\.")
 
 
-@pytest.mark.parametrize("path", params("docstring"))
-def test_module_opens_with_a_one_sentence_docstring(path):
+def _opening_sentence_problem(path: Path) -> str | None:
     doc = ast.get_docstring(ast.parse(path.read_text()))
-    assert doc and doc.strip(), f"{rel(path)} has no module docstring"
+    if not (doc and doc.strip()):
+        return f"{rel(path)} has no module docstring"
     first = " ".join(doc.strip().split("\n\n")[0].split())
     text = ABBREVIATIONS.sub("", first)
     breaks = re.findall(r"[.?!]\s+(?=[A-Z])", text)  # a sentence ends and the next begins
-    assert text.endswith((".", "?")) and not breaks, (
-        f"{rel(path)}: the opening paragraph should be one sentence saying what the module is "
-        f"for: {first!r}"
-    )
+    if not text.endswith((".", "?")) or breaks:
+        return f"{rel(path)}: {first!r}"
+    return None
+
+
+def test_every_module_opens_with_a_one_sentence_docstring():
+    # the opening paragraph says in one sentence what the module is for
+    found = [m for p in MODULES if (m := _opening_sentence_problem(p))]
+    assert not found, "opening paragraphs that are not one sentence:\n" + "\n".join(found)
 
 
 def test_matplotlib_only_in_viz():

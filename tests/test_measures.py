@@ -10,7 +10,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import obslib.measures as me
-import obslib.submodularity as sm
+import obslib.submodularity as subm
 
 SETTINGS = settings(derandomize=True, deadline=None, max_examples=60, database=None)
 
@@ -178,7 +178,7 @@ def test_bad_input_raises(call, match):
 
 
 def _audit(sensors, target, name, eps, min_size=0, u=None):
-    return sm.audit_set_function(
+    return subm.audit_set_function(
         sensors, values=me.measure_table(sensors, target, name, eps=eps, u=u), min_size=min_size
     )
 
@@ -298,7 +298,7 @@ def test_neg_trace_inverse_hand_example():
         t = me.measure_table(s, o, name, eps=1.0)
         assert np.isclose(sign * (t[0b101] - t[0b001]), 1 / 3)
         assert np.isclose(sign * (t[0b111] - t[0b011]), 5 / 12)
-    a = sm.audit_set_function(s, values=me.measure_table(s, o, "neg_trace_inverse", eps=1.0))
+    a = subm.audit_set_function(s, values=me.measure_table(s, o, "neg_trace_inverse", eps=1.0))
     assert not a.submodular and a.monotone_increasing
     w = a.submodular_witness
     assert (w.A, w.B, w.x) == ((0,), (0, 1), 2)

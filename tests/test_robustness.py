@@ -4,12 +4,12 @@ import json
 
 import pytest
 
-from obsbook import report as REPORT
+from obsbook import report
 from obslib import claims
 from obslib.claims import robustness as rb
 from obslib.profiles import PROFILES, params
 
-ROBUSTNESS_FILE = REPORT.ROOT / "book" / "data" / "robustness.json"
+ROBUSTNESS_FILE = report.ROOT / "book" / "data" / "robustness.json"
 
 
 def test_identity_variation_reproduces_the_base_verdict(monkeypatch):
@@ -108,13 +108,13 @@ def test_stored_robustness_agrees_with_a_fresh_recomputation(stored, cid, dim):
 
 def test_report_section_from_the_stored_data(stored):
     recs = claims.evaluate("quick", ids=["fig7-switch-mechanism", "thm1", "beyond-criteria"])
-    text = REPORT.render_report(recs, "quick", targets={}, robustness=stored)
+    text = report.render_report(recs, "quick", targets={}, robustness=stored)
     sec = text.split("## How robust are the verdicts?")[1]
     rows = [line for line in sec.splitlines() if line.startswith("* - [")]
     # only the claims of the report that the data covers, each linking to its entry
     assert len(rows) == 1 and "(#claim-fig7-switch-mechanism)" in rows[0]
     assert "  - refuted at Euclidean" in sec.splitlines()
-    assert "How robust" not in REPORT.render_report(recs, "quick", targets={})
+    assert "How robust" not in report.render_report(recs, "quick", targets={})
 
 
 def test_beyond_entries_are_not_varied():

@@ -229,7 +229,7 @@ import itertools  # noqa: E402
 
 import obslib as ob  # noqa: E402
 from obslib.claims import unchecked as cu  # noqa: E402
-from obslib.studies import assignment as ast  # noqa: E402
+from obslib.studies import assignment as sa  # noqa: E402
 from obslib.studies import hardness as hd  # noqa: E402
 
 
@@ -246,8 +246,8 @@ def test_reduction_matching_iff_optimum_reaches_q():
         q = int(rng.integers(2, 4))
         ts = hd.random_3dm(q, int(rng.integers(q, 3 * q + 1)), rng)
         W = hd.three_dm_weights(q, ts)
-        # the optimum by the exact DP (brute force over assignments), not the MILP
-        opt = float(ast.optimal_values(W[None])[0])
+        # the optimum by the exact DP (brute force over assignments), not the branch and bound
+        opt = float(sa.optimal_values(W[None])[0])
         m = hd.has_perfect_matching(q, ts)
         assert m == (opt >= q - 1e-9)
         seen.add(m)

@@ -9,7 +9,7 @@ import numpy as np
 from .._format import number, percent, setting
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..profiles import params
-from ..studies import assignment as st
+from ..studies import assignment as sa
 from ..studies import greedy_tightness as gt
 from ..studies.unchecked import NOTEBOOK as UNCHECKED
 from ._ledger import Finding, Table, claim
@@ -19,12 +19,12 @@ NB = "03_greedy_unique_pairs"
 
 @lru_cache(maxsize=4)
 def _study(n_instances, seed, t_min, t_max, extra_max, u_max):
-    return st.greedy_vs_optimal(n_instances, seed, (t_min, t_max), (0, extra_max), u_max)
+    return sa.greedy_vs_optimal(n_instances, seed, (t_min, t_max), (0, extra_max), u_max)
 
 
 @lru_cache(maxsize=4)
 def _search(n_sensors, n_targets, seed, n_starts, n_steps, u_max):
-    return st.worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
+    return sa.worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
 
 
 def _run(profile):
@@ -56,7 +56,7 @@ LATER_THM6 = (r"The abstract of the later journal version {cite}`zhou2019sensor`
 )
 def _thm6(profile: str) -> Finding:
     p, study, (worst_ratio, _, _) = _run(profile)
-    W = st.tight_weights(1e-3)
+    W = sa.tight_weights(1e-3)
     tight = greedy_pair_assignment(W).value / optimal_pair_assignment(W).value
     ratios = study.ratio
     ok = ratios.min() >= 1 / 3 - 1e-12 and worst_ratio >= 1 / 3 - 1e-12

@@ -296,9 +296,15 @@ def to_json(rows, base: str = "quick") -> str:
     >>> data["base"], data["rows"], set(data["dimensions"]) == set(DIMENSIONS)
     ('quick', [{'claim': 'x', 'holds': True}], True)
     """
+    rows = as_sequence(rows, "rows")
+    if not all(isinstance(r, dict) for r in rows):
+        raise ValueError("rows must be a list of dicts")
     data = {"base": _base_iv(base), "dimensions": {k: list(v) for k, v in DIMENSIONS.items()},
-            "rows": _rows_iv(rows)}
-    return json.dumps(data, indent=1) + "\n"
+            "rows": rows}
+    try:
+        return json.dumps(data, indent=1) + "\n"
+    except (TypeError, ValueError):
+        raise ValueError("rows must hold JSON values (numbers, text, lists, dicts)") from None
 
 
 def write_json(rows, path, base: str = "quick") -> bool:
@@ -314,6 +320,7 @@ def read_json(path) -> dict:
     Examples
     --------
     >>> import tempfile
+    >>> from pathlib import Path
     >>> path = Path(tempfile.mkdtemp()) / "robustness.json"
     >>> write_json([{"claim": "x"}], path, base="paper")
     True

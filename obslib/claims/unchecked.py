@@ -17,7 +17,7 @@ from ..profiles import params
 from ..studies import eq4
 from ..studies import experiment_details as ed
 from ..studies import fig9_measure as fm
-from ..studies import greedy_vs_relaxed as ast
+from ..studies import greedy_vs_relaxed as gvr
 from ..studies import hardness as hd
 from ..studies import replay as rp
 from ..studies import teams as ts
@@ -239,7 +239,7 @@ def _np_complete(profile: str) -> Finding:
 
 @lru_cache(maxsize=4)
 def _fig8(L_values: tuple, trials: int, seed: int, u_max: float):
-    return ast.fig8_sweep(list(L_values), trials, seed, u_max)
+    return gvr.fig8_sweep(list(L_values), trials, seed, u_max)
 
 
 def ordered_gap_example():

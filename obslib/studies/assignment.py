@@ -20,13 +20,12 @@ import numpy as np
 
 from .._kernels import normalise, pair_kernel
 from .._validate import (
-    ArgumentTypeError,
     as_float_array,
     as_int,
     as_int_range,
     as_nonnegative,
     as_positive,
-    as_sequence,
+    as_triples,
     as_u_max,
     check_distinct,
     check_not_on_targets,
@@ -349,21 +348,6 @@ def worst_instance_search(n_sensors: int, n_targets: int, seed: int, n_starts: i
     return float(r[c]), P[c, :n_sensors].copy(), P[c, n_sensors:].copy()
 
 
-def _triples_iv(triples, W, name: str) -> list:
-    """Triples ``(i, j, l)`` of integers indexing ``W`` ``(N, N, L)``."""
-    if W.ndim != 3 or W.shape[0] != W.shape[1]:
-        raise ValueError(f"W must have shape (N, N, L), got {W.shape}")
-    out = []
-    for t in as_sequence(triples, name):
-        if not (isinstance(t, (tuple, list)) and len(t) == 3 and all(
-                isinstance(a, (int, np.integer)) and not isinstance(a, bool) for a in t)):
-            raise ArgumentTypeError(f"{name} must be triples (i, j, l) of integers, got {t!r}")
-        if not (0 <= t[0] < W.shape[0] and 0 <= t[1] < W.shape[0] and 0 <= t[2] < W.shape[2]):
-            raise ValueError(f"{name}: {tuple(t)} is outside W of shape {W.shape}")
-        out.append(tuple(int(a) for a in t))
-    return out
-
-
 def charging(W, greedy_triples, optimal_triples) -> list[dict]:
     """The charging argument of Theorem 6's proof, round by round.
 
@@ -391,8 +375,8 @@ def charging(W, greedy_triples, optimal_triples) -> list[dict]:
     [((0, 1, 0), 3), ((2, 3, 1), 0), ((4, 5, 2), 0)]
     """
     W = as_float_array(W, "W")
-    greedy_triples = _triples_iv(greedy_triples, W, "greedy_triples")
-    left = _triples_iv(optimal_triples, W, "optimal_triples")
+    greedy_triples = as_triples(greedy_triples, W, "greedy_triples")
+    left = as_triples(optimal_triples, W, "optimal_triples")
     rounds = []
     for i, j, l in greedy_triples:
         hit = [t for t in left if {t[0], t[1]} & {i, j} or t[2] == l]

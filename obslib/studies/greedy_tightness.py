@@ -18,7 +18,7 @@ import numpy as np
 from .._validate import as_float_array, as_int, as_nonnegative, as_points
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..bounds import pair_bounds
-from . import assignment as st
+from . import assignment as sa
 
 __all__ = ["tight_geometry", "TIGHT_SENSORS", "TIGHT_TARGETS", "TIGHT_U_MAX", "tight_witness",
            "spread", "first_pick_margin", "jitter_ratios", "jitter_summary"]
@@ -54,7 +54,7 @@ def tight_witness():
 
 @lru_cache(maxsize=4)
 def _search(n_sensors, n_targets, seed, n_starts, n_steps, u_max):
-    return st.worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
+    return sa.worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
 
 
 def tight_geometry(n_sensors: int = 6, n_targets: int = 3, seed: int = 0, n_starts: int = 20,
@@ -125,7 +125,7 @@ def first_pick_margin(sensors, targets, u_max: float = 1.0) -> dict:
     """
     W = pair_bounds(sensors, targets, u_max)
     g, o = greedy_pair_assignment(W), optimal_pair_assignment(W)
-    rounds = st.charging(W, g.triples, o.triples)
+    rounds = sa.charging(W, g.triples, o.triples)
     first = rounds[0]
     top = max(first["charged_w"]) if first["charged_w"] else 0.0
     return {
@@ -139,10 +139,10 @@ def first_pick_margin(sensors, targets, u_max: float = 1.0) -> dict:
 
 
 def _ratio_batch(S, T, u_max):
-    W, valid = st.batch_pair_bounds(S, T, u_max)
+    W, valid = sa.batch_pair_bounds(S, T, u_max)
     W[~valid] = 0.0
-    opt = st.optimal_values(W)
-    g = st.greedy_values(W)
+    opt = sa.optimal_values(W)
+    g = sa.greedy_values(W)
     ok = valid & (opt > 0)
     return np.where(ok, g / np.where(ok, opt, 1.0), np.nan)
 

@@ -310,7 +310,9 @@ def execute(src: Path, dst: Path, parameters: dict | None = None, progress=False
     if src.suffix != ".ipynb":
         raise ValueError(f"src {src}: not a notebook (.ipynb)")
     parameters = {} if parameters is None else as_mapping(parameters, "parameters")
-    as_bool(progress, "progress")
+    if not isinstance(progress, (bool, dict)):
+        raise ArgumentTypeError(f"progress must be True, False or tqdm's arguments, got "
+                                f"{progress!r}")
     if parameters:
         declared = declared_parameters(src)
         unknown = sorted(set(parameters) - set(declared))

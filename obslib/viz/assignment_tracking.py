@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from .._validate import as_mapping
-from ..studies.assignment_tracking import AssignmentRuns
 from .criteria import draw_boxes
 from .style import as_figsize
 
@@ -45,7 +44,7 @@ def plot_assignment_errors(runs: dict, figsize=(7.5, 3.6)):
     runs = as_mapping(runs, "runs")
     for by_rule in runs.values():
         if not as_mapping(by_rule, "runs") or not all(
-                isinstance(r, AssignmentRuns) for r in by_rule.values()):
+                hasattr(r, "run_mean_error") for r in by_rule.values()):
             raise ValueError("runs must map L to {rule: AssignmentRuns} (assignment_study)")
     figsize = as_figsize(figsize)
     if not runs:

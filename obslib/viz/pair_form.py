@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import as_float_array, as_point, as_positive, as_real, as_str
+from .._validate import as_float_array, as_positive, as_real, as_str
 from .style import OKABE_ITO, SEQUENTIAL, as_axes, look
 
 __all__ = ["plot_fig1", "plot_fig2"]
@@ -209,8 +209,6 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     if levels.ndim != 1 or not np.isfinite(levels).all() or (np.diff(levels) <= 0).any():
         raise ValueError("levels must be finite and increasing")
     as_str(title, "title")
-    if mark is not None:
-        mark = as_point(mark, "mark")
     A, T = np.meshgrid(a, t)
     X, Y = A * np.cos(T), A * np.sin(T)
     if mark is not None:

@@ -373,9 +373,8 @@ def animation_html(anim, uid: str = "anim") -> str:
     """
     import re
 
-    from matplotlib.animation import Animation
-
-    as_instance(anim, Animation, "anim")
+    if not hasattr(anim, "to_jshtml"):
+        raise ValueError(f"anim must be an animation (animate()), got {type(anim).__name__}")
     as_str(uid, "uid")
     fig = getattr(anim, "_fig", None)  # a matplotlib animation's figure
     canvas = None if fig is None else fig.canvas

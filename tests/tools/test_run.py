@@ -114,7 +114,7 @@ def test_bad_parameter_value_fails_before_any_notebook_runs(value, expected, mon
 @pytest.mark.parametrize(
     "argv, expected",
     [
-        # values that used to crash a notebook halfway, now outside the declared range
+        # values that would crash a notebook halfway lie outside the declared range
         (
             ["-p", "n_sensors", "1", "04"],
             "n_sensors = 1 is not accepted; expected an integer in [2, 10]",
