@@ -429,7 +429,7 @@ def main(argv=None) -> int:
     """``python -m obsbook.report [--profile P] [--write FILE] [--robustness FILE]
     [--notebooks DIR]``: render the report, print it or store it (exit status 2 for a bad
     profile or path)."""
-    from obslib._io import OutputPathError, check_output_path, write_output
+    from obslib._io import OutputPathError, as_output_path, write_output
     from obslib.claims import evaluate
     from obslib.claims.robustness import read_json
     from obslib.profiles import profile_names
@@ -445,7 +445,7 @@ def main(argv=None) -> int:
     args = ap.parse_args(argv)
     if args.write is not None:
         try:
-            args.write = check_output_path(args.write)
+            args.write = as_output_path(args.write)
         except OutputPathError as exc:
             ap.error(f"--write {exc}")
     if not Path(args.notebooks).is_dir():

@@ -129,7 +129,7 @@ def grid_maximum(alpha, theta, Z, atol: float = 1e-12) -> GridMax:
 
 
 # --- Theorem 5: the maximising alpha for a fixed theta -------------------------------------------
-def _check_theta_q(theta, u_over_d):
+def _theta_q_iv(theta, u_over_d):
     th = as_float_array(theta, "theta")
     q = as_float_array(u_over_d, "u_over_d")
     if not np.isfinite(th).all():
@@ -227,7 +227,7 @@ def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):
     >>> maximising_alpha([np.pi / 4, np.pi / 2], 0.0)
     array([1., 1.])
     """
-    th, q = _check_theta_q(theta, u_over_d)
+    th, q = _theta_q_iv(theta, u_over_d)
     xtol = as_positive(xtol, "xtol")
     shape = th.shape
     th, q = th.ravel(), q.ravel()
@@ -270,7 +270,7 @@ def maximising_alpha_closed(theta, u_over_d):
     >>> round(maximising_alpha_closed(np.pi / 4, 1.0), 10)
     1.1547005384
     """
-    th, q = _check_theta_q(theta, u_over_d)
+    th, q = _theta_q_iv(theta, u_over_d)
     r = np.sqrt(1.0 + q * q)
     s2 = np.sin(th) ** 2
     out = np.sqrt(r * (r * s2 + q * q * np.abs(np.cos(th))) / (q * q + s2))

@@ -21,9 +21,9 @@ Accepted values
     entry of a list; the type is that of the default), a :class:`Choice` of strings or a
     :class:`File`. ``CONSTRAINTS[notebook]`` adds the conditions between parameters (or on a whole
     list), each a Python expression over the parameter names with the reason for it.
-    :func:`check_parameters` enforces both before any notebook runs; a test runs every notebook at
-    the boundary values of each range. Sizes (seeds, instances, trials) have no upper limit unless
-    the work grows faster than in proportion to them; the exponential ones are bounded, alone
+    :func:`validated_parameters` enforces both before any notebook runs; a test runs every notebook
+    at the boundary values of each range. Sizes (seeds, instances, trials) have no upper limit
+    unless the work grows faster than in proportion to them; the exponential ones are bounded, alone
     and together.
 """
 
@@ -41,7 +41,7 @@ from ._validate import MissingFileError, as_mapping, as_path, as_str
 
 __all__ = ["PROFILES", "RANGES", "CONSTRAINTS", "Range", "Choice", "File", "Constraint",
            "notebook_dir", "defaults", "parameter_cell", "params", "profile_names",
-           "check_parameters"]
+           "validated_parameters"]
 
 #: Environment variable naming the folder of the notebooks, for an install without its checkout.
 NOTEBOOKS_ENV = "OBSLIB_NOTEBOOKS"
@@ -436,7 +436,7 @@ def _accepts(kind: type, rule, value):
     return value
 
 
-def _check_one(notebook: str, name: str, value, default, rule):
+def _parameter_iv(notebook: str, name: str, value, default, rule):
     if isinstance(default, list):
         kinds = {type(x) for x in default}
         kind = float if float in kinds else (kinds.pop() if len(kinds) == 1 else float)
@@ -454,7 +454,7 @@ def _check_one(notebook: str, name: str, value, default, rule):
     return got
 
 
-def check_parameters(notebook: str, values: dict, defaults: dict | None = None) -> dict:
+def validated_parameters(notebook: str, values: dict, defaults: dict | None = None) -> dict:
     """Check parameter ``values`` (overrides) for ``notebook`` against its declarations.
 
     Parameters
@@ -483,9 +483,9 @@ def check_parameters(notebook: str, values: dict, defaults: dict | None = None) 
     Examples
     --------
     >>> nb = "05_two_sensors_tracking"
-    >>> check_parameters(nb, {"n_seeds": 5, "u_max": 2})
+    >>> validated_parameters(nb, {"n_seeds": 5, "u_max": 2})
     {'n_seeds': 5, 'u_max': 2.0}
-    >>> check_parameters(nb, {"n_seeds": -5})
+    >>> validated_parameters(nb, {"n_seeds": -5})
     Traceback (most recent call last):
     ...
     ValueError: notebook 05_two_sensors_tracking: ...; expected an integer >= 1
@@ -499,7 +499,7 @@ def check_parameters(notebook: str, values: dict, defaults: dict | None = None) 
         raise ValueError(f"notebook {notebook} has no parameter(s) {unknown}; "
                          f"its parameters: {sorted(defaults)}")
     rules = RANGES.get(notebook, {})
-    out = {name: _check_one(notebook, name, value, defaults[name], rules.get(name))
+    out = {name: _parameter_iv(notebook, name, value, defaults[name], rules.get(name))
            for name, value in values.items()}
     merged = {**defaults, **out}
     for c in CONSTRAINTS.get(notebook, ()):

@@ -155,7 +155,7 @@ def _ground_size(ground) -> int:
     return n
 
 
-def _check_min_size(min_size, n: int) -> int:
+def _min_size_iv(min_size, n: int) -> int:
     min_size = as_int(min_size, "min_size", 0)
     if min_size > n:
         raise ValueError(f"min_size {min_size} exceeds the ground set size {n}")
@@ -329,7 +329,7 @@ def set_function_table(ground, f: Callable[[tuple], float], min_size: int = 0) -
     array([0., 1., 1., 1.])
     """
     n = _ground_size(ground)
-    m = _check_min_size(min_size, n)
+    m = _min_size_iv(min_size, n)
     as_callable(f, "f")
     pc = _popcount(n)
     out = np.full(2**n, np.nan)
@@ -349,7 +349,7 @@ def set_function_table(ground, f: Callable[[tuple], float], min_size: int = 0) -
 def _prepare_tables(values, n: int, min_size: int, rtol: float, atol: float):
     """Validate tables for :func:`audit_tables` / :func:`audit_flags`; return ``n, m, v, tol``."""
     n = _ground_size(as_int(n, "n", 0))
-    m = _check_min_size(min_size, n)
+    m = _min_size_iv(min_size, n)
     rtol, atol = as_nonnegative(rtol, "rtol"), as_nonnegative(atol, "atol")
     v = as_float_array(values, "values")
     if v.ndim == 1:

@@ -15,7 +15,7 @@ import argparse
 import json
 import sys
 
-from .._io import OutputPathError, check_output_path, write_output
+from .._io import OutputPathError, as_output_path, write_output
 from .._validate import as_argv
 from ..profiles import profile_names
 from . import as_json, evaluate, registry
@@ -50,7 +50,7 @@ def parse_args(argv=None) -> argparse.Namespace:
             ap.error(f"unknown claim id(s) {unknown}; known: {', '.join(known)}")
     if args.write is not None:
         try:
-            args.write = check_output_path(args.write)
+            args.write = as_output_path(args.write)
         except OutputPathError as exc:
             ap.error(f"--write {exc}")
         regular = args.write.is_file() or not args.write.exists()  # not /dev/stdout, a FIFO...

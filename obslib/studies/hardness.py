@@ -42,7 +42,7 @@ __all__ = [
 ]
 
 
-def _check_3dm(q, triples) -> tuple[int, list]:
+def _three_dm_iv(q, triples) -> tuple[int, list]:
     q = as_int(q, "q", 1)
     out = []
     if isinstance(triples, (str, bytes)) or not isinstance(triples, (list, tuple)):
@@ -71,7 +71,7 @@ def three_dm_weights(q: int, triples) -> np.ndarray:
     >>> W.shape, float(W[0, 3, 1]), float(W[3, 0, 1]), float(W.sum())
     ((4, 4, 2), 1.0, 1.0, 2.0)
     """
-    q, ts = _check_3dm(q, triples)
+    q, ts = _three_dm_iv(q, triples)
     W = np.zeros((2 * q, 2 * q, q))
     for x, y, z in ts:
         W[x, q + y, z] = W[q + y, x, z] = 1.0
@@ -89,7 +89,7 @@ def has_perfect_matching(q: int, triples) -> bool:
     >>> has_perfect_matching(2, [(0, 0, 0), (1, 1, 0)])  # both use z = 0
     False
     """
-    q, ts = _check_3dm(q, triples)
+    q, ts = _three_dm_iv(q, triples)
     ts = sorted(set(ts))
     for combo in itertools.combinations(ts, q):
         if all(len({t[k] for t in combo}) == q for k in range(3)):
@@ -108,7 +108,7 @@ def random_3dm(q: int, n_triples: int, rng) -> list:
     >>> len(t), len(set(t)), all(0 <= v < 2 for triple in t for v in triple)
     (5, 5, True)
     """
-    q, _ = _check_3dm(q, [])
+    q, _ = _three_dm_iv(q, [])
     total = q**3
     if (isinstance(n_triples, bool) or not isinstance(n_triples, (int, np.integer))
             or not 0 <= n_triples <= total):

@@ -498,7 +498,7 @@ def parse_args(argv=None) -> argparse.Namespace:
     >>> parse_args(["book", "--profile", "quick"]).profile
     'quick'
     """
-    from .._io import OutputPathError, check_output_path
+    from .._io import OutputPathError, as_output_path
     from ..profiles import profile_names
 
     ap = argparse.ArgumentParser(prog="python -m obslib.bench", description=__doc__,
@@ -524,7 +524,7 @@ def parse_args(argv=None) -> argparse.Namespace:
         if args.which not in ("scaling", "criteria"):
             ap.error("--write applies to the scaling and criteria benchmarks only")
         try:
-            args.write = check_output_path(args.write)
+            args.write = as_output_path(args.write)
         except OutputPathError as exc:
             ap.error(f"--write {exc}")
     if args.profile != "paper" and args.which != "book":

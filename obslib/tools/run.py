@@ -186,9 +186,9 @@ def plan(paths, profile: str | None, overrides: dict, in_place: bool,
     """Every :class:`Run` of a command, all parameters checked first.
 
     Every notebook's parameters (profile values and ``-p`` overrides) are checked against the
-    parameters it declares, their ranges and constraints (:func:`obslib.profiles.check_parameters`)
-    before anything runs, so a bad value or a name unknown to the second notebook fails before
-    the first starts.
+    parameters it declares, their ranges and constraints
+    (:func:`obslib.profiles.validated_parameters`) before anything runs, so a bad value or a name
+    unknown to the second notebook fails before the first starts.
 
     Raises
     ------
@@ -205,7 +205,7 @@ def plan(paths, profile: str | None, overrides: dict, in_place: bool,
     ...
     ValueError: ...n_seeds = 2.5 is not accepted; expected an integer >= 1
     """
-    from ..profiles import PROFILES, check_parameters
+    from ..profiles import PROFILES, validated_parameters
 
     paths = [as_path(p, "paths", exists=True) for p in as_sequence(paths, "paths")]
     if profile is not None and as_str(profile, "profile") not in PROFILES:
@@ -221,7 +221,7 @@ def plan(paths, profile: str | None, overrides: dict, in_place: bool,
         declared = declared_parameters(nb)
         parameters = dict(PROFILES[profile or "paper"].get(nb.stem, {}))
         parameters.update(overrides)
-        parameters = check_parameters(nb.stem, parameters, declared)
+        parameters = validated_parameters(nb.stem, parameters, declared)
         runs.append(Run(nb, runs_dir / label / nb.name, parameters, label, profile,
                         dict(overrides)))
     return runs

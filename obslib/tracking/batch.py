@@ -214,7 +214,7 @@ def _collect(chooser, best_log, bound, est, cov, best, truth) -> dict:
 # --------------------------------------------------------------------------------------------
 
 
-def _check_arms(arms) -> dict:
+def _arms_iv(arms) -> dict:
     try:
         arms = dict(arms)
     except (TypeError, ValueError):
@@ -234,7 +234,7 @@ def _check_arms(arms) -> dict:
     return arms
 
 
-def _check_seeds(seeds, noise):
+def _seeds_iv(seeds, noise):
     if (seeds is None) == (noise is None):
         raise ValueError("give either seeds or noise tables")
     if noise is not None:
@@ -338,8 +338,8 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
     >>> runs["eu"].pairs.shape, runs["eu"].seeds
     ((3, 30, 2), (0, 1, 2))
     """
-    arms = _check_arms(arms)
-    seeds, given = _check_seeds(seeds, noise)
+    arms = _arms_iv(arms)
+    seeds, given = _seeds_iv(seeds, noise)
     first: dict = {}
     for name, arm in arms.items():
         first.setdefault(_run_key(arm), name)

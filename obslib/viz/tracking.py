@@ -414,7 +414,7 @@ def _float_array(name: str, a, ndim: tuple) -> np.ndarray:
     return out
 
 
-def _check_overlay(published, replay, x):
+def _overlay_iv(published, replay, x):
     pub = _float_array("published", published, (1, 2))
     if pub.ndim == 2 and pub.shape[1] != 2:
         raise ValueError(f"a path must have shape (n, 2), got published {pub.shape}")
@@ -465,7 +465,7 @@ def draw_published_overlay(ax, published, replay=None, *, x=None, color=None, la
     ['bound, published', 'bound, replay']
     """
     as_axes(ax)
-    pub, rep, x = _check_overlay(published, replay, x)
+    pub, rep, x = _overlay_iv(published, replay, x)
 
     def xy(a):
         return (x[: a.shape[0]], a) if a.ndim == 1 else (a[:, 0], a[:, 1])
@@ -477,7 +477,7 @@ def draw_published_overlay(ax, published, replay=None, *, x=None, color=None, la
     return ax
 
 
-def _check_codes(name, a, n=None):
+def _codes_iv(name, a, n=None):
     out = _float_array(name, a, (1,))
     if n is not None and out.size != n:
         raise ValueError(f"{name} has {out.size} steps, published has {n}")
@@ -511,8 +511,8 @@ def draw_pair_overlay(ax, published, replay=None, *, color=None, label=None):
     [[3.0, 3.0, 5.0], [3.0, 3.0, 5.0]]
     """
     as_axes(ax)
-    pub = _check_codes("published", published)
-    rep = None if replay is None else _check_codes("replay", replay, pub.size)
+    pub = _codes_iv("published", published)
+    rep = None if replay is None else _codes_iv("replay", replay, pub.size)
     k = np.arange(1, pub.size + 1)
     color = look("best-pair").color if color is None else color
     lab = (lambda w: None) if label is None else (lambda w: f"{label}, {w}")

@@ -167,18 +167,18 @@ def test_unknown_parameter_of_the_second_notebook_fails_before_the_first(monkeyp
 
 
 def test_parameter_checks_accept_good_values_and_convert_numbers():
-    from obslib.profiles import check_parameters
+    from obslib.profiles import validated_parameters
 
     nb = "05_two_sensors_tracking"
-    assert check_parameters(nb, {"u_max": 2, "n_seeds": 3}) == {"u_max": 2.0, "n_seeds": 3}
-    assert check_parameters("08_general_assignment", {"eps_values": [1, 0.5]}) == {
+    assert validated_parameters(nb, {"u_max": 2, "n_seeds": 3}) == {"u_max": 2.0, "n_seeds": 3}
+    assert validated_parameters("08_general_assignment", {"eps_values": [1, 0.5]}) == {
         "eps_values": [1.0, 0.5]}
     for bad in ({"metric": "no"}, {"u_max": -1.0}, {"u_max": float("nan")}, {"n_seeds": 5.0}):
         with pytest.raises(ValueError, match=f"parameter {next(iter(bad))}"):
-            check_parameters(nb, bad)
+            validated_parameters(nb, bad)
     for bad in ({"eps_values": [0.0]}, {"eps_values": []}, {"eps_values": 1.0}):
         with pytest.raises(ValueError, match="expected a non-empty list, each entry number in"):
-            check_parameters("08_general_assignment", bad)
+            validated_parameters("08_general_assignment", bad)
 
 
 def test_every_parameter_has_a_declared_range():
@@ -191,12 +191,12 @@ def test_every_parameter_has_a_declared_range():
 @pytest.mark.parametrize("profile", ["paper", "quick"])
 def test_every_profile_passes_the_parameter_checks(profile):
     # the profiles' values and the notebooks' own defaults lie in the declared ranges
-    from obslib.profiles import PROFILES, check_parameters, defaults
+    from obslib.profiles import PROFILES, defaults, validated_parameters
 
     for nb in run.notebooks():
         declared = defaults(nb.stem)
-        check_parameters(nb.stem, PROFILES[profile][nb.stem], declared)
-        check_parameters(nb.stem, declared, declared)
+        validated_parameters(nb.stem, PROFILES[profile][nb.stem], declared)
+        validated_parameters(nb.stem, declared, declared)
 
 
 # --------------------------------------------------------------------------- reruns
