@@ -149,3 +149,48 @@ def test_each_check_runs_in_one_place_in_the_same_order():
         a = validated_vectors(s, t, cov)
         b = vectors_between(as_points(s), as_points(t, "targets"), cov)
         assert all(np.array_equal(x, y) for x, y in zip(a, b))
+
+
+# --------------------------------------------------------------------------------------------
+# One error contract: every bad input is a ValueError, wrong types also a TypeError
+# --------------------------------------------------------------------------------------------
+
+
+def test_wrong_types_in_every_layer_are_caught_as_value_errors():
+    from obslib import tracking as tr
+    from obslib._validate import ArgumentTypeError
+
+    setup = tr.PAPER_CIRCLE.replace(steps=3)
+    for call in (lambda: tr.monte_carlo(setup, n_seeds=2.0),
+                 lambda: tr.simulate(setup, "best-pair", seed=True),
+                 lambda: tr.simulate_batch(setup, "best-pair", seeds=[0, None]),
+                 lambda: ob.controls.disc_controls(1.0, 3.0, 8),
+                 lambda: ob.greedy_pair_assignment(np.zeros((4, 4, 1)), k=2.5)):
+        with pytest.raises(ValueError) as exc:
+            call()
+        assert isinstance(exc.value, TypeError) and isinstance(exc.value, ArgumentTypeError)
+
+
+def test_the_pair_solvers_refuse_weights_and_geometry_together_alike():
+    S, T = [[0, 0], [1, 0], [10, 0], [11, 0.5]], [[0.5, 1], [10.5, 1]]
+    W = ob.pair_bounds(S, T, 1.0)
+    from obslib.assignment import greedy_pair_assignment_literal
+
+    for solve in (ob.greedy_pair_assignment, ob.relaxed_pair_assignment,
+                  greedy_pair_assignment_literal):
+        for extra in ({"sensors": S}, {"targets": T}, {"u_max": 1.0}, {"cov": np.eye(2)}):
+            with pytest.raises(ValueError, match=r"^give either W or sensors/targets, not both$"):
+                solve(W, **extra)
+        with pytest.raises(ValueError, match=r"^give W, or sensors=, targets= and u_max="):
+            solve(sensors=S, targets=T)
+
+
+def test_validators_take_the_value_first():
+    from obslib import _validate as v
+
+    assert v.as_int(3, "n", 1) == 3 and v.as_positive(2.5, "step") == 2.5
+    assert v.as_nonnegative(0, "u_max") == 0.0
+    with pytest.raises(ValueError, match="step must be finite and positive, got 0"):
+        v.as_positive(0, "step")
+    with pytest.raises(v.ArgumentTypeError, match="n must be an integer, got 3.0"):
+        v.as_int(3.0, "n", 1)
