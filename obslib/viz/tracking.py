@@ -403,11 +403,8 @@ def animation_html(anim, uid: str = "anim") -> str:
     return re.sub(r'<link[^>]*href="(?:https?:)?//[^"]*"[^>]*>\s*', "", html)
 
 
-def _float_array(name: str, a, ndim: tuple) -> np.ndarray:
-    try:
-        out = as_float_array(a, "a")
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be an array of numbers") from None
+def _float_array(a, name: str, ndim: tuple) -> np.ndarray:
+    out = as_float_array(a, name)
     if out.ndim not in ndim:
         raise ValueError(f"{name} must have {' or '.join(map(str, ndim))} dimensions, "
                          f"got shape {out.shape}")
@@ -415,16 +412,16 @@ def _float_array(name: str, a, ndim: tuple) -> np.ndarray:
 
 
 def _overlay_iv(published, replay, x):
-    pub = _float_array("published", published, (1, 2))
+    pub = _float_array(published, "published", (1, 2))
     if pub.ndim == 2 and pub.shape[1] != 2:
         raise ValueError(f"a path must have shape (n, 2), got published {pub.shape}")
     if pub.ndim == 1 and x is None:
         raise ValueError("a series (1-D published) needs x, e.g. the steps 1..n")
-    rep = None if replay is None else _float_array("replay", replay, (pub.ndim,))
+    rep = None if replay is None else _float_array(replay, "replay", (pub.ndim,))
     if rep is not None and rep.shape[1:] != pub.shape[1:]:
         raise ValueError(f"replay {rep.shape} does not match published {pub.shape}")
     if x is not None:
-        x = _float_array("x", x, (1,))
+        x = _float_array(x, "x", (1,))
         if x.size < max(pub.shape[0], 0 if rep is None else rep.shape[0]):
             raise ValueError(f"x has {x.size} values, fewer than the series")
     return pub, rep, x
@@ -477,8 +474,8 @@ def draw_published_overlay(ax, published, replay=None, *, x=None, color=None, la
     return ax
 
 
-def _codes_iv(name, a, n=None):
-    out = _float_array(name, a, (1,))
+def _codes_iv(a, name, n=None):
+    out = _float_array(a, name, (1,))
     if n is not None and out.size != n:
         raise ValueError(f"{name} has {out.size} steps, published has {n}")
     return out
@@ -511,8 +508,8 @@ def draw_pair_overlay(ax, published, replay=None, *, color=None, label=None):
     [[3.0, 3.0, 5.0], [3.0, 3.0, 5.0]]
     """
     as_axes(ax)
-    pub = _codes_iv("published", published)
-    rep = None if replay is None else _codes_iv("replay", replay, pub.size)
+    pub = _codes_iv(published, "published")
+    rep = None if replay is None else _codes_iv(replay, "replay", pub.size)
     k = np.arange(1, pub.size + 1)
     color = look("best-pair").color if color is None else color
     lab = (lambda w: None) if label is None else (lambda w: f"{label}, {w}")
