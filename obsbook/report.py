@@ -266,8 +266,9 @@ def counts_sentence(records) -> str:
     >>> from obslib.claims import Record
     >>> rs = [Record(str(i), "", "", "", "", s, "", {}) for i, s in
     ...       enumerate(["reproduced", "reproduced", "refuted"])]
-    >>> counts_sentence(rs)
-    'Of the 3 claims of the paper in the ledger, 2 are reproduced and 1 refuted; none is partly reproduced or untestable.'
+    >>> print(counts_sentence(rs))  # doctest: +NORMALIZE_WHITESPACE
+    Of the 3 claims of the paper in the ledger, 2 are reproduced and 1 refuted; none is partly
+    reproduced or untestable.
     """
     paper = [r for r in records if r.kind == "paper"]
     c = Counter(r.status for r in paper)
@@ -370,8 +371,15 @@ def render_report(records, profile: str = "paper", targets=None, robustness=None
     tally = Counter(r.status for r in paper)
     parameters = ("the paper's parameters (profile `paper`)" if profile == "paper" else
                   f"the parameters of the profile `{profile}`")
-    lines = [HEADER.format(profile=profile, parameters=parameters), "## The verdicts in numbers", "",
-             MARKERS["counts"][0], counts_sentence(records), MARKERS["counts"][1], ""]
+    lines = [
+        HEADER.format(profile=profile, parameters=parameters),
+        "## The verdicts in numbers",
+        "",
+        MARKERS["counts"][0],
+        counts_sentence(records),
+        MARKERS["counts"][1],
+        "",
+    ]
     if beyond:
         lines += [f"The book's own questions, {number(len(beyond))} of them, are reported apart "
                   "in [Beyond the paper](#report-beyond).", ""]
@@ -421,7 +429,7 @@ def main(argv=None) -> int:
     """``python -m obsbook.report [--profile P] [--write FILE] [--robustness FILE]
     [--notebooks DIR]``: render the report, print it or store it (exit status 2 for a bad
     profile or path)."""
-    from obslib._io import OutputPathError, check_output_path, write_output
+    from obslib._io import OutputPathError, as_output_path, write_output
     from obslib.claims import evaluate
     from obslib.claims.robustness import read_json
     from obslib.profiles import profile_names
@@ -437,7 +445,7 @@ def main(argv=None) -> int:
     args = ap.parse_args(argv)
     if args.write is not None:
         try:
-            args.write = check_output_path(args.write)
+            args.write = as_output_path(args.write)
         except OutputPathError as exc:
             ap.error(f"--write {exc}")
     if not Path(args.notebooks).is_dir():

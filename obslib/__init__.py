@@ -21,9 +21,11 @@ symbolic
 scenes
     Seeded random scenes, including near-degenerate ones.
 assignment
-    Unique pair assignment: greedy Algorithm 1, relaxed matching, exact MILP optimum.
+    Unique pair assignment: greedy Algorithm 1, relaxed matching, exact optimum (branch and
+    bound).
 measures
-    Theorem 8's measures of the symmetric observability matrix (trace, log det, rank, trace inverse).
+    Theorem 8's measures of the symmetric observability matrix (trace, log det, rank, trace
+    inverse).
 submodularity
     Exhaustive monotonicity/submodularity checks of set functions; smallest witnesses.
 bound_tables
@@ -52,19 +54,19 @@ the command lines ``python -m obslib.run`` and ``python -m obslib.bench``) and `
 (figure and table settings every notebook applies).
 """
 
+from . import tracking  # (ob.tracking.simulate, PAPER_CIRCLE, PAPER_ADVERSARIAL)
 from .assignment import (
     PairAssignment,
     greedy_pair_assignment,
     optimal_pair_assignment,
     relaxed_pair_assignment,
 )
+from .bound_tables import lower_bound_table
 from .bounds import lower_bound, pair_bound_polar, pair_bounds, relative_vectors, worst_case_control
 from .measures import MEASURES, measure, measure_table, symmetric_observability_matrix
 from .observability import inverse_condition_number, observability_matrix, relative_rows
-from .bound_tables import lower_bound_table
 from .submodularity import audit_set_function
 from .teams import greedy_team_assignment, optimal_team_assignment
-from . import tracking  # noqa: E402  (ob.tracking.simulate, PAPER_CIRCLE, PAPER_ADVERSARIAL)
 
 __version__ = "0.1.0"
 

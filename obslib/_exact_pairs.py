@@ -1,4 +1,5 @@
-"""Exact solver of Problem 1 (unique pair assignment), behind :func:`obslib.optimal_pair_assignment`.
+"""Exact solver of Problem 1 (unique pair assignment), behind
+:func:`obslib.optimal_pair_assignment`.
 
 Branch and bound on the bound of the linear relaxation: the LP's duals ``y >= 0`` (HiGHS via
 ``scipy.optimize.linprog``, by column generation: :func:`lp_duals`) turn every assignment's value
@@ -18,7 +19,8 @@ import time
 
 import numpy as np
 
-__all__ = ["solve", "milp", "lp_duals", "pair_rows", "memory_bytes", "Stopped", "MAX_NODES",
+__all__ = ["solve", "milp", "lp_duals", "pair_rows", "memory_bytes", "check_memory", "Stopped",
+           "MAX_NODES",
            "MAX_BYTES", "BYTES_PER_VARIABLE", "SEARCH_BYTES", "MILP_BYTES_PER_VARIABLE",
            "SEARCH_MAX_VARIABLES", "HIGHS_SECONDS_PER_VARIABLE"]
 
@@ -68,14 +70,18 @@ def _hi_scale(top: float) -> float:
 
 
 def pair_rows(n, n_targets, ii, jj, keep):
-    """Constraint matrix (target rows, then sensor rows) of the variables ``keep`` (``p * L + l``)."""
+    """Constraint matrix (target rows, then sensor rows) of the variables ``keep``
+    (``p * L + l``)."""
     from scipy.sparse import coo_matrix, vstack
 
     p_of, l_of = keep // n_targets, keep % n_targets
     col = np.arange(keep.size)
     target_rows = coo_matrix((np.ones(keep.size), (l_of, col)), shape=(n_targets, keep.size))
     sensor_rows = coo_matrix(
-        (np.ones(2 * keep.size), (np.concatenate([ii[p_of], jj[p_of]]), np.concatenate([col, col]))),
+        (
+            np.ones(2 * keep.size),
+            (np.concatenate([ii[p_of], jj[p_of]]), np.concatenate([col, col])),
+        ),
         shape=(n, keep.size),
     )
     return vstack([target_rows, sensor_rows]).tocsr()
@@ -482,7 +488,7 @@ class _Search:
         # loss + lbt - tmin[l] < limit and loss + (lbs - smin[i] - smin[j]) / 2 < limit
         half = 0.5 * lbs
         # branch on the open target or the free sensor with the fewest options that fit
-        pick, options = None, None
+        options = None
         for l in tfree:
             room = limit - (lbt - tmin[l])
             opts = [o for o in self._fitting(self.tops[l], room, sfree, tfree)
@@ -525,3 +531,22 @@ class _Search:
                 return
             if opt[1] in tfree and opt[2] in sfree and opt[3] in sfree:
                 yield opt
+
+
+def check_memory(n, n_targets, limit):
+    """Refuse, before any work, an exact solve whose estimated memory exceeds ``limit`` bytes."""
+    need = memory_bytes(n, n_targets)
+    if need <= limit:
+        return
+    per = BYTES_PER_VARIABLE
+    most = max(0, limit - SEARCH_BYTES) // per
+    top = 0
+    while (top + 1) * (2 * top + 2) * (2 * top + 1) // 2 <= most:
+        top += 1
+    raise ValueError(
+        f"the exact solver would need about {need / 2**30:.1f} GiB for N = {n}, L = {n_targets} "
+        f"({n * (n - 1) // 2 * n_targets:,} pair-target variables, {per} bytes each), over the "
+        f"limit of {limit / 2**30:.0f} GiB: it fits up to {most:,} variables "
+        f"(N (N - 1) / 2 * L), e.g. N = 2L up to L = {top}; for larger instances use "
+        "greedy_pair_assignment (within 1/3 of the optimum, Theorem 6) or "
+        "relaxed_pair_assignment (an upper bound)")

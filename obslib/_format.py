@@ -25,6 +25,8 @@ import math
 import math as _math
 import numbers
 
+from ._validate import as_positive, as_real, as_str
+
 __all__ = ["number", "count", "small", "percent", "span", "setting", "listing", "fixed",
            "format_small"]
 
@@ -221,4 +223,10 @@ def format_small(x: float, floor: float = 1e-12, fmt: str = ".3g") -> str:
 
     Kept for printed outputs that are not prose; prose uses :func:`small`.
     """
-    return f"< {floor:.0e}" if abs(x) < floor else format(x, fmt)
+    x, floor = as_real(x, "x"), as_positive(floor, "floor")
+    as_str(fmt, "fmt")
+    try:
+        shown = format(x, fmt)
+    except ValueError:
+        raise ValueError(f"fmt {fmt!r} is not a format of a number") from None
+    return f"< {floor:.0e}" if abs(x) < floor else shown

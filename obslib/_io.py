@@ -1,7 +1,7 @@
 """Writing a command's output file safely; refusing, before any work, a path that cannot be written.
 
 Every command line of the package that takes an output path (``--write``) calls
-:func:`check_output_path` while it parses its arguments, so an impossible path is a command-line
+:func:`as_output_path` while it parses its arguments, so an impossible path is a command-line
 error (exit status 2) before anything is computed, and :func:`write_output` at the end:
 
 - a regular file is replaced atomically (a temporary file in the same directory, then a rename),
@@ -18,20 +18,20 @@ import stat
 import tempfile
 from pathlib import Path
 
-__all__ = ["OutputPathError", "check_output_path", "write_output"]
+__all__ = ["OutputPathError", "as_output_path", "write_output"]
 
 
 class OutputPathError(ValueError):
     """An output path that cannot be written (missing directory, not a directory, no permission)."""
 
 
-def check_output_path(path) -> Path:
+def as_output_path(path) -> Path:
     """``path`` as a :class:`~pathlib.Path` if a file can be written there, else
     :class:`OutputPathError` saying why. Nothing is created or written.
 
     Examples
     --------
-    >>> check_output_path("/no-dir/x.json")
+    >>> as_output_path("/no-dir/x.json")
     Traceback (most recent call last):
     ...
     obslib._io.OutputPathError: /no-dir/x.json: directory /no-dir does not exist

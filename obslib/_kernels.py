@@ -189,7 +189,8 @@ def gram_parts(r: np.ndarray):
 
 
 def ratio_from_gram(det, tr):
-    """``sqrt(det) / lambda_max`` with ``lambda_max = tr/2 + sqrt((tr/2)^2 - det)``; 0 if ``tr = 0``."""
+    """``sqrt(det) / lambda_max`` with ``lambda_max = tr/2 + sqrt((tr/2)^2 - det)``; 0 if
+    ``tr = 0``."""
     half = np.multiply(tr, 0.5)
     disc = np.asarray(half * half - det)  # a fresh array of the broadcast shape
     np.maximum(disc, 0.0, out=disc)
@@ -259,7 +260,8 @@ def matmul_rows(x: np.ndarray, w: np.ndarray) -> np.ndarray:
 
 
 def tr_det(vectors: np.ndarray, masks: np.ndarray):
-    """``tr``, ``det``, ``lambda_max`` of ``sum_{k in S} v_k v_k^T`` for each row ``S`` of ``masks``.
+    """``tr``, ``det``, ``lambda_max`` of ``sum_{k in S} v_k v_k^T`` for each row ``S`` of
+    ``masks``.
 
     ``vectors`` has shape ``(..., M, 2)`` and ``masks`` ``(K, M)``; the results have shape
     ``(..., K)``. The determinant is the Cauchy-Binet sum of squared cross products. The caller

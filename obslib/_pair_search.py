@@ -4,22 +4,22 @@ search behind the greedy and the relaxed matching of :mod:`obslib.assignment`.
 A pair's weight (Theorem 4's bound, :func:`obslib._kernels.pair_kernel`) is at most the inverse
 condition number of its two rows :math:`a, b` (:math:`\\sqrt{\\lambda_{\\min}/\\lambda_{\\max}}` of
 their Gram matrix; the control only adds to :math:`\\lambda_{\\max}`). Writing
-:math:`b = s R_{90^\\circ + \\varphi} a` (:math:`s = |b|/|a|`, :math:`R` a rotation), the Gram matrix
-has trace :math:`|a|^2 (1 + s^2)` and determinant :math:`|a|^4 s^2 \\cos^2\\varphi`, so that ratio
-is at least :math:`\\tau` if and only if
+:math:`b = s R_{90^\\circ + \\varphi} a` (:math:`s = |b|/|a|`, :math:`R` a rotation), the Gram
+matrix has trace :math:`|a|^2 (1 + s^2)` and determinant :math:`|a|^4 s^2 \\cos^2\\varphi`, so that
+ratio is at least :math:`\\tau` if and only if
 
 .. math::
 
     2 s |\\cos\\varphi| \\ge \\frac{2\\tau}{1 + \\tau^2}\\,(1 + s^2).
 
-As :math:`1 + s^2 \\ge 2 s`, this forces :math:`|\\sin\\varphi| \\le (1 - \\tau^2)/(1 + \\tau^2)`, and
-:math:`\\tau \\le s \\le 1/\\tau`: the second row of a pair of weight :math:`\\ge \\tau > 0` lies within
-:math:`\\delta = \\arcsin((1 - \\tau^2)/(1 + \\tau^2)) < 90^\\circ` of the first row turned by
-:math:`+90^\\circ` (when :math:`\\cos\\varphi > 0`) or :math:`-90^\\circ`, in which case the first lies
-within :math:`\\delta` of the second turned by :math:`+90^\\circ`. With a target's rows sorted by
-angle, each pair of weight :math:`\\ge \\tau` is therefore found exactly once among the rows in the
-window :math:`[\\theta + 90^\\circ - \\delta, \\theta + 90^\\circ + \\delta]` of each row's angle
-:math:`\\theta` (read off angle bins), screened by the distance bound
+As :math:`1 + s^2 \\ge 2 s`, this forces :math:`|\\sin\\varphi| \\le (1 - \\tau^2)/(1 + \\tau^2)`,
+and :math:`\\tau \\le s \\le 1/\\tau`: the second row of a pair of weight :math:`\\ge \\tau > 0`
+lies within :math:`\\delta = \\arcsin((1 - \\tau^2)/(1 + \\tau^2)) < 90^\\circ` of the first row
+turned by :math:`+90^\\circ` (when :math:`\\cos\\varphi > 0`) or :math:`-90^\\circ`, in which case
+the first lies within :math:`\\delta` of the second turned by :math:`+90^\\circ`. With a target's
+rows sorted by angle, each pair of weight :math:`\\ge \\tau` is therefore found exactly once among
+the rows in the window :math:`[\\theta + 90^\\circ - \\delta, \\theta + 90^\\circ + \\delta]` of
+each row's angle :math:`\\theta` (read off angle bins), screened by the distance bound
 :math:`\\text{weight}^2 \\le r_{\\min} / (r_{\\max} + u^2)` before the kernel runs. Near the top
 (:math:`\\tau` close to 1, :math:`\\delta \\approx 1 - \\tau`) a window holds about
 :math:`N \\delta / \\pi` rows, so a target's best pairs cost :math:`O(N \\log N)` instead of
@@ -227,9 +227,9 @@ def target_rows(sensors, targets, u_max, cov):
 
     Computed a block of targets at a time, so that the memory is that of ``x, y`` (the
     ``(N, L, 2)`` array of differences and its temporaries never exist at once: at ``N = 10,000``,
-    ``L = 5,000`` they took 2.4 GB). The scene is checked as :func:`obslib._validate.vectors_between`
-    checks it, and by it where a difference may overflow or a sensor sits on a target, so errors
-    name the same sensor and target.
+    ``L = 5,000`` they took 2.4 GB). The scene is checked as
+    :func:`obslib._validate.vectors_between` checks it, and by it where a difference may overflow or
+    a sensor sits on a target, so errors name the same sensor and target.
     """
     s, t = as_points(sensors, "sensors"), as_points(targets, "targets")
     n, n_targets = s.shape[0], t.shape[0]

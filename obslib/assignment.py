@@ -21,7 +21,7 @@ Weights are ``W[i, j, l]`` = the pair bound of sensors ``i, j`` for target ``l``
 Ties
 ----
 Among triples of equal weight every algorithm here takes the lexicographically smallest
-``(i, j, l)`` with ``i < j`` (greedy); the matching and MILP solvers return one optimum.
+``(i, j, l)`` with ``i < j`` (greedy); the matching and the exact solver return one optimum.
 """
 
 from __future__ import annotations
@@ -35,28 +35,28 @@ import numpy as np
 from . import _exact_pairs as exact_pairs
 from ._kernels import pair_kernel
 from ._pair_search import GeometryHeads, PairSearch, keep_top, target_rows
-from ._validate import (ArgumentTypeError, as_bool, as_float_array, as_int, as_points, as_weights,
-                        check_pair_sizes, check_weight_memory)
+from ._validate import (
+    as_bool,
+    as_float_array,
+    as_int,
+    as_points,
+    as_positive,
+    as_triples,
+    as_weights,
+    check_pair_sizes,
+    check_weight_memory,
+)
 
-__all__ = [
-    "PairAssignment",
-    "greedy_pair_assignment",
-    "greedy_pair_assignment_literal",
-    "greedy_pairs_batch",
-    "relaxed_pair_assignment",
-    "optimal_pair_assignment",
-    "OptimumNotProven",
-    "MAX_EXACT_BYTES",
-    "assignment_value",
-    "upper_pair_weights",
-    "upper_pair_weight_blocks",
-    "relaxed_from_geometry",
-]
+__all__ = ["PairAssignment", "greedy_pair_assignment", "greedy_pair_assignment_literal",
+           "greedy_pairs_batch", "relaxed_pair_assignment", "optimal_pair_assignment",
+           "OptimumNotProven", "MAX_EXACT_BYTES", "assignment_value", "upper_pair_weights",
+           "upper_pair_weight_blocks", "relaxed_from_geometry"]
 
 
 @dataclass(frozen=True)
 class PairAssignment:
-    """Result of a pair assignment: ``triples`` ``(i, j, l)`` with ``i < j`` and their total ``value``.
+    """Result of a pair assignment: ``triples`` ``(i, j, l)`` with ``i < j`` and their total
+    ``value``.
 
     For the greedy algorithms the triples are in pick order; otherwise sorted by target.
     ``n_evaluations`` counts the pair weights the call computed from geometry (``None`` when it
@@ -83,7 +83,7 @@ def assignment_value(W, triples) -> float:
     0.25
     """
     W = as_float_array(W, "W")
-    return float(sum(W[i, j, l] for i, j, l in triples))
+    return float(sum(W[i, j, l] for i, j, l in as_triples(triples, W)))
 
 
 # --------------------------------------------------------------------------------------------
@@ -150,7 +150,8 @@ class _WeightHeads:
 
     def heads(self, b, l, free):
         P = self.ii.size
-        out_w, out_i, out_j = np.empty(b.size), np.empty(b.size, np.int64), np.empty(b.size, np.int64)
+        out_w = np.empty(b.size)
+        out_i, out_j = np.empty(b.size, np.int64), np.empty(b.size, np.int64)
         step = max(1, (1 << 22) // max(P, 1))  # rows per block: about 4M weights
         for s in range(0, b.size, step):
             bs, ls = b[s:s + step], l[s:s + step]
@@ -209,7 +210,8 @@ def greedy_pairs_batch(w, n_sensors: int, progress=False):
     w = as_float_array(w, "w")
     ii, jj = np.triu_indices(n, 1)
     if w.ndim != 3 or w.shape[1] != ii.size:
-        raise ValueError(f"w must have shape (B, N (N - 1) / 2, L) = (B, {ii.size}, L), got {w.shape}")
+        raise ValueError(f"w must have shape (B, N (N - 1) / 2, L) = (B, {ii.size}, L), "
+                         f"got {w.shape}")
     check_pair_sizes(n, w.shape[2])
     if not np.isfinite(w).all():
         raise ValueError("w must be finite")
@@ -226,6 +228,20 @@ def _assignment(picks, weights, n_evaluations=None) -> PairAssignment:
     """The :class:`PairAssignment` of one instance's picks; the value summed in pick order."""
     return PairAssignment(triples=[tuple(t) for t in picks.tolist()],
                           value=float(sum(weights.tolist())), n_evaluations=n_evaluations)
+
+
+def _source_iv(W, sensors, targets, u_max, cov):
+    """True for weights ``W``, False for geometry (``sensors, targets, u_max``, ``cov``): never
+    both, never part of the geometry."""
+    geometry = (sensors, targets, u_max)
+    if W is not None:
+        if any(g is not None for g in (*geometry, cov)):
+            raise ValueError("give either W or sensors/targets, not both")
+        return True
+    if any(g is None for g in geometry):
+        raise ValueError("give W, or sensors=, targets= and u_max=" +
+                         (" (cov= goes with them)" if cov is not None else ""))
+    return False
 
 
 def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, cov=None, k=None,
@@ -278,15 +294,11 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     """
     k = 16 if k is None else as_int(k, "k", 1)
     as_bool(progress, "progress")
-    if W is not None:
-        if sensors is not None or targets is not None:
-            raise ValueError("give either W or sensors/targets, not both")
+    if _source_iv(W, sensors, targets, u_max, cov):
         arr = as_weights(W)
         n, n_targets = arr.shape[0], arr.shape[2]
         check_pair_sizes(n, n_targets)
         source = _WeightHeads.of(arr)
-    elif sensors is None or targets is None or u_max is None:
-        raise ValueError("give W, or sensors=, targets= and u_max=")
     else:
         x, y, u2 = target_rows(sensors, targets, u_max, cov)
         n_targets, n = x.shape
@@ -323,24 +335,24 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
     >>> greedy_pair_assignment_literal(pair_bounds(S, T, 1.0)).triples
     [(2, 3, 1), (0, 1, 0)]
     """
-    if W is not None:
+    as_bool(progress, "progress")
+    if _source_iv(W, sensors, targets, u_max, cov):
         arr = as_weights(W)
         n, n_targets = arr.shape[0], arr.shape[2]
 
         def block(s_free, t_free):
             return arr[np.ix_(s_free, s_free, t_free)]
         counted = None
-    elif sensors is not None and targets is not None and u_max is not None:
+    else:
         X, Y, u2 = target_rows(sensors, targets, u_max, cov)
         n_targets, n = X.shape
         check_weight_memory(n, n_targets)  # the first round evaluates the whole (N, N, L) block
 
         def block(s_free, t_free):
             x, y = X[np.ix_(t_free, s_free)].T, Y[np.ix_(t_free, s_free)].T
-            return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2[t_free])
+            return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :],
+                               u2[t_free])
         counted = 0
-    else:
-        raise ValueError("give W, or sensors=, targets= and u_max=")
     check_pair_sizes(n, n_targets)
     s_free = np.arange(n)
     t_free = np.arange(n_targets)
@@ -372,7 +384,8 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
 
 
 def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
-    """The weights of the pairs ``i < j`` (``numpy.triu_indices(N, 1)`` order), target block by block.
+    """The weights of the pairs ``i < j`` (``numpy.triu_indices(N, 1)`` order), target block by
+    block.
 
     Yields ``(l0, l1, block)`` with ``block[l - l0, p]`` the weight of pair ``p`` for target
     ``l``, ``l0 <= l < l1``; blocks hold about ``chunk`` weights (at least one target), so the
@@ -397,8 +410,8 @@ def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 <
 def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
     """Weights of the unordered pairs ``i < j`` for every target, as ``(ii, jj, C)``.
 
-    ``C[l, p]`` is ``pair_bounds(...)[ii[p], jj[p], l]`` (one shared elementwise kernel on the same rows, so equal)
-    with pairs in ``numpy.triu_indices(N, 1)`` order; shape ``(L, P)``, filled from
+    ``C[l, p]`` is ``pair_bounds(...)[ii[p], jj[p], l]`` (one shared elementwise kernel on the same
+    rows, so equal) with pairs in ``numpy.triu_indices(N, 1)`` order; shape ``(L, P)``, filled from
     :func:`upper_pair_weight_blocks`.
 
     Examples
@@ -416,8 +429,8 @@ def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
     return ii, jj, out
 
 
-def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targets=None, u_max=None,
-                            cov=None, progress=False) -> PairAssignment:
+def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targets=None,
+                            u_max=None, cov=None, progress=False) -> PairAssignment:
     """Problem 3: maximum-weight matching of sensor pairs to targets.
 
     Each unordered pair serves at most one target and each target gets at most one pair, but a
@@ -445,7 +458,7 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
     """
     ordered = as_bool(ordered, "ordered")
     as_bool(progress, "progress")
-    if W is not None:
+    if _source_iv(W, sensors, targets, u_max, cov):
         arr = as_weights(W)
         n = arr.shape[0]
         ii, jj = np.triu_indices(n, 1)
@@ -456,13 +469,12 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
             if bar is not None:
                 bar.update()
                 bar.close()
-    if sensors is not None and targets is not None and u_max is not None:
-        return relaxed_from_geometry(sensors, targets, u_max, cov, orders=(ordered,),
-                                     progress=progress)[0]
-    raise ValueError("give W, or sensors=, targets= and u_max=")
+    return relaxed_from_geometry(sensors, targets, u_max, cov, orders=(ordered,),
+                                 progress=progress)[0]
 
 
-def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True), progress=False) -> list:
+def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True),
+                          progress=False) -> list:
     """Problem 3 from geometry, evaluating only each target's ``L`` best pairs.
 
     A target matched to a pair outside its ``L`` heaviest could move to one of them, since the
@@ -512,7 +524,8 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
     for ordered in orders:
         r, c, w, m = rows, col, ws, pairs.size
         if ordered:  # the second copy of pair p is column m + p
-            r, c, w, m = np.r_[rows, rows], np.r_[col, col + pairs.size], np.r_[ws, ws], 2 * pairs.size
+            r, c = np.r_[rows, rows], np.r_[col, col + pairs.size]
+            w, m = np.r_[ws, ws], 2 * pairs.size
         # every full matching has L edges, so the offset (edges must be nonzero) changes no choice
         graph = csr_array((w + 1.0, (r, c)), shape=(n_targets, m))
         mr, mc = min_weight_full_bipartite_matching(graph, maximize=True)
@@ -521,8 +534,10 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
         mr, mc = np.asarray(mr), np.asarray(mc)
         value = w[order[np.searchsorted(key[order], mr.astype(np.int64) * m + mc)]]
         p = mc % pairs.size
-        triples = sorted(zip(ii[p].tolist(), jj[p].tolist(), np.asarray(mr).tolist()), key=lambda t: t[2])
-        out.append(PairAssignment(triples=triples, value=float(value.sum()), n_evaluations=source.n_evaluations))
+        triples = sorted(zip(ii[p].tolist(), jj[p].tolist(), np.asarray(mr).tolist()),
+                         key=lambda t: t[2])
+        out.append(PairAssignment(triples=triples, value=float(value.sum()),
+                                  n_evaluations=source.n_evaluations))
     return out
 
 
@@ -536,13 +551,16 @@ def _relaxed_from_cost(n, ii, jj, cost, ordered, counted) -> PairAssignment:
     if n < 2:
         raise ValueError(f"pairs need at least two sensors, got {n}")
     if ordered:  # (i, j) and (j, i) carry the same weight
-        ii, jj, cost = np.concatenate([ii, jj]), np.concatenate([jj, ii]), np.concatenate([cost, cost], axis=1)
+        ii, jj = np.concatenate([ii, jj]), np.concatenate([jj, ii])
+        cost = np.concatenate([cost, cost], axis=1)
     rows, cols = linear_sum_assignment(cost, maximize=True)
     triples = sorted(
-        (min(int(ii[c]), int(jj[c])), max(int(ii[c]), int(jj[c])), int(r)) for r, c in zip(rows, cols)
+        (min(int(ii[c]), int(jj[c])), max(int(ii[c]), int(jj[c])), int(r))
+        for r, c in zip(rows, cols)
     )
     triples.sort(key=lambda t: t[2])
-    return PairAssignment(triples=triples, value=float(cost[rows, cols].sum()), n_evaluations=counted)
+    return PairAssignment(triples=triples, value=float(cost[rows, cols].sum()),
+                          n_evaluations=counted)
 
 
 class OptimumNotProven(RuntimeError):
@@ -562,25 +580,6 @@ class OptimumNotProven(RuntimeError):
 #: Largest memory :func:`optimal_pair_assignment` may use beyond ``W``: 2 GiB, at
 #: :data:`obslib._exact_pairs.BYTES_PER_VARIABLE` bytes per pair-target variable.
 MAX_EXACT_BYTES = exact_pairs.MAX_BYTES
-
-
-def _check_exact_memory(n, n_targets):
-    """Refuse, before any work, an exact solve whose estimated memory exceeds the limit."""
-    need = exact_pairs.memory_bytes(n, n_targets)
-    if need <= MAX_EXACT_BYTES:
-        return
-    per = exact_pairs.BYTES_PER_VARIABLE
-    most = max(0, MAX_EXACT_BYTES - exact_pairs.SEARCH_BYTES) // per
-    top = 0
-    while (top + 1) * (2 * top + 2) * (2 * top + 1) // 2 <= most:
-        top += 1
-    raise ValueError(
-        f"the exact solver would need about {need / 2**30:.1f} GiB for N = {n}, L = {n_targets} "
-        f"({n * (n - 1) // 2 * n_targets:,} pair-target variables, {per} bytes each), over the "
-        f"limit of {MAX_EXACT_BYTES / 2**30:.0f} GiB: it fits up to {most:,} variables "
-        f"(N (N - 1) / 2 * L), e.g. N = 2L up to L = {top}; for larger instances use "
-        "greedy_pair_assignment (within 1/3 of the optimum, Theorem 6) or "
-        "relaxed_pair_assignment (an upper bound)")
 
 
 def optimal_pair_assignment(W, time_limit: float | None = None, progress=False) -> PairAssignment:
@@ -665,12 +664,9 @@ def optimal_pair_assignment(W, time_limit: float | None = None, progress=False) 
     n, n_targets = arr.shape[0], arr.shape[2]
     check_pair_sizes(n, n_targets)
     if time_limit is not None:
-        if isinstance(time_limit, bool) or not isinstance(time_limit, (int, float, np.integer, np.floating)):
-            raise ArgumentTypeError(f"time_limit must be a number of seconds or None, got {time_limit!r}")
-        if not (np.isfinite(time_limit) and time_limit > 0):
-            raise ValueError(f"time_limit must be positive and finite, got {time_limit!r}")
+        time_limit = as_positive(time_limit, "time_limit")
     as_bool(progress, "progress")
-    _check_exact_memory(n, n_targets)
+    exact_pairs.check_memory(n, n_targets, MAX_EXACT_BYTES)
     import scipy.optimize  # noqa: F401  (1 s on a first call: imported before the clock starts)
 
     deadline = None if not time_limit else time.perf_counter() + float(time_limit)

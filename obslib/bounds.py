@@ -26,6 +26,7 @@ from ._validate import (
     as_stack,
     as_u_max,
     as_u_max_stack,
+    broadcast,
     check_weight_memory,
     validated_vectors,
     vectors_between,
@@ -77,7 +78,8 @@ def lower_bound(sensors, target, u_max) -> float:
 
 
 def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
-    """Validated vectors ``o_l - p_i``, shape ``(N, L, 2)``, optionally rescaled to Mahalanobis length.
+    """Validated vectors ``o_l - p_i``, shape ``(N, L, 2)``, optionally rescaled to Mahalanobis
+    length.
 
     With ``cov`` (the target estimate's covariance ``Sigma_l``), each vector keeps its Euclidean
     direction and gets the Mahalanobis length ``d_il = sqrt(v^T Sigma_l^{-1} v)``. Feeding these
@@ -156,7 +158,8 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
 
 
 def _pair_bounds(v: np.ndarray, u) -> np.ndarray:
-    """:func:`pair_bounds` of validated vectors ``v`` ``(N, L, 2)`` and speed bounds ``u`` in their unit."""
+    """:func:`pair_bounds` of validated vectors ``v`` ``(N, L, 2)`` and speed bounds ``u`` in
+    their unit."""
     v, u2 = normalise(v, u)
     x, y = v[..., 0], v[..., 1]  # (N, L)
     return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :], u2)
@@ -200,6 +203,7 @@ def pair_bound_polar(alpha, theta, u_over_d):
             raise ValueError(f"{name} must be finite")
         if nonneg and (x < 0).any():
             raise ValueError(f"{name} must be non-negative")
+    a, th, q = broadcast({"alpha": a, "theta": th, "u_over_d": q})
     # The bound is homogeneous of degree 0 in (d_io, d_jo, u_max) = d_io (1, alpha, u/d): for
     # alpha beyond the safe range, divide all three by a power of two m (exact), so that alpha^2
     # cannot overflow; b = 1/m is then the first length (b = 1 and the plain formula otherwise).
@@ -267,7 +271,8 @@ def lower_bounds(rows, u_max) -> np.ndarray:
 
 
 def _lower_bounds(r: np.ndarray, u: np.ndarray) -> np.ndarray:
-    """:func:`lower_bounds` of validated rows ``r`` and speed bounds ``u`` of shape ``r.shape[:-2]``."""
+    """:func:`lower_bounds` of validated rows ``r`` and speed bounds ``u`` of shape
+    ``r.shape[:-2]``."""
     if r.shape[-2] < 2:
         return np.zeros(r.shape[:-2])
     # the bound does not depend on the unit: bring each scene into the safe range (exact)
@@ -280,7 +285,8 @@ def _lower_bounds(r: np.ndarray, u: np.ndarray) -> np.ndarray:
 
 
 def worst_case_controls(rows, u_max) -> np.ndarray:
-    """:func:`worst_case_control` for a stack of scenes: ``u_max v_max`` of each, shape ``(..., 2)``.
+    """:func:`worst_case_control` for a stack of scenes: ``u_max v_max`` of each, shape
+    ``(..., 2)``.
 
     ``v_max`` is the principal eigenvector of ``O(o)^T O(o)`` (``numpy.linalg.eigh`` on the
     stacked 2 x 2 matrices), signed so that its first nonzero component is positive. Zero rows
@@ -296,7 +302,8 @@ def worst_case_controls(rows, u_max) -> np.ndarray:
 
 
 def _worst_case_controls(r: np.ndarray, u: np.ndarray) -> np.ndarray:
-    """:func:`worst_case_controls` of validated rows ``r`` and speed bounds ``u`` (``r.shape[:-2]``)."""
+    """:func:`worst_case_controls` of validated rows ``r`` and speed bounds ``u``
+    (``r.shape[:-2]``)."""
     if r.shape[-2]:  # the direction does not depend on the unit: into the safe range (exact)
         r = rescale(r, pow2_scale(np.abs(r).max(axis=(-2, -1)))[..., None, None])
     _, vecs = np.linalg.eigh(np.swapaxes(r, -1, -2) @ r)

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validate import positive_float, positive_int
+from ._validate import as_float_array, as_int, as_nonnegative
 
 __all__ = ["disc_controls", "disc_mesh"]
 
@@ -39,9 +39,9 @@ def disc_controls(u_max: float, n_radii: int, n_angles: int) -> np.ndarray:
            [-2.,  0.],
            [ 0., -2.]])
     """
-    u_max = positive_float("u_max", u_max, allow_zero=True)
-    n_radii = positive_int("n_radii", n_radii)
-    n_angles = positive_int("n_angles", n_angles)
+    u_max = as_nonnegative(u_max, "u_max")
+    n_radii = as_int(n_radii, "n_radii", 1)
+    n_angles = as_int(n_angles, "n_angles", 1)
     radii = u_max * np.arange(1, n_radii + 1) / n_radii
     phi = 2 * np.pi * np.arange(n_angles) / n_angles
     ring = np.column_stack([np.cos(phi), np.sin(phi)])
@@ -77,10 +77,10 @@ def disc_mesh(controls, values, n_radii: int, n_angles: int):
     >>> X[1].round(12) + 0.0
     array([ 1.,  0., -1.,  0.,  1.])
     """
-    n_radii = positive_int("n_radii", n_radii)
-    n_angles = positive_int("n_angles", n_angles)
-    c = np.asarray(controls, dtype=float)
-    v = np.asarray(values, dtype=float)
+    n_radii = as_int(n_radii, "n_radii", 1)
+    n_angles = as_int(n_angles, "n_angles", 1)
+    c = as_float_array(controls, "controls")
+    v = as_float_array(values, "values")
     k = 1 + n_radii * n_angles
     if c.shape != (k, 2) or v.shape != (k,):
         raise ValueError(f"need controls ({k}, 2) and values ({k},), got {c.shape}, {v.shape}")

@@ -53,7 +53,16 @@ from __future__ import annotations
 import numpy as np
 
 from ._kernels import measure_from_tr_det, pow2_scale, tr_det
-from ._validate import ArgumentTypeError, as_eps, as_float_array, as_int, as_measure_name, as_point, as_rank_rtol
+from ._validate import (
+    ArgumentTypeError,
+    as_eps,
+    as_float_array,
+    as_int,
+    as_measure_name,
+    as_names,
+    as_point,
+    as_rank_rtol,
+)
 from .observability import observability_matrix, relative_rows
 
 __all__ = [
@@ -80,15 +89,12 @@ DIRECTION = {
     "neg_trace_inverse": "increasing",
 }
 
-#: Default relative threshold on ``sigma_min / sigma_max`` below which ``O`` counts as rank-deficient.
+#: Default relative threshold on ``sigma_min / sigma_max`` below which ``O`` counts as
+#: rank-deficient.
 RANK_RTOL = 1e-10
 
 #: Largest ground set for which :func:`subset_masks` enumerates all subsets.
 MAX_GROUND_SET = 16
-
-
-def _check_name(name: str) -> str:
-    return as_measure_name(name, MEASURES)
 
 
 def subset_masks(n: int) -> np.ndarray:
@@ -107,13 +113,15 @@ def subset_masks(n: int) -> np.ndarray:
     """
     n = as_int(n, "n", 0)
     if n > MAX_GROUND_SET:
-        raise ValueError(f"ground set of {n} elements is too large to enumerate (max {MAX_GROUND_SET})")
+        raise ValueError(
+            f"ground set of {n} elements is too large to enumerate (max {MAX_GROUND_SET})"
+        )
     k = np.arange(2**n)[:, None]
     return ((k >> np.arange(n)[None, :]) & 1).astype(bool)
 
 
 def _sensors_or_empty(sensors) -> np.ndarray:
-    arr = np.asarray(sensors, dtype=float) if not isinstance(sensors, np.ndarray) else sensors
+    arr = as_float_array(sensors, "sensors") if not isinstance(sensors, np.ndarray) else sensors
     if arr.size == 0:
         return np.zeros((0, 2))
     return arr
@@ -176,7 +184,7 @@ def measure_from_vectors(vectors, masks, name: str, eps: float = 0.0, u=None,
     >>> measure_from_vectors([[1, 1], [-1, 1]], subset_masks(2), "trace")
     array([0., 2., 2., 4.])
     """
-    _check_name(name)
+    as_measure_name(name, MEASURES)
     return measures_from_vectors(vectors, masks, (name,), eps, u, rank_rtol)[name]
 
 
@@ -196,9 +204,10 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
     (array([4.]), array([2.]))
     """
     if isinstance(names, str):
-        raise ArgumentTypeError(f"names must be a sequence of measure names, not the string {names!r}")
-    for name in names:
-        _check_name(name)
+        raise ArgumentTypeError(
+            f"names must be a sequence of measure names, not the string {names!r}"
+        )
+    names = as_names(names, "names", MEASURES)
     e = as_eps(eps)
     r = as_rank_rtol(rank_rtol)
     v = as_float_array(vectors, "vectors")
@@ -216,7 +225,9 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
         try:
             uu = np.broadcast_to(uu, v.shape[:-2] + (2,))
         except ValueError:
-            raise ValueError(f"u must have shape (2,) or {v.shape[:-2] + (2,)}, got {uu.shape}") from None
+            raise ValueError(
+                f"u must have shape (2,) or {v.shape[:-2] + (2,)}, got {uu.shape}"
+            ) from None
     return _measures(v, m, names, e, r, uu)
 
 
@@ -295,7 +306,7 @@ def measure_table(sensors, target, name: str, eps: float = 0.0, u=None, masks=No
     if masks is None:
         masks = subset_masks(rows.shape[0])
     uu = None if u is None else as_point(u, "u")
-    _check_name(name)
+    as_measure_name(name, MEASURES)
     e, r = as_eps(eps), as_rank_rtol(rank_rtol)
     m = _mask_booleans(masks)
     _check_mask_shape(m, rows.shape[0])
@@ -336,7 +347,7 @@ def measure(sensors, target, name: str, eps: float = 0.0, u=None,
     """
     rows = relative_rows(_sensors_or_empty(sensors), target)
     uu = None if u is None else as_point(u, "u")
-    _check_name(name)
+    as_measure_name(name, MEASURES)
     e, r = as_eps(eps), as_rank_rtol(rank_rtol)
     mask = np.ones((1, rows.shape[0]), dtype=bool)
     return float(_measures(rows, mask, (name,), e, r, uu)[name][0])

@@ -15,7 +15,15 @@ from __future__ import annotations
 import numpy as np
 
 from ._kernels import gram_parts, inverse_condition, pow2_scale, ratio_from_gram, rescale
-from ._validate import as_float_array, as_point, as_points, as_stack, check_differences, check_distinct, check_not_on_targets
+from ._validate import (
+    as_float_array,
+    as_point,
+    as_points,
+    as_stack,
+    check_differences,
+    check_distinct,
+    check_not_on_targets,
+)
 
 __all__ = [
     "observability_matrix",
@@ -89,8 +97,9 @@ def observability_matrix(sensors, target, u=None) -> np.ndarray:
 def inverse_condition_number(sensors, target, u=None):
     """Exact inverse condition number ``C^{-1}(O(o, u_o))`` of Eq. (6).
 
-    Computed from the Gram matrix ``O^T O`` in closed form (see :func:`obslib._kernels.inverse_condition`; by SVD
-    for more than eight rows); tests hold both paths to ``numpy.linalg.svd``.
+    Computed from the Gram matrix ``O^T O`` in closed form (see
+    :func:`obslib._kernels.inverse_condition`; by SVD for more than eight rows); tests hold both
+    paths to ``numpy.linalg.svd``.
 
     Parameters
     ----------
@@ -148,8 +157,8 @@ def inverse_condition_numbers(rows, u=None) -> np.ndarray:
     Parameters
     ----------
     rows : array_like, shape (..., N, 2)
-        Rows ``o - p_i`` of each scene (validated by the caller, e.g.
-        :func:`obslib.scenes.check_batch`). All-zero rows are allowed as padding: they leave
+        Rows ``o - p_i`` of each scene (validated by the caller, e.g. with
+        ``obslib._validate.check_scene_batch``). All-zero rows are allowed as padding: they leave
         ``O^T O`` unchanged, so scenes with different ``N`` can share one array.
     u : array_like, shape (..., K, 2) or (..., 2), optional
         Controls, ``K`` per scene (or one per scene); ``None``: the stationary target.
@@ -229,7 +238,10 @@ def inverse_condition_numbers_polar(rows, radii, angles) -> np.ndarray:
                    pow2_scale(rho.max(axis=1, initial=0.0)))  # per scene, into the safe range
     r, rho = rescale(r, p[:, None, None]), rescale(rho, p[:, None])
     det0, tr0 = gram_parts(r)
-    c = r[:, None, :, 0] * np.sin(phi)[None, :, None] - r[:, None, :, 1] * np.cos(phi)[None, :, None]
+    c = (
+        r[:, None, :, 0] * np.sin(phi)[None, :, None]
+        - r[:, None, :, 1] * np.cos(phi)[None, :, None]
+    )
     q = np.einsum("sak,sak->sa", c, c)  # (S, A): sum_k (r_k x e_phi)^2
     rho2 = (rho * rho)[:, :, None]  # (S, R, 1)
     return ratio_from_gram(det0[:, None, None] + rho2 * q[:, None, :], tr0[:, None, None] + rho2)

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import positive_float, positive_int
+from ._validate import as_float_array, as_int, as_nonnegative, as_positive, broadcast
 from .bounds import pair_bound_polar
 
 __all__ = [
@@ -50,9 +50,9 @@ def fine_grid(
     >>> theta / np.pi
     array([-1. , -0.5,  0. ,  0.5,  1. ])
     """
-    amax = positive_float("alpha_max", alpha_max)
-    per = positive_int("alpha_per_unit", alpha_per_unit)
-    m = positive_int("theta_quarter", theta_quarter)
+    amax = as_positive(alpha_max, "alpha_max")
+    per = as_int(alpha_per_unit, "alpha_per_unit", 1)
+    m = as_int(theta_quarter, "theta_quarter", 1)
     n_a = int(np.floor(amax * per + 1e-9)) + 1
     return np.arange(n_a) / per, np.pi * (np.arange(4 * m + 1) / (2 * m) - 1.0)
 
@@ -82,12 +82,12 @@ def bound_surface(alpha, theta, u_max: float = 1.0, d_io: float = 1.0) -> np.nda
     array([[0.    , 0.    , 0.    ],
            [0.    , 0.7071, 0.4472]])
     """
-    a = np.asarray(alpha, dtype=float)
-    t = np.asarray(theta, dtype=float)
+    a = as_float_array(alpha, "alpha")
+    t = as_float_array(theta, "theta")
     if a.ndim != 1 or t.ndim != 1 or a.size == 0 or t.size == 0:
         raise ValueError("alpha and theta must be non-empty 1-D arrays")
-    u = positive_float("u_max", u_max, allow_zero=True)
-    d = positive_float("d_io", d_io)
+    u = as_nonnegative(u_max, "u_max")
+    d = as_positive(d_io, "d_io")
     A, T = np.meshgrid(a, t)
     return pair_bound_polar(A, T, u / d)
 
@@ -111,13 +111,17 @@ def grid_maximum(alpha, theta, Z, atol: float = 1e-12) -> GridMax:
     >>> round(m.value, 6), [(a, round(t / np.pi, 6)) for a, t in m.points]
     (0.707107, [(1.0, -0.5), (1.0, 0.5)])
     """
-    Z = np.asarray(Z, dtype=float)
-    a = np.asarray(alpha, dtype=float)
-    t = np.asarray(theta, dtype=float)
-    if Z.shape != (t.size, a.size):
+    Z = as_float_array(Z, "Z")
+    a = as_float_array(alpha, "alpha")
+    t = as_float_array(theta, "theta")
+    if Z.shape != (t.size, a.size) or a.ndim != 1 or t.ndim != 1 or not Z.size:
         raise ValueError(
             f"Z must have shape (len(theta), len(alpha)) = {(t.size, a.size)}, got {Z.shape}"
         )
+    for name, x in (("alpha", a), ("theta", t), ("Z", Z)):
+        if not np.isfinite(x).all():
+            raise ValueError(f"{name} must be finite")
+    atol = as_nonnegative(atol, "atol")
     top = float(Z.max())
     k, l = np.nonzero(Z >= top - atol)
     pts = tuple(sorted((float(a[j]), float(t[i])) for i, j in zip(k, l)))
@@ -125,9 +129,9 @@ def grid_maximum(alpha, theta, Z, atol: float = 1e-12) -> GridMax:
 
 
 # --- Theorem 5: the maximising alpha for a fixed theta -------------------------------------------
-def _check_theta_q(theta, u_over_d):
-    th = np.asarray(theta, dtype=float)
-    q = np.asarray(u_over_d, dtype=float)
+def _theta_q_iv(theta, u_over_d):
+    th = as_float_array(theta, "theta")
+    q = as_float_array(u_over_d, "u_over_d")
     if not np.isfinite(th).all():
         raise ValueError("theta must be finite")
     if not np.isfinite(q).all() or (q < 0).any():
@@ -136,7 +140,7 @@ def _check_theta_q(theta, u_over_d):
         raise ValueError(
             "theta = 0 or pi (mod 2 pi): the bound is 0 for every alpha, so there is no maximiser"
         )
-    return np.broadcast_arrays(th, q)
+    return broadcast({"theta": th, "u_over_d": q})
 
 
 def stationarity_alpha(alpha, theta, u_over_d):
@@ -165,13 +169,14 @@ def stationarity_alpha(alpha, theta, u_over_d):
     0.414214
     -2.876894
     """
-    a = np.asarray(alpha, dtype=float)
-    th = np.asarray(theta, dtype=float)
-    q = np.asarray(u_over_d, dtype=float)
+    a = as_float_array(alpha, "alpha")
+    th = as_float_array(theta, "theta")
+    q = as_float_array(u_over_d, "u_over_d")
     if not (np.isfinite(a).all() and np.isfinite(th).all() and np.isfinite(q).all()):
         raise ValueError("alpha, theta and u_over_d must be finite")
     if (a < 0).any() or (q < 0).any():
         raise ValueError("alpha and u_over_d must be non-negative")
+    broadcast({"alpha": a, "theta": th, "u_over_d": q})
     return _stationarity(a, th, q)
 
 
@@ -222,8 +227,8 @@ def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):
     >>> maximising_alpha([np.pi / 4, np.pi / 2], 0.0)
     array([1., 1.])
     """
-    th, q = _check_theta_q(theta, u_over_d)
-    th, q = np.broadcast_arrays(th, q)
+    th, q = _theta_q_iv(theta, u_over_d)
+    xtol = as_positive(xtol, "xtol")
     shape = th.shape
     th, q = th.ravel(), q.ravel()
     out = np.ones(th.size)
@@ -265,7 +270,7 @@ def maximising_alpha_closed(theta, u_over_d):
     >>> round(maximising_alpha_closed(np.pi / 4, 1.0), 10)
     1.1547005384
     """
-    th, q = _check_theta_q(theta, u_over_d)
+    th, q = _theta_q_iv(theta, u_over_d)
     r = np.sqrt(1.0 + q * q)
     s2 = np.sin(th) ** 2
     out = np.sqrt(r * (r * s2 + q * q * np.abs(np.cos(th))) / (q * q + s2))
@@ -288,7 +293,7 @@ def random_symmetric_2x2(n: int, seed: int, psd: bool = False) -> np.ndarray:
     >>> bool((np.linalg.eigvalsh(X)[:, 0] >= -1e-9 * np.abs(X).max()).all())
     True
     """
-    n = positive_int("n", n)
+    n = as_int(n, "n", 1)
     rng = np.random.default_rng(seed)
     scale = 10.0 ** rng.uniform(-3, 3, size=(n, 1, 1))
     if not psd:
@@ -306,8 +311,9 @@ def weyl_2x2_slacks(X, Y) -> dict[str, np.ndarray]:
     :func:`obslib.symbolic.weyl_2x2_slacks`; each value is the right-hand side minus the left-hand
     side, oriented so that the inequality holds iff the slack is :math:`\ge 0`. Also ``"ratio"``:
     the slack of Eq. (19),
-    :math:`\lambda_1(X+Y)/\lambda_2(X+Y) - (\lambda_1(X) + \lambda_1(Y))/(\lambda_2(X) + \lambda_2(Y))`,
-    for positive semidefinite inputs with :math:`\lambda_2(X) + \lambda_2(Y) > 0` (NaN elsewhere).
+    :math:`\lambda_1(X+Y)/\lambda_2(X+Y) - (\lambda_1(X) + \lambda_1(Y))/(\lambda_2(X) +
+    \lambda_2(Y))`, for positive semidefinite inputs with :math:`\lambda_2(X) + \lambda_2(Y) >
+    0` (NaN elsewhere).
 
     Examples
     --------
@@ -322,8 +328,8 @@ def weyl_2x2_slacks(X, Y) -> dict[str, np.ndarray]:
     l2 >= l2+l1: 0.0
     ratio: 0.8
     """
-    X = np.asarray(X, dtype=float)
-    Y = np.asarray(Y, dtype=float)
+    X = as_float_array(X, "X")
+    Y = as_float_array(Y, "Y")
     if X.shape != Y.shape or X.ndim < 2 or X.shape[-2:] != (2, 2):
         raise ValueError(
             f"X and Y must have the same shape (..., 2, 2), got {X.shape} and {Y.shape}"

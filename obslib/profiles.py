@@ -21,9 +21,9 @@ Accepted values
     entry of a list; the type is that of the default), a :class:`Choice` of strings or a
     :class:`File`. ``CONSTRAINTS[notebook]`` adds the conditions between parameters (or on a whole
     list), each a Python expression over the parameter names with the reason for it.
-    :func:`check_parameters` enforces both before any notebook runs; a test runs every notebook at
-    the boundary values of each range. Sizes (seeds, instances, trials) have no upper limit unless
-    the work grows faster than in proportion to them; the exponential ones are bounded, alone
+    :func:`validated_parameters` enforces both before any notebook runs; a test runs every notebook
+    at the boundary values of each range. Sizes (seeds, instances, trials) have no upper limit
+    unless the work grows faster than in proportion to them; the exponential ones are bounded, alone
     and together.
 """
 
@@ -37,9 +37,11 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
+from ._validate import MissingFileError, as_mapping, as_path, as_str
+
 __all__ = ["PROFILES", "RANGES", "CONSTRAINTS", "Range", "Choice", "File", "Constraint",
            "notebook_dir", "defaults", "parameter_cell", "params", "profile_names",
-           "check_parameters"]
+           "validated_parameters"]
 
 #: Environment variable naming the folder of the notebooks, for an install without its checkout.
 NOTEBOOKS_ENV = "OBSLIB_NOTEBOOKS"
@@ -238,19 +240,37 @@ PROFILES: dict[str, dict[str, dict]] = {
         "04_submodularity": {"n_instances": 200, "n_sensors": 5, "n_tiny": 50},
         "05_two_sensors_tracking": {"n_seeds": 20, "anim_every": 15},
         "06_adversarial_target": {"n_seeds": 10, "n_seeds_strong": 2, "n_radii": 3, "n_angles": 36},
-        "07_greedy_vs_relaxed": {"trials": 5, "optimum_max_L": 4, "L_extended": [50], "trials_extended": 1},
+        "07_greedy_vs_relaxed": {
+            "trials": 5,
+            "optimum_max_L": 4,
+            "L_extended": [50],
+            "trials_extended": 1,
+        },
         "08_general_assignment": {"trials": 5, "compare_trials": 3, "n_tiny": 50},
         "09_scaling": {
             "greedy_sizes": [20, 100, 400],
             "literal_sizes": [20, 50],
             "relaxed_sizes": [20, 100],
         },
-        "10_criteria": {"n_seeds": 20, "assign_targets": [2, 3], "assign_seeds": 20,
-                        "assign_steps": 20},
+        "10_criteria": {
+            "n_seeds": 20,
+            "assign_targets": [2, 3],
+            "assign_seeds": 20,
+            "assign_steps": 20,
+        },
         "11_unchecked_statements": {
-            "n_seeds_typical": 100, "n_jitter": 20, "n_geometries": 200, "n_refine": 40, "n_3dm": 10,
-            "solver_L": [3, 6], "time_budget": 2.0, "problem3_L": [2, 5], "problem3_trials": 5,
-            "n_seeds_disc": 10, "n_radii": 3, "n_angles": 36,
+            "n_seeds_typical": 100,
+            "n_jitter": 20,
+            "n_geometries": 200,
+            "n_refine": 40,
+            "n_3dm": 10,
+            "solver_L": [3, 6],
+            "time_budget": 2.0,
+            "problem3_L": [2, 5],
+            "problem3_trials": 5,
+            "n_seeds_disc": 10,
+            "n_radii": 3,
+            "n_angles": 36,
         },
     },
 }
@@ -294,12 +314,15 @@ def parameter_cell(path) -> dict:
     >>> parameter_cell(notebook_dir() / "05_two_sensors_tracking.ipynb")["metric"]
     'mahalanobis'
     """
-    path = Path(path)
+    path = as_path(path, "path", exists=True)
     st = path.stat()
     key = (st.st_mtime_ns, st.st_size)
     if path in _CELLS and _CELLS[path][0] == key:
         return copy.deepcopy(_CELLS[path][1])
-    cells = json.loads(path.read_text())["cells"]
+    try:
+        cells = json.loads(path.read_text())["cells"]
+    except (ValueError, KeyError, TypeError, UnicodeDecodeError):
+        raise ValueError(f"path {path}: not a notebook (no JSON with cells)") from None
     tagged = [c for c in cells if "parameters" in c.get("metadata", {}).get("tags", [])]
     if len(tagged) != 1 or tagged[0]["cell_type"] != "code":
         raise ValueError(f"{path.name}: needs exactly one code cell tagged 'parameters'")
@@ -326,11 +349,11 @@ def defaults(notebook: str) -> dict:
     >>> defaults("05_two_sensors_tracking")["n_seeds"]
     200
     """
-    if notebook not in RANGES:
+    if as_str(notebook, "notebook") not in RANGES:
         raise ValueError(f"no parameters for notebook {notebook!r}; known: {list(RANGES)}")
     path = notebook_dir() / f"{notebook}.ipynb"
     if not path.exists():
-        raise FileNotFoundError(f"{path} is missing: its parameters cell holds the paper's values")
+        raise MissingFileError(f"{path} is missing: its parameters cell holds the paper's values")
     return parameter_cell(path)
 
 
@@ -355,7 +378,7 @@ def params(notebook: str, profile: str = "paper") -> dict:
     >>> params("05_two_sensors_tracking", "quick")["n_seeds"]
     20
     """
-    if profile not in PROFILES:
+    if as_str(profile, "profile") not in PROFILES:
         raise ValueError(f"unknown profile {profile!r}; known: {profile_names()}")
     out = defaults(notebook)
     out.update(copy.deepcopy(PROFILES[profile].get(notebook, {})))
@@ -414,7 +437,7 @@ def _accepts(kind: type, rule, value):
     return value
 
 
-def _check_one(notebook: str, name: str, value, default, rule):
+def _parameter_iv(notebook: str, name: str, value, default, rule):
     if isinstance(default, list):
         kinds = {type(x) for x in default}
         kind = float if float in kinds else (kinds.pop() if len(kinds) == 1 else float)
@@ -432,7 +455,7 @@ def _check_one(notebook: str, name: str, value, default, rule):
     return got
 
 
-def check_parameters(notebook: str, values: dict, defaults: dict | None = None) -> dict:
+def validated_parameters(notebook: str, values: dict, defaults: dict | None = None) -> dict:
     """Check parameter ``values`` (overrides) for ``notebook`` against its declarations.
 
     Parameters
@@ -461,21 +484,23 @@ def check_parameters(notebook: str, values: dict, defaults: dict | None = None) 
     Examples
     --------
     >>> nb = "05_two_sensors_tracking"
-    >>> check_parameters(nb, {"n_seeds": 5, "u_max": 2})
+    >>> validated_parameters(nb, {"n_seeds": 5, "u_max": 2})
     {'n_seeds': 5, 'u_max': 2.0}
-    >>> check_parameters(nb, {"n_seeds": -5})
+    >>> validated_parameters(nb, {"n_seeds": -5})
     Traceback (most recent call last):
     ...
     ValueError: notebook 05_two_sensors_tracking: ...; expected an integer >= 1
     """
+    values = as_mapping(values, "values")
     if defaults is None:
         defaults = globals()["defaults"](notebook)
+    defaults = as_mapping(defaults, "defaults")
     unknown = sorted(set(values) - set(defaults))
     if unknown:
         raise ValueError(f"notebook {notebook} has no parameter(s) {unknown}; "
                          f"its parameters: {sorted(defaults)}")
     rules = RANGES.get(notebook, {})
-    out = {name: _check_one(notebook, name, value, defaults[name], rules.get(name))
+    out = {name: _parameter_iv(notebook, name, value, defaults[name], rules.get(name))
            for name, value in values.items()}
     merged = {**defaults, **out}
     for c in CONSTRAINTS.get(notebook, ()):

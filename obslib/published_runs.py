@@ -19,7 +19,7 @@ and sensors are 0-based (``s1`` is 0), as in :class:`obslib.tracking.TrackingRes
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache, lru_cache
 from importlib import resources
 
 import numpy as np
@@ -118,7 +118,7 @@ def _read(key: str) -> tuple[list[str], np.ndarray]:
     return header, np.array(rows, dtype=float)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _table(key: str) -> dict[str, np.ndarray]:
     header, data = _read(key)
     if data.shape[1] != len(header):
@@ -253,7 +253,7 @@ def _build(name: str) -> PublishedRun:
     )
 
 
-@lru_cache(maxsize=None)
+@cache
 def _run(name: str) -> PublishedRun:
     return _build(name)
 

@@ -24,7 +24,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import ArgumentTypeError, as_float_array, as_int
+from ._validate import (
+    ArgumentTypeError,
+    as_float_array,
+    as_instance,
+    as_int,
+    as_int_range,
+    as_names,
+    as_positive,
+    as_str,
+    check_scene_batch,
+)
 
 __all__ = [
     "Scene",
@@ -33,7 +43,6 @@ __all__ = [
     "SCENE_KINDS",
     "SceneBatch",
     "random_scene_batch",
-    "check_batch",
 ]
 
 SCENE_KINDS = ("generic", "collinear", "near-parallel", "spread")
@@ -67,10 +76,11 @@ def random_scene(
     >>> s.sensors.shape, s.kind
     ((3, 2), 'generic')
     """
-    if kind not in SCENE_KINDS:
+    rng = as_instance(rng, np.random.Generator, "rng")
+    if as_str(kind, "kind") not in SCENE_KINDS:
         raise ValueError(f"kind must be one of {SCENE_KINDS}, got {kind!r}")
-    if n_sensors < 1:
-        raise ValueError(f"n_sensors must be at least 1, got {n_sensors}")
+    n_sensors = as_int(n_sensors, "n_sensors", 1)
+    scale = as_positive(scale, "scale")
     target = rng.uniform(-scale, scale, size=2)
     if kind == "generic":
         offsets = rng.uniform(-scale, scale, size=(n_sensors, 2))
@@ -92,24 +102,22 @@ def random_scene(
     return Scene(sensors=sensors, target=target, u_max=u_max, kind=kind)
 
 
-def _check_draw(n_scenes, seed, n_sensors, scale, kinds, min_scenes):
+def _draw_iv(n_scenes, seed, n_sensors, scale, kinds, min_scenes):
     """Validated arguments of :func:`random_scenes` and :func:`random_scene_batch`."""
     n_scenes = as_int(n_scenes, "n_scenes", min_scenes)
     seed = as_int(seed, "seed", 0)
-    if isinstance(kinds, str) or not all(isinstance(k, str) for k in kinds) or not len(kinds):
-        raise ArgumentTypeError(f"kinds must be a non-empty sequence of names from {SCENE_KINDS}, got {kinds!r}")
-    for kind in kinds:
-        if kind not in SCENE_KINDS:
-            raise ValueError(f"kind must be one of {SCENE_KINDS}, got {kind!r}")
-    if len(n_sensors) != 2:
-        raise ValueError(f"n_sensors must be (lo, hi), got {n_sensors!r}")
-    lo_n, hi_n = as_int(n_sensors[0], "n_sensors[0]", 1), as_int(n_sensors[1], "n_sensors[1]", 1)
-    if hi_n < lo_n:
-        raise ValueError(f"n_sensors must be (lo, hi) with 1 <= lo <= hi, got {n_sensors}")
+    if isinstance(kinds, str):
+        raise ArgumentTypeError(
+            f"kinds must be a non-empty sequence of names from {SCENE_KINDS}, got {kinds!r}"
+        )
+    kinds = as_names(kinds, "kinds", SCENE_KINDS)
+    if not kinds:
+        raise ValueError(f"kinds must be a non-empty sequence of names from {SCENE_KINDS}")
+    lo_n, hi_n = as_int_range(n_sensors, "n_sensors", 1)
     sc = as_float_array(scale, "scale")
     if sc.shape != (2,) or not np.isfinite(sc).all() or (sc <= 0).any() or sc[1] < sc[0]:
         raise ValueError(f"scale must be (lo, hi) with 0 < lo <= hi finite, got {scale!r}")
-    return n_scenes, seed, (lo_n, hi_n), (float(sc[0]), float(sc[1])), tuple(kinds)
+    return n_scenes, seed, (lo_n, hi_n), (float(sc[0]), float(sc[1])), kinds
 
 
 def random_scenes(
@@ -129,7 +137,9 @@ def random_scenes(
     >>> [s.kind for s in random_scenes(4, seed=0)]
     ['generic', 'collinear', 'near-parallel', 'spread']
     """
-    n_scenes, seed, n_sensors, scale, kinds = _check_draw(n_scenes, seed, n_sensors, scale, kinds, 0)
+    n_scenes, seed, n_sensors, scale, kinds = _draw_iv(
+        n_scenes, seed, n_sensors, scale, kinds, 0
+    )
     rng = np.random.default_rng(seed)
     lo, hi = np.log10(scale[0]), np.log10(scale[1])
     out = []
@@ -183,44 +193,6 @@ class SceneBatch:
                      float(self.u_max[k]), self.kinds[k])
 
 
-def check_batch(sensors, targets, counts) -> None:
-    """Validate padded stacked scenes as the per-scene functions would.
-
-    Raises ``ValueError`` naming the scene and sensor for a non-finite coordinate, a sensor on
-    the target (zero distance) or two coincident sensors (among the first ``counts[k]`` rows of
-    scene ``k``; the padding is not checked).
-
-    Examples
-    --------
-    >>> check_batch([[[0.0, 0.0], [1.0, 1.0]]], [[1.0, 1.0]], [2])
-    Traceback (most recent call last):
-    ...
-    ValueError: scene 0: sensor 1 is on the target (zero distance)
-    """
-    s = np.asarray(sensors, dtype=float)
-    t = np.asarray(targets, dtype=float)
-    c = np.asarray(counts)
-    if s.ndim != 3 or s.shape[2] != 2 or t.shape != (s.shape[0], 2) or c.shape != (s.shape[0],):
-        raise ValueError(f"need sensors (S, M, 2), targets (S, 2), counts (S,); got "
-                         f"{s.shape}, {t.shape}, {c.shape}")
-    if (c < 0).any() or (c > s.shape[1]).any():
-        raise ValueError(f"counts must lie in [0, {s.shape[1]}]")
-    valid = np.arange(s.shape[1])[None, :] < c[:, None]
-    finite = np.isfinite(s).all(axis=2)
-    if not (finite | ~valid).all() or not np.isfinite(t).all():
-        bad = ~np.isfinite(t).all(axis=1) | (valid & ~finite).any(axis=1)
-        raise ValueError(f"scene {int(np.flatnonzero(bad)[0])} has a non-finite coordinate")
-    zero = valid & (s[..., 0] == t[:, None, 0]) & (s[..., 1] == t[:, None, 1])
-    if zero.any():
-        k, i = (int(v) for v in np.argwhere(zero)[0])
-        raise ValueError(f"scene {k}: sensor {i} is on the target (zero distance)")
-    a, b = np.triu_indices(s.shape[1], 1)
-    same = (s[:, a, 0] == s[:, b, 0]) & (s[:, a, 1] == s[:, b, 1]) & valid[:, b]
-    if same.any():
-        k, p = (int(v) for v in np.argwhere(same)[0])
-        raise ValueError(f"scene {k}: sensors {int(a[p])} and {int(b[p])} coincide")
-
-
 def random_scene_batch(
     n_scenes: int,
     seed: int,
@@ -241,7 +213,9 @@ def random_scene_batch(
     >>> len(b), int(b.counts.min()) >= 2
     (5, True)
     """
-    n_scenes, seed, n_sensors, scale, kinds = _check_draw(n_scenes, seed, n_sensors, scale, kinds, 1)
+    n_scenes, seed, n_sensors, scale, kinds = _draw_iv(
+        n_scenes, seed, n_sensors, scale, kinds, 1
+    )
     lo_n, hi_n = n_sensors
     rng = np.random.default_rng(seed)
     S, M = int(n_scenes), hi_n
@@ -268,5 +242,5 @@ def random_scene_batch(
     u_max = s * 10.0 ** rng.uniform(-2.0, 1.0, size=S)
     sensors = targets[:, None, :] + offsets
     sensors[np.arange(M)[None, :] >= counts[:, None]] = np.nan
-    check_batch(sensors, targets, counts)
+    check_scene_batch(sensors, targets, counts)
     return SceneBatch(sensors, targets, u_max, tuple(names.tolist()), counts)

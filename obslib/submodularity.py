@@ -13,8 +13,8 @@ Theorem 7 says Theorem 1's lower bound :math:`\omega(S)` is neither, by two coun
 (:mod:`obslib.measures`). This module decides such claims by brute force over a small ground
 set (:math:`N \le 10`): every subset is evaluated **once** into a table of :math:`2^N` values,
 and all additions :math:`(A, x)` and all nested triples :math:`(A, B, x)` are compared at once
-with NumPy (fewer than :math:`N 3^{N-1}` triples: 191 710 for :math:`N = 10`). For thousands of random
-instances, :func:`audit_flags` reaches the same verdicts (and the size of each smallest
+with NumPy (fewer than :math:`N 3^{N-1}` triples: 191 710 for :math:`N = 10`). For thousands of
+random instances, :func:`audit_flags` reaches the same verdicts (and the size of each smallest
 witness) with a min / max sum-over-subsets transform of the gains instead of every triple; the
 random audits use it and run the full comparison only on the instance whose witness they report.
 
@@ -50,14 +50,21 @@ Order of witnesses (documented, deterministic).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import asdict, dataclass
-from functools import lru_cache
+from functools import cache
 from numbers import Real
-from typing import Callable
 
 import numpy as np
 
-from ._validate import as_points, check_distinct
+from ._validate import (
+    as_callable,
+    as_float_array,
+    as_int,
+    as_nonnegative,
+    as_points,
+    check_distinct,
+)
 from .measures import subset_masks
 
 __all__ = [
@@ -88,7 +95,7 @@ def _members(mask: int, n: int) -> tuple:
     return tuple(i for i in range(n) if (mask >> i) & 1)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _lex_rank(n: int) -> np.ndarray:
     """Rank of each bitmask among all subsets ordered as sorted tuples, lexicographically."""
     order = sorted(range(2**n), key=lambda m: _members(m, n))
@@ -97,12 +104,12 @@ def _lex_rank(n: int) -> np.ndarray:
     return rank
 
 
-@lru_cache(maxsize=None)
+@cache
 def _popcount(n: int) -> np.ndarray:
     return subset_masks(n).sum(axis=1)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _additions(n: int, min_size: int):
     """All ``(A, x)``, ``x`` not in ``A``, ``|A| >= min_size``, in witness order."""
     pc, lex = _popcount(n), _lex_rank(n)
@@ -115,7 +122,7 @@ def _additions(n: int, min_size: int):
     return a[order], x[order]
 
 
-@lru_cache(maxsize=None)
+@cache
 def _triples(n: int, min_size: int):
     """All ``(A, B, x)``, ``A`` proper subset of ``B``, ``x`` not in ``B``, in witness order."""
     pc, lex = _popcount(n), _lex_rank(n)
@@ -148,9 +155,8 @@ def _ground_size(ground) -> int:
     return n
 
 
-def _check_min_size(min_size, n: int) -> int:
-    if not isinstance(min_size, (int, np.integer)) or isinstance(min_size, bool) or min_size < 0:
-        raise ValueError(f"min_size must be a non-negative integer, got {min_size!r}")
+def _min_size_iv(min_size, n: int) -> int:
+    min_size = as_int(min_size, "min_size", 0)
     if min_size > n:
         raise ValueError(f"min_size {min_size} exceeds the ground set size {n}")
     return int(min_size)
@@ -323,9 +329,8 @@ def set_function_table(ground, f: Callable[[tuple], float], min_size: int = 0) -
     array([0., 1., 1., 1.])
     """
     n = _ground_size(ground)
-    m = _check_min_size(min_size, n)
-    if not callable(f):
-        raise ValueError(f"f must be callable, got {type(f).__name__}")
+    m = _min_size_iv(min_size, n)
+    as_callable(f, "f")
     pc = _popcount(n)
     out = np.full(2**n, np.nan)
     for k in range(2**n):
@@ -343,9 +348,10 @@ def set_function_table(ground, f: Callable[[tuple], float], min_size: int = 0) -
 
 def _prepare_tables(values, n: int, min_size: int, rtol: float, atol: float):
     """Validate tables for :func:`audit_tables` / :func:`audit_flags`; return ``n, m, v, tol``."""
-    n = _ground_size(int(n))
-    m = _check_min_size(min_size, n)
-    v = np.asarray(values, dtype=float)
+    n = _ground_size(as_int(n, "n", 0))
+    m = _min_size_iv(min_size, n)
+    rtol, atol = as_nonnegative(rtol, "rtol"), as_nonnegative(atol, "atol")
+    v = as_float_array(values, "values")
     if v.ndim == 1:
         v = v[None, :]
     if v.ndim != 2 or v.shape[1] != 2**n:
@@ -439,15 +445,24 @@ def audit_tables(values, n: int, min_size: int = 0, rtol: float = RTOL,
             sw = SubmodularityWitness(_members(a, n), _members(b, n), x, float(row[a]),
                                       float(row[a | (1 << x)]), float(row[b]),
                                       float(row[b | (1 << x)]))
-        out.append(SetFunctionAudit(
-            n=n, min_size=m, tol=float(tol[i]), n_additions=len(pa),
-            n_decreases=int(res["dec"][i]), n_increases=int(res["inc"][i]), n_triples=len(ta),
-            n_submodular_violations=int(res["sub"][i]),
-            n_supermodular_violations=int(res["sup"][i]),
-            max_decrease=float(max_dec[i]), max_excess=float(max_ex[i]),
-            monotone_witness=mono(int(first["dec"][i])), increase_witness=mono(int(first["inc"][i])),
-            submodular_witness=sw,
-        ))
+        out.append(
+            SetFunctionAudit(
+                n=n,
+                min_size=m,
+                tol=float(tol[i]),
+                n_additions=len(pa),
+                n_decreases=int(res["dec"][i]),
+                n_increases=int(res["inc"][i]),
+                n_triples=len(ta),
+                n_submodular_violations=int(res["sub"][i]),
+                n_supermodular_violations=int(res["sup"][i]),
+                max_decrease=float(max_dec[i]),
+                max_excess=float(max_ex[i]),
+                monotone_witness=mono(int(first["dec"][i])),
+                increase_witness=mono(int(first["inc"][i])),
+                submodular_witness=sw,
+            )
+        )
     return out
 
 
@@ -465,7 +480,7 @@ class TableFlags:
     submodular_witness_size: np.ndarray
 
 
-@lru_cache(maxsize=None)
+@cache
 def _gain_index(n: int):
     """Sets ``S`` not containing ``x`` for every ``x``: bitmasks ``S``, ``S + x`` and ``|S|``.
 
@@ -578,8 +593,15 @@ def audit_flags(values, n: int, min_size: int = 0, rtol: float = RTOL,
     )
 
 
-def audit_set_function(ground, f: Callable[[tuple], float] | None = None, *, values=None,
-                       min_size: int = 0, rtol: float = RTOL, atol: float = ATOL) -> SetFunctionAudit:
+def audit_set_function(
+    ground,
+    f: Callable[[tuple], float] | None = None,
+    *,
+    values=None,
+    min_size: int = 0,
+    rtol: float = RTOL,
+    atol: float = ATOL,
+) -> SetFunctionAudit:
     """Check a set function for monotonicity and submodularity over all nested subsets.
 
     Parameters
@@ -612,7 +634,8 @@ def audit_set_function(ground, f: Callable[[tuple], float] | None = None, *, val
     """
     n = _ground_size(ground)
     if (f is None) == (values is None):
-        raise ValueError("give exactly one of f and values")
+        raise ValueError("give exactly one of f and values, got "
+                         + ("both" if f is not None else "neither"))
     if values is None:
         values = set_function_table(n, f, min_size)
     return audit_tables(values, n, min_size, rtol, atol)[0]
@@ -627,8 +650,8 @@ def table_values(table) -> dict:
     >>> table_values([0.0, 1.0, 2.0, 4.0])
     {(): 0.0, (0,): 1.0, (1,): 2.0, (0, 1): 4.0}
     """
-    t = np.asarray(table, dtype=float)
-    n = t.size.bit_length() - 1
+    t = as_float_array(table, "table")
+    n = max(t.size.bit_length() - 1, 0)
     if t.ndim != 1 or t.size != 1 << n:
         raise ValueError(f"table must be 1-D of length 2**N, got shape {t.shape}")
     return {_members(k, n): float(t[k]) for k in range(t.size)}

@@ -9,7 +9,9 @@ the results are the same whatever the backend, worker count or completion order.
 from __future__ import annotations
 
 import sys
-from typing import Callable
+from collections.abc import Callable
+
+from ._validate import ArgumentTypeError, as_bool, as_callable, as_int, as_sequence, as_str
 
 __all__ = ["BACKENDS", "run_sweep"]
 
@@ -37,11 +39,15 @@ def run_sweep(fn: Callable, tasks: list[dict], backend: str = "serial", n_jobs: 
     >>> run_sweep(pow, [dict(base=2, exp=k) for k in range(4)])
     [1, 2, 4, 8]
     """
-    if backend not in BACKENDS:
+    as_callable(fn, "fn")
+    if as_str(backend, "backend") not in BACKENDS:
         raise ValueError(f"backend must be one of {BACKENDS}, got {backend!r}")
-    if not isinstance(progress, bool):
-        raise ValueError(f"progress must be True or False, got {progress!r}")
-    tasks = list(tasks)
+    as_bool(progress, "progress")
+    if n_jobs is not None:
+        n_jobs = as_int(n_jobs, "n_jobs")
+    tasks = as_sequence(tasks, "tasks")
+    if not all(isinstance(t, dict) for t in tasks):
+        raise ArgumentTypeError("tasks must be a list of keyword dicts")
     if backend == "dask" and scheduler is None:
         raise ValueError("backend 'dask' needs scheduler= (an address or a distributed.Client)")
     from tqdm import tqdm

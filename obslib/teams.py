@@ -18,12 +18,26 @@ from itertools import product
 import numpy as np
 
 from ._kernels import lambda_max, measure_from_tr_det, pow2_scale
-from ._validate import as_eps, as_float_array, as_measure_name, as_points, as_rank_rtol, check_maximisable
+from ._validate import (
+    as_eps,
+    as_float_array,
+    as_measure_name,
+    as_points,
+    as_rank_rtol,
+    check_maximisable,
+)
 from .bounds import relative_vectors
 from .measures import MEASURES, RANK_RTOL, measure_from_vectors, subset_masks
 
-__all__ = ["greedy_team_assignment", "greedy_team_picks", "greedy_team_counts", "optimal_team_assignment",
-           "best_team_labelling", "team_value", "MAXIMISABLE"]
+__all__ = [
+    "greedy_team_assignment",
+    "greedy_team_picks",
+    "greedy_team_counts",
+    "optimal_team_assignment",
+    "best_team_labelling",
+    "team_value",
+    "MAXIMISABLE",
+]
 
 #: Measures that can only increase as sensors join a team (the greedy maximises one of these).
 MAXIMISABLE = ("trace", "logdet", "rank", "neg_trace_inverse")
@@ -39,7 +53,9 @@ def _rows(sensors, targets, u):
         try:
             uu = np.broadcast_to(uu, (v.shape[1], 2))
         except ValueError:
-            raise ValueError(f"u must have shape (2,) or ({v.shape[1]}, 2), got {uu.shape}") from None
+            raise ValueError(
+                f"u must have shape (2,) or ({v.shape[1]}, 2), got {uu.shape}"
+            ) from None
         uu = as_points(uu, "u")
     else:
         uu = np.zeros((v.shape[1], 2))
@@ -90,7 +106,9 @@ def greedy_team_assignment(sensors, targets, measure: str = "logdet", eps: float
     v, uu = _rows(sensors, targets, u)
     if v.shape[1] < 1:
         raise ValueError("there must be at least one target")
-    picks_i, picks_l = _greedy_teams(v[None], uu[None] if u is not None else None, measure, e, rank_rtol)
+    picks_i, picks_l = _greedy_teams(
+        v[None], uu[None] if u is not None else None, measure, e, rank_rtol
+    )
     teams: list[list[int]] = [[] for _ in range(v.shape[1])]
     for i, l in zip(picks_i[0].tolist(), picks_l[0].tolist()):
         teams[l].append(i)
@@ -126,7 +144,9 @@ def greedy_team_picks(sensors, targets, measure: str = "logdet", eps: float = 1.
     rank_rtol = as_rank_rtol(rank_rtol)
     S, T = as_float_array(sensors, "sensors"), as_float_array(targets, "targets")
     if S.ndim != 3 or T.ndim != 3 or S.shape[0] != T.shape[0]:
-        raise ValueError(f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}")
+        raise ValueError(
+            f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}"
+        )
     if T.shape[1] < 1:
         raise ValueError("there must be at least one target")
     if S.shape[0] == 0:
@@ -167,7 +187,11 @@ def greedy_team_counts(sensors, targets, measure: str = "logdet", eps: float = 1
     """
     _, picks_l = greedy_team_picks(sensors, targets, measure, eps, rank_rtol)
     n_targets = np.shape(targets)[1]
-    return np.stack([np.bincount(p, minlength=n_targets) for p in picks_l]) if len(picks_l) else np.zeros((0, n_targets), int)
+    return (
+        np.stack([np.bincount(p, minlength=n_targets) for p in picks_l])
+        if len(picks_l)
+        else np.zeros((0, n_targets), int)
+    )
 
 
 def _greedy_teams(v, uu, measure, e, rank_rtol):
@@ -191,13 +215,20 @@ def _greedy_teams(v, uu, measure, e, rank_rtol):
             if measure in ("logdet", "neg_trace_inverse") and e / c / c < 2.0**-1000:
                 raise ValueError(
                     f"eps = {e!r} is negligible against the squared distances (distances about "
-                    f"{c:.3g}): "
-                    f"the {measure!r} gains of teams of fewer than two sensors underflow; scale eps "
-                    "with the squared unit of length (e.g. eps = 1e-6 * distance**2)")
-            picks = _greedy_teams_unit(v / c, None if uu is None else uu / c, measure, e / c / c, rank_rtol)
+                    f"{c:.3g}): the {measure!r} gains of teams of fewer than two sensors "
+                    "underflow; scale eps with the squared unit of length "
+                    "(e.g. eps = 1e-6 * distance**2)"
+                )
+            picks = _greedy_teams_unit(
+                v / c, None if uu is None else uu / c, measure, e / c / c, rank_rtol
+            )
     else:  # instances in different units: one at a time
-        parts = [_greedy_teams(v[q:q + 1], None if uu is None else uu[q:q + 1], measure, e, rank_rtol)
-                 for q in range(v.shape[0])]
+        parts = [
+            _greedy_teams(
+                v[q : q + 1], None if uu is None else uu[q : q + 1], measure, e, rank_rtol
+            )
+            for q in range(v.shape[0])
+        ]
         picks = tuple(np.concatenate([part[z] for part in parts]) for z in (0, 1))
     n = v.shape[1]
     if n and not (np.sort(picks[0], axis=1) == np.arange(n)).all():
@@ -241,7 +272,10 @@ def _greedy_teams_unit(v, uu, measure, e, rank_rtol):
         cross = xl * yi[:, None] - yl * xi[:, None]
         C[rows, :, l] = C[rows, :, l] + cross * cross
         t_l, d_l = tr[rows, l], det[rows, l]
-        g[rows, :, l] = value(t_l[:, None] + xl * xl + yl * yl, d_l[:, None] + C[rows, :, l]) - value(t_l, d_l)[:, None]
+        g[rows, :, l] = (
+            value(t_l[:, None] + xl * xl + yl * yl, d_l[:, None] + C[rows, :, l])
+            - value(t_l, d_l)[:, None]
+        )
     return picks_i, picks_l
 
 
@@ -299,8 +333,12 @@ def optimal_team_assignment(sensors, targets, measure: str = "logdet", eps: floa
     _check_assignments(n, n_targets)
     masks = subset_masks(n)
     tables = np.stack(
-        [measure_from_vectors(v[:, l, :], masks, measure, e, uu[l] if u is not None else None, rank_rtol)
-         for l in range(n_targets)]
+        [
+            measure_from_vectors(
+                v[:, l, :], masks, measure, e, uu[l] if u is not None else None, rank_rtol
+            )
+            for l in range(n_targets)
+        ]
     )  # (L, 2^N), subset k = bitmask k
     labels, total = best_team_labelling(tables)
     teams = [[int(i) for i in np.flatnonzero(labels == l)] for l in range(n_targets)]
@@ -339,7 +377,9 @@ def best_team_labelling(tables) -> tuple[np.ndarray, np.ndarray]:
         raise ValueError(f"tables must have shape (L, ..., 2**N) with L >= 1, got {t.shape}")
     n = int(t.shape[-1]).bit_length() - 1
     if t.shape[-1] != 1 << n:
-        raise ValueError(f"the last axis of tables must have 2**N entries (one per team), got {t.shape[-1]}")
+        raise ValueError(
+            f"the last axis of tables must have 2**N entries (one per team), got {t.shape[-1]}"
+        )
     if np.isnan(t).any():
         raise ValueError("tables has a NaN entry")
     n_targets = t.shape[0]
@@ -356,7 +396,9 @@ def best_team_labelling(tables) -> tuple[np.ndarray, np.ndarray]:
 
 def _check_assignments(n: int, n_targets: int) -> None:
     if n_targets**n > MAX_ASSIGNMENTS:
-        raise ValueError(f"{n_targets}^{n} assignments is too many to enumerate (max {MAX_ASSIGNMENTS})")
+        raise ValueError(
+            f"{n_targets}^{n} assignments is too many to enumerate (max {MAX_ASSIGNMENTS})"
+        )
 
 
 def _labellings(n: int, n_targets: int):
@@ -365,6 +407,8 @@ def _labellings(n: int, n_targets: int):
     Returns ``labels`` ``(A, N)`` (the target of each sensor, in lexicographic order) and
     ``team_masks`` ``(L, A)``: the bitmask of target ``l``'s team in each assignment.
     """
-    labels = np.array(list(product(range(n_targets), repeat=n)), dtype=np.int64).reshape(n_targets**n, n)
+    labels = np.array(list(product(range(n_targets), repeat=n)), dtype=np.int64).reshape(
+        n_targets**n, n
+    )
     bits = 1 << np.arange(n, dtype=np.int64)
     return labels, np.stack([((labels == l) * bits).sum(axis=1) for l in range(n_targets)])

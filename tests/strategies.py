@@ -10,7 +10,8 @@ scales = st.sampled_from([1e-3, 1e-1, 1.0, 10.0, 1e3, 1e4])
 
 @st.composite
 def scenes(draw, min_sensors=2, max_sensors=6):
-    """(sensors (N, 2), target (2,), u_max) at a random scale, sensors apart from each other and the target."""
+    """(sensors (N, 2), target (2,), u_max) at a random scale, sensors apart from each other and the
+    target."""
     scale = draw(scales)
     n = draw(st.integers(min_sensors, max_sensors))
     pts = np.array(draw(st.lists(st.tuples(unit, unit), min_size=n + 1, max_size=n + 1)))

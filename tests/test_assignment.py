@@ -50,7 +50,9 @@ def brute_force(W, unique_sensors=True):
             return
         rec(l + 1, used_sensors, used_pairs, total)
         for p in pairs:
-            if p in used_pairs or (unique_sensors and (p[0] in used_sensors or p[1] in used_sensors)):
+            if p in used_pairs or (
+                unique_sensors and (p[0] in used_sensors or p[1] in used_sensors)
+            ):
                 continue
             rec(l + 1, used_sensors | set(p), used_pairs | {p}, total + W[p[0], p[1], l])
 
@@ -69,7 +71,10 @@ def test_greedy_equals_literal_on_thousands_of_instances(grid):
         assert greedy_pair_assignment(W, k=k).triples == lit.triples
         assert greedy_pair_assignment(sensors=S, targets=T, u_max=1.0, k=k).triples == lit.triples
         if k == 1:  # the literal algorithm recomputing weights each round agrees too
-            assert greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0).triples == lit.triples
+            assert (
+                greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0).triples
+                == lit.triples
+            )
 
 
 def greedy_by_enumeration(W):
@@ -162,7 +167,9 @@ def test_exact_solvers_equal_brute_force_and_greedy_is_within_a_third():
         _, _, W = random_instance(rng, L, int(rng.integers(0, 3)))
         opt = optimal_pair_assignment(W)
         assert opt.value == pytest.approx(brute_force(W), abs=1e-12)
-        assert relaxed_pair_assignment(W).value == pytest.approx(brute_force(W, unique_sensors=False), abs=1e-12)
+        assert relaxed_pair_assignment(W).value == pytest.approx(
+            brute_force(W, unique_sensors=False), abs=1e-12
+        )
         g = greedy_pair_assignment(W)
         assert g.value >= opt.value / 3 - 1e-12  # Theorem 6
         assert relaxed_pair_assignment(W).value >= opt.value - 1e-12
@@ -199,7 +206,9 @@ def test_bad_weights(W, message):
 
 def test_bad_geometry_for_greedy():
     with pytest.raises(ValueError, match="N >= 2L"):
-        greedy_pair_assignment(sensors=[[0, 0], [1, 1], [2, 0]], targets=[[5, 5], [6, 6]], u_max=1.0)
+        greedy_pair_assignment(
+            sensors=[[0, 0], [1, 1], [2, 0]], targets=[[5, 5], [6, 6]], u_max=1.0
+        )
     with pytest.raises(ValueError, match="sensor 1 has a non-finite"):
         greedy_pair_assignment(sensors=[[0, 0], [np.nan, 1]], targets=[[5, 5]], u_max=1.0)
     with pytest.raises(ValueError, match="either W or"):
@@ -221,7 +230,9 @@ def test_pruned_relaxation_equals_the_full_matching():
         assert plain.value == pytest.approx(full.value, rel=1e-12, abs=1e-15)
         assert ordered.value == pytest.approx(full_ordered.value, rel=1e-12, abs=1e-15)
         assert plain.value == pytest.approx(sum(W[i, j, l] for i, j, l in plain.triples), rel=1e-12)
-        assert len({(i, j) for i, j, _ in plain.triples}) == L and sorted(l for *_, l in plain.triples) == list(range(L))
+        assert len({(i, j) for i, j, _ in plain.triples}) == L and sorted(
+            l for *_, l in plain.triples
+        ) == list(range(L))
         assert all(i < j for i, j, _ in ordered.triples)
 
 
@@ -310,17 +321,17 @@ def test_exact_solver_at_the_reach_sizes_equals_highs():
 
 
 def test_exact_solver_hands_large_searches_to_highs(monkeypatch):
-    from obslib import _exact_pairs as exact
+    from obslib import _exact_pairs as exact_pairs
 
-    reference = exact.milp
+    reference = exact_pairs.milp
     calls = []
 
     def counted(*args, **kwargs):
         calls.append(args)
         return reference(*args, **kwargs)
 
-    monkeypatch.setattr(exact, "MAX_NODES", 0)  # every search that branches goes to HiGHS
-    monkeypatch.setattr(exact, "milp", counted)
+    monkeypatch.setattr(exact_pairs, "MAX_NODES", 0)  # every search that branches goes to HiGHS
+    monkeypatch.setattr(exact_pairs, "milp", counted)
     rng = np.random.default_rng(13)
     for _ in range(10):
         L, extra = int(rng.integers(2, 6)), int(rng.integers(0, 3))
@@ -355,7 +366,7 @@ def test_exact_solver_honours_a_tiny_time_limit_at_L_100():
 
 
 def test_exact_solver_refuses_what_would_not_fit_in_memory(monkeypatch):
-    from obslib import _exact_pairs as exact
+    from obslib import _exact_pairs as exact_pairs
     from obslib import assignment
     from obslib.assignment import OptimumNotProven
 
@@ -363,14 +374,14 @@ def test_exact_solver_refuses_what_would_not_fit_in_memory(monkeypatch):
     _, _, W = random_instance(rng, 5, 0)
     # 45 * 5 variables do not fit in what leaves room for 56
     monkeypatch.setattr(assignment, "MAX_EXACT_BYTES",
-                        exact.SEARCH_BYTES + 56 * exact.BYTES_PER_VARIABLE)
+                        exact_pairs.SEARCH_BYTES + 56 * exact_pairs.BYTES_PER_VARIABLE)
     with pytest.raises(ValueError, match=r"over the limit .* fits up to 56 variables"):
         optimal_pair_assignment(W)
     monkeypatch.undo()
     # the 0-1 program a large search hands over runs only within the limit: every search that
     # branches is handed over (no node allowed), and no program fits
-    monkeypatch.setattr(exact, "MAX_NODES", 0)
-    monkeypatch.setattr(exact, "MAX_BYTES", exact.memory_bytes(10, 5))
+    monkeypatch.setattr(exact_pairs, "MAX_NODES", 0)
+    monkeypatch.setattr(exact_pairs, "MAX_BYTES", exact_pairs.memory_bytes(10, 5))
     stopped = 0
     for _ in range(20):
         _, _, W = random_instance(rng, 5, 0)

@@ -3,12 +3,10 @@ greedy vs Algorithm 1, valid assignments, determinism and common random numbers.
 
 import numpy as np
 import pytest
-from filterpy.kalman import ExtendedKalmanFilter
 
 import obslib as ob
 from obslib.assignment import greedy_pair_assignment_literal
 from obslib.studies import assignment_tracking as at
-from obslib.tracking import half_squared_range, range_jacobian
 
 SMALL = at.AssignmentTrackingSetup(n_targets=3, steps=12, side=20.0)
 
@@ -167,7 +165,9 @@ def test_rules_together_equal_rules_alone():
     for rule in at.RULES:
         alone = at.run(SMALL, rule, [2, 3])
         assert np.array_equal(alone.pairs, together[rule].pairs)
-        np.testing.assert_allclose(alone.post_error, together[rule].post_error, rtol=1e-12, atol=1e-14)
+        np.testing.assert_allclose(
+            alone.post_error, together[rule].post_error, rtol=1e-12, atol=1e-14
+        )
 
 
 def test_mirrored_uses_the_reflection_across_the_last_pair():
@@ -181,7 +181,9 @@ def test_mirrored_uses_the_reflection_across_the_last_pair():
             x, o = r.estimate[b, -1, l], r.truth[b, -1, l]
             assert got[b, l] == (np.hypot(*(x - m)) < np.hypot(*(x - o)))
     assert np.array_equal(r.lost(0.5), r.post_error[:, 1:].mean(axis=1) > 0.5)
-    np.testing.assert_allclose(np.hypot(*(r.estimate - r.truth).transpose(3, 0, 1, 2)), r.post_error)
+    np.testing.assert_allclose(
+        np.hypot(*(r.estimate - r.truth).transpose(3, 0, 1, 2)), r.post_error
+    )
 
 
 @pytest.mark.parametrize("metric", ["mahalanobis", "euclidean"])

@@ -37,7 +37,6 @@ import threading
 from pathlib import Path
 
 import pytest
-
 import yaml
 
 from obslib.tools import run
@@ -45,9 +44,18 @@ from obslib.tools.run import ROOT
 
 BUILD = ROOT / "_build" / "html"
 SHOTS = ROOT / "_build" / "screenshots"
-SOURCES = [ROOT / "_config.yml", ROOT / "_toc.yml", *ROOT.glob("book/*.md"), *ROOT.glob("book/*.bib"),
-           *ROOT.glob("book/_static/*"), *ROOT.glob("book/_ext/*.py"), *ROOT.glob("notebooks/*.ipynb"),
-           *ROOT.glob("obslib/**/*.py")]  # the API pages are the docstrings
+#: The scripts the browser runs on each page, beside this file.
+SCRIPTS = Path(__file__).with_name("js")
+SOURCES = [
+    ROOT / "_config.yml",
+    ROOT / "_toc.yml",
+    *ROOT.glob("book/*.md"),
+    *ROOT.glob("book/*.bib"),
+    *ROOT.glob("book/_static/*"),
+    *ROOT.glob("book/_ext/*.py"),
+    *ROOT.glob("notebooks/*.ipynb"),
+    *ROOT.glob("obslib/**/*.py"),
+]  # the API pages are the docstrings
 
 
 def _stale() -> bool:
@@ -60,15 +68,27 @@ def _stale() -> bool:
 
 @pytest.fixture(scope="session")
 def book() -> Path:
-    """Path of the rendered book, rendering it first (execution off, warnings as errors) if needed."""
+    """Path of the rendered book, rendering it first (execution off, warnings as errors) if
+    needed."""
     if _stale():
         if not run.EXECUTION_PAGE.exists():
             times = json.loads(run.TIMES_FILE.read_text()) if run.TIMES_FILE.exists() else {}
             run.EXECUTION_PAGE.write_text(run.execution_page(times))
         jb = Path(sys.executable).with_name("jupyter-book")
         proc = subprocess.run(
-            [str(jb), "build", str(ROOT), "--builder", "html", "--warningiserror", "--nitpick", "--keep-going"],
-            capture_output=True, text=True, cwd=ROOT,
+            [
+                str(jb),
+                "build",
+                str(ROOT),
+                "--builder",
+                "html",
+                "--warningiserror",
+                "--nitpick",
+                "--keep-going",
+            ],
+            capture_output=True,
+            text=True,
+            cwd=ROOT,
         )
         assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
     return BUILD
@@ -98,11 +118,15 @@ def test_no_resource_is_fetched_from_the_network(book):
     for page in pages(book):
         for m in EXTERNAL.finditer(page.read_text(errors="replace")):
             tag = m.group(0)
-            if tag.lower().startswith("<link") and not re.search(r"rel=[\"'](stylesheet|preload|icon|font)", tag, re.I):
+            if tag.lower().startswith("<link") and not re.search(
+                r"rel=[\"'](stylesheet|preload|icon|font)", tag, re.I
+            ):
                 continue  # plain hyperlinks such as canonical or author pages fetch nothing
             offenders.append(f"{page.relative_to(book)}: {tag[:120]}")
     for css in book.rglob("*.css"):
-        for m in re.finditer(r"(@import\s+url\(|url\()\s*[\"']?(https?:)?//[^)]*\)", css.read_text(errors="replace")):
+        for m in re.finditer(
+            r"(@import\s+url\(|url\()\s*[\"']?(https?:)?//[^)]*\)", css.read_text(errors="replace")
+        ):
             offenders.append(f"{css.relative_to(book)}: {m.group(0)[:120]}")
     assert not offenders, "\n".join(offenders)
 
@@ -110,7 +134,9 @@ def test_no_resource_is_fetched_from_the_network(book):
 def test_no_page_shows_where_the_book_was_built(book):
     """No page shows the path of the checkout (a default value or a constant in the API pages
     would print it): the book reads the same wherever it is built."""
-    shown = [page.relative_to(book).as_posix() for page in pages(book) if str(ROOT) in page.read_text()]
+    shown = [
+        page.relative_to(book).as_posix() for page in pages(book) if str(ROOT) in page.read_text()
+    ]
     assert not shown, shown
 
 
@@ -127,7 +153,9 @@ def test_notebook_download_links_resolve_locally(book):
         assert links, f"{page.name}: no notebook download link"
         for link in links:
             assert not link.startswith(("http", "//")), link
-            assert (page.parent / link).resolve().exists(), f"{page.name}: {link} is missing from the build"
+            assert (page.parent / link).resolve().exists(), (
+                f"{page.name}: {link} is missing from the build"
+            )
 
 
 # ------------------------------------------------------------------------------------- browser
@@ -152,7 +180,8 @@ class _QuietHandler(http.server.SimpleHTTPRequestHandler):
 def browser():
     chromium, chromedriver = shutil.which("chromium"), shutil.which("chromedriver")
     if not (chromium and chromedriver):
-        reason = "the browser test needs Debian's chromium and chromium-driver (apt-get install chromium chromium-driver)"
+        reason = ("the browser test needs Debian's chromium and chromium-driver "
+                  "(apt-get install chromium chromium-driver)")
         if os.environ.get("CI"):
             pytest.fail(f"CI must run the browser test: {reason}")
         pytest.skip(reason)
@@ -162,9 +191,18 @@ def browser():
 
     opts = Options()
     opts.binary_location = chromium
-    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-                 "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                 "--disable-dev-shm-usage", f"--window-size={WIDTH},1600"):
+    for flag in (
+        "--headless=new",
+        "--no-sandbox",
+        "--disable-gpu",
+        "--disable-quic",
+        "--no-first-run",
+        "--disable-background-networking",
+        "--disable-component-update",
+        "--disable-sync",
+        "--disable-dev-shm-usage",
+        f"--window-size={WIDTH},1600",
+    ):
         opts.add_argument(flag)
     opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     driver = webdriver.Chrome(service=Service(chromedriver), options=opts)
@@ -187,207 +225,34 @@ def toc_pages() -> list[str]:
             yield e["file"]
             yield from files(e.get("sections"))
 
-    return [f"{f}.html" for f in [toc["root"], *(f for part in toc["parts"] for f in files(part["chapters"]))]]
+    return [
+        f"{f}.html"
+        for f in [toc["root"], *(f for part in toc["parts"] for f in files(part["chapters"]))]
+    ]
 
 
 #: A promise that the page's formulas are typeset. MathJax loads after the page, and until it has
-#: loaded ``MathJax.startup`` does not exist: wait for it (15 s at most) on a page with formulas.
-MATH_READY = r"""
-const mathReady = () => new Promise(resolve => {
-  const t0 = Date.now();
-  (function poll() {
-    if (window.MathJax && MathJax.startup && MathJax.startup.promise) return resolve(MathJax.startup.promise);
-    if (!document.querySelector('.math') || Date.now() - t0 > 15000) return resolve();
-    setTimeout(poll, 50);
-  })();
-});
-// at most 60 s for the typesetting itself: a page whose formulas never finish is reported, not
-// left to time the whole visit out
-let typeset = true;
-const ready = Promise.race([mathReady(), new Promise(r => setTimeout(() => { typeset = false; r(); }, 60000))]);
-"""
+#: loaded ``MathJax.startup`` does not exist: wait for it (15 s at most) on a page with formulas,
+#: then for the typesetting (60 s at most; ``typeset`` says whether it finished).
+def script(name: str) -> str:
+    """The JavaScript in ``tests/js/<name>``."""
+    return (SCRIPTS / name).read_text()
 
-PAGE_CHECK = r"""
-const done = arguments[arguments.length - 1];
-""" + MATH_READY + r"""ready.then(() => new Promise(r => setTimeout(r, 300))).then(() => {
-  const art = document.querySelector('article.bd-article') || document.querySelector('main') || document.body;
-  const A = art.getBoundingClientRect();
-  const name = e => {
-    const id = e.id ? '#' + e.id : '';
-    const cls = (typeof e.className === 'string' && e.className) ? '.' + e.className.trim().split(/\s+/).slice(0, 2).join('.') : '';
-    const sec = e.closest('section[id]');
-    return e.tagName.toLowerCase() + id + cls + (sec ? ' in #' + sec.id : '');
-  };
-  const snippet = e => (e.textContent || '').replace(/\s+/g, ' ').trim().slice(0, 60);
 
-  // glued values: inline pasted outputs whose text is a quoted string
-  const quoted = Array.from(art.querySelectorAll('span.output.text_plain, span.pasted-text, span.pasted-inline'))
-    .map(e => e.textContent.trim())
-    .filter(t => /^['"\u2018\u201c].*['"\u2019\u201d]$/.test(t));
+MATH_READY = script("math_ready.js")
 
-  // TeX left raw in the text (outside code and rendered math)
-  const clone = art.cloneNode(true);
-  clone.querySelectorAll('pre, code, script, style, .highlight, mjx-container, .MathJax').forEach(e => e.remove());
-  const text = clone.innerText;
-  const rawRe = /\$\\|\\(?:frac|dfrac|tfrac|sqrt|lambda|sigma|alpha|theta|omega|mathrm|mathbb|mathcal|operatorname|left|right|begin|end|le|ge|pi|lVert|rVert|lvert|rvert|cdot|infty|underline|hat|varepsilon|partial|sum|max|min)\b|\\\(|\\\[|\$\$/g;
-  const raw = [];
-  let m;
-  while ((m = rawRe.exec(text)) !== null && raw.length < 5) raw.push(text.slice(Math.max(0, m.index - 30), m.index + 30).replace(/\s+/g, ' '));
+#: The callback of an asynchronous script (Selenium's ``execute_async_script``).
+DONE = "const done = arguments[arguments.length - 1];\n"
 
-  // findings written for a reader: no Python reprs or machine notation in the prose
-  const machineRe = /\b(?:True|False|None)\b|\[\s*\(|\(\s*-?\d+(?:\.\d+)?\s*,\s*-?\d+(?:\.\d+)?\s*\)\s*\]|\b\d+(?:\.\d+)?e[+-]?\d+\b|\b0 of them\b|(?<![\d.,])0\.00(?![\d])|\$(?=[^\s$])/g;
-  const machine = [];
-  while ((m = machineRe.exec(text)) !== null && machine.length < 8) machine.push(text.slice(Math.max(0, m.index - 30), m.index + 30).replace(/\s+/g, ' '));
-
-  // tables: numbered, with the caption above the table
-  const badTables = [];
-  for (const t of art.querySelectorAll('table')) {
-    if (t.closest('.highlight, pre, .sig, dl.py, mjx-container')) continue;
-    const cap = t.querySelector(':scope > caption');
-    const num = cap && cap.querySelector('.caption-number');
-    const side = cap ? getComputedStyle(cap).captionSide : '';
-    if (!num || side !== 'top') badTables.push(`${name(t)}: ${!cap ? 'no caption' : !num ? 'caption without a number' : 'caption ' + side}: "${snippet(t).slice(0, 50)}"`);
-  }
-
-  // visible code: what a reader learns from, no bookkeeping
-  const bookkeeping = [];
-  for (const cell of art.querySelectorAll('div.cell_input, div.cell div.highlight')) {
-    if (cell.closest('details')) continue;  // folded cells (hide-input)
-    const cs = getComputedStyle(cell);
-    if (cs.display === 'none' || cell.offsetParent === null) continue;
-    for (const line of (cell.innerText || '').split('\n')) {
-      if (/^\s*(?:import\s|from\s+\S+\s+import\s|def\s|glue\(|\S.*\bglue_text\()/.test(line)) { bookkeeping.push(`${name(cell)}: ${line.trim().slice(0, 60)}`); break; }
-    }
-  }
-
-  // words about how the book was made
-  const processRe = /\b(?:the tests\b|unit tests?|pytest|budget|commit(?:s|ted)?|source code of|we read|module obslib|obslib\/|\.py\b|\.ipynb\b|notebook \d{1,2}\b|the ledger records)/gi;
-  const process = [];
-  while ((m = processRe.exec(text)) !== null && process.length < 8) process.push(text.slice(Math.max(0, m.index - 30), m.index + 40).replace(/\s+/g, ' '));
-
-  // the front page: where its written summary starts, and its longest table
-  const summary = document.getElementById('what-this-book-found');
-  const summaryTop = summary ? Math.round(summary.getBoundingClientRect().top + window.scrollY) : null;
-  const maxRows = Math.max(0, ...Array.from(art.querySelectorAll('table')).map(t => t.querySelectorAll('tbody tr').length));
-
-  // elements wider than their container: a box that needs sideways scrolling or clips its
-  // content, or anything sticking out of the text column
-  // (MathJax's hidden MathML copy is 1px wide but still counts in scrollWidth, so formulas are
-  // measured by their rendered box, mjx-math, against the box that holds them.)
-  const wide = [];
-  const clips = e => /(auto|scroll|hidden|clip)/.test(getComputedStyle(e).overflowX);
-  const isMath = e => e.matches('span.math, div.math, mjx-container') || !!e.closest('mjx-container');
-  const inner = e => { const r = e.getBoundingClientRect(); return r.left + e.clientLeft + e.clientWidth; };
-  for (const e of art.querySelectorAll('*')) {
-    if (isMath(e)) continue;
-    const cs = getComputedStyle(e);
-    if (cs.display === 'none' || cs.visibility === 'hidden') continue;
-    const r = e.getBoundingClientRect();
-    if (r.width === 0 || r.height === 0) continue;
-    if (clips(e) && e.scrollWidth > e.clientWidth + 2 && !e.querySelector('mjx-container')) {
-      wide.push(`${name(e)} needs ${e.scrollWidth}px in ${e.clientWidth}px: "${snippet(e)}"`);
-      continue;
-    }
-    let clipped = false;
-    for (let p = e.parentElement; p && p !== art; p = p.parentElement) if (clips(p) && !isMath(p)) { clipped = true; break; }
-    if (!clipped && r.right > A.right + 2) wide.push(`${name(e)} ends at ${Math.round(r.right)}px, column at ${Math.round(A.right)}px`);
-  }
-  for (const c of art.querySelectorAll('mjx-container')) {
-    const m = c.querySelector('mjx-math');
-    if (!m) continue;
-    const r = m.getBoundingClientRect();
-    let box = art;
-    for (let p = c.parentElement; p && p !== art; p = p.parentElement) if (clips(p) && !p.matches('span.math')) { box = p; break; }
-    if (r.right > inner(box) + 2) wide.push(`formula in ${name(box)} ends at ${Math.round(r.right)}px, its box at ${Math.round(inner(box))}px: "${snippet(c)}"`);
-  }
-  // a box that scrolls because of a formula
-  for (const e of art.querySelectorAll('*')) {
-    if (isMath(e) || !clips(e) || !e.querySelector('mjx-container')) continue;
-    const right = Math.max(...Array.from(e.querySelectorAll('mjx-math, img, pre, table')).map(x => x.getBoundingClientRect().right));
-    if (right > inner(e) + 2) wide.push(`${name(e)} holds content up to ${Math.round(right)}px, its box ends at ${Math.round(inner(e))}px: "${snippet(e)}"`);
-  }
-  if (document.documentElement.scrollWidth > window.innerWidth + 2) wide.push(`the page scrolls sideways (${document.documentElement.scrollWidth}px)`);
-
-  // every image of a notebook inside a figure with a caption
-  const uncaptioned = Array.from(art.querySelectorAll('img')).filter(img => {
-    const fig = img.closest('figure');
-    const cap = fig && fig.querySelector('figcaption');
-    return !(cap && cap.textContent.trim());
-  }).map(img => (img.closest('section[id]') || {id: '?'}).id + ': ' + (img.getAttribute('src') || '').slice(-40));
-
-  // captions below WCAG AA contrast (4.5:1) against what is behind them, in light and dark mode
-  const rgba = c => {
-    const m = /rgba?\(([^)]*)\)/.exec(c || '');
-    if (!m) return [0, 0, 0, 0];
-    const v = m[1].split(/[\s,\/]+/).filter(Boolean).map(Number);
-    return [v[0], v[1], v[2], v.length > 3 ? v[3] : 1];
-  };
-  const over = (top, below) => [0, 1, 2].map(k => top[k] * top[3] + below[k] * (1 - top[3])).concat([1]);
-  const behind = e => {
-    const layers = [];
-    for (let p = e; p; p = p.parentElement) {
-      const c = rgba(getComputedStyle(p).backgroundColor);
-      if (c[3] > 0) layers.push(c);
-      if (c[3] >= 1) break;
-    }
-    let bg = [255, 255, 255, 1];
-    for (let k = layers.length - 1; k >= 0; k--) bg = over(layers[k], bg);
-    return bg;
-  };
-  const lum = c => {
-    const f = v => { v /= 255; return v <= 0.04045 ? v / 12.92 : Math.pow((v + 0.055) / 1.055, 2.4); };
-    return 0.2126 * f(c[0]) + 0.7152 * f(c[1]) + 0.0722 * f(c[2]);
-  };
-  const contrast = e => {  // the text's colour, faded by its own alpha and every opacity above it
-    const c = rgba(getComputedStyle(e).color);
-    for (let p = e; p; p = p.parentElement) c[3] *= Number(getComputedStyle(p).opacity);
-    const bg = behind(e), fg = over(c, bg);
-    const a = lum(fg), b = lum(bg);
-    return (Math.max(a, b) + 0.05) / (Math.min(a, b) + 0.05);
-  };
-  const lowContrast = [];
-  const theme = document.documentElement.getAttribute('data-theme');
-  for (const mode of ['light', 'dark']) {
-    document.documentElement.setAttribute('data-theme', mode);
-    for (const cap of art.querySelectorAll('figcaption, caption')) {
-      const texts = [cap, ...cap.querySelectorAll('*')].filter(e =>
-        !e.closest('mjx-container, a.headerlink') && getComputedStyle(e).display !== 'none' &&
-        Array.from(e.childNodes).some(n => n.nodeType === 3 && n.textContent.trim()));
-      for (const e of texts) {
-        const r = contrast(e);
-        if (r < 4.5) lowContrast.push(`${mode}: ${name(e)} ${r.toFixed(2)}:1 "${snippet(e).slice(0, 40)}"`);
-      }
-    }
-  }
-  if (theme === null) document.documentElement.removeAttribute('data-theme');
-  else document.documentElement.setAttribute('data-theme', theme);
-
-  // requests leaving the page's origin
-  const external = performance.getEntriesByType('resource').map(e => e.name)
-    .filter(u => !u.startsWith(location.origin) && !/^(data|blob|about):/.test(u));
-
-  const images = Array.from(document.images);
-  const broken = images.filter(i => !i.complete || i.naturalWidth === 0).map(i => (i.src || '').slice(0, 80));
-  const anims = Array.from(document.querySelectorAll('.animation')).map(a => {
-    const img = a.querySelector('img');
-    const slider = a.querySelector('input[type=range]');
-    return {loaded: !!img && img.naturalWidth > 0, frames: slider ? Number(slider.max) + 1 : 0};
-  });
-  done({quoted: quoted, raw: raw, wide: wide.slice(0, 12), n_wide: wide.length, uncaptioned: uncaptioned,
-        low_contrast: lowContrast, machine: machine, bad_tables: badTables, bookkeeping: bookkeeping,
-        process: process, summary_top: summaryTop, max_rows: maxRows, typeset: typeset,
-        external: external, broken: broken, anims: anims,
-        math: document.querySelectorAll('mjx-container').length, images: images.length,
-        height: Math.min(document.documentElement.scrollHeight, 12000)});
-});
-"""
+PAGE_CHECK = DONE + MATH_READY + script("page_check.js")
 
 
 def visit_every_page(book, server, browser, width: int, height: int, check: str, shots: Path,
                      after=None) -> dict:
-    """Open every built page in a window ``width`` x ``height`` px, run the asynchronous script ``check`` (which
-    returns a dict with the page's ``height``), call ``after(result)`` if given, and save a
-    screenshot of the page (down to that height) in ``shots``; the results by page path."""
+    """Open every built page in a window ``width`` x ``height`` px, run the asynchronous script
+    ``check`` (which returns a dict with the page's ``height``), call ``after(result)`` if given,
+    and save a screenshot of the page (down to that height) in ``shots``; the results by page
+    path."""
     shots.mkdir(parents=True, exist_ok=True)
     browser.set_script_timeout(120)
     out = {}
@@ -443,7 +308,7 @@ _ID = re.compile(r"""\sid=["']([^"']+)["']""")
 _HREF = re.compile(r"""<a\s[^>]*href=["']([^"']+)["']""", re.I)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _ids(path: Path) -> frozenset:
     return frozenset(_ID.findall(path.read_text(errors="replace")))
 
@@ -478,11 +343,16 @@ CHECKS = {
     "dead_links": "dead internal links",
     "external_requests": "requests to another origin",
     "math_typeset": "formulas that MathJax did not typeset within a minute",
-    "machine_notation": "Python reprs, True/False, e-notation, '0 of them' or a stray $ in the prose",
+    "machine_notation": "Python reprs, True/False, e-notation, '0 of them' or a stray $ in prose",
     "unnumbered_tables": "tables without a numbered caption above them",
     "bookkeeping_code": "visible code cells with import, def or glue lines",
     "process_words": "words about how the book was made",
 }
+
+def _param(check: str, rel: str):
+    """One test per check and page, named by both."""
+    return pytest.param(check, rel, id=f"{check}-{rel.removesuffix('.html')}")
+
 
 #: Pages a check does not apply to: the API reference documents the code (its module names,
 #: tables of signatures) and the execution statistics list the notebooks by file.
@@ -492,15 +362,16 @@ EXEMPT = {
     "process_words": ("book/api", "book/execution"),
 }
 
-@pytest.mark.parametrize("check, rel", [
-    pytest.param(c, p, id=f"{c}-{p.removesuffix('.html')}") for c in CHECKS for p in toc_pages()
-    if not p.startswith(EXEMPT.get(c, ()))])
+
+@pytest.mark.parametrize("check, rel", [_param(c, p) for c in CHECKS for p in toc_pages()
+                                        if not p.startswith(EXEMPT.get(c, ()))])
 def test_what_a_reader_sees(check, rel, book, seen):
     result = seen[rel]
     found = {
         "quoted_glue": result["quoted"],
         "raw_tex": result["raw"],
-        "too_wide": result["wide"] + ([f"... {result['n_wide'] - 12} more"] if result["n_wide"] > 12 else []),
+        "too_wide": result["wide"]
+        + ([f"... {result['n_wide'] - 12} more"] if result["n_wide"] > 12 else []),
         "uncaptioned_images": result["uncaptioned"],
         "caption_contrast": result["low_contrast"],
         "dead_links": dead_links(book, rel),
@@ -543,23 +414,29 @@ def test_page_check_finds_each_defect_on_a_page_made_to_have_them(tmp_path, brow
     (tmp_path / "dot.png").write_bytes(PNG)
     other, other_url = _serve(tmp_path)  # another port is another origin
     page = f"""<!doctype html><html><body><main><article class="bd-article" style="width:600px">
-<p>value <span class="output text_plain">'0.4849'</span>, fine <span class="output text_plain">0.5204</span></p>
+<p>value <span class="output text_plain">'0.4849'</span>,
+fine <span class="output text_plain">0.5204</span></p>
 <p>raw $\\lambda_{{\\max}}$ here</p>
 <pre style="overflow-x:auto">{"x" * 400}</pre>
 <div style="width:900px">sticks out</div>
 <p><img src="dot.png"></p>
 <figure><img src="dot.png"><figcaption>Figure 1. A caption.</figcaption></figure>
-<figure><img src="dot.png"><figcaption style="color:#999">Figure 2. A pale caption.</figcaption></figure>
-<figure><img src="dot.png"><figcaption style="color:#595959">Figure 3. Grey, but 7:1.</figcaption></figure>
-<figure style="opacity:0.3"><img src="dot.png"><figcaption>Figure 4. Black, faded.</figcaption></figure>
+<figure><img src="dot.png">
+<figcaption style="color:#999">Figure 2. A pale caption.</figcaption></figure>
+<figure><img src="dot.png">
+<figcaption style="color:#595959">Figure 3. Grey, but 7:1.</figcaption></figure>
+<figure style="opacity:0.3"><img src="dot.png">
+<figcaption>Figure 4. Black, faded.</figcaption></figure>
 <img src="{other_url}/dot.png" alt="">
 <p>the check holds: True for (i, j) = [(1, 1)], a gap of 3.0e-04, as the tests show.</p>
 <p>clean: in none of 2,000 scenes; a gap of 0.25.</p>
 <table><tr><td>no caption</td></tr></table>
-<table><caption><span class="caption-number">Table 1 </span>Numbered.</caption><tr><td>ok</td></tr></table>
+<table><caption><span class="caption-number">Table 1 </span>Numbered.</caption>
+<tr><td>ok</td></tr></table>
 <div class="cell"><div class="cell_input"><pre>import numpy as np
 x = 1</pre></div></div>
-<details><div class="cell"><div class="cell_input"><pre>def folded(): pass</pre></div></div></details>
+<details><div class="cell"><div class="cell_input"><pre>def folded(): pass</pre></div></div>
+</details>
 <div class="cell"><div class="cell_input"><pre>result = run(x)</pre></div></div>
 </article></main></body></html>"""
     (tmp_path / "page.html").write_text(page)
@@ -631,73 +508,7 @@ def test_links_to_the_report_read_as_words(book):
 #: Width of a phone's screen (an iPhone 12 to 15 in portrait).
 NARROW = 390
 
-NARROW_CHECK = r"""
-const done = arguments[arguments.length - 1];
-""" + MATH_READY + r"""ready.then(() => new Promise(r => setTimeout(r, 300))).then(async () => {
-  const vw = document.documentElement.clientWidth;
-  const clips = e => /(auto|scroll|hidden|clip)/.test(getComputedStyle(e).overflowX);
-  const label = e => e.tagName.toLowerCase() + (e.id ? '#' + e.id : '') +
-    ((typeof e.className === 'string' && e.className) ? '.' + e.className.trim().split(/\s+/).slice(0, 2).join('.') : '');
-
-  // what sticks out of the screen, where nothing clips it
-  const sticking = [];
-  if (document.documentElement.scrollWidth > vw) {
-    for (const e of document.body.querySelectorAll('*')) {
-      const r = e.getBoundingClientRect();
-      if (r.width === 0 || r.right <= vw + 1) continue;
-      let clipped = false;
-      for (let p = e.parentElement; p && p !== document.body; p = p.parentElement) if (clips(p)) { clipped = true; break; }
-      if (!clipped) sticking.push(`${label(e)} ends at ${Math.round(r.right)}px`);
-      if (sticking.length >= 8) break;
-    }
-  }
-
-  // every control of a player inside the screen and inside every box that clips it
-  const players = [];
-  let nControls = 0;
-  for (const a of document.querySelectorAll('.animation')) {
-    for (const b of a.querySelectorAll('button, input, label')) {
-      nControls++;
-      const r = b.getBoundingClientRect();
-      let L = 0, R = vw;
-      for (let p = b.parentElement; p; p = p.parentElement) {
-        if (!clips(p)) continue;
-        const q = p.getBoundingClientRect();
-        L = Math.max(L, q.left + p.clientLeft);
-        R = Math.min(R, q.left + p.clientLeft + p.clientWidth);
-      }
-      if (r.left < L - 1 || r.right > R + 1) {
-        players.push(`${b.getAttribute('title') || b.textContent.trim() || label(b)}: ${Math.round(r.left)}-${Math.round(r.right)}px, visible ${Math.round(L)}-${Math.round(R)}px`);
-      }
-    }
-  }
-
-  // every figure's image linked to its image file, which the server has
-  const art = document.querySelector('article.bd-article') || document.body;
-  const figures = [], links = new Map();
-  const imgs = Array.from(art.querySelectorAll('figure img'));
-  for (const img of imgs) {
-    const id = (img.closest('figure[id]') || img.closest('section[id]') || {id: '?'}).id;
-    if (img.closest('.animation')) {  // a player's frame has no file; it opens in the overlay
-      if (!img.classList.contains('bk-zoom-frame')) figures.push(`${id}: the player's frame does not open`);
-      continue;
-    }
-    const a = img.closest('a.bk-zoom');
-    if (!a) { figures.push(`${id}: no enlarge link`); continue; }
-    const u = new URL(a.getAttribute('href'), location.href);
-    if (u.origin !== location.origin) { figures.push(`${id}: links to ${u.origin}`); continue; }
-    links.set(u.href, id);
-  }
-  for (const [href, id] of links) {
-    const r = await fetch(href, {method: 'HEAD'});
-    const type = r.headers.get('content-type') || '';
-    if (!r.ok || !type.startsWith('image/')) figures.push(`${id}: ${href.split('/').pop()} gives ${r.status} ${type}`);
-  }
-  done({scroll_width: document.documentElement.scrollWidth, viewport: vw, sticking: sticking,
-        players: players, n_controls: nControls, figures: figures, n_figures: imgs.length,
-        height: Math.min(document.documentElement.scrollHeight, 16000)});
-});
-"""
+NARROW_CHECK = DONE + MATH_READY + script("narrow_check.js")
 
 
 @pytest.fixture(scope="module")
@@ -759,13 +570,17 @@ def test_a_figure_opens_full_size_on_a_phone(server, browser):
         WebDriverWait(browser, 10).until(lambda d: d.execute_script(
             "const i = document.querySelector('.bk-lightbox:not([hidden]) img');"
             "return !!i && i.complete && i.naturalWidth > 0"))
-        r = browser.execute_script("""
+        r = browser.execute_script(
+            """
             const box = document.querySelector('.bk-lightbox'), img = box.querySelector('img');
             return {shown: img.getBoundingClientRect().width, natural: img.naturalWidth,
                     href: arguments[0].getAttribute('href'), src: img.getAttribute('src'),
                     box_scrolls: box.scrollWidth > box.clientWidth,
-                    page: document.documentElement.scrollWidth, screen: document.documentElement.clientWidth};
-        """, link)
+                    page: document.documentElement.scrollWidth,
+                    screen: document.documentElement.clientWidth};
+        """,
+            link,
+        )
         assert r["src"] == r["href"] and r["href"].endswith(".png"), r
         assert abs(r["shown"] - r["natural"]) <= 1, r  # full size, not shrunk to the screen
         assert r["natural"] > NARROW and r["box_scrolls"], r  # wider than the phone: it scrolls
@@ -847,15 +662,14 @@ return out;
 """
 
 
-_FROM_SUPERSCRIPT = str.maketrans("\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079",
-                                  "-0123456789")
+_SUPERSCRIPTS = "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079"
+_FROM_SUPERSCRIPT = str.maketrans(_SUPERSCRIPTS, "-0123456789")
 
 
 def _six_digits(shown: str, value: float) -> bool:
     """Whether ``shown`` has 6 significant digits and is ``value`` rounded to them (half a unit
     of the last digit, plus 1e-9 of it for a value on a rounding boundary)."""
-    m = re.fullmatch(r"(-?(\d+(?:\.\d*)?))(?:\u00d710([\u207b\u2070\u00b9\u00b2\u00b3\u2074-\u2079]+))?",
-                     shown)
+    m = re.fullmatch(rf"(-?(\d+(?:\.\d*)?))(?:\u00d710([{_SUPERSCRIPTS}]+))?", shown)
     if not m:
         return False
     digits = m.group(2).replace(".", "")
@@ -917,7 +731,11 @@ def test_explorer_formulas_agree_with_obslib(explorer):
     from obslib import pair_form as pf
 
     rng = np.random.default_rng(7)
-    alpha, theta, q = rng.uniform(0, 6, 200), rng.uniform(-np.pi, np.pi, 200), rng.uniform(0, 3, 200)
+    alpha, theta, q = (
+        rng.uniform(0, 6, 200),
+        rng.uniform(-np.pi, np.pi, 200),
+        rng.uniform(0, 3, 200),
+    )
     theta[:10] = [0, np.pi, -np.pi / 2, np.pi / 2, 1e-9, np.pi - 1e-9, 0.3, -2.0, 1.0, 2.5]
     got = explorer.execute_script(
         "const m = window.boundExplorer.math;"
@@ -925,7 +743,9 @@ def test_explorer_formulas_agree_with_obslib(explorer):
         " m.maximisingAlpha(arguments[1][k], arguments[2][k])]);",
         alpha.tolist(), theta.tolist(), q.tolist())
     got = np.array(got)
-    np.testing.assert_allclose(got[:, 0], ob.pair_bound_polar(alpha, theta, q), rtol=1e-9, atol=1e-15)
+    np.testing.assert_allclose(
+        got[:, 0], ob.pair_bound_polar(alpha, theta, q), rtol=1e-9, atol=1e-15
+    )
     ok = np.abs(np.sin(theta)) > 1e-6  # alpha* is defined where the angle is not 0 or pi
     np.testing.assert_allclose(got[ok, 1], pf.maximising_alpha_closed(theta[ok], q[ok]), rtol=1e-9)
 
@@ -933,10 +753,12 @@ def test_explorer_formulas_agree_with_obslib(explorer):
     geoms = random_geometries(60, seed=5)
     polar = explorer.execute_script(
         "const m = window.boundExplorer.math;"
-        "return arguments[0].map(g => { const p = m.pairPolar(g.sensors[0], g.sensors[1], g.target);"
+        "return arguments[0].map(g => {"
+        " const p = m.pairPolar(g.sensors[0], g.sensors[1], g.target);"
         " return [p.alpha, p.theta, p.di, m.pairBoundPolar(p.alpha, p.theta, g.umax / p.di)]; });",
-        geoms)
-    for g, (a, th, di, b) in zip(geoms, polar):
+        geoms,
+    )
+    for g, (a, th, _di, b) in zip(geoms, polar):
         w = ob.pair_bounds(g["sensors"][:2], [g["target"]], g["umax"])[0, 1, 0]
         assert math.isclose(b, w, rel_tol=1e-6, abs_tol=1e-12), (g, b, w)
         v = np.subtract(g["sensors"], g["target"])
@@ -981,10 +803,15 @@ def test_dragging_the_explorer_changes_its_state(explorer):
 
     def drag(handle, dx, dy):
         x, y = explorer.execute_script("return window.boundExplorer.handle(arguments[0])", handle)
-        (ActionChains(explorer)
-         .move_to_element_with_offset(canvas, x - size["width"] / 2, y - size["height"] / 2)
-         .click_and_hold().move_by_offset(dx // 2, dy // 2).move_by_offset(dx - dx // 2, dy - dy // 2)
-         .release().perform())
+        (
+            ActionChains(explorer)
+            .move_to_element_with_offset(canvas, x - size["width"] / 2, y - size["height"] / 2)
+            .click_and_hold()
+            .move_by_offset(dx // 2, dy // 2)
+            .move_by_offset(dx - dx // 2, dy - dy // 2)
+            .release()
+            .perform()
+        )
         return explorer.execute_script("return window.boundExplorer.handle(arguments[0])", handle)
 
     before = state()
@@ -1018,7 +845,10 @@ def test_dragging_the_explorer_changes_its_state(explorer):
      .move_to_element_with_offset(canvas, x - size["width"] / 2, y - size["height"] / 2)
      .click_and_hold().move_by_offset(60, 25).release().perform())
     on_surface = state()
-    assert on_surface["sensors"][0] == tipped["sensors"][0] and on_surface["target"] == tipped["target"]
+    assert (
+        on_surface["sensors"][0] == tipped["sensors"][0]
+        and on_surface["target"] == tipped["target"]
+    )
     assert on_surface["sensors"][1] != tipped["sensors"][1]
     x1, y1 = explorer.execute_script("return window.boundExplorer.explorer.surfacePoint()")
     assert abs(x1 - x - 60) <= 1.5 and abs(y1 - y - 25) <= 1.5, (x, y, x1, y1)
@@ -1042,7 +872,9 @@ def public_names() -> dict[str, list[str]]:
         if any(part.startswith("_") for part in name.split(".")):
             continue
         mod = importlib.import_module(name)
-        out[name] = [n for n in getattr(mod, "__all__", []) if not inspect.ismodule(getattr(mod, n))]
+        out[name] = [
+            n for n in getattr(mod, "__all__", []) if not inspect.ismodule(getattr(mod, n))
+        ]
     return out
 
 
@@ -1088,24 +920,7 @@ def test_api_landing_lists_every_public_name(book):
     assert len(linked) > 200
 
 
-CONTENTS_CHECK = r"""
-const nav = document.querySelector('.bd-sidebar-secondary');
-if (!nav) return ['no contents column'];
-const style = document.createElement('style');  // show every level of the contents at once
-style.textContent = '.bd-sidebar-secondary .page-toc ul { display: block !important; }';
-document.head.appendChild(style);
-const right = nav.getBoundingClientRect().left + nav.clientLeft + nav.clientWidth, out = [];
-for (const a of nav.querySelectorAll('.page-toc a.nav-link')) {
-  const r = a.getBoundingClientRect();
-  if (r.width === 0) continue;
-  if (a.scrollWidth > a.clientWidth + 1 || r.right > right + 1) {
-    out.push(`${a.textContent.trim()} (${a.scrollWidth}px in ${a.clientWidth}px, ends at ${Math.round(r.right)}px of ${Math.round(right)}px)`);
-  }
-}
-if (nav.scrollWidth > nav.clientWidth + 1) out.push(`the column scrolls sideways (${nav.scrollWidth}px in ${nav.clientWidth}px)`);
-style.remove();
-return out;
-"""
+CONTENTS_CHECK = script("contents_check.js")
 
 
 def test_api_pages_contents_do_not_clip(server, browser):
@@ -1118,7 +933,11 @@ def test_api_pages_contents_do_not_clip(server, browser):
     clipped = []
     for rel in api:
         browser.get(f"{server}/{rel}")
-        WebDriverWait(browser, 20).until(lambda d: d.execute_script(
-            "return document.readyState === 'complete' && !!document.querySelector('.bd-sidebar-secondary')"))
+        WebDriverWait(browser, 20).until(
+            lambda d: d.execute_script(
+                "return document.readyState === 'complete'"
+            " && !!document.querySelector('.bd-sidebar-secondary')"
+            )
+        )
         clipped += [f"{rel}: {c}" for c in browser.execute_script(CONTENTS_CHECK)]
     assert not clipped, "\n".join(clipped[:20])

@@ -1,4 +1,5 @@
-"""Theorem 1's bound as a table over subsets (obslib.bound_tables) against the SVD of obslib.lower_bound."""
+"""Theorem 1's bound as a table over subsets (obslib.bound_tables) against the SVD of
+obslib.lower_bound."""
 
 import numpy as np
 import pytest
@@ -45,7 +46,10 @@ def test_tables_and_set_function_agree():
         (lambda: lower_bound_table(SENSORS, SENSORS[0], 1.0), "coincides with target"),
         (lambda: lower_bound_tables([[[np.nan, 0.0]]], 1.0), "vectors has a non-finite"),
         (lambda: lower_bound_tables([[0.0, 1.0]], 1.0), "vectors must have shape"),
-        (lambda: lower_bound_tables(np.ones((2, 3, 2)), [1.0, 2.0, 3.0]), "u_max must be a scalar or of shape \\(2,\\)"),
+        (
+            lambda: lower_bound_tables(np.ones((2, 3, 2)), [1.0, 2.0, 3.0]),
+            "u_max must be a scalar or of shape \\(2,\\)",
+        ),
     ],
 )
 def test_bad_input_raises(call, match):

@@ -7,9 +7,10 @@ from hypothesis import strategies as st
 from strategies import scenes
 
 import obslib as ob
+from obslib._validate import check_scene_batch
 from obslib.bounds import lower_bounds, worst_case_controls
 from obslib.observability import relative_rows
-from obslib.scenes import SCENE_KINDS, check_batch, random_scene_batch, random_scenes
+from obslib.scenes import SCENE_KINDS, random_scene_batch, random_scenes
 
 
 def svd_bound(rows, u_max):
@@ -138,7 +139,9 @@ def test_mahalanobis_identity_covariance_is_euclidean():
     rng = np.random.default_rng(2)
     s = rng.uniform(0, 10, size=(6, 2))
     t = rng.uniform(0, 10, size=(4, 2))
-    np.testing.assert_allclose(ob.pair_bounds(s, t, 1.0, cov=np.eye(2)), ob.pair_bounds(s, t, 1.0), atol=1e-14)
+    np.testing.assert_allclose(
+        ob.pair_bounds(s, t, 1.0, cov=np.eye(2)), ob.pair_bounds(s, t, 1.0), atol=1e-14
+    )
 
 
 def test_mahalanobis_isotropic_covariance_rescales_speed():
@@ -148,12 +151,15 @@ def test_mahalanobis_isotropic_covariance_rescales_speed():
     t = rng.uniform(0, 10, size=(2, 2))
     c = 0.3
     np.testing.assert_allclose(
-        ob.pair_bounds(s, t, 2.0, cov=c * np.eye(2)), ob.pair_bounds(s, t, 2.0 * np.sqrt(c)), atol=1e-13
+        ob.pair_bounds(s, t, 2.0, cov=c * np.eye(2)),
+        ob.pair_bounds(s, t, 2.0 * np.sqrt(c)),
+        atol=1e-13,
     )
 
 
 def test_mahalanobis_matches_experiments_definition():
-    """The experiments' evaluation: Theorem 4's form with Mahalanobis d_i, d_j and the Euclidean angle theta."""
+    """The experiments' evaluation: Theorem 4's form with Mahalanobis d_i, d_j and the Euclidean
+    angle theta."""
     rng = np.random.default_rng(6)
     for _ in range(300):
         s = rng.uniform(-5, 5, size=(2, 2))
@@ -192,10 +198,13 @@ def test_stationary_target_bound_is_exact():
     for _ in range(200):
         s = rng.uniform(-5, 5, size=(rng.integers(2, 6), 2))
         o = rng.uniform(-5, 5, size=2)
-        assert ob.lower_bound(s, o, 0.0) == pytest.approx(ob.inverse_condition_number(s, o, [0, 0]), abs=1e-14)
+        assert ob.lower_bound(s, o, 0.0) == pytest.approx(
+            ob.inverse_condition_number(s, o, [0, 0]), abs=1e-14
+        )
 
 
-# --------------------------------------------------------------------------- batched forms and audits
+# --------------------------------------------------------------------------- batched forms and
+# audits
 
 
 def test_scene_batch_is_seeded_legal_and_of_every_kind():
@@ -218,20 +227,20 @@ def test_scene_batch_is_seeded_legal_and_of_every_kind():
     assert (one.counts == 1).all() and set(one.kinds) == {"spread"}
 
 
-def test_check_batch_names_the_offending_scene():
+def test_check_scene_batch_names_the_offending_scene():
     b = random_scene_batch(6, 2, n_sensors=(3, 3))
     s = b.sensors.copy()
     s[4, 2] = s[4, 0]
     with pytest.raises(ValueError, match="scene 4: sensors 0 and 2 coincide"):
-        check_batch(s, b.targets, b.counts)
+        check_scene_batch(s, b.targets, b.counts)
     s = b.sensors.copy()
     s[1, 1] = b.targets[1]
     with pytest.raises(ValueError, match="scene 1: sensor 1 is on the target"):
-        check_batch(s, b.targets, b.counts)
+        check_scene_batch(s, b.targets, b.counts)
     s = b.sensors.copy()
     s[3, 0, 1] = np.inf
     with pytest.raises(ValueError, match="scene 3 has a non-finite"):
-        check_batch(s, b.targets, b.counts)
+        check_scene_batch(s, b.targets, b.counts)
     with pytest.raises(ValueError, match="kind"):
         random_scene_batch(5, 0, kinds=("round",))
 
@@ -242,9 +251,15 @@ def test_batched_bound_and_worst_case_control_equal_the_per_scene_functions():
     controls = worst_case_controls(batch.rows, batch.u_max)
     for k in range(600):
         sc = batch.scene(k)
-        assert bounds[k] == pytest.approx(ob.lower_bound(sc.sensors, sc.target, sc.u_max), rel=1e-12, abs=1e-14)
-        np.testing.assert_allclose(controls[k], ob.worst_case_control(sc.sensors, sc.target, sc.u_max),
-                                   rtol=0, atol=1e-12 * sc.u_max)
+        assert bounds[k] == pytest.approx(
+            ob.lower_bound(sc.sensors, sc.target, sc.u_max), rel=1e-12, abs=1e-14
+        )
+        np.testing.assert_allclose(
+            controls[k],
+            ob.worst_case_control(sc.sensors, sc.target, sc.u_max),
+            rtol=0,
+            atol=1e-12 * sc.u_max,
+        )
     assert lower_bounds(batch.rows[:, :1], batch.u_max).max() == 0.0  # one sensor: Theorem 2
     with pytest.raises(ValueError, match="u_max"):
         lower_bounds(batch.rows, -1.0)

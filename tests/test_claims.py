@@ -251,8 +251,14 @@ def test_findings_read_as_prose(records, paper_records):
                 bad = MACHINE.search(plain)
                 assert not bad, f"{r.id} {where}: {bad.group(0)!r} in {plain!r}"
             # one or two sentences (three at most where a sentence cites a later fact)
-            ends = re.findall(r"[.;:]?\.(?=\s+[A-Z(])", _outside_math(r.ours).replace("Eq.", "Eq")
-                              .replace("Fig.", "Fig").replace("Sec.", "Sec").replace("Figs.", "Figs"))
+            ends = re.findall(
+                r"[.;:]?\.(?=\s+[A-Z(])",
+                _outside_math(r.ours)
+                .replace("Eq.", "Eq")
+                .replace("Fig.", "Fig")
+                .replace("Sec.", "Sec")
+                .replace("Figs.", "Figs"),
+            )
             assert len(ends) <= 2, f"{r.id}: {len(ends) + 1} sentences: {r.ours!r}"
             assert len(r.ours) < 700, f"{r.id}: the finding is {len(r.ours)} characters"
 
@@ -292,7 +298,7 @@ def test_committed_report_links_every_entry_to_its_section():
 
 # ------------------------------------------------------------------ the report
 
-from obsbook import report as rep  # noqa: E402
+from obsbook import report  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -303,20 +309,20 @@ def stored_robustness():
 
 
 def test_committed_report_is_the_ledger_at_the_paper_profile(paper_records, stored_robustness):
-    text = rep.render_report(list(paper_records.values()), "paper", robustness=stored_robustness)
+    text = report.render_report(list(paper_records.values()), "paper", robustness=stored_robustness)
     committed = (ROOT / "book" / "report.md").read_text()
     assert committed == text, "book/report.md is stale: run python -m obsbook.report --write ..."
 
 
 def test_counts_are_of_the_paper_claims_and_add_up(records):
     recs = list(records.values())
-    sentence = rep.counts_sentence(recs)
+    sentence = report.counts_sentence(recs)
     n_paper = sum(r.kind == "paper" for r in recs)
     numbers = [int(x.replace(",", "")) for x in re.findall(r"\d[\d,]*", sentence)]
     assert numbers[0] == n_paper and sum(numbers[1:]) == n_paper, sentence
     for s in claims.BEYOND_STATUSES:
         assert s not in sentence
-    text = rep.render_report(recs, "quick", targets={}, robustness=None)
+    text = report.render_report(recs, "quick", targets={}, robustness=None)
     counts = text.split(":name: tab-report-counts", 1)[1].split(":::", 1)[0]
     cells = re.findall(r"^  - ([\d,]+)$", counts, re.M)
     assert int(cells[-1]) == n_paper and sum(map(int, cells[:-1])) == n_paper
@@ -324,13 +330,13 @@ def test_counts_are_of_the_paper_claims_and_add_up(records):
 
 def test_report_structure(records):
     recs = list(records.values())
-    text = rep.render_report(recs, "quick", targets={recs[0].label: (recs[0].notebook, "Sec")})
+    text = report.render_report(recs, "quick", targets={recs[0].label: (recs[0].notebook, "Sec")})
     for r in recs:
         assert text.count(f"\n(claim-{r.id})=\n") == 1
         assert f"](#claim-{r.id})" in text  # a table links to the entry
     assert f"[Sec](#{recs[0].label})" in text
     assert f"](../notebooks/{recs[1].notebook}.ipynb)" in text  # label unknown: the chapter
-    for start, end in rep.MARKERS.values():
+    for start, end in report.MARKERS.values():
         assert text.count(start) == 1 and text.count(end) == 1
         assert text.index(start) < text.index(end)
     claims_table = text.split(":name: tab-report-claims", 1)[1].split(":::", 1)[0]
@@ -351,7 +357,7 @@ def test_report_structure(records):
 
 
 def test_report_never_mentions_how_it_was_made(records):
-    text = rep.render_report(list(records.values()), "quick", targets={})
+    text = report.render_report(list(records.values()), "quick", targets={})
     plain = _outside_math(text).lower()
     for words in ("the tests", "unit test", "pytest", "budget", "commit", ".py", "source file",
                   "notebook 1"):
@@ -361,38 +367,45 @@ def test_report_never_mentions_how_it_was_made(records):
 def test_intro_includes_the_report_markers():
     committed = (ROOT / "book" / "report.md").read_text()
     intro = (ROOT / "book" / "intro.md").read_text()
-    for start, end in rep.MARKERS.values():
+    for start, end in report.MARKERS.values():
         assert start in committed and end in committed
-    start, end = rep.MARKERS["counts"]
+    start, end = report.MARKERS["counts"]
     assert f':start-after: "{start}"' in intro and f':end-before: "{end}"' in intro
 
 
 def test_typeset_numbers_sets_and_long_formulas():
-    assert rep.typeset("difference < 1e-12.") == "difference $< 10^{-12}$."
-    assert rep.typeset("ranges over [4.5e-07, 0.99]") == r"ranges over [$4.5 \times 10^{-7}$, 0.99]"
-    assert rep.typeset("adding s2 to {s1, s3}") == r"adding $s_2$ to $\{s_1, s_3\}$"
+    assert report.typeset("difference < 1e-12.") == "difference $< 10^{-12}$."
+    assert (
+        report.typeset("ranges over [4.5e-07, 0.99]") == r"ranges over [$4.5 \times 10^{-7}$, 0.99]"
+    )
+    assert report.typeset("adding s2 to {s1, s3}") == r"adding $s_2$ to $\{s_1, s_3\}$"
     long = r"$\omega(\{s_1,s_2,s_3\}) - \omega(\{s_1,s_2\}) = 0.3310 - 0.5345 = -0.2035$"
-    pieces = re.findall(r"\$[^$]+\$", rep.typeset(long))
+    pieces = re.findall(r"\$[^$]+\$", report.typeset(long))
     assert len(pieces) > 2 and pieces[-2:] == ["$= 0.3310 - 0.5345$", "$= -0.2035$"]
     assert all(len(p) < 45 for p in pieces)
     joined = " ".join(p[1:-1].replace("{} ", "") for p in pieces)
     assert joined.split() == long[1:-1].split()  # the pieces put back together are the formula
     frac = r"$\dfrac{a = b}{c}$"
-    assert rep.typeset(frac) == frac  # never split inside braces or an environment
-    assert rep.typeset(r"$|x|$ and a | b") == r"$\vert x\vert $ and a \| b"
-    assert rep.typeset("`s1 < 1e-12` and s1") == "`s1 < 1e-12` and $s_1$"  # code stays code
+    assert report.typeset(frac) == frac  # never split inside braces or an environment
+    assert report.typeset(r"$|x|$ and a | b") == r"$\vert x\vert $ and a \| b"
+    assert report.typeset("`s1 < 1e-12` and s1") == "`s1 < 1e-12` and $s_1$"  # code stays code
 
 
 def test_notebook_targets_read_labels_and_their_sections(tmp_path):
-    nb = {"cells": [
-        {"cell_type": "markdown", "source": ["# The chapter\n"]},
-        {"cell_type": "markdown", "source": ["(thm1-evidence)=\n", "## Audit\n", "text (not)= here\n"]},
-        {"cell_type": "code", "source": ["(code-label)=\n"]},
-        {"cell_type": "markdown", "source": "(a-b)=\n(c)=\n### H $x$\n"},
-        {"cell_type": "markdown", "source": "(d)=\n**Misprints** (no heading)\n"},
-    ]}
+    nb = {
+        "cells": [
+            {"cell_type": "markdown", "source": ["# The chapter\n"]},
+            {
+                "cell_type": "markdown",
+                "source": ["(thm1-evidence)=\n", "## Audit\n", "text (not)= here\n"],
+            },
+            {"cell_type": "code", "source": ["(code-label)=\n"]},
+            {"cell_type": "markdown", "source": "(a-b)=\n(c)=\n### H $x$\n"},
+            {"cell_type": "markdown", "source": "(d)=\n**Misprints** (no heading)\n"},
+        ]
+    }
     (tmp_path / "x.ipynb").write_text(json.dumps(nb))
-    assert rep.notebook_targets(tmp_path) == {
+    assert report.notebook_targets(tmp_path) == {
         "thm1-evidence": ("x", "Audit"), "a-b": ("x", "H $x$"), "c": ("x", "H $x$"),
         "d": ("x", "The chapter")}
 
@@ -402,17 +415,17 @@ def test_report_command_line_errors_exit_2(tmp_path, capsys):
                       (["--notebooks", str(tmp_path / "none")], "not a directory"),
                       (["--profile", "nope"], "invalid choice")):
         with pytest.raises(SystemExit) as exc:
-            rep.main(argv)
+            report.main(argv)
         assert exc.value.code == 2 and msg in capsys.readouterr().err
     bad = tmp_path / "r.json"
     bad.write_text("[1]")
     with pytest.raises(SystemExit) as exc:
-        rep.main(["--robustness", str(bad), "--write", str(tmp_path / "r.md")])
+        report.main(["--robustness", str(bad), "--write", str(tmp_path / "r.md")])
     assert exc.value.code == 2 and "not a robustness data file" in capsys.readouterr().err
 
 
 def test_list_table_formats_numbers_with_the_book_formatter():
-    lines = rep.list_table("Numbers.", ["a", "b"], [[12345, 2.5e-7], [0.25, "none"]], name="t")
+    lines = report.list_table("Numbers.", ["a", "b"], [[12345, 2.5e-7], [0.25, "none"]], name="t")
     assert "* - 12,345" in lines and r"  - $2.50 \times 10^{-7}$" in lines
     assert lines[0] == ":::{list-table} Numbers." and lines[-1] == ":::"
 
@@ -421,7 +434,6 @@ def test_list_table_formats_numbers_with_the_book_formatter():
 
 def test_claims_sit_above_the_studies_and_below_the_book():
     import ast
-
     import warnings
 
     pkg = ROOT / "obslib"

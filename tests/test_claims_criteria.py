@@ -1,12 +1,13 @@
-"""Claims beyond the paper: the bound against classical criteria and assignments judged by tracking."""
+"""Claims beyond the paper: the bound against classical criteria and assignments judged by
+tracking."""
 
 import numpy as np
 import pytest
 
 import obslib.claims as claims
 from obslib.claims import criteria as cc
-from obslib.studies import assignment_tracking as at
 from obslib.profiles import params
+from obslib.studies import assignment_tracking as at
 from obslib.studies import criteria as cs
 
 IDS = ["beyond-criteria", "beyond-assignment-tracking"]
@@ -39,7 +40,9 @@ def test_assignment_claim_evidence_recomputed_directly(records):
         run = at.run(setup, rule, seeds)  # one rule at a time, not through the study's cache
         per_run = run.post_error[:, 1:].sum(axis=-1).mean(axis=1)
         assert rows[(L, rule)]["median_error"] == pytest.approx(np.median(per_run), abs=1e-4)
-        assert rows[(L, rule)]["lost"] == int((run.post_error[:, 1:].mean(axis=1) > p["assign_loss"]).sum())
+        assert rows[(L, rule)]["lost"] == int(
+            (run.post_error[:, 1:].mean(axis=1) > p["assign_loss"]).sum()
+        )
 
 
 def test_assignment_status_follows_the_tests(records):

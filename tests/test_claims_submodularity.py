@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 
 import obslib as ob
-import obslib.claims.submodularity as cs  # registers the claims
-import obslib.studies.submodularity as studies
-import obslib.bound_tables as sm  # its lower_bound is patched below
+import obslib.bound_tables as bt  # its lower_bound is patched below
+import obslib.claims.submodularity as csm  # registers the claims
+import obslib.studies.submodularity as sm
 from obslib import claims
 
 IDS = ["thm7-case1", "thm7-case2", "thm7", "thm7-exact", "thm8-trace", "thm8-logdet",
@@ -50,7 +50,7 @@ def omega(sensors, idx):
 
 def test_case1_evidence_recomputed(records):
     ev = records["thm7-case1"].evidence
-    s = studies.FIG3_CASES["case1"]
+    s = sm.FIG3_CASES["case1"]
     assert np.isclose(ev["values"]["{s1,s3}"], omega(s, (0, 2)))
     assert np.isclose(ev["values"]["{s1,s2,s3}"], omega(s, (0, 1, 2)))
     assert omega(s, (0, 2)) - omega(s, (0, 1, 2)) > 0.35
@@ -59,7 +59,7 @@ def test_case1_evidence_recomputed(records):
 
 def test_case2_evidence_recomputed(records):
     ev = records["thm7-case2"].evidence
-    s = studies.FIG3_CASES["case2"]
+    s = sm.FIG3_CASES["case2"]
     assert ev["matches"] == {"{s1,s2,s3}": False, "{s1,s2}": True, "{s1,s2,s3,s4}": True,
                              "{s1,s2,s4}": True}
     gA = omega(s, (0, 1, 2)) - omega(s, (0, 1))
@@ -74,23 +74,23 @@ def test_case2_evidence_recomputed(records):
 
 def test_case2_would_be_reproduced_with_the_printed_value(monkeypatch):
     """The status follows the numbers: were omega({s1,s2,s3}) = 0.3310, Case 2 would hold."""
-    real = sm.lower_bound
+    real = bt.lower_bound
 
     def fake(sensors, target, u_max):
         s = np.asarray(sensors)
-        if s.shape == (3, 2) and np.array_equal(s, studies.FIG3_CASES["case2"][:3]):
+        if s.shape == (3, 2) and np.array_equal(s, sm.FIG3_CASES["case2"][:3]):
             return 0.3310
         return real(sensors, target, u_max)
 
-    monkeypatch.setattr(sm, "lower_bound", fake)
+    monkeypatch.setattr(bt, "lower_bound", fake)
     # private: the ledger caches each case's audit; cleared so that the patched bound is used
-    cs._case.cache_clear()
+    csm._case.cache_clear()
     try:
         f = claims.registry()["thm7-case2"].check("quick")
         assert f.status == "reproduced"
     finally:
         monkeypatch.undo()
-        cs._case.cache_clear()
+        csm._case.cache_clear()
 
 
 def test_thm7_random_witnesses_recomputed(records):
@@ -116,7 +116,7 @@ def test_thm8_counts_consistent(records):
     p = ob.profiles.params("04_submodularity", "quick")
     for rid in ("thm8-trace", "thm8-logdet", "thm8-rank"):
         ev = records[rid].evidence
-        assert len(ev) == len(studies.CONFIGS)
+        assert len(ev) == len(sm.CONFIGS)
         for cfg in ev.values():
             assert cfg["n_not_increasing"] == 0 and cfg["n_not_submodular"] == 0
             assert cfg["n_instances"] in (p["n_instances"], 2 * p["n_instances"])

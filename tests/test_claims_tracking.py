@@ -6,7 +6,6 @@ and then pinned to what we found (a change of verdict must be a deliberate, revi
 
 from __future__ import annotations
 
-
 import pytest
 
 import obslib.claims as claims

@@ -23,14 +23,15 @@ def test_disc_mesh_closes_the_polar_grid():
     ((-1.0, 3, 8), "u_max must be finite and non-negative"),
     ((np.inf, 3, 8), "u_max must be finite"),
     (("1", 3, 8), "u_max must be numeric"),
-    ((1.0, 0, 8), "n_radii must be a positive integer"),
-    ((1.0, 2.5, 8), "n_radii must be a positive integer"),
-    ((1.0, 3, True), "n_angles must be a positive integer"),
+    ((1.0, 0, 8), "n_radii must be at least 1, got 0"),
+    ((1.0, 2.5, 8), "n_radii must be an integer, got 2.5"),
+    ((1.0, 3.0, 8), "n_radii must be an integer, got 3.0"),
+    ((1.0, 3, True), "n_angles must be an integer, got True"),
 ])
 def test_bad_scalar_arguments_are_named(args, message):
     with pytest.raises(ValueError, match=message):
         disc_controls(*args)
 
 
-def test_integral_floats_count_as_integers():
-    assert np.array_equal(disc_controls(1.0, 3.0, 8), disc_controls(1.0, 3, 8))
+def test_counts_are_integers_of_any_integer_type():
+    assert np.array_equal(disc_controls(1.0, np.int64(3), np.int32(8)), disc_controls(1.0, 3, 8))

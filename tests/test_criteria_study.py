@@ -47,7 +47,9 @@ def test_scores_equal_direct_formulas(name):
 def test_euclidean_bound_score():
     got = cs.criterion_scores("bound", S, X, C, Q, R, 1.3, metric="euclidean")
     ii, jj = np.triu_indices(5, 1)
-    want = np.array([[_direct("bound", b, i, j, "euclidean") for i, j in zip(ii, jj)] for b in range(4)])
+    want = np.array(
+        [[_direct("bound", b, i, j, "euclidean") for i, j in zip(ii, jj)] for b in range(4)]
+    )
     np.testing.assert_allclose(got, want, rtol=1e-12)
 
 
@@ -135,7 +137,10 @@ def test_figures_label_their_axes():
     study = {("circle", "mahalanobis"): tr.monte_carlo(setup, 3, ("best-pair", "fixed-pair"))}
     fig = plot_run_errors(study)
     assert fig.get_figwidth() <= 9 and "error" in fig.axes[0].get_ylabel()
-    assert [t.get_text() for t in fig.axes[0].get_xticklabels()] == ["bound\n(best pair)", "fixed\npair"]
+    assert [t.get_text() for t in fig.axes[0].get_xticklabels()] == [
+        "bound\n(best pair)",
+        "fixed\npair",
+    ]
     runs = {2: at.run_all(at.AssignmentTrackingSetup(n_targets=2, steps=5), [0, 1])}
     fig2 = plot_assignment_errors(runs)
     assert fig2.get_figwidth() <= 9 and "length units" in fig2.axes[0].get_ylabel()
@@ -144,7 +149,9 @@ def test_figures_label_their_axes():
         plot_run_errors(study, "euclidean")
 
 
-@pytest.mark.parametrize("base", [tr.PAPER_CIRCLE, tr.PAPER_ADVERSARIAL], ids=["circle", "adversary"])
+@pytest.mark.parametrize(
+    "base", [tr.PAPER_CIRCLE, tr.PAPER_ADVERSARIAL], ids=["circle", "adversary"]
+)
 def test_criteria_runs_reused_across_metrics_equal_direct_runs(base):
     """The criteria's runs do not depend on the bound's metric; re-logging the bound of one
     metric's runs under the other equals running them with the other metric."""
@@ -163,7 +170,9 @@ def test_criteria_runs_reused_across_metrics_equal_direct_runs(base):
 
 def test_adversary_rows_equal_entrapment_summary():
     setup = tr.PAPER_ADVERSARIAL.replace(steps=40)
-    names = ["best-pair", "fixed-pair"] + [c for c in ("d-optimal",) if c in cs.available_strategies()]
+    names = ["best-pair", "fixed-pair"] + [
+        c for c in ("d-optimal",) if c in cs.available_strategies()
+    ]
     mc = tr.monte_carlo(setup, 4, names)
     for row in cs.adversary_rows(mc):
         want = study.entrapment_summary(mc[row["strategy"]])

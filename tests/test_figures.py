@@ -22,13 +22,13 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 
-from obsbook import figures as F  # noqa: E402
+from obsbook import figures  # noqa: E402
 from obslib.tools.run import notebooks  # noqa: E402
 
 
 def _describe(fig) -> dict:
     """What the formatter stores of ``fig``, as the notebook tests read it."""
-    return F.unpack(F.pack(F.render(fig)[1]))
+    return figures.unpack(figures.pack(figures.render(fig)[1]))
 
 
 def _texts(d: dict) -> list[str]:
@@ -41,7 +41,7 @@ def test_recorded_extent_holds_the_pixels_of_the_text():
     # one dark text on white: every inked pixel lies in its recorded box, which it fills
     fig = Figure(figsize=(3, 2), dpi=100)
     fig.text(0.3, 0.4, "Hxg", fontsize=20)
-    png, d = F.render(fig)
+    png, d = figures.render(fig)
     from PIL import Image
 
     img = np.asarray(Image.open(BytesIO(png)).convert("L"))
@@ -58,12 +58,12 @@ def test_recorded_extent_holds_the_pixels_of_the_text():
 def test_png_size_in_the_metadata_is_the_png_size():
     fig = Figure(figsize=(4.1, 2.3), dpi=100)
     fig.add_subplot().plot([0, 1])
-    data, meta = F.png_with_texts(fig)
+    data, meta = figures.png_with_texts(fig)
     import base64
 
     png = base64.b64decode(data)
     width, height = struct.unpack(">II", png[16:24])  # the IHDR chunk
-    assert [width, height] == meta[F.METADATA_KEY]["size"] == [410, 230]
+    assert [width, height] == meta[figures.METADATA_KEY]["size"] == [410, 230]
 
 
 def test_only_drawn_tick_labels_are_recorded():
@@ -80,12 +80,16 @@ def test_the_formatter_output_reaches_ipython_as_metadata():
     from IPython.core.formatters import DisplayFormatter
 
     formatter = DisplayFormatter()
-    formatter.formatters["image/png"].for_type(Figure, F.png_with_texts)
+    formatter.formatters["image/png"].for_type(Figure, figures.png_with_texts)
     fig = Figure(figsize=(2, 2), dpi=100)
     fig.add_subplot().set_title("t")
     data, meta = formatter.format(fig)
-    assert data["image/png"] and "t" in _texts(F.unpack(meta["image/png"][F.METADATA_KEY]))
-    assert set(meta["image/png"]) == {F.METADATA_KEY}  # no width/height: the image keeps its size
+    assert data["image/png"] and "t" in _texts(
+        figures.unpack(meta["image/png"][figures.METADATA_KEY])
+    )
+    assert set(meta["image/png"]) == {
+        figures.METADATA_KEY
+    }  # no width/height: the image keeps its size
 
 
 def test_turned_text_gets_its_turned_box():
@@ -116,7 +120,7 @@ def _clean_figure():
 
 def test_a_clean_figure_passes():
     d = _describe(_clean_figure())
-    assert len(d["texts"]) > 10 and F.problems(d) == []
+    assert len(d["texts"]) > 10 and figures.problems(d) == []
 
 
 def test_overlapping_texts_fail():
@@ -124,14 +128,14 @@ def test_overlapping_texts_fail():
     ax = fig.axes[0]
     ax.text(0.5, 0.5, "first", transform=ax.transAxes)
     ax.text(0.52, 0.51, "second", transform=ax.transAxes)
-    assert F.overlaps(_describe(fig)) == [("first", "second")]
+    assert figures.overlaps(_describe(fig)) == [("first", "second")]
 
 
 def test_a_label_on_a_tick_label_fails():
     fig = _clean_figure()
     fig.axes[0].set_xticks([0, 0.5, 1])
     fig.axes[0].set_xlabel("x label", labelpad=-12)  # pulled up onto the tick label 0.5
-    found = F.overlaps(_describe(fig))
+    found = figures.overlaps(_describe(fig))
     assert found and all("x label" in pair for pair in found)
 
 
@@ -140,7 +144,7 @@ def test_texts_that_only_touch_pass():
         {"text": "a", "pt": 10, "angle": 0, "box": [10, 10, 30, 20]},
         {"text": "b", "pt": 10, "angle": 0, "box": [30, 10, 50, 20]},
         {"text": "c", "pt": 10, "angle": 0, "box": [10, 20, 30, 30]}]}
-    assert F.problems(d) == []
+    assert figures.problems(d) == []
 
 
 def test_turned_texts_whose_upright_boxes_overlap_pass_unless_they_overlap():
@@ -151,9 +155,9 @@ def test_turned_texts_whose_upright_boxes_overlap_pass_unless_they_overlap():
     d = _describe(fig)
     (a, b) = d["texts"]
     assert min(a["box"][2], b["box"][2]) > max(a["box"][0], b["box"][0])  # upright: overlap
-    assert F.overlaps(d) == []
-    fig.texts[1].set_x(0.43)  # now the turned boxes overlap too
-    assert len(F.overlaps(_describe(fig))) == 1
+    assert figures.overlaps(d) == []
+    fig.texts[1].set_x(0.43)  # at 0.43 the turned boxes overlap too
+    assert len(figures.overlaps(_describe(fig))) == 1
 
 
 def test_3d_axes_labels_are_checked_where_they_are_drawn():
@@ -166,28 +170,30 @@ def test_3d_axes_labels_are_checked_where_they_are_drawn():
     d = _describe(fig)
     assert "a z label of some length" in _texts(d)
     # constrained layout does not make room for a 3-D z label: it runs into the neighbour's
-    assert ("a z label of some length", "a y label of some length") in F.overlaps(d)
+    assert ("a z label of some length", "a y label of some length") in figures.overlaps(d)
 
 
 def test_small_text_and_wide_figures_fail():
     fig = _clean_figure()
     fig.axes[0].tick_params(labelsize=9)
-    small = F.small_texts(_describe(fig))
+    small = figures.small_texts(_describe(fig))
     assert small and {pt for _, pt in small} == {9.0}
     # 10 pt text in an 8.9 in figure is shown at 756 / 890 of its size
     fig = _clean_figure()
     fig.axes[0].set_xlabel("x label", fontsize=11)
     fig.set_size_inches(8.9, 3)
-    shown = dict(F.small_texts(_describe(fig)))
+    shown = dict(figures.small_texts(_describe(fig)))
     assert shown["x label"] == pytest.approx(11 * 756 / 890, abs=0.01)  # 9.34 pt
     fig.axes[0].set_xlabel("x label", fontsize=12)  # 12 * 756 / 890 = 10.2 pt: large enough
-    assert "x label" not in dict(F.small_texts(_describe(fig)))
+    assert "x label" not in dict(figures.small_texts(_describe(fig)))
 
 
 def test_text_cut_off_at_the_edge_fails():
     fig = Figure(figsize=(3, 2), dpi=100)
     fig.text(0.9, 0.5, "beyond the edge")
-    assert F.problems(_describe(fig)) == ["'beyond the edge' is cut off at the edge of the image"]
+    assert figures.problems(_describe(fig)) == [
+        "'beyond the edge' is cut off at the edge of the image"
+    ]
 
 
 # ---------------------------------------------------------------------- the book's notebooks
@@ -198,21 +204,21 @@ def _figures(path):
     for i, cell in enumerate(json.loads(path.read_text())["cells"]):
         for o in cell.get("outputs", []):
             if any(k.endswith("image/png") for k in o.get("data", {})):
-                meta = o.get("metadata", {}).get("image/png", {}).get(F.METADATA_KEY)
+                meta = o.get("metadata", {}).get("image/png", {}).get(figures.METADATA_KEY)
                 out.append((i, meta))
     return out
 
 
 @pytest.mark.parametrize("path", notebooks(), ids=lambda p: p.stem)
 def test_no_text_of_a_figure_overlaps_is_cut_off_or_is_too_small(path):
-    figures = _figures(path)
-    described = [(i, m) for i, m in figures if m is not None]
-    if figures and not described:
-        n = len(figures)
+    stored = _figures(path)
+    described = [(i, m) for i, m in stored if m is not None]
+    if stored and not described:
+        n = len(stored)
         pytest.skip(f"{path.stem}: its {n} figure{'s' * (n > 1)} drawn without obsbook.setup() "
                     "carry no description of their text")
-    assert len(described) == len(figures), (
-        f"{path.stem}: cells {[i for i, m in figures if m is None]} store figures without the "
+    assert len(described) == len(stored), (
+        f"{path.stem}: cells {[i for i, m in stored if m is None]} store figures without the "
         "description obsbook.setup() gives")
-    found = [f"cell {i}: {p}" for i, m in described for p in F.problems(F.unpack(m))]
+    found = [f"cell {i}: {p}" for i, m in described for p in figures.problems(figures.unpack(m))]
     assert not found, f"{path.stem}:\n" + "\n".join(found)

@@ -6,9 +6,9 @@ import re
 import numpy as np
 import pytest
 from hypothesis import given
-from hypothesis import strategies as hs
+from hypothesis import strategies as st
 
-from obslib import _format as F
+from obslib import _format as fmt
 
 
 def _read_back(text: str) -> float:
@@ -20,76 +20,76 @@ def _read_back(text: str) -> float:
     return float(t)
 
 
-@given(hs.floats(min_value=-1e300, max_value=1e300, allow_nan=False).filter(lambda v: v != 0))
+@given(st.floats(min_value=-1e300, max_value=1e300, allow_nan=False).filter(lambda v: v != 0))
 def test_number_reads_back_to_three_significant_digits(x):
-    back = _read_back(F.number(x))
+    back = _read_back(fmt.number(x))
     if abs(x) >= 1000 and abs(x) < 1e6:  # rounded to an integer
         assert abs(back - x) <= 0.5
     else:
         assert math.isclose(back, x, rel_tol=5e-3)
 
 
-@given(hs.integers(min_value=-10**12, max_value=10**12))
+@given(st.integers(min_value=-10**12, max_value=10**12))
 def test_integers_keep_every_digit(n):
-    assert int(F.number(n).replace(",", "")) == n
-    assert int(F.number(np.int64(n)).replace(",", "")) == n
+    assert int(fmt.number(n).replace(",", "")) == n
+    assert int(fmt.number(np.int64(n)).replace(",", "")) == n
 
 
 def test_examples_of_the_writing_rules():
-    assert F.number(10000) == "10,000"
-    assert F.number(3.0) == "3.00"
-    assert F.number(0.9996) == "1.00"
-    assert F.number(999.96) == "1,000"
-    assert F.number(2.5e-5) == "$2.50 \\times 10^{-5}$"
-    assert F.number(2.5e-5, math=False) == "2.50×10⁻⁵"
-    assert F.span(3.0, 1420.8) == "between 3.00 and 1,421"
-    assert F.small(1e-17) == "$< 10^{-12}$"
-    assert F.small(1e-50, floor=1e-40) == "$< 10^{-40}$"
-    assert F.count(0) == "none"
-    assert F.count(0, of=20000) == "none of 20,000"
-    assert F.count(20, of=20) == "all 20"
-    assert F.percent(0.943) == "94.3%"
-    assert F.percent(1.0) == "100%"
-    assert F.percent(1e-6) == "< 0.1%"
-    assert F.percent(0.99999) == "> 99.9%"
+    assert fmt.number(10000) == "10,000"
+    assert fmt.number(3.0) == "3.00"
+    assert fmt.number(0.9996) == "1.00"
+    assert fmt.number(999.96) == "1,000"
+    assert fmt.number(2.5e-5) == "$2.50 \\times 10^{-5}$"
+    assert fmt.number(2.5e-5, math=False) == "2.50×10⁻⁵"
+    assert fmt.span(3.0, 1420.8) == "between 3.00 and 1,421"
+    assert fmt.small(1e-17) == "$< 10^{-12}$"
+    assert fmt.small(1e-50, floor=1e-40) == "$< 10^{-40}$"
+    assert fmt.count(0) == "none"
+    assert fmt.count(0, of=20000) == "none of 20,000"
+    assert fmt.count(20, of=20) == "all 20"
+    assert fmt.percent(0.943) == "94.3%"
+    assert fmt.percent(1.0) == "100%"
+    assert fmt.percent(1e-6) == "< 0.1%"
+    assert fmt.percent(0.99999) == "> 99.9%"
 
 
 @pytest.mark.parametrize("bad", [True, "1", None, complex(1, 1), float("nan")])
 def test_bad_numbers_are_named_errors(bad):
     with pytest.raises(ValueError, match="must be a real number|is NaN"):
-        F.number(bad)
+        fmt.number(bad)
 
 
-@pytest.mark.parametrize("call", [lambda: F.count(2.5), lambda: F.percent(1.5),
-                                  lambda: F.small(1.0, floor=0)])
+@pytest.mark.parametrize("call", [lambda: fmt.count(2.5), lambda: fmt.percent(1.5),
+                                  lambda: fmt.small(1.0, floor=0)])
 def test_bad_arguments_are_named_errors(call):
     with pytest.raises(ValueError):
         call()
 
 
-@given(hs.floats(min_value=1e-3, max_value=999, allow_nan=False))
+@given(st.floats(min_value=1e-3, max_value=999, allow_nan=False))
 def test_setting_reads_back_to_three_significant_digits_without_padding(x):
-    text = F.setting(x)
+    text = fmt.setting(x)
     assert math.isclose(float(text.replace(",", "")), x, rel_tol=5e-3)
     assert not (("." in text) and text.endswith("0")), text  # no padding zeros
 
 
 def test_settings_and_lists_of_them():
-    assert [F.setting(v) for v in (0.25, 1.0, 2, 1e-6, 1e4, 0.0)] == [
+    assert [fmt.setting(v) for v in (0.25, 1.0, 2, 1e-6, 1e4, 0.0)] == [
         "0.25", "1", "2", "$10^{-6}$", "10,000", "0"]
-    assert F.setting(2.5e-7, math=False) == "2.5×10⁻⁷"
-    assert F.listing([0.0, 0.25, 0.5, 1.0, 2.0]) == "0, 0.25, 0.5, 1 and 2"
-    assert F.listing(["D-optimal", "A-optimal"], "or") == "D-optimal or A-optimal"
+    assert fmt.setting(2.5e-7, math=False) == "2.5×10⁻⁷"
+    assert fmt.listing([0.0, 0.25, 0.5, 1.0, 2.0]) == "0, 0.25, 0.5, 1 and 2"
+    assert fmt.listing(["D-optimal", "A-optimal"], "or") == "D-optimal or A-optimal"
     with pytest.raises(ValueError):
-        F.listing([])
+        fmt.listing([])
     with pytest.raises(ValueError):
-        F.setting(True)
+        fmt.setting(True)
 
 
 def test_fixed_decimals_beside_printed_values():
-    assert F.fixed(0.0990614, 4) == "0.0991"
-    assert F.fixed(-0.00001, 2) == "0.00"  # no negative zero
-    assert F.fixed(12345.678, 1) == "12,345.7"
-    assert float(F.fixed(0.53452248, 4)) == 0.5345
+    assert fmt.fixed(0.0990614, 4) == "0.0991"
+    assert fmt.fixed(-0.00001, 2) == "0.00"  # no negative zero
+    assert fmt.fixed(12345.678, 1) == "12,345.7"
+    assert float(fmt.fixed(0.53452248, 4)) == 0.5345
     with pytest.raises(ValueError):
-        F.fixed(1.0, -1)
+        fmt.fixed(1.0, -1)

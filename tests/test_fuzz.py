@@ -9,18 +9,29 @@ geometry (coincident and collinear points). The whole file runs in well under a 
 from __future__ import annotations
 
 import contextlib
+import dataclasses
+import importlib
+import inspect
 import io
+import os
+import pkgutil
+import re
+import signal
 import tempfile
+import warnings
 from pathlib import Path
 from unittest import mock
 
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
 import obslib as ob
-from obslib import teams as tm
 
 # deadline: far above any example's time (milliseconds) even on a loaded machine, far below a hang
 FUZZ = settings(max_examples=40, deadline=10_000, suppress_health_check=[HealthCheck.too_slow])
@@ -48,8 +59,11 @@ def points(draw, min_n=0, max_n=6, hostile=True):
     arr = base * scale
     if not hostile:
         return arr
-    kind = draw(st.sampled_from(["ok"] * 6 + ["nan", "inf", "shape", "bool", "complex", "str", "none",
-                                               "int", "huge"]))
+    kind = draw(
+        st.sampled_from(
+            ["ok"] * 6 + ["nan", "inf", "shape", "bool", "complex", "str", "none", "int", "huge"]
+        )
+    )
     if kind == "nan" and n:
         arr[draw(st.integers(0, n - 1)), 0] = np.nan
     elif kind == "inf" and n:
@@ -143,7 +157,11 @@ def test_pair_bounds_and_relative_vectors(sensors, targets, u_max, cov_kind):
 @FUZZ
 @given(numbers, numbers, numbers, st.sampled_from([(), (3,), (2, 2)]))
 def test_pair_bound_polar(alpha, theta, q, shape):
-    a = np.full(shape, alpha, dtype=object) if shape and not isinstance(alpha, (str, type(None))) else alpha
+    a = (
+        np.full(shape, alpha, dtype=object)
+        if shape and not isinstance(alpha, (str, type(None)))
+        else alpha
+    )
     with named_errors("alpha", "theta", "u_over_d"):
         out = finite(ob.pair_bound_polar(a, theta, q))
         assert ((out >= 0) & (out <= 1)).all()
@@ -181,9 +199,15 @@ def test_measures(sensors, target, name, eps, u, rank_rtol):
 def weights(draw):
     n = draw(st.integers(0, 6))
     L = draw(st.integers(0, 3))
-    w = np.array(draw(st.lists(st.floats(0, 1), min_size=n * n * L, max_size=n * n * L))).reshape(n, n, L)
+    w = np.array(draw(st.lists(st.floats(0, 1), min_size=n * n * L, max_size=n * n * L))).reshape(
+        n, n, L
+    )
     w = w + w.transpose(1, 0, 2)
-    kind = draw(st.sampled_from(["ok"] * 4 + ["neg", "nan", "asym", "bool", "complex", "2d", "none", "huge"]))
+    kind = draw(
+        st.sampled_from(
+            ["ok"] * 4 + ["neg", "nan", "asym", "bool", "complex", "2d", "none", "huge"]
+        )
+    )
     if kind == "neg" and w.size:
         w[0, -1, 0] = w[-1, 0, 0] = -0.5
     elif kind == "nan" and w.size:
@@ -214,7 +238,11 @@ def valid_pairs(res, n, L, unique_sensors=True):
 
 
 @FUZZ
-@given(weights(), st.sampled_from([None, 1, 3, 2.5, 0, True, "2"]), st.sampled_from([False, True, "no", None]))
+@given(
+    weights(),
+    st.sampled_from([None, 1, 3, 2.5, 0, True, "2"]),
+    st.sampled_from([False, True, "no", None]),
+)
 def test_pair_assignment_from_weights(W, k, ordered):
     shape = np.shape(W) if W is not None else (0, 0, 0)
     n, L = (shape[0], shape[-1]) if len(shape) == 3 else (0, 0)
@@ -234,7 +262,9 @@ def test_pair_assignment_from_geometry(sensors, targets, u_max, k):
     L = np.shape(targets)[0] if np.ndim(targets) == 2 else 0
     args = ("sensor", "target", "u_max", "k", "give", "pairs need")
     with named_errors(*args):
-        valid_pairs(ob.greedy_pair_assignment(sensors=sensors, targets=targets, u_max=u_max, k=k), n, L)
+        valid_pairs(
+            ob.greedy_pair_assignment(sensors=sensors, targets=targets, u_max=u_max, k=k), n, L
+        )
     with named_errors(*args):
         valid_pairs(ob.relaxed_pair_assignment(sensors=sensors, targets=targets, u_max=u_max), n, L,
                     unique_sensors=False)
@@ -266,13 +296,20 @@ def test_team_assignment(sensors, targets, name, eps):
 @st.composite
 def moderate_points(draw, min_n, max_n):
     n = draw(st.integers(min_n, max_n))
-    pts = np.array(draw(st.lists(st.tuples(st.integers(-3, 3), st.integers(-3, 3)), min_size=n, max_size=n)),
-                   dtype=float).reshape(n, 2)
+    pts = np.array(
+        draw(st.lists(st.tuples(st.integers(-3, 3), st.integers(-3, 3)), min_size=n, max_size=n)),
+        dtype=float,
+    ).reshape(n, 2)
     return pts * draw(st.sampled_from([1e-20, 1e-3, 1.0, 1e3, 1e20]))
 
 
 @FUZZ
-@given(moderate_points(1, 4), moderate_points(1, 1), st.floats(0, 10), st.sampled_from(list(ob.MEASURES)))
+@given(
+    moderate_points(1, 4),
+    moderate_points(1, 1),
+    st.floats(0, 10),
+    st.sampled_from(list(ob.MEASURES)),
+)
 def test_audits(sensors, target, u_max, name):
     # The set-function audits at moderate scales (1e-20 to 1e20); extreme scales are tested below.
     with named_errors("sensor", "target", "u_max", "overflow"):
@@ -294,47 +331,86 @@ def test_lower_bound_table_at_extreme_scale(c):
     np.testing.assert_allclose(table, ob.lower_bound_table(S, o, 1.0), rtol=1e-9)
     for k in range(8):
         idx = [i for i in range(3) if k >> i & 1]
-        assert table[k] == pytest.approx(ob.lower_bound(S[idx].reshape(-1, 2) * c, o * c, c), rel=1e-9, abs=0)
+        assert table[k] == pytest.approx(
+            ob.lower_bound(S[idx].reshape(-1, 2) * c, o * c, c), rel=1e-9, abs=0
+        )
 
 
 # --------------------------------------------------------------------------- command lines
 
 
-argv_words = st.sampled_from(["--profile", "paper", "quick", "nosuch", "--id", "thm1", "--write",
-                              "/nonexistent/x.md", "--json", "-p", "n_seeds", "seed", "abc", "-5", "2.5",
-                              "05", "01", "99", "--in-place", "book", "scaling", "assignment", "[1]", ""])
+#: Words of the four command lines, and wrong values for them.
+ARGV_WORDS = st.sampled_from([
+    "--profile", "paper", "quick", "nosuch", "--id", "thm1", "nosuch-id", "--write",
+    "/nonexistent/x.md", "x.json", "--json", "-p", "n_seeds", "seed", "abc", "-5", "2.5", "05",
+    "01", "99", "--in-place", "book", "scaling", "assignment", "criteria", "[1]", "", "--jobs",
+    "0", "-1", "3", "--robustness", "--notebooks", "/nonexistent", "--sensors", "--targets",
+    "--no-progress", "--help-me",
+])
 
 
-@settings(max_examples=60, deadline=10_000)
-@given(st.lists(argv_words, max_size=6))
-def test_run_cli_parsing(argv):
-    from obslib.tools import run
+def _cli_mains():
+    """Each command line's ``main(argv)``, with what would do the work replaced by a stub: the
+    test is about the arguments, which every command checks before any work."""
+    from obsbook import report
+    from obslib import _io, claims
+    from obslib.claims import __main__ as claims_cli
+    from obslib.claims import robustness
+    from obslib.tools import bench, run
 
-    ran = []
-    with mock.patch.object(run, "execute", lambda *a, **k: ran.append(a) or 0.0), \
-            mock.patch.object(run, "precompile", lambda: None), \
-            mock.patch.object(run, "TIMES_FILE", TMP / "fuzz_times.json"), \
-            mock.patch.object(run, "EXECUTION_PAGE", TMP / "fuzz_execution.md"), \
-            mock.patch.object(run, "RUNS_DIR", TMP / "fuzz_runs"), \
-            contextlib.redirect_stderr(io.StringIO()), contextlib.redirect_stdout(io.StringIO()):
+    stubs = [mock.patch.object(_io, "write_output", lambda *a, **k: True),
+             mock.patch.object(run, "execute_all", lambda *a, **k: {}),
+             mock.patch.object(run, "precompile", lambda: None),
+             mock.patch.object(run, "TIMES_FILE", TMP / "fuzz_times.json"),
+             mock.patch.object(run, "EXECUTION_PAGE", TMP / "fuzz_execution.md"),
+             mock.patch.object(run, "RUNS_DIR", TMP / "fuzz_runs"),
+             mock.patch.object(claims_cli, "evaluate", lambda *a, **k: []),
+             mock.patch.object(claims_cli, "write_output", lambda *a, **k: True),
+             mock.patch.object(robustness, "verdict_robustness", lambda *a, **k: []),
+             mock.patch.object(robustness, "write_json", lambda *a, **k: True),
+             mock.patch.object(claims, "evaluate", lambda *a, **k: []),
+             mock.patch.object(report, "render_report", lambda *a, **k: "")]
+    stubs += [mock.patch.object(bench, name, lambda *a, **k: {})
+              for name in ("bench_assignment", "bench_book", "bench_scaling", "bench_criteria")]
+    mains = {"python -m obslib.run": run.main, "python -m obslib.bench": bench.main,
+             "python -m obslib.claims": claims_cli.main, "python -m obsbook.report": report.main}
+    return stubs, mains
+
+
+@pytest.mark.parametrize("prog", ["python -m obslib.run", "python -m obslib.bench",
+                                  "python -m obslib.claims", "python -m obsbook.report"])
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(argv=st.lists(ARGV_WORDS, max_size=6))
+def test_command_line_refuses_wrong_arguments_in_one_line(prog, argv):
+    # Either the command runs (its work stubbed: exit status 0), or it stops before any work
+    # with exit status 2 and one line on stderr, "<prog>: error: ...", and no traceback.
+    stubs, mains = _cli_mains()
+    err = io.StringIO()
+    with contextlib.ExitStack() as stack:
+        for s in stubs:
+            stack.enter_context(s)
+        stack.enter_context(contextlib.redirect_stderr(err))
+        stack.enter_context(contextlib.redirect_stdout(io.StringIO()))
         try:
-            assert run.main(argv) == 0
+            code = mains[prog](argv)
         except SystemExit as exc:
-            assert exc.code == 2 and not ran  # argparse error, before anything ran
+            code = exc.code
+    lines = [ln for ln in err.getvalue().splitlines() if ln.strip()]
+    assert "Traceback" not in err.getvalue(), err.getvalue()
+    if code == 0:
+        return
+    assert code == 2, (argv, code, err.getvalue())
+    assert lines and lines[-1].startswith(f"{prog}: error: "), (argv, err.getvalue())
 
 
-@settings(max_examples=60, deadline=10_000)
-@given(st.lists(argv_words, max_size=6))
-def test_claims_and_bench_cli_parsing(argv):
-    from obslib.tools.bench import parse_args as bench_args
-    from obslib.claims.__main__ import parse_args as claims_args
-
-    for parse in (claims_args, bench_args):
-        with contextlib.redirect_stderr(io.StringIO()), contextlib.redirect_stdout(io.StringIO()):
-            try:
-                parse(argv)
-            except SystemExit as exc:
-                assert exc.code in (0, 2)
+def test_the_command_lines_check_their_arguments_before_any_work():
+    # the stubs above are never reached by a refused command line: a bad profile stops each
+    stubs, mains = _cli_mains()
+    for prog, main in mains.items():
+        argv = ["book", "--profile", "nosuch"] if "bench" in prog else ["--profile", "nosuch"]
+        with contextlib.redirect_stderr(io.StringIO()) as err, pytest.raises(SystemExit) as exc:
+            main(argv)
+        assert exc.value.code == 2 and "nosuch" in err.getvalue(), prog
 
 
 # --------------------------------------------------------------------------- regressions
@@ -349,7 +425,9 @@ def test_geometry_greedy_with_a_far_target_terminates():
         valid_pairs(res, 6, T.shape[0])
         assert len(res.triples) == T.shape[0]
     for c in (1e200, 1e-170):  # all coordinates scaled (u_max not): weights are finite limits
-        res = ob.greedy_pair_assignment(sensors=S * c, targets=np.array([[3.0, 3.0], [0.5, 0.5]]) * c, u_max=1.0)
+        res = ob.greedy_pair_assignment(
+            sensors=S * c, targets=np.array([[3.0, 3.0], [0.5, 0.5]]) * c, u_max=1.0
+        )
         valid_pairs(res, 6, 2)
         assert len(res.triples) == 2
 
@@ -361,14 +439,20 @@ def test_teams_at_extreme_scale_are_valid_or_refused():
         ob.greedy_team_assignment(S * 1e155, T * 1e155)
     base = ob.greedy_team_assignment(S, T)
     assert ob.greedy_team_assignment(S * 1e150, T * 1e150, eps=1e300) == base
-    assert ob.greedy_team_assignment(S * 1e155, T * 1e155, "rank") == ob.greedy_team_assignment(S, T, "rank")
+    assert ob.greedy_team_assignment(S * 1e155, T * 1e155, "rank") == ob.greedy_team_assignment(
+        S, T, "rank"
+    )
 
 
 def test_negative_weights_are_refused_by_every_solver():
     W = np.zeros((4, 4, 2))
     W[0, 1, 0] = W[1, 0, 0] = -0.3
     W[2, 3, 1] = W[3, 2, 1] = 0.5
-    for solve in (ob.greedy_pair_assignment, ob.relaxed_pair_assignment, ob.optimal_pair_assignment):
+    for solve in (
+        ob.greedy_pair_assignment,
+        ob.relaxed_pair_assignment,
+        ob.optimal_pair_assignment,
+    ):
         with pytest.raises(ValueError, match=r"W\[0, 1, 0\] = -0.3 is negative"):
             solve(W)
 
@@ -452,18 +536,24 @@ def test_unit_invariant_quantities_do_not_depend_on_the_unit(c):
         assert ob.measure(S[:1] * c, o * c, name) == 1.0
     assert ob.measure(S * c, o * c, "logdet", eps=c * c) == pytest.approx(
         ob.measure(S, o, "logdet", eps=1.0) + 4 * np.log(c), rel=1e-9)
-    assert ob.measure(S * c, o * c, "trace") == pytest.approx(ob.measure(S, o, "trace") * c * c, rel=1e-9)
+    assert ob.measure(S * c, o * c, "trace") == pytest.approx(
+        ob.measure(S, o, "trace") * c * c, rel=1e-9
+    )
     g = ob.greedy_pair_assignment(sensors=S, targets=T, u_max=u)
     assert ob.greedy_pair_assignment(sensors=S * c, targets=T * c, u_max=u * c).triples == g.triples
     assert ob.greedy_pair_assignment(ob.pair_bounds(S * c, T * c, u * c)).triples == g.triples
     r = ob.relaxed_pair_assignment(sensors=S, targets=T, u_max=u)
-    assert ob.relaxed_pair_assignment(sensors=S * c, targets=T * c, u_max=u * c).triples == r.triples
+    assert (
+        ob.relaxed_pair_assignment(sensors=S * c, targets=T * c, u_max=u * c).triples == r.triples
+    )
     assert ob.optimal_pair_assignment(ob.pair_bounds(S * c, T * c, u * c)).triples == \
         ob.optimal_pair_assignment(W).triples
     small_S = S[:5]
     for name, eps in (("rank", 1.0), ("logdet", 1.0), ("trace", 1.0), ("neg_trace_inverse", 1.0)):
         e = eps if name == "rank" else eps * c * c
-        assert ob.greedy_team_assignment(S * c, T * c, name, e) == ob.greedy_team_assignment(S, T, name, eps)
+        assert ob.greedy_team_assignment(S * c, T * c, name, e) == ob.greedy_team_assignment(
+            S, T, name, eps
+        )
         assert ob.optimal_team_assignment(small_S * c, T * c, name, e)[0] == \
             ob.optimal_team_assignment(small_S, T, name, eps)[0]
 
@@ -480,3 +570,153 @@ def test_integers_beyond_the_float_range_are_named():
         ob.pair_bounds([[0, 10**400], [1, 1]], [[2, 2]], 1.0)
     with pytest.raises(ValueError, match="u_max has an integer beyond the float range"):
         ob.lower_bound([[0, 0], [1, 1]], [2, 2], 10**400)
+
+
+# --------------------------------------------------------------------------- every public function
+
+
+def _public_functions() -> dict:
+    """Every function in the ``__all__`` of a public module of obslib (no part of its dotted name
+    begins with an underscore), once, under the module that defines it."""
+    found = {}
+    for info in pkgutil.walk_packages(ob.__path__, "obslib."):
+        if any(part.startswith("_") for part in info.name.split(".")[1:]):
+            continue
+        mod = importlib.import_module(info.name)
+        for name in getattr(mod, "__all__", ()):
+            obj = getattr(mod, name)
+            if inspect.isfunction(inspect.unwrap(obj)):
+                found.setdefault(f"{obj.__module__}.{obj.__qualname__}", obj)
+    return found
+
+
+PUBLIC = _public_functions()
+
+#: Calls per public function (``OBSLIB_FUZZ_EXAMPLES`` for a longer search).
+FUZZ_EXAMPLES = int(os.environ.get("OBSLIB_FUZZ_EXAMPLES", 25))
+
+#: Wrong types and wrong values, one of which is given to one argument at a time.
+HOSTILE = [None, True, "x", 1 + 1j, np.nan, -np.inf, -1, 2.5, 0, [], [[np.nan, 0.0]],
+           np.zeros((2, 3)), np.array(["a", "b"]), {"a": 1}, object()]
+
+#: Where an argument's error may be named by a part of it: an entry or a row of an array
+#: (``sensor 1 ...``, ``W[0, 1, 0] ...``, ``cov 0 ...``, ``each seed ...``).
+ALIASES = {"sensors": ("sensor",), "targets": ("target",), "strategies": ("strategy",),
+           "seeds": ("seed",), "values": ("value", "f("), "names": ("measure", "name"),
+           "masks": ("mask",), "kinds": ("kind",), "ids": ("id",), "counts": ("count", "scene"),
+           "u": ("control",), "ground": ("sensor",), "name": ("measure", "criterion"),
+           "arms": ("arm",)}
+
+#: Public functions whose result may hold NaN by design, with the reason.
+DOCUMENTED_NAN = {
+    "obslib.tracking.stats.spearman": "the rank correlation of a constant or NaN slice is NaN",
+}
+
+
+def _names(fn) -> list[str]:
+    return [p.name for p in inspect.signature(fn).parameters.values()
+            if p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
+
+
+def _named(message: str, names) -> bool:
+    low = message.lower()
+    return any(re.search(rf"(?<![a-z_]){re.escape(w.lower())}", low)
+               for n in names for w in (n, *ALIASES.get(n, ())))
+
+
+def _same(a, b) -> bool:
+    """Whether a wrong value is the parameter's default (then it is not wrong)."""
+    return a is b or (type(a) is type(b) and isinstance(a, (int, float, str)) and a == b)
+
+
+def _has_nan(x, depth=0) -> bool:
+    if depth > 4:
+        return False
+    if isinstance(x, float):
+        return x != x
+    if isinstance(x, np.ndarray) and x.dtype.kind in "fc":
+        return bool(np.isnan(x).any())
+    if isinstance(x, dict):
+        return any(_has_nan(v, depth + 1) for v in x.values())
+    if isinstance(x, (list, tuple)):
+        return any(_has_nan(v, depth + 1) for v in x[:50])
+    if dataclasses.is_dataclass(x) and not isinstance(x, type):
+        return any(_has_nan(getattr(x, f.name), depth + 1) for f in dataclasses.fields(x))
+    return False
+
+
+class _Hang(Exception):
+    pass
+
+
+@contextlib.contextmanager
+def _time_limit(seconds: int):
+    """A call that takes longer than ``seconds`` is stopped with :class:`_Hang`."""
+    def stop(signum, frame):
+        raise _Hang(f"no answer within {seconds} s")
+
+    old = signal.signal(signal.SIGALRM, stop)
+    signal.alarm(seconds)
+    try:
+        yield
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, old)
+
+
+def _raised_in(exc: BaseException) -> str:
+    """The file of the innermost frame of ``exc``'s traceback."""
+    tb = exc.__traceback__
+    while tb.tb_next is not None:
+        tb = tb.tb_next
+    return tb.tb_frame.f_code.co_filename
+
+
+LIBRARY = (str(Path(ob.__file__).parent), str(Path(ob.__file__).parents[1] / "obsbook"))
+
+
+def test_every_public_function_is_found():
+    # the enumeration reaches every layer, so a new public function cannot be left out
+    for expected in ("obslib.bounds.lower_bound", "obslib.tracking.ekf.simulate",
+                     "obslib.studies.tracking.partner_study", "obslib.claims.robustness.",
+                     "obslib.viz.tracking.", "obslib.tools.run.", "obslib.profiles.params",
+                     "obslib.symbolic.theorem4.", "obslib.scenes.random_scenes"):
+        assert any(k.startswith(expected) for k in PUBLIC), expected
+    assert len(PUBLIC) > 250
+
+
+@pytest.mark.parametrize("qualname", sorted(k for k, f in PUBLIC.items()
+                                             if _names(f) and f.__name__ != "main"))
+@settings(max_examples=FUZZ_EXAMPLES, deadline=None, derandomize=True, phases=(Phase.generate,),
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(data=st.data())
+def test_public_function_refuses_a_wrong_argument_by_name(qualname, data, tmp_path, monkeypatch):
+    # Every required argument, one chosen argument and some of the others get a wrong type or
+    # value (one of HOSTILE), the rest their defaults, so the call must refuse: a ValueError
+    # (ArgumentTypeError is one) raised by the library itself, naming one of its arguments;
+    # or, where every such value happens to be accepted, a result without NaN. Never another
+    # exception, a hang, or an error from inside NumPy. The command lines' ``main(argv)`` are
+    # tested below, through their arguments.
+    fn = PUBLIC[qualname]
+    monkeypatch.chdir(tmp_path)  # a path argument "x" is written here, not in the checkout
+    params = [p for p in inspect.signature(fn).parameters.values()
+              if p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
+    target = data.draw(st.sampled_from([p.name for p in params]), label="target")
+    args = {}
+    for p in params:  # required arguments and the target are wrong, the others wrong or default
+        if p.default is p.empty or p.name == target or data.draw(st.booleans(), label=p.name):
+            wrong = [v for v in HOSTILE if not _same(v, p.default)]  # None: often the default
+            args[p.name] = data.draw(st.sampled_from(wrong), label=p.name)
+    names = [p.name for p in params]
+    try:
+        with _time_limit(30), warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            out = fn(**args)
+    except ValueError as exc:
+        where = _raised_in(exc)
+        assert where.startswith(LIBRARY), f"{qualname}: raised inside {where}: {exc!r}"
+        assert _named(str(exc), names), f"{qualname}: the error names no argument: {exc!r}"
+    else:
+        assert qualname in DOCUMENTED_NAN or not _has_nan(out), f"{qualname}({args}): NaN {out!r}"
+    finally:
+        plt.close("all")

@@ -42,7 +42,7 @@ def test_jitter_zero_keeps_the_ratio_and_draws_match_the_solvers(tight):
     R = gt.jitter_ratios(S, T, [0.0, 0.01], n_draws=4, seed=1)
     assert R.shape == (2, 4)
     np.testing.assert_allclose(R[0], r, rtol=1e-12)
-    # recompute the jittered draws one by one with the MILP optimum
+    # recompute the jittered draws one by one with the exact optimum
     rng = np.random.default_rng(1)
     P = np.vstack([S, T])
     sd = gt.spread(S, T)

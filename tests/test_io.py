@@ -1,4 +1,5 @@
-"""Safe output writes: regular files replaced atomically, other paths written once, bad paths refused."""
+"""Safe output writes: regular files replaced atomically, other paths written once, bad paths
+refused."""
 
 import os
 import stat
@@ -6,7 +7,7 @@ import threading
 
 import pytest
 
-from obslib._io import OutputPathError, check_output_path, write_output
+from obslib._io import OutputPathError, as_output_path, write_output
 
 
 def test_regular_file_is_written_and_left_alone_when_unchanged(tmp_path):
@@ -35,7 +36,7 @@ def test_fifo_is_written_once_and_never_read(tmp_path):
     got = []
     reader = threading.Thread(target=lambda: got.append(fifo.read_text()))
     reader.start()
-    assert check_output_path(fifo) == fifo
+    assert as_output_path(fifo) == fifo
     write_output(fifo, "through the pipe\n")
     reader.join(timeout=10)
     assert got == ["through the pipe\n"]
@@ -57,7 +58,7 @@ def test_full_device_fails_without_reading(tmp_path):
 def test_impossible_paths_are_refused_before_work(tmp_path, bad, why):
     (tmp_path / "file.txt").write_text("x")
     with pytest.raises(OutputPathError, match=why):
-        check_output_path(bad.format(tmp=tmp_path))
+        as_output_path(bad.format(tmp=tmp_path))
     assert not (tmp_path / "missing").exists()
 
 
@@ -67,4 +68,4 @@ def test_unwritable_directory_is_refused(tmp_path):
     d = tmp_path / "ro"
     d.mkdir(mode=0o500)
     with pytest.raises(OutputPathError, match="permission denied"):
-        check_output_path(d / "out.json")
+        as_output_path(d / "out.json")

@@ -3,9 +3,10 @@
 - No module imports another module's private name (``from .bounds import _x`` or ``bounds._x``);
   private modules (``obslib/_kernels.py``, ``obslib/_validate.py``, ...) are shared inside the
   package and may be imported freely.
-- Every module is at most :data:`MAX_LINES` lines and opens with a one-sentence docstring.
-- Only ``obslib/viz`` (and the notebooks' figure settings in ``obslib/notebook.py``) imports
-  matplotlib.
+- Every module is at most :data:`MAX_LINES` lines and opens with a one-sentence docstring (line
+  widths and the rest of the code style are ruff's, in ``tests/test_lint.py``).
+- Only ``obslib/viz`` imports matplotlib (the notebooks' figure settings are the book's own,
+  in ``obsbook``).
 - Nothing in the repository refers to files outside it.
 """
 
@@ -15,28 +16,16 @@ import ast
 import re
 from pathlib import Path
 
-import pytest
-
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGE = ROOT / "obslib"
 MODULES = sorted(PACKAGE.rglob("*.py"))
 MAX_LINES = 700
 
-#: Modules allowed to import matplotlib besides obslib/viz: the figure settings every notebook applies.
-MATPLOTLIB_OUTSIDE_VIZ = {"obslib/notebook.py"}
-
-#: Known violations in modules this test does not fix, each a strict xfail: it turns red as soon as
-#: the module is fixed, so the entry is removed then.
-KNOWN: dict = {}
-
+#: Modules allowed to import matplotlib besides obslib/viz: none.
+MATPLOTLIB_OUTSIDE_VIZ: set = set()
 
 def rel(path: Path) -> str:
     return path.relative_to(ROOT).as_posix()
-
-
-def params(kind: str):
-    return [pytest.param(p, id=rel(p), marks=[pytest.mark.xfail(strict=True, reason=KNOWN[kind, rel(p)])]
-                         if (kind, rel(p)) in KNOWN else []) for p in MODULES]
 
 
 def module_name(path: Path) -> str:
@@ -83,8 +72,13 @@ def private_imports(path: Path, source: str | None = None) -> list[str]:
                 elif private(a.name) and not private(mod.split(".")[-1]):
                     found.append(f"{rel(path)}:{node.lineno}: from {mod} import {a.name}")
     for node in ast.walk(tree):
-        if (isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and private(node.attr)
-                and node.value.id in modules and not private(modules[node.value.id].split(".")[-1])):
+        if (
+            isinstance(node, ast.Attribute)
+            and isinstance(node.value, ast.Name)
+            and private(node.attr)
+            and node.value.id in modules
+            and not private(modules[node.value.id].split(".")[-1])
+        ):
             found.append(f"{rel(path)}:{node.lineno}: {modules[node.value.id]}.{node.attr}")
     return found
 
@@ -95,12 +89,25 @@ def test_the_import_resolution_of_this_test():
     assert resolve(PACKAGE / "studies" / "teams.py", node) == "obslib.bounds"
     node = ast.parse("from . import tracking").body[0]
     assert resolve(PACKAGE / "__init__.py", node) == "obslib"
-    assert is_module("obslib._kernels") and is_module("obslib.studies") and not is_module("obslib.bounds.pair_bounds")
+    assert (
+        is_module("obslib._kernels")
+        and is_module("obslib.studies")
+        and not is_module("obslib.bounds.pair_bounds")
+    )
     probe = PACKAGE / "studies" / "probe.py"
-    assert private_imports(probe, "from ..bounds import _x\n") == ["obslib/studies/probe.py:1: from obslib.bounds import _x"]
-    assert private_imports(probe, "from .._kernels import pair_kernel, _y\nfrom .. import _kernels\n") == []
-    assert private_imports(probe, "import obslib.bounds as b\nb._y\n") == ["obslib/studies/probe.py:2: obslib.bounds._y"]
-    assert private_imports(probe, "from .. import bounds\nbounds._z\n") == ["obslib/studies/probe.py:2: obslib.bounds._z"]
+    assert private_imports(probe, "from ..bounds import _x\n") == [
+        "obslib/studies/probe.py:1: from obslib.bounds import _x"
+    ]
+    assert (
+        private_imports(probe, "from .._kernels import pair_kernel, _y\nfrom .. import _kernels\n")
+        == []
+    )
+    assert private_imports(probe, "import obslib.bounds as b\nb._y\n") == [
+        "obslib/studies/probe.py:2: obslib.bounds._y"
+    ]
+    assert private_imports(probe, "from .. import bounds\nbounds._z\n") == [
+        "obslib/studies/probe.py:2: obslib.bounds._z"
+    ]
 
 
 def test_no_module_imports_a_private_name_of_another():
@@ -108,25 +115,32 @@ def test_no_module_imports_a_private_name_of_another():
     assert not found, "private names imported across modules:\n" + "\n".join(found)
 
 
-@pytest.mark.parametrize("path", params("lines"))
-def test_module_length(path):
-    n = len(path.read_text().splitlines())
-    assert n <= MAX_LINES, f"{rel(path)} has {n} lines (at most {MAX_LINES})"
+def test_module_length():
+    long = [f"{rel(p)}: {n} lines" for p in MODULES
+            if (n := len(p.read_text().splitlines())) > MAX_LINES]
+    assert not long, f"modules over {MAX_LINES} lines:\n" + "\n".join(long)
 
 
 #: Abbreviations whose period does not end a sentence.
 ABBREVIATIONS = re.compile(r"\b(Figs?|Eqs?|Secs?|Thms?|al|cf|e\.g|i\.e|vs|etc)\.")
 
 
-@pytest.mark.parametrize("path", params("docstring"))
-def test_module_opens_with_a_one_sentence_docstring(path):
+def _opening_sentence_problem(path: Path) -> str | None:
     doc = ast.get_docstring(ast.parse(path.read_text()))
-    assert doc and doc.strip(), f"{rel(path)} has no module docstring"
+    if not (doc and doc.strip()):
+        return f"{rel(path)} has no module docstring"
     first = " ".join(doc.strip().split("\n\n")[0].split())
     text = ABBREVIATIONS.sub("", first)
     breaks = re.findall(r"[.?!]\s+(?=[A-Z])", text)  # a sentence ends and the next begins
-    assert text.endswith((".", "?")) and not breaks, (
-        f"{rel(path)}: the opening paragraph should be one sentence saying what the module is for: {first!r}")
+    if not text.endswith((".", "?")) or breaks:
+        return f"{rel(path)}: {first!r}"
+    return None
+
+
+def test_every_module_opens_with_a_one_sentence_docstring():
+    # the opening paragraph says in one sentence what the module is for
+    found = [m for p in MODULES if (m := _opening_sentence_problem(p))]
+    assert not found, "opening paragraphs that are not one sentence:\n" + "\n".join(found)
 
 
 def test_matplotlib_only_in_viz():
@@ -137,7 +151,11 @@ def test_matplotlib_only_in_viz():
         for node in ast.walk(ast.parse(p.read_text())):
             names = ([a.name for a in node.names] if isinstance(node, ast.Import)
                      else [node.module or ""] if isinstance(node, ast.ImportFrom) else [])
-            found += [f"{rel(p)}:{node.lineno}: {n}" for n in names if n.split(".")[0].startswith("matplotlib")]
+            found += [
+                f"{rel(p)}:{node.lineno}: {n}"
+                for n in names
+                if n.split(".")[0].startswith("matplotlib")
+            ]
     assert not found, "matplotlib imported outside obslib/viz:\n" + "\n".join(found)
 
 
@@ -147,10 +165,26 @@ OUTSIDE = ("../" + "shared", "/work/" + "shared", "EXPERIMENTS" + ".md", "DESIGN
 
 def repository_files():
     yield from MODULES
-    for sub, pattern in (("tests", "*"), ("notebooks", "*.ipynb"), (".ci", "*"), ("book/_ext", "*.py")):
-        yield from (p for p in sorted((ROOT / sub).rglob(pattern)) if p.is_file() and "__pycache__" not in p.parts)
+    for sub, pattern in (
+        ("tests", "*"),
+        ("notebooks", "*.ipynb"),
+        (".ci", "*"),
+        ("book/_ext", "*.py"),
+    ):
+        yield from (
+            p
+            for p in sorted((ROOT / sub).rglob(pattern))
+            if p.is_file() and "__pycache__" not in p.parts
+        )
     yield from sorted((ROOT / "book").glob("*.md"))
-    for name in ("README.md", "Makefile", "_config.yml", "_toc.yml", "pyproject.toml", "requirements.txt"):
+    for name in (
+        "README.md",
+        "Makefile",
+        "_config.yml",
+        "_toc.yml",
+        "pyproject.toml",
+        "requirements.txt",
+    ):
         if (ROOT / name).is_file():
             yield ROOT / name
 

@@ -10,7 +10,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import obslib.measures as me
-import obslib.submodularity as sm
+import obslib.submodularity as subm
 
 SETTINGS = settings(derandomize=True, deadline=None, max_examples=60, database=None)
 
@@ -72,7 +72,9 @@ def test_table_matches_measure_on_every_subset(gs, name, eps):
     table = me.measure_table(sensors, target, name, eps=eps)
     masks = me.subset_masks(len(sensors))
     for k, m in enumerate(masks):
-        assert np.isclose(table[k], me.measure(sensors[m], target, name, eps=eps), rtol=1e-12, atol=0)
+        assert np.isclose(
+            table[k], me.measure(sensors[m], target, name, eps=eps), rtol=1e-12, atol=0
+        )
 
 
 def test_subset_masks_bit_order():
@@ -149,13 +151,19 @@ def test_direction_table():
         (lambda: me.measure([[0, 0], [1, 0]], [1, 1], "logdet", eps=-1.0), "eps"),
         (lambda: me.measure([[0, 0], [1, 0]], [1, 1], "logdet", eps=np.nan), "eps"),
         (lambda: me.measure([[0, 0], [1, 0]], [1, 1], "logdet", u=[1, 2, 3]), "u must have shape"),
-        (lambda: me.measure([[0, 0], [1, 0]], [1, 1], "logdet", u=[np.inf, 0]), "u has a non-finite"),
+        (
+            lambda: me.measure([[0, 0], [1, 0]], [1, 1], "logdet", u=[np.inf, 0]),
+            "u has a non-finite",
+        ),
         (lambda: me.measure([[1, 1], [1, 0]], [1, 1], "trace"), "sensor 0 coincides with target"),
         (lambda: me.measure([[0, 0], [0, 0]], [1, 1], "trace"), "sensors 0 and 1 coincide"),
         (lambda: me.measure([[0, np.nan]], [1, 1], "trace"), "sensor 0 has a non-finite"),
         (lambda: me.measure([[0, 0]], [1, 1, 1], "trace"), "target must have shape"),
         (lambda: me.measure([[0, 0]], [1, 1], "rank", rank_rtol=2.0), "rank_rtol"),
-        (lambda: me.measure_table([[0, 0], [1, 0]], [1, 1], "trace", masks=np.ones((2, 3))), "masks"),
+        (
+            lambda: me.measure_table([[0, 0], [1, 0]], [1, 1], "trace", masks=np.ones((2, 3))),
+            "masks",
+        ),
         (lambda: me.measure_from_vectors(np.ones((3, 3)), np.ones((1, 3)), "trace"), "vectors"),
         (lambda: me.subset_masks(-1), "n must be at least 0"),
         (lambda: me.subset_masks(40), "too large"),
@@ -170,8 +178,9 @@ def test_bad_input_raises(call, match):
 
 
 def _audit(sensors, target, name, eps, min_size=0, u=None):
-    return sm.audit_set_function(sensors, values=me.measure_table(sensors, target, name, eps=eps, u=u),
-                                 min_size=min_size)
+    return subm.audit_set_function(
+        sensors, values=me.measure_table(sensors, target, name, eps=eps, u=u), min_size=min_size
+    )
 
 
 def _direct_gains_hold(sensors, target, name, eps, min_size=0, submodular=True, u=None):
@@ -262,7 +271,8 @@ def test_trace_inverse_decreases_and_its_negative_increases(gs, eps):
     _direct_gains_hold(sensors, target, "neg_trace_inverse", eps, submodular=False)
 
 
-# --------------------------------------------------------------------------- the property that fails
+# --------------------------------------------------------------------------- the property that
+# fails
 
 
 def neg_tr_inv(sensors, target, eps):
@@ -288,7 +298,7 @@ def test_neg_trace_inverse_hand_example():
         t = me.measure_table(s, o, name, eps=1.0)
         assert np.isclose(sign * (t[0b101] - t[0b001]), 1 / 3)
         assert np.isclose(sign * (t[0b111] - t[0b011]), 5 / 12)
-    a = sm.audit_set_function(s, values=me.measure_table(s, o, "neg_trace_inverse", eps=1.0))
+    a = subm.audit_set_function(s, values=me.measure_table(s, o, "neg_trace_inverse", eps=1.0))
     assert not a.submodular and a.monotone_increasing
     w = a.submodular_witness
     assert (w.A, w.B, w.x) == ((0,), (0, 1), 2)

@@ -20,7 +20,9 @@ def code_cells(path):
 def literal_assignments(source):
     out = {}
     for node in ast.parse(source).body:
-        assert isinstance(node, ast.Assign) and len(node.targets) == 1, "parameters cell: only NAME = literal"
+        assert isinstance(node, ast.Assign) and len(node.targets) == 1, (
+            "parameters cell: only NAME = literal"
+        )
         out[node.targets[0].id] = ast.literal_eval(node.value)
     return out
 
@@ -39,11 +41,10 @@ def test_first_code_cell_is_the_parameters_cell_of_literals(path):
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_figures_set_up_before_the_first_figure(path):
-    # obsbook.setup (or obslib.notebook.setup_figures, which it replaces) in the import cell
-    # (the one after the parameters), so every figure is drawn once and the same way
+    # obsbook.setup in the import cell (the one after the parameters), so every figure is drawn
+    # once and the same way
     sources = ["".join(c["source"]) for c in code_cells(path)]
-    calls = [k for k, s in enumerate(sources) for call in ("setup_figures()", "obsbook.setup()")
-             if call in s]
+    calls = [k for k, s in enumerate(sources) if "obsbook.setup()" in s]
     assert calls == [1], f"{path.name}: obsbook.setup() must be called once, in the import cell"
     assert "set_matplotlib_formats" not in "".join(sources)
 
@@ -54,7 +55,9 @@ def test_committed_with_outputs_and_no_errors(path):
         tags = cell["metadata"].get("tags", [])
         assert "injected-parameters" not in tags, f"cell {i}: papermill-injected parameters"
         assert cell["execution_count"] is not None, f"cell {i} never executed"
-        assert all(o["output_type"] != "error" for o in cell["outputs"]), f"cell {i} stores an error"
+        assert all(o["output_type"] != "error" for o in cell["outputs"]), (
+            f"cell {i} stores an error"
+        )
     meta = json.loads(path.read_text())["metadata"]
     assert "papermill" not in meta and "version" not in meta.get("language_info", {})
 
@@ -88,7 +91,9 @@ def test_toc_lists_every_notebook_and_every_entry_exists():
     for f in files:
         if f in generated:
             continue
-        assert any((ROOT / f"{f}{ext}").exists() for ext in (".md", ".ipynb")), f"toc entry {f} missing"
+        assert any((ROOT / f"{f}{ext}").exists() for ext in (".md", ".ipynb")), (
+            f"toc entry {f} missing"
+        )
     for nb in NOTEBOOKS:
         assert f"notebooks/{nb.stem}" in files, f"{nb.name} is not in _toc.yml"
     assert NOTEBOOK_DIR.exists()
@@ -114,15 +119,22 @@ def test_summary_verdicts_typed_in_prose_match_the_ledger(path):
         if cell["cell_type"] != "markdown":
             continue
         for line in "".join(cell["source"]).splitlines():
-            m = re.match(r"\|.*\(`([a-z0-9-]+)`\) \| (reproduced|partly|refuted|untestable|answered|open) \|", line)
+            m = re.match(
+                r"\|.*\(`([a-z0-9-]+)`\) \| "
+                r"(reproduced|partly|refuted|untestable|answered|open) \|",
+                line,
+            )
             if m:
                 assert m.group(1) in statuses, f"{path.name}: {m.group(1)} is not in the report"
-                assert statuses[m.group(1)] == m.group(2), f"{path.name}: {m.group(1)} typed as {m.group(2)}"
+                assert statuses[m.group(1)] == m.group(2), (
+                    f"{path.name}: {m.group(1)} typed as {m.group(2)}"
+                )
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_papermill_sees_every_parameter(path):
-    """papermill cannot parse a parameter line whose comment holds '=' or quotes; -p would then fail."""
+    """papermill cannot parse a parameter line whose comment holds '=' or quotes; -p would then
+    fail."""
     import papermill as pm
 
     assert set(pm.inspect_notebook(str(path))) == set(params(path.stem, "paper"))
@@ -156,14 +168,17 @@ def test_every_claim_has_a_verdict_box_that_agrees_with_the_ledger():
         if title != cls or len(ids) != 1:
             wrong.append(f"{nb}: box '{title}' (class {cls}) links to {ids or 'no claim'}")
         elif statuses.get(ids[0]) != title:
-            wrong.append(f"{nb}: {ids[0]} is {statuses.get(ids[0], 'not a claim')}, its box says {title}")
+            actual = statuses.get(ids[0], "not a claim")
+            wrong.append(f"{nb}: {ids[0]} is {actual}, its box says {title}")
     assert not wrong, "\n".join(wrong)
     boxed = {i for _, _, _, ids in boxes for i in ids}
-    assert not set(statuses) - boxed, f"claims without a verdict box: {sorted(set(statuses) - boxed)}"
+    missing = sorted(set(statuses) - boxed)
+    assert not missing, f"claims without a verdict box: {missing}"
 
 
 def test_verdict_box_pattern_reads_a_box():
     cell = ("```{admonition} Verdict: partly\n:class: verdict verdict-partly\n\nHolds in part. "
             "{ref}`The claim in words <claim-thm3>`\n```")
     m = VERDICT_BOX.search(cell)
-    assert m and m.group("title") == "partly" and re.findall(r"<claim-([a-z0-9-]+)>`", m.group("body")) == ["thm3"]
+    assert m and m.group("title") == "partly"
+    assert re.findall(r"<claim-([a-z0-9-]+)>`", m.group("body")) == ["thm3"]

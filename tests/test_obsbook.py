@@ -9,8 +9,8 @@ import ast
 import pandas as pd
 import pytest
 
-import obslib
 import obsbook
+import obslib
 from obsbook import tables
 
 

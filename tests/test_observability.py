@@ -53,10 +53,14 @@ def test_closed_form_inverse_condition_equals_svd(m):
     rng = np.random.default_rng(m)
     stack = rng.normal(size=(500, m, 2)) * 10.0 ** rng.uniform(-3, 4, size=(500, 1, 1))
     stack[:50, :, 1] = 3.0 * stack[:50, :, 0]  # parallel rows: rank one
-    stack[50:100, 1:, :] = stack[50:100, :1, :] * rng.uniform(0.5, 2, size=(50, m - 1, 1))  # collinear
+    stack[50:100, 1:, :] = stack[50:100, :1, :] * rng.uniform(
+        0.5, 2, size=(50, m - 1, 1)
+    )  # collinear
     stack[50:100, 1:, 1] += 1e-9 * stack[50:100, 1:, 0]  # ... nearly
     sv = np.linalg.svd(stack, compute_uv=False)
-    np.testing.assert_allclose(inverse_condition(stack), sv[:, -1] / sv[:, 0], rtol=1e-7, atol=1e-14)
+    np.testing.assert_allclose(
+        inverse_condition(stack), sv[:, -1] / sv[:, 0], rtol=1e-7, atol=1e-14
+    )
 
 
 # --------------------------------------------------------------------------- batched forms
@@ -91,11 +95,15 @@ def test_batched_polar_grid_equals_the_per_scene_function():
     batch = random_scene_batch(200, 5, kinds=("generic", "spread", "near-parallel"))
     n_radii, n_angles = 5, 16
     radii = batch.u_max[:, None] * np.arange(1, n_radii + 1)[None, :] / n_radii
-    grid = inverse_condition_numbers_polar(batch.rows, radii, 2 * np.pi * np.arange(n_angles) / n_angles)
+    grid = inverse_condition_numbers_polar(
+        batch.rows, radii, 2 * np.pi * np.arange(n_angles) / n_angles
+    )
     assert grid.shape == (200, n_radii, n_angles)
     for k in range(200):
         sc = batch.scene(k)
-        want = ob.inverse_condition_number(sc.sensors, sc.target, disc_controls(sc.u_max, n_radii, n_angles))
+        want = ob.inverse_condition_number(
+            sc.sensors, sc.target, disc_controls(sc.u_max, n_radii, n_angles)
+        )
         np.testing.assert_allclose(grid[k].ravel(), want[1:], rtol=1e-11, atol=1e-15)
 
 
@@ -117,8 +125,14 @@ def test_batched_form_on_one_scene_and_on_padding_only():
 
     s, o, u = np.array([[0.0, 0.0], [3.0, 1.0], [1.0, 4.0]]), np.array([1.0, 2.0]), [0.5, -0.2]
     rows = o - s
-    assert inverse_condition_numbers(rows) == pytest.approx(ob.inverse_condition_number(s, o), rel=1e-14)
-    assert inverse_condition_numbers(rows, u) == pytest.approx(ob.inverse_condition_number(s, o, u), rel=1e-14)
+    assert inverse_condition_numbers(rows) == pytest.approx(
+        ob.inverse_condition_number(s, o), rel=1e-14
+    )
+    assert inverse_condition_numbers(rows, u) == pytest.approx(
+        ob.inverse_condition_number(s, o, u), rel=1e-14
+    )
     padded = np.vstack([rows, np.zeros((3, 2))])
-    assert inverse_condition_numbers(padded, u) == pytest.approx(ob.inverse_condition_number(s, o, u), rel=1e-14)
+    assert inverse_condition_numbers(padded, u) == pytest.approx(
+        ob.inverse_condition_number(s, o, u), rel=1e-14
+    )
     assert inverse_condition_numbers(np.zeros((4, 3, 2))).tolist() == [0.0] * 4  # empty scenes

@@ -98,7 +98,9 @@ def test_bisection_root_agrees_with_scipy_brentq():
         hi = 2.0
         while g(hi) > 0:
             hi *= 2
-        assert a == pytest.approx(brentq(g, 1.0, hi, xtol=1e-14, rtol=4 * np.finfo(float).eps), abs=3e-14)
+        assert a == pytest.approx(
+            brentq(g, 1.0, hi, xtol=1e-14, rtol=4 * np.finfo(float).eps), abs=3e-14
+        )
         assert g(a - 1e-9) > 0 > g(a + 1e-9)
 
 

@@ -65,6 +65,6 @@ def test_constraints_name_their_parameters_in_order():
 def test_range_messages_say_why():
     with pytest.raises(ValueError, match=r"n_sensors = 11 is not accepted; expected an integer in "
                                          r"\[2, 10\] \(all 2\^N subsets"):
-        pr.check_parameters("04_submodularity", {"n_sensors": 11})
+        pr.validated_parameters("04_submodularity", {"n_sensors": 11})
     with pytest.raises(ValueError, match="n_instances = 5000, n_sensors = 10 are not accepted"):
-        pr.check_parameters("04_submodularity", {"n_sensors": 10, "n_instances": 5000})
+        pr.validated_parameters("04_submodularity", {"n_sensors": 10, "n_instances": 5000})

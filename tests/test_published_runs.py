@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 import obslib.tracking as tr
-from obslib.studies.published import PUBLISHED_ADVERSARIAL, PUBLISHED_CIRCLE
 from obslib.published_runs import RUN_NAMES, published_noise, published_run
+from obslib.studies.published import PUBLISHED_ADVERSARIAL, PUBLISHED_CIRCLE
 
 
 def test_noise_table_shape_and_known_entries():

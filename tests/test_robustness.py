@@ -4,12 +4,12 @@ import json
 
 import pytest
 
-from obsbook import report as REPORT
+from obsbook import report
 from obslib import claims
 from obslib.claims import robustness as rb
 from obslib.profiles import PROFILES, params
 
-ROBUSTNESS_FILE = REPORT.ROOT / "book" / "data" / "robustness.json"
+ROBUSTNESS_FILE = report.ROOT / "book" / "data" / "robustness.json"
 
 
 def test_identity_variation_reproduces_the_base_verdict(monkeypatch):
@@ -44,12 +44,23 @@ def test_dimensions_follow_the_notebook_parameters():
 
 
 def test_table_says_where_a_verdict_changes():
-    rows = [{"id": "a", "base": "partly",
-             "variants": {"u_max": [("x2", "partly", False)],
-                          "metric": [("euclidean", "refuted", False)],
-                          "size": [("n_seeds x0.5", "partly", True), ("n_seeds x2", "partly", True)]}},
-            {"id": "b", "base": "reproduced", "fixed": ["u_max", "noise_std", "metric", "size"],
-             "variants": {}}]
+    rows = [
+        {
+            "id": "a",
+            "base": "partly",
+            "variants": {
+                "u_max": [("x2", "partly", False)],
+                "metric": [("euclidean", "refuted", False)],
+                "size": [("n_seeds x0.5", "partly", True), ("n_seeds x2", "partly", True)],
+            },
+        },
+        {
+            "id": "b",
+            "base": "reproduced",
+            "fixed": ["u_max", "noise_std", "metric", "size"],
+            "variants": {},
+        },
+    ]
     assert rb.describe(rows[0], "refuted") == (
         "refuted (partly at the smaller sizes)",
         ["holds", "n/a", "refuted at Euclidean", "unchanged finding"])
@@ -97,13 +108,13 @@ def test_stored_robustness_agrees_with_a_fresh_recomputation(stored, cid, dim):
 
 def test_report_section_from_the_stored_data(stored):
     recs = claims.evaluate("quick", ids=["fig7-switch-mechanism", "thm1", "beyond-criteria"])
-    text = REPORT.render_report(recs, "quick", targets={}, robustness=stored)
+    text = report.render_report(recs, "quick", targets={}, robustness=stored)
     sec = text.split("## How robust are the verdicts?")[1]
     rows = [line for line in sec.splitlines() if line.startswith("* - [")]
     # only the claims of the report that the data covers, each linking to its entry
     assert len(rows) == 1 and "(#claim-fig7-switch-mechanism)" in rows[0]
     assert "  - refuted at Euclidean" in sec.splitlines()
-    assert "How robust" not in REPORT.render_report(recs, "quick", targets={})
+    assert "How robust" not in report.render_report(recs, "quick", targets={})
 
 
 def test_beyond_entries_are_not_varied():

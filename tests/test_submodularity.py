@@ -8,7 +8,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-import obslib.submodularity as sm
+import obslib.submodularity as subm
 from obslib.measures import subset_masks
 
 SETTINGS = settings(derandomize=True, deadline=None, max_examples=60, database=None)
@@ -54,7 +54,7 @@ def test_finder_equals_brute_force_on_random_functions(n, min_size, rnd):
     assume(min_size <= n)
     table = {S: float(rnd.choice([0, 1, 2, 3])) for S in subsets(n)}  # many ties and violations
     f = table.__getitem__
-    a = sm.audit_set_function(n, f, min_size=min_size)
+    a = subm.audit_set_function(n, f, min_size=min_size)
     mono, incr, sub, sup = brute_force(n, f, min_size, tol=a.tol)
     assert a.n_decreases == len(mono) and a.n_increases == len(incr)
     assert a.n_submodular_violations == len(sub) and a.n_supermodular_violations == len(sup)
@@ -76,7 +76,7 @@ def test_finder_equals_brute_force_on_random_functions(n, min_size, rnd):
 def test_known_non_submodular_function():
     """f(S) = |S|^2 is supermodular: the smallest witness is A = {}, B = {0}, x = 1."""
     f = lambda S: float(len(S) ** 2)  # noqa: E731
-    a = sm.audit_set_function(4, f)
+    a = subm.audit_set_function(4, f)
     assert a.monotone_increasing and not a.submodular and a.supermodular
     w = a.submodular_witness
     assert (w.A, w.B, w.x) == ((), (0,), 1) and (w.gain_A, w.gain_B) == (1.0, 3.0)
@@ -88,15 +88,15 @@ def test_known_non_submodular_function():
 def test_known_submodular_and_modular_functions():
     cover = [{0, 1}, {1, 2}, {2, 3}, {0, 3}, {4}]
     f = lambda S: float(len(set().union(*(cover[i] for i in S))))  # noqa: E731  coverage
-    a = sm.audit_set_function(5, f)
+    a = subm.audit_set_function(5, f)
     assert a.monotone_increasing and a.submodular and not a.modular
     w = np.array([0.3, 1.7, 2.2, 0.1])
-    a = sm.audit_set_function(4, lambda S: float(w[list(S)].sum()))
+    a = subm.audit_set_function(4, lambda S: float(w[list(S)].sum()))
     assert a.modular and a.monotone_increasing and a.max_excess <= a.tol
 
 
 def test_decreasing_function_witness():
-    a = sm.audit_set_function(3, lambda S: -float(len(S)))
+    a = subm.audit_set_function(3, lambda S: -float(len(S)))
     assert a.monotone_decreasing and not a.monotone_increasing
     w = a.monotone_witness
     assert (w.A, w.x, w.B, w.gain) == ((), 0, (0,), -1.0)
@@ -106,7 +106,7 @@ def test_tolerance_hides_rounding():
     rng = np.random.default_rng(0)
     w = rng.uniform(0, 1, 6)
     f = lambda S: float(np.sum(w[list(S)]) * (1 + 1e-15 * rng.standard_normal()))  # noqa: E731
-    assert sm.audit_set_function(6, f).modular
+    assert subm.audit_set_function(6, f).modular
 
 
 def test_each_subset_is_evaluated_once_and_small_sets_never():
@@ -117,32 +117,32 @@ def test_each_subset_is_evaluated_once_and_small_sets_never():
         calls.append(S)
         return float(len(S))
 
-    sm.audit_set_function(6, f, min_size=2)
+    subm.audit_set_function(6, f, min_size=2)
     assert len(calls) == len(set(calls)) == 2**6 - 1 - 6
 
 
 def test_doctests():
-    assert doctest.testmod(sm, raise_on_error=False).failed == 0
+    assert doctest.testmod(subm, raise_on_error=False).failed == 0
 
 
 @pytest.mark.parametrize(
     "call, match",
     [
-        (lambda: sm.audit_set_function(11, lambda S: 0.0), "too large"),
-        (lambda: sm.audit_set_function(-1, lambda S: 0.0), "non-negative"),
-        (lambda: sm.audit_set_function(3, lambda S: 0.0, min_size=4), "exceeds"),
-        (lambda: sm.audit_set_function(3, lambda S: 0.0, min_size=-1), "min_size"),
-        (lambda: sm.audit_set_function(3, lambda S: float("nan")), "not a finite"),
-        (lambda: sm.audit_set_function(3, lambda S: "a"), "not a finite"),
-        (lambda: sm.audit_set_function(3, lambda S: -np.inf), r"f\(\) = -inf"),
-        (lambda: sm.audit_set_function(3, 5), "callable"),
-        (lambda: sm.audit_set_function(3), "exactly one"),
-        (lambda: sm.audit_set_function(3, lambda S: 0.0, values=np.zeros(8)), "exactly one"),
-        (lambda: sm.audit_set_function(3, values=np.zeros(7)), "shape"),
-        (lambda: sm.audit_set_function(2, values=[0.0, 1.0, np.inf, 2.0]), r"set \(1,\)"),
-        (lambda: sm.audit_set_function([[0, 0], [0, np.nan]], lambda S: 0.0), "sensor 1"),
-        (lambda: sm.audit_set_function([[0, 0], [0, 0]], lambda S: 0.0), "coincide"),
-        (lambda: sm.audit_tables(np.zeros((2, 8)), 3, rtol=-1.0), "non-negative"),
+        (lambda: subm.audit_set_function(11, lambda S: 0.0), "too large"),
+        (lambda: subm.audit_set_function(-1, lambda S: 0.0), "non-negative"),
+        (lambda: subm.audit_set_function(3, lambda S: 0.0, min_size=4), "exceeds"),
+        (lambda: subm.audit_set_function(3, lambda S: 0.0, min_size=-1), "min_size"),
+        (lambda: subm.audit_set_function(3, lambda S: float("nan")), "not a finite"),
+        (lambda: subm.audit_set_function(3, lambda S: "a"), "not a finite"),
+        (lambda: subm.audit_set_function(3, lambda S: -np.inf), r"f\(\) = -inf"),
+        (lambda: subm.audit_set_function(3, 5), "callable"),
+        (lambda: subm.audit_set_function(3), "exactly one"),
+        (lambda: subm.audit_set_function(3, lambda S: 0.0, values=np.zeros(8)), "exactly one"),
+        (lambda: subm.audit_set_function(3, values=np.zeros(7)), "shape"),
+        (lambda: subm.audit_set_function(2, values=[0.0, 1.0, np.inf, 2.0]), r"set \(1,\)"),
+        (lambda: subm.audit_set_function([[0, 0], [0, np.nan]], lambda S: 0.0), "sensor 1"),
+        (lambda: subm.audit_set_function([[0, 0], [0, 0]], lambda S: 0.0), "coincide"),
+        (lambda: subm.audit_tables(np.zeros((2, 8)), 3, rtol=-1.0), "non-negative"),
     ],
 )
 def test_bad_input_raises(call, match):
@@ -186,8 +186,8 @@ def test_audit_flags_equal_the_full_audit(n, min_size):
     t[:, small] = -np.inf
     tables.append(t)
     for v in tables:
-        fast = sm.audit_flags(v, n, min_size)
-        slow = _flags_from_audits(sm.audit_tables(v, n, min_size))
+        fast = subm.audit_flags(v, n, min_size)
+        slow = _flags_from_audits(subm.audit_tables(v, n, min_size))
         for key, want in slow.items():
             assert np.array_equal(getattr(fast, key), want), key
 
@@ -195,15 +195,15 @@ def test_audit_flags_equal_the_full_audit(n, min_size):
 def test_audit_flags_is_blockwise_independent(monkeypatch):
     """Tables are processed in blocks; the verdicts do not depend on the block size."""
     v = np.random.default_rng(7).normal(size=(1000, 32))
-    full = sm.audit_flags(v, 5, 1)
-    monkeypatch.setattr(sm, "_FLAGS_BLOCK", 37)
-    part = sm.audit_flags(v, 5, 1)
+    full = subm.audit_flags(v, 5, 1)
+    monkeypatch.setattr(subm, "_FLAGS_BLOCK", 37)
+    part = subm.audit_flags(v, 5, 1)
     for key in full.__dataclass_fields__:
         assert np.array_equal(getattr(full, key), getattr(part, key)), key
 
 
 def test_audit_flags_bad_input():
     with pytest.raises(ValueError, match="not finite"):
-        sm.audit_flags(np.full((2, 8), np.nan), 3)
+        subm.audit_flags(np.full((2, 8), np.nan), 3)
     with pytest.raises(ValueError, match="shape"):
-        sm.audit_flags(np.zeros((2, 7)), 3)
+        subm.audit_flags(np.zeros((2, 7)), 3)

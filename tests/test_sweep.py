@@ -3,14 +3,14 @@
 import numpy as np
 import pytest
 
-from obslib.studies import greedy_vs_relaxed as st
+from obslib.studies import greedy_vs_relaxed as gvr
 from obslib.studies import teams as ts
 from obslib.sweep import run_sweep
 
 
 def test_joblib_equals_serial():
-    a = st.fig8_sweep([1, 3, 5], trials=3, seed=2)
-    b = st.fig8_sweep([1, 3, 5], trials=3, seed=2, backend="joblib", n_jobs=2)
+    a = gvr.fig8_sweep([1, 3, 5], trials=3, seed=2)
+    b = gvr.fig8_sweep([1, 3, 5], trials=3, seed=2, backend="joblib", n_jobs=2)
     for k in ("greedy", "relaxed", "relaxed_ordered"):
         np.testing.assert_array_equal(a[k], b[k])
     np.testing.assert_array_equal(
@@ -24,8 +24,8 @@ def test_dask_local_cluster_equals_serial():
                                   dashboard_address=None, processes=True) as cluster:
         address = cluster.scheduler_address
         assert address.startswith("tcp://127.0.0.1:")
-        a = st.fig8_sweep([2, 4], trials=3, seed=7)
-        b = st.fig8_sweep([2, 4], trials=3, seed=7, backend="dask", scheduler=address)
+        a = gvr.fig8_sweep([2, 4], trials=3, seed=7)
+        b = gvr.fig8_sweep([2, 4], trials=3, seed=7, backend="dask", scheduler=address)
         for k in ("greedy", "relaxed", "relaxed_ordered"):
             np.testing.assert_array_equal(a[k], b[k])
         np.testing.assert_array_equal(

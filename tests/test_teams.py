@@ -1,4 +1,5 @@
-"""Greedy teams (Problem 2): the greedy rule evaluated directly, the exact optimum, the 1/2 bound."""
+"""Greedy teams (Problem 2): the greedy rule evaluated directly, the exact optimum, the 1/2
+bound."""
 
 import numpy as np
 import pytest
@@ -43,7 +44,8 @@ def test_greedy_is_within_half_of_the_optimum_for_logdet():
         teams = greedy_team_assignment(S, T, "logdet", eps=1.0)
         _, opt = optimal_team_assignment(S, T, "logdet", eps=1.0)
         g = team_value(S, T, teams, "logdet", eps=1.0)
-        # with eps = 1 the empty team has logdet 0, so values are non-negative and the ratio is meaningful
+        # with eps = 1 the empty team has logdet 0, so values are non-negative and the ratio is
+        # meaningful
         assert g <= opt + 1e-9
         assert g >= 0.5 * opt - 1e-9
         worst = min(worst, g / opt)
@@ -57,7 +59,13 @@ def test_optimum_equals_brute_force_over_team_values():
     teams, value = optimal_team_assignment(S, T, "logdet", eps=1.0)
     assert value == pytest.approx(team_value(S, T, teams, "logdet", eps=1.0))
     best = max(
-        team_value(S, T, [[i for i in range(5) if (k >> i) & 1], [i for i in range(5) if not (k >> i) & 1]], "logdet", eps=1.0)
+        team_value(
+            S,
+            T,
+            [[i for i in range(5) if (k >> i) & 1], [i for i in range(5) if not (k >> i) & 1]],
+            "logdet",
+            eps=1.0,
+        )
         for k in range(32)
     )
     assert value == pytest.approx(best)
@@ -90,7 +98,9 @@ def test_bad_geometry():
     with pytest.raises(ValueError, match="at least one target"):
         greedy_team_assignment([[0, 0], [1, 1]], np.zeros((0, 2)))
     with pytest.raises(ValueError, match="too many"):
-        optimal_team_assignment(np.random.default_rng(0).uniform(0, 9, (30, 2)), [[50, 50], [60, 60]])
+        optimal_team_assignment(
+            np.random.default_rng(0).uniform(0, 9, (30, 2)), [[50, 50], [60, 60]]
+        )
     assert ob.greedy_team_assignment is greedy_team_assignment
 
 
@@ -115,7 +125,9 @@ def test_batched_picks_are_the_single_instance_teams_in_order():
     picks_i, picks_l = greedy_team_picks(S, T, "logdet", 1.0)
     for k in range(len(S)):
         teams = greedy_team_assignment(S[k], T[k], "logdet", 1.0)
-        rebuilt = [[int(i) for i, l in zip(picks_i[k], picks_l[k]) if l == target] for target in range(3)]
+        rebuilt = [
+            [int(i) for i, l in zip(picks_i[k], picks_l[k]) if l == target] for target in range(3)
+        ]
         assert rebuilt == teams
     with pytest.raises(ValueError, match="unknown measure"):
         greedy_team_picks(S, T, "volume")
@@ -133,7 +145,9 @@ def test_best_labelling_equals_a_loop_over_all_labellings():
     for b in range(batch):
         best = None
         for lab in product(range(n_targets), repeat=n):  # lexicographic: the first best wins ties
-            value = sum(tables[l, b, sum(1 << i for i in range(n) if lab[i] == l)] for l in range(n_targets))
+            value = sum(
+                tables[l, b, sum(1 << i for i in range(n) if lab[i] == l)] for l in range(n_targets)
+            )
             if best is None or value > best[0]:
                 best = (value, lab)
         assert tuple(labels[b]) == best[1]
@@ -150,7 +164,9 @@ def test_batch_vectors_equal_relative_vectors_and_raise_the_same_errors():
 
     rng = np.random.default_rng(30)
     S, T = rng.uniform(0, 100, (7, 9, 2)), rng.uniform(0, 100, (7, 3, 2))
-    np.testing.assert_array_equal(_batch_vectors(S, T), np.stack([relative_vectors(s, t) for s, t in zip(S, T)]))
+    np.testing.assert_array_equal(
+        _batch_vectors(S, T), np.stack([relative_vectors(s, t) for s, t in zip(S, T)])
+    )
     bad = [(S.copy(), T.copy()) for _ in range(3)]
     bad[0][0][4, 2] = bad[0][0][4, 5]  # two sensors coincide in instance 4
     bad[1][0][2, 1] = T[2, 0]  # a sensor on a target

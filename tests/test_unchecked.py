@@ -8,9 +8,8 @@ import numpy as np
 import pytest
 
 from obslib import claims
-from obslib.studies import teams as ts
 from obslib.studies import fig9_measure as fm
-
+from obslib.studies import teams as ts
 
 # --------------------------------------------------------------------------------------------
 # Fig. 9 with the literal log det(O^T O)
@@ -123,7 +122,9 @@ def test_literal_counts_equal_float_loop_with_collinear_rows(nan):
         T = rng.integers(0, 6, size=(L, 2)) + 0.5 * rng.integers(0, 2, size=(L, 1))
         if (T[None] == S[:, None]).all(axis=2).any():
             continue
-        np.testing.assert_array_equal(fm.literal_logdet_counts(S, T, nan), _float_literal(S, T, nan))
+        np.testing.assert_array_equal(
+            fm.literal_logdet_counts(S, T, nan), _float_literal(S, T, nan)
+        )
 
 
 def test_literal_greedy_matlab_rule_gives_every_sensor_to_target_1():
@@ -227,8 +228,8 @@ def test_eq4_bad_input():
 import itertools  # noqa: E402
 
 import obslib as ob  # noqa: E402
-from obslib.studies import assignment as ast  # noqa: E402
 from obslib.claims import unchecked as cu  # noqa: E402
+from obslib.studies import assignment as sa  # noqa: E402
 from obslib.studies import hardness as hd  # noqa: E402
 
 
@@ -245,8 +246,8 @@ def test_reduction_matching_iff_optimum_reaches_q():
         q = int(rng.integers(2, 4))
         ts = hd.random_3dm(q, int(rng.integers(q, 3 * q + 1)), rng)
         W = hd.three_dm_weights(q, ts)
-        # the optimum by the exact DP (brute force over assignments), not the MILP
-        opt = float(ast.optimal_values(W[None])[0])
+        # the optimum by the exact DP (brute force over assignments), not the branch and bound
+        opt = float(sa.optimal_values(W[None])[0])
         m = hd.has_perfect_matching(q, ts)
         assert m == (opt >= q - 1e-9)
         seen.add(m)

@@ -13,10 +13,16 @@ T = O[None]
 def callers():
     """Each public function as f(sensors, target_or_targets, u_max)."""
     return {
-        "observability_matrix": lambda s, o, u: ob.observability_matrix(s, o[0] if np.ndim(o) == 2 else o),
-        "inverse_condition_number": lambda s, o, u: ob.inverse_condition_number(s, o[0] if np.ndim(o) == 2 else o, [0.1, 0.2]),
+        "observability_matrix": lambda s, o, u: ob.observability_matrix(
+            s, o[0] if np.ndim(o) == 2 else o
+        ),
+        "inverse_condition_number": lambda s, o, u: ob.inverse_condition_number(
+            s, o[0] if np.ndim(o) == 2 else o, [0.1, 0.2]
+        ),
         "lower_bound": lambda s, o, u: ob.lower_bound(s, o[0] if np.ndim(o) == 2 else o, u),
-        "worst_case_control": lambda s, o, u: ob.worst_case_control(s, o[0] if np.ndim(o) == 2 else o, u),
+        "worst_case_control": lambda s, o, u: ob.worst_case_control(
+            s, o[0] if np.ndim(o) == 2 else o, u
+        ),
         "pair_bounds": lambda s, o, u: ob.pair_bounds(s, o if np.ndim(o) == 2 else o[None], u),
     }
 
@@ -34,7 +40,12 @@ FUNCS = callers()
         (np.zeros((3, 3)), T, 1.0, "sensors must have shape (n, 2)"),
         (S, np.array([[1.0, 1.0, 1.0]]), 1.0, "shape"),
         (S, np.array([[np.nan, 1.0]]), 1.0, "non-finite"),
-        (np.array([[0.0, 0.0], [1.0, 1.0], [5.0, 5.0]]), T, 1.0, "sensor 1 coincides with target 0"),
+        (
+            np.array([[0.0, 0.0], [1.0, 1.0], [5.0, 5.0]]),
+            T,
+            1.0,
+            "sensor 1 coincides with target 0",
+        ),
         (np.array([[0.0, 0.0], [2.0, 2.0], [0.0, 0.0]]), T, 1.0, "sensors 0 and 2 coincide"),
     ],
 )
@@ -44,7 +55,10 @@ def test_bad_geometry(name, sensors, target, u_max, message):
 
 
 @pytest.mark.parametrize("name", ["lower_bound", "worst_case_control", "pair_bounds"])
-@pytest.mark.parametrize("u_max, message", [(-1.0, "non-negative"), (np.nan, "finite"), (np.inf, "finite"), ("fast", "u_max")])
+@pytest.mark.parametrize(
+    "u_max, message",
+    [(-1.0, "non-negative"), (np.nan, "finite"), (np.inf, "finite"), ("fast", "u_max")],
+)
 def test_bad_u_max(name, u_max, message):
     with pytest.raises(ValueError, match=message):
         FUNCS[name](S, T, u_max)
@@ -76,7 +90,12 @@ def test_bad_covariance(cov, message):
 
 @pytest.mark.parametrize(
     "args, message",
-    [((-1.0, 0.5, 0.1), "alpha"), ((1.0, np.nan, 0.1), "theta"), ((1.0, 0.5, -2.0), "u_over_d"), ((np.inf, 0.5, 0.1), "alpha")],
+    [
+        ((-1.0, 0.5, 0.1), "alpha"),
+        ((1.0, np.nan, 0.1), "theta"),
+        ((1.0, 0.5, -2.0), "u_over_d"),
+        ((np.inf, 0.5, 0.1), "alpha"),
+    ],
 )
 def test_bad_polar_arguments(args, message):
     with pytest.raises(ValueError, match=message):
@@ -130,3 +149,48 @@ def test_each_check_runs_in_one_place_in_the_same_order():
         a = validated_vectors(s, t, cov)
         b = vectors_between(as_points(s), as_points(t, "targets"), cov)
         assert all(np.array_equal(x, y) for x, y in zip(a, b))
+
+
+# --------------------------------------------------------------------------------------------
+# One error contract: every bad input is a ValueError, wrong types also a TypeError
+# --------------------------------------------------------------------------------------------
+
+
+def test_wrong_types_in_every_layer_are_caught_as_value_errors():
+    from obslib import tracking as tr
+    from obslib._validate import ArgumentTypeError
+
+    setup = tr.PAPER_CIRCLE.replace(steps=3)
+    for call in (lambda: tr.monte_carlo(setup, n_seeds=2.0),
+                 lambda: tr.simulate(setup, "best-pair", seed=True),
+                 lambda: tr.simulate_batch(setup, "best-pair", seeds=[0, None]),
+                 lambda: ob.controls.disc_controls(1.0, 3.0, 8),
+                 lambda: ob.greedy_pair_assignment(np.zeros((4, 4, 1)), k=2.5)):
+        with pytest.raises(ValueError) as exc:
+            call()
+        assert isinstance(exc.value, TypeError) and isinstance(exc.value, ArgumentTypeError)
+
+
+def test_the_pair_solvers_refuse_weights_and_geometry_together_alike():
+    S, T = [[0, 0], [1, 0], [10, 0], [11, 0.5]], [[0.5, 1], [10.5, 1]]
+    W = ob.pair_bounds(S, T, 1.0)
+    from obslib.assignment import greedy_pair_assignment_literal
+
+    for solve in (ob.greedy_pair_assignment, ob.relaxed_pair_assignment,
+                  greedy_pair_assignment_literal):
+        for extra in ({"sensors": S}, {"targets": T}, {"u_max": 1.0}, {"cov": np.eye(2)}):
+            with pytest.raises(ValueError, match=r"^give either W or sensors/targets, not both$"):
+                solve(W, **extra)
+        with pytest.raises(ValueError, match=r"^give W, or sensors=, targets= and u_max="):
+            solve(sensors=S, targets=T)
+
+
+def test_validators_take_the_value_first():
+    from obslib import _validate as v
+
+    assert v.as_int(3, "n", 1) == 3 and v.as_positive(2.5, "step") == 2.5
+    assert v.as_nonnegative(0, "u_max") == 0.0
+    with pytest.raises(ValueError, match="step must be finite and positive, got 0"):
+        v.as_positive(0, "step")
+    with pytest.raises(v.ArgumentTypeError, match="n must be an integer, got 3.0"):
+        v.as_int(3.0, "n", 1)

@@ -141,7 +141,11 @@ def _data_doc(name: str, attr: str, obj) -> list[str]:
     if ("", attr) in _attr_docs(name):
         return _attr_docs(name)[("", attr)]
     for other in public_modules():
-        if other != name and getattr(_module(other), attr, None) is obj and ("", attr) in _attr_docs(other):
+        if (
+            other != name
+            and getattr(_module(other), attr, None) is obj
+            and ("", attr) in _attr_docs(other)
+        ):
             return _attr_docs(other)[("", attr)]
     return []
 

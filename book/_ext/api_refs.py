@@ -21,7 +21,6 @@ import sys
 from docutils import nodes
 from sphinx.util.nodes import make_refnode
 
-
 #: The pages of the API reference: their summary tables quote docstrings outside their modules.
 API_PAGES = "book/api"
 

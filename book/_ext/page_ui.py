@@ -96,7 +96,10 @@ def _label_table(table: str) -> str:
         return m.group(1) + _BODY_CELL.sub(label_cell, m.group(2)) + m.group(3)
 
     body = _ROW.sub(label_row, table[start:end])
-    cells = [re.sub(r"<[^>]+>", "", c) for c in re.findall(r"<td[^>]*>(.*?)</td>", table[start:end], re.S)]
+    cells = [
+        re.sub(r"<[^>]+>", "", c)
+        for c in re.findall(r"<td[^>]*>(.*?)</td>", table[start:end], re.S)
+    ]
     short = all(len(" ".join(c.split())) <= SHORT_CELL for c in cells)
     kind = "bk-cards bk-cards-short" if short else "bk-cards"
     opening = table[: start].replace('<table class="table', f'<table class="table {kind}', 1)

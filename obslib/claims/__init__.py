@@ -17,10 +17,24 @@ depends on the profile. The book's reproduction report is rendered from :func:`e
 Entries live in one submodule per section of the paper, imported below in paper order.
 """
 
-from ._ledger import (BEYOND_STATUSES, KINDS, REQUIRED_IDS, STATUS_WORDS, STATUSES, Claim,
-                      Finding, Record, Table, claim, evaluate, registry)
+from .._validate import as_instance, as_sequence
+from ._ledger import (
+    BEYOND_STATUSES,
+    KINDS,
+    REQUIRED_IDS,
+    STATUS_WORDS,
+    STATUSES,
+    Claim,
+    Finding,
+    Record,
+    Table,
+    claim,
+    evaluate,
+    registry,
+)
 
-# Registration order is paper order.
+# Registration order is paper order (kept out of the import sorting).
+# isort: off
 from . import section3  # noqa: E402,F401  Sec. II-III: Theorems 1-3, Remarks 1-2
 from . import pair_form  # noqa: E402,F401  Sec. III (pair): Theorems 4-5, Fig. 2, errata
 from . import assignment  # noqa: E402,F401  Sec. IV-A: Algorithm 1, Theorem 6
@@ -31,6 +45,7 @@ from . import teams  # noqa: E402,F401  Sec. V-D: Fig. 9, greedy teams
 from . import replay  # noqa: E402,F401  Sec. V-A/B: the published runs replayed
 from . import unchecked  # noqa: E402,F401  statements the paper does not check
 from . import criteria  # noqa: E402,F401  beyond the paper: the bound against classical criteria
+# isort: on
 
 __all__ = [
     "KINDS",
@@ -61,4 +76,7 @@ def as_json(records) -> list[dict]:
     """
     from dataclasses import asdict
 
+    records = as_sequence(records, "records")
+    for r in records:
+        as_instance(r, Record, "each of records")
     return [asdict(r) for r in records]

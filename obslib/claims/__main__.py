@@ -15,10 +15,11 @@ import argparse
 import json
 import sys
 
+from .._io import OutputPathError, as_output_path, write_output
+from .._validate import as_argv
+from ..profiles import profile_names
 from . import as_json, evaluate, registry
 from . import robustness as rb
-from .._io import OutputPathError, check_output_path, write_output
-from ..profiles import profile_names
 
 
 def parse_args(argv=None) -> argparse.Namespace:
@@ -39,7 +40,7 @@ def parse_args(argv=None) -> argparse.Namespace:
     ap.add_argument("--robustness", action="store_true",
                     help="vary u_max, noise, metric and sizes one at a time for the claims that "
                     "are partly or refuted and the tracking claims")
-    args = ap.parse_args(argv)
+    args = ap.parse_args(as_argv(argv))
     if args.profile is None:
         args.profile = "quick" if args.robustness else "paper"
     if args.ids:
@@ -49,7 +50,7 @@ def parse_args(argv=None) -> argparse.Namespace:
             ap.error(f"unknown claim id(s) {unknown}; known: {', '.join(known)}")
     if args.write is not None:
         try:
-            args.write = check_output_path(args.write)
+            args.write = as_output_path(args.write)
         except OutputPathError as exc:
             ap.error(f"--write {exc}")
         regular = args.write.is_file() or not args.write.exists()  # not /dev/stdout, a FIFO...

@@ -21,8 +21,10 @@ of the numbers behind the sentence.
 from __future__ import annotations
 
 import numbers
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
+
+from .._validate import as_names, as_str
 
 __all__ = [
     "KINDS",
@@ -170,7 +172,11 @@ def claim(*, id: str, where: str, statement: str, paper: str, notebook: str, tit
     :mod:`obslib.claims` are imported in section order). ``title`` defaults to ``statement``,
     ``label`` to ``"<id>-evidence"``.
     """
-    if kind not in KINDS:
+    for name, value in (("id", id), ("where", where), ("statement", statement),
+                        ("paper", paper), ("notebook", notebook), ("title", title),
+                        ("label", label), ("later", later)):
+        as_str(value, name)
+    if as_str(kind, "kind") not in KINDS:
         raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
 
     def register(check: Callable[[str], Finding]) -> Callable[[str], Finding]:
@@ -207,11 +213,11 @@ def evaluate(profile: str = "quick", ids=None) -> list[Record]:
     """
     from ..profiles import profile_names
 
-    if profile not in profile_names():
+    if as_str(profile, "profile") not in profile_names():
         raise ValueError(f"unknown profile {profile!r}; known: {profile_names()}")
     claims = registry()
     if ids is not None:
-        ids = list(ids)
+        ids = list(as_names(ids, "ids"))
         unknown = [i for i in ids if i not in claims]
         if unknown:
             raise ValueError(f"unknown claim id(s): {unknown}")

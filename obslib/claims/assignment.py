@@ -6,12 +6,12 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..studies import assignment as st
+from .._format import number, percent, setting
+from ..assignment import greedy_pair_assignment, optimal_pair_assignment
+from ..profiles import params
+from ..studies import assignment as sa
 from ..studies import greedy_tightness as gt
 from ..studies.unchecked import NOTEBOOK as UNCHECKED
-from ..assignment import greedy_pair_assignment, optimal_pair_assignment
-from .._format import number, percent, setting, small
-from ..profiles import params
 from ._ledger import Finding, Table, claim
 
 NB = "03_greedy_unique_pairs"
@@ -19,18 +19,22 @@ NB = "03_greedy_unique_pairs"
 
 @lru_cache(maxsize=4)
 def _study(n_instances, seed, t_min, t_max, extra_max, u_max):
-    return st.greedy_vs_optimal(n_instances, seed, (t_min, t_max), (0, extra_max), u_max)
+    return sa.greedy_vs_optimal(n_instances, seed, (t_min, t_max), (0, extra_max), u_max)
 
 
 @lru_cache(maxsize=4)
 def _search(n_sensors, n_targets, seed, n_starts, n_steps, u_max):
-    return st.worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
+    return sa.worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
 
 
 def _run(profile):
     p = params(NB, profile)
-    study = _study(p["n_instances"], p["seed"], p["targets_min"], p["targets_max"], p["extra_max"], p["u_max"])
-    worst = _search(p["search_sensors"], p["search_targets"], p["seed"], p["n_starts"], p["n_steps"], p["u_max"])
+    study = _study(
+        p["n_instances"], p["seed"], p["targets_min"], p["targets_max"], p["extra_max"], p["u_max"]
+    )
+    worst = _search(
+        p["search_sensors"], p["search_targets"], p["seed"], p["n_starts"], p["n_steps"], p["u_max"]
+    )
     return p, study, worst
 
 
@@ -52,7 +56,7 @@ LATER_THM6 = (r"The abstract of the later journal version {cite}`zhou2019sensor`
 )
 def _thm6(profile: str) -> Finding:
     p, study, (worst_ratio, _, _) = _run(profile)
-    W = st.tight_weights(1e-3)
+    W = sa.tight_weights(1e-3)
     tight = greedy_pair_assignment(W).value / optimal_pair_assignment(W).value
     ratios = study.ratio
     ok = ratios.min() >= 1 / 3 - 1e-12 and worst_ratio >= 1 / 3 - 1e-12
@@ -102,15 +106,24 @@ def _thm6_practice(profile: str) -> Finding:
         status,
         "On random instances the greedy is often optimal and collects more than three quarters "
         "of the optimum in 95% of them; only geometries built to be hard bring it near a third.",
-        {"quantile_05": q05, "median": float(np.median(r)),
-         "worst_search_ratio": float(worst_ratio)},
-        Table(f"Greedy over the exact optimum on {number(r.size)} random instances.",
-              ("quantity", "value"), [
-                  ("instances solved optimally by the greedy", percent(float(np.mean(r >= 1 - 1e-12)))),
-                  ("median of greedy / optimum", number(float(np.median(r)))),
-                  ("5% quantile of greedy / optimum", number(q05)),
-                  ("worst geometry of a local search", number(float(worst_ratio))),
-              ]),
+        {
+            "quantile_05": q05,
+            "median": float(np.median(r)),
+            "worst_search_ratio": float(worst_ratio),
+        },
+        Table(
+            f"Greedy over the exact optimum on {number(r.size)} random instances.",
+            ("quantity", "value"),
+            [
+                (
+                    "instances solved optimally by the greedy",
+                    percent(float(np.mean(r >= 1 - 1e-12))),
+                ),
+                ("median of greedy / optimum", number(float(np.median(r)))),
+                ("5% quantile of greedy / optimum", number(q05)),
+                ("worst geometry of a local search", number(float(worst_ratio))),
+            ],
+        ),
     )
 
 

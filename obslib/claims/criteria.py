@@ -9,9 +9,9 @@ better than assignments by information gain or at random? The evidence is comput
 
 from __future__ import annotations
 
+from .._format import count, fixed, listing, number, percent, setting, small
 from ..profiles import params
 from ..studies import criteria as cs
-from .._format import count, fixed, listing, number, percent, setting, small
 from ._ledger import Finding, Table, claim
 
 NB = cs.NOTEBOOK

@@ -6,10 +6,10 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..studies import greedy_vs_relaxed as st
-from ..studies.published import FIG8_PUBLISHED_L20
 from .._format import fixed, number
 from ..profiles import params
+from ..studies import greedy_vs_relaxed as gvr
+from ..studies.published import FIG8_PUBLISHED_L20
 from ._ledger import Finding, Table, claim
 
 NB = "07_greedy_vs_relaxed"
@@ -20,7 +20,7 @@ PUBLISHED_L20 = FIG8_PUBLISHED_L20
 
 @lru_cache(maxsize=4)
 def _sweep(L_max, trials, seed, u_max, side, optimum_max_L):
-    return st.fig8_sweep(range(1, L_max + 1), trials, seed, u_max, side, optimum_max_L)
+    return gvr.fig8_sweep(range(1, L_max + 1), trials, seed, u_max, side, optimum_max_L)
 
 
 @claim(
@@ -36,7 +36,7 @@ def _sweep(L_max, trials, seed, u_max, side, optimum_max_L):
 def _fig8(profile: str) -> Finding:
     p = params(NB, profile)
     r = _sweep(p["L_max"], p["trials"], p["seed"], p["u_max"], p["side"], p["optimum_max_L"])
-    summary = st.fig8_summary(r)
+    summary = gvr.fig8_summary(r)
     g, rel, ratio = summary.mean["greedy"], summary.mean["relaxed"], summary.ratio
     last = -1
     se = {k: r[k][last].std(ddof=1) / np.sqrt(r[k].shape[1]) for k in ("greedy", "relaxed")}

@@ -8,9 +8,9 @@ from dataclasses import asdict
 
 import numpy as np
 
-from ..profiles import params
-from ..studies import pair_form as pf
 from .._format import listing, number, setting, small, span
+from ..profiles import params
+from ..studies import pair_form as spf
 from ._ledger import Finding, Table, claim
 
 NB = "02_pair_closed_form"
@@ -22,8 +22,8 @@ TOL_EXACT_DIGITS = 10
 
 
 def _qs(p: dict) -> tuple:
-    """The values of u_max / d_io audited (:func:`obslib.pair_form.audit_ratios`)."""
-    return pf.audit_ratios(p["u_max"], p["d_io"], p["u_over_d_curves"])
+    """The values of u_max / d_io audited (:func:`obslib.studies.pair_form.audit_ratios`)."""
+    return spf.audit_ratios(p["u_max"], p["d_io"], p["u_over_d_curves"])
 
 
 def _exact(flag: bool) -> str:
@@ -51,7 +51,7 @@ def _bmatrix(rows) -> str:
 )
 def _thm4(profile: str) -> Finding:
     p = params(NB, profile)
-    a = pf.theorem4_audit(p["n_rational_points"], p["n_random_points"], p["seed"], p["digits"])
+    a = spf.theorem4_audit(p["n_rational_points"], p["n_random_points"], p["seed"], p["digits"])
     symbolic = (
         a.polar_matrix_printed_equal and a.eigenvalues_printed_equal and a.theorem4_ratio_equal
         and a.cartesian_discriminant_equal
@@ -96,7 +96,7 @@ def _thm4(profile: str) -> Finding:
 def _fig2_max(profile: str) -> Finding:
     p = params(NB, profile)
     q = p["u_max"] / p["d_io"]
-    grids = pf.fig2_grids(p["u_max"], p["d_io"], p["alpha_max"], p["paper_step"],
+    grids = spf.fig2_grids(p["u_max"], p["d_io"], p["alpha_max"], p["paper_step"],
                           p["fine_alpha_per_unit"], p["fine_theta_quarter"])
     a_p, t_p, mp = grids["paper"].alpha, grids["paper"].theta, grids["paper"].maximum
     a_f, t_f, mf = grids["fine"].alpha, grids["fine"].theta, grids["fine"].maximum
@@ -115,7 +115,7 @@ def _fig2_max(profile: str) -> Finding:
     return Finding(
         "reproduced" if ok else "refuted",
         r"On a grid that contains $\theta_{ji} = \pm\pi/2$ the maximum is "
-        rf"$1/\sqrt{{1 + u_{{\max}}^2/d_{{io}}^2}}$ at $\alpha = 1$, $\theta_{{ji}} = \pm\pi/2$, "
+        r"$1/\sqrt{1 + u_{\max}^2/d_{io}^2}$ at $\alpha = 1$, $\theta_{ji} = \pm\pi/2$, "
         r"as the paper says; the paper's own grid misses $\pm\pi/2$, so its plotted maximum sits "
         "at the nearest grid point, slightly lower.",
         {"fine_max": mf.value, "fine_at": mf.points, "paper_max": mp.value, "paper_at": mp.points,
@@ -145,8 +145,12 @@ def _fig2_max(profile: str) -> Finding:
 def _thm5(profile: str) -> Finding:
     p = params(NB, profile)
     qs = _qs(p)
-    a = pf.theorem5_audit(
-        qs, p["alpha_max"], p["fine_alpha_per_unit"], p["fine_theta_quarter"], p["n_rational_points"]
+    a = spf.theorem5_audit(
+        qs,
+        p["alpha_max"],
+        p["fine_alpha_per_unit"],
+        p["fine_theta_quarter"],
+        p["n_rational_points"],
     )
     only_peak = [
         {(round(al, 12), round(abs(th), 12)) for al, th in pts} == {(1.0, round(np.pi / 2, 12))}
@@ -190,7 +194,7 @@ def _thm5(profile: str) -> Finding:
 def _thm5_alpha(profile: str) -> Finding:
     p = params(NB, profile)
     qs = _qs(p)
-    a = pf.alpha_star_audit(qs, p["n_theta_curve"])
+    a = spf.alpha_star_audit(qs, p["n_theta_curve"])
     consistent = a.max_closed_vs_numeric < TOL_FLOAT and a.max_brute_force_gap < TOL_FLOAT
     moving_ok = a.min_distance_from_1 > 0
     stationary_is_1 = 0.0 in qs and a.alpha_star_at_q0 < TOL_FLOAT
@@ -249,7 +253,7 @@ WEYL_TEX = {
 )
 def _weyl(profile: str) -> Finding:
     p = params(NB, profile)
-    a = pf.weyl_audit(p["n_weyl"], p["seed"])
+    a = spf.weyl_audit(p["n_weyl"], p["seed"])
     sym_ok = all(a.symbolic_triangle_equal.values())
     num_ok = min(a.min_relative_slack.values()) >= -1e-14 and a.min_ratio_slack >= -1e-12
     ok = sym_ok and num_ok
@@ -289,7 +293,7 @@ def _weyl(profile: str) -> Finding:
 )
 def _weyl_range(profile: str) -> Finding:
     p = params(NB, profile)
-    a = pf.weyl_audit(p["n_weyl"], p["seed"])
+    a = spf.weyl_audit(p["n_weyl"], p["seed"])
     bad = a.invalid_indices
     dual = ("l1 <= l1+l2", "l1 <= l2+l1", "l2 <= l2+l2")
     holds_on_valid = min(a.min_relative_slack[k] for k in dual) >= -1e-14
@@ -318,7 +322,7 @@ def _weyl_range(profile: str) -> Finding:
     notebook=NB,
 )
 def _matrix(profile: str) -> Finding:
-    a = pf.printed_matrix_audit()
+    a = spf.printed_matrix_audit()
     status = "refuted" if a.wrong_entries else "reproduced"
     true_eig = np.linalg.eigvalsh(np.array(a.true_at_witness, dtype=float))
     w = a.witness
@@ -355,7 +359,7 @@ def _matrix(profile: str) -> Finding:
 )
 def _dtheta(profile: str) -> Finding:
     p = params(NB, profile)
-    a = pf.theta_derivative_audit(p["n_rational_points"], p["seed"])
+    a = spf.theta_derivative_audit(p["n_rational_points"], p["seed"])
     kink = a.slope_at_zero_min > 0 and a.slope_at_zero_error < 1e-20
     corner = a.corner_halfpi_slopes[0] > 0 > a.corner_halfpi_slopes[1]
     square_ok = a.square_second_derivative_zero > 0 > a.square_second_derivative_halfpi
@@ -406,7 +410,7 @@ def _dtheta(profile: str) -> Finding:
 )
 def _dalpha_halfpi(profile: str) -> Finding:
     p = params(NB, profile)
-    a = pf.alpha_derivative_audit(p["n_rational_points"], p["seed"])
+    a = spf.alpha_derivative_audit(p["n_rational_points"], p["seed"])
     below, left, right = a.halfpi_true_slopes
     never_zero = below > 0 and left > 0 > right
     wrong = (
@@ -449,7 +453,7 @@ def _dalpha_halfpi(profile: str) -> Finding:
 )
 def _dalpha(profile: str) -> Finding:
     p = params(NB, profile)
-    a = pf.alpha_derivative_audit(p["n_rational_points"], p["seed"])
+    a = spf.alpha_derivative_audit(p["n_rational_points"], p["seed"])
     lo, hi = a.printed_ratio_spread
     not_constant = hi / lo > 1 + 1e-6
     nonzero_at_0 = a.slope_at_alpha0_min > 0 and a.slope_at_alpha0 < 1e-12

@@ -5,12 +5,11 @@ Registered after the tracking claims of Sections V-A and V-B, which it sharpens.
 
 from __future__ import annotations
 
+from .._format import count, small
+from ..profiles import params
 from ..studies import replay as rp
 from ..studies.unchecked import NOTEBOOK
-from .._format import count, fixed, number, percent, small
-from ..profiles import params
 from ._ledger import Finding, Table, claim
-from .tracking import FIGURE_TOLERANCE
 
 #: The log is printed to 12 significant digits and its numbers are at most about 10.
 REPLAY_TOLERANCE = rp.LOG_TOLERANCE

@@ -27,9 +27,9 @@ from __future__ import annotations
 import copy
 import json
 from contextlib import contextmanager
-from pathlib import Path
 
 from .._io import write_output
+from .._validate import as_mapping, as_names, as_path, as_sequence, as_str
 from ..profiles import PROFILES, params, profile_names
 from ._ledger import evaluate, registry
 
@@ -74,6 +74,24 @@ def _profile_with(base: str, notebook: str, key: str, value):
         del PROFILES[_TMP]
 
 
+def _base_iv(base) -> str:
+    """A profile to start from (a name of :func:`obslib.profiles.profile_names`)."""
+    if as_str(base, "base") not in profile_names() or base == _TMP:
+        raise ValueError(f"base: unknown profile {base!r}; known: {profile_names()}")
+    return base
+
+
+def _rows_iv(rows) -> list:
+    """Rows of :func:`verdict_robustness`: dicts with ``id``, ``base`` and ``variants``."""
+    rows = as_sequence(rows, "rows")
+    for r in rows:
+        if not (isinstance(r, dict) and isinstance(r.get("id"), str)
+                and isinstance(r.get("base"), str) and isinstance(r.get("variants"), dict)):
+            raise ValueError(f"rows must be rows of verdict_robustness (dicts with id, base and "
+                             f"variants), got {r!r}")
+    return rows
+
+
 def default_ids(base: str = "quick") -> list[str]:
     """Claims of the paper whose verdict is partly or refuted at ``base``, and every tracking
     claim of the paper.
@@ -88,7 +106,7 @@ def default_ids(base: str = "quick") -> list[str]:
     >>> "thm5-alpha-not-1" in ids, len(ids) == len(set(ids))
     (True, True)
     """
-    return [r.id for r in evaluate(base) if r.kind == "paper"
+    return [r.id for r in evaluate(_base_iv(base)) if r.kind == "paper"
             and (r.status in ("partly", "refuted") or r.notebook in TRACKING_NOTEBOOKS)]
 
 
@@ -146,13 +164,12 @@ def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[d
     >>> row["id"], len(row["variants"]["u_max"]) == len(DIMENSIONS["u_max"])
     ('thm5-alpha-not-1', True)
     """
-    if base not in profile_names() or base == _TMP:
-        raise ValueError(f"unknown profile {base!r}; known: {profile_names()}")
-    dims = list(DIMENSIONS) if dimensions is None else list(dimensions)
+    base = _base_iv(base)
+    dims = list(DIMENSIONS) if dimensions is None else list(as_names(dimensions, "dimensions"))
     unknown = [d for d in dims if d not in DIMENSIONS]
     if unknown:
-        raise ValueError(f"unknown dimension(s) {unknown}; known: {list(DIMENSIONS)}")
-    ids = default_ids(base) if ids is None else list(ids)
+        raise ValueError(f"dimensions: unknown {unknown}; known: {list(DIMENSIONS)}")
+    ids = default_ids(base) if ids is None else list(as_names(ids, "ids"))
     reg = registry()
     missing = [i for i in ids if i not in reg]
     if missing:
@@ -236,6 +253,9 @@ def describe(row: dict, status: str | None = None) -> tuple[str, list[str]]:
     >>> describe(row, "refuted")[0]
     'refuted (partly at the smaller sizes)'
     """
+    (row,) = _rows_iv([row])
+    if status is not None:
+        as_str(status, "status")
     shown = status or row["base"]
     verdict = shown if shown == row["base"] else f"{shown} ({row['base']} at the smaller sizes)"
     cells = [_cell(row["base"], row["variants"].get(d), d in row.get("fixed", ()))
@@ -255,6 +275,8 @@ def robustness_table(rows, statuses=None) -> str:
     claim  verdict  u_max x0.25-4  noise x0.25-4  metric  size x0.5, x2
     c1     partly   refuted at ×2  n/a            n/a     n/a
     """
+    rows = _rows_iv(rows)
+    statuses = {} if statuses is None else as_mapping(statuses, "statuses")
     table = [["claim", "verdict"] + [PLAIN_HEADERS[d] for d in DIMENSIONS]]
     for r in rows:
         verdict, cells = describe(r, (statuses or {}).get(r["id"]))
@@ -274,15 +296,22 @@ def to_json(rows, base: str = "quick") -> str:
     >>> data["base"], data["rows"], set(data["dimensions"]) == set(DIMENSIONS)
     ('quick', [{'claim': 'x', 'holds': True}], True)
     """
-    data = {"base": base, "dimensions": {k: list(v) for k, v in DIMENSIONS.items()},
+    rows = as_sequence(rows, "rows")
+    if not all(isinstance(r, dict) for r in rows):
+        raise ValueError("rows must be a list of dicts")
+    data = {"base": _base_iv(base), "dimensions": {k: list(v) for k, v in DIMENSIONS.items()},
             "rows": rows}
-    return json.dumps(data, indent=1) + "\n"
+    try:
+        return json.dumps(data, indent=1) + "\n"
+    except (TypeError, ValueError):
+        raise ValueError("rows must hold JSON values (numbers, text, lists, dicts)") from None
 
 
 def write_json(rows, path, base: str = "quick") -> bool:
     """Store :func:`to_json` at ``path`` (:func:`obslib._io.write_output`: atomic, and untouched
     when it already holds the same data); returns whether anything was written."""
-    return write_output(path, to_json(rows, base))
+    text = to_json(rows, base)
+    return write_output(as_path(path, "path"), text)
 
 
 def read_json(path) -> dict:
@@ -291,6 +320,7 @@ def read_json(path) -> dict:
     Examples
     --------
     >>> import tempfile
+    >>> from pathlib import Path
     >>> path = Path(tempfile.mkdtemp()) / "robustness.json"
     >>> write_json([{"claim": "x"}], path, base="paper")
     True
@@ -303,11 +333,11 @@ def read_json(path) -> dict:
     ...
     ValueError: ...: not a robustness data file (keys base, dimensions, rows)
     """
-    path = Path(path)
+    path = as_path(path, "path")
     try:
         data = json.loads(path.read_text())
     except (OSError, ValueError) as exc:
-        raise ValueError(f"{path}: not a robustness data file ({exc})") from None
+        raise ValueError(f"path {path}: not a robustness data file ({exc})") from None
     if not isinstance(data, dict) or not {"base", "dimensions", "rows"} <= set(data):
-        raise ValueError(f"{path}: not a robustness data file (keys base, dimensions, rows)")
+        raise ValueError(f"path {path}: not a robustness data file (keys base, dimensions, rows)")
     return data

@@ -5,9 +5,9 @@ from __future__ import annotations
 from dataclasses import asdict
 from functools import lru_cache
 
-from ..studies import section3 as bc
 from .._format import count, number, small, span
 from ..profiles import params
+from ..studies import section3 as bc
 from ._ledger import Finding, Table, claim
 
 NB = "01_model_and_bound"
@@ -23,7 +23,8 @@ _remark1_audit = lru_cache(maxsize=4)(bc.remark1_audit)
     title=r"Theorem 1's lower bound on $C^{-1}(O(o,u_o))$ holds for every "
     r"$\lVert u_o\rVert \le u_{\max}$.",
     statement=r"For $N \ge 2$ sensors and every control with $\lVert u_o\rVert \le u_{\max}$, "
-    r"$C^{-1}(O(o,u_o)) \ge \dfrac{\sigma_{\min}(O(o))}{\sqrt{\sigma_{\max}^2(O(o)) + u_{\max}^2}}$.",
+    r"$C^{-1}(O(o,u_o)) \ge "
+    r"\dfrac{\sigma_{\min}(O(o))}{\sqrt{\sigma_{\max}^2(O(o)) + u_{\max}^2}}$.",
     paper="Holds (proof by the Weyl and dual Weyl inequalities).",
     notebook=NB,
 )

@@ -10,10 +10,10 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from ..studies import submodularity as sm
-from ..studies.published import THEOREM7_PRINTED_WITNESS
 from .._format import count, fixed, number, setting
 from ..profiles import params
+from ..studies import submodularity as sm
+from ..studies.published import THEOREM7_PRINTED_WITNESS
 from ._ledger import Finding, Table, claim
 
 NB = "04_submodularity"
@@ -137,13 +137,18 @@ def _thm7_case2(profile: str) -> Finding:
         verdict = (f"with the true value the gain of $s_3$ at the smaller set is the larger one "
                    f"({fixed(gA, 4)} against {fixed(gB, 4)}), so the printed comparison is no "
                    "counter-example")
-    text = ("; ".join(parts) + ", and " if parts else "The printed values are right, and ") + verdict
+    text = (
+        "; ".join(parts) + ", and " if parts else "The printed values are right, and "
+    ) + verdict
     text = text[0].upper() + text[1:] + "."
     if w is not None:
-        text += (f" The same geometry does hold a counter-example: {_submodular_text(w.as_dict())}.")
+        text += f" The same geometry does hold a counter-example: {_submodular_text(w.as_dict())}."
     else:
-        text += f" The geometry holds no counter-example among sets of at least {p['min_size']} sensors."
-    extra = [] if w is None else [w.A, tuple(sorted(w.A + (w.x,))), w.B, tuple(sorted(w.B + (w.x,)))]
+        text += (" The geometry holds no counter-example among sets of at least "
+                 f"{p['min_size']} sensors.")
+    extra = (
+        [] if w is None else [w.A, tuple(sorted(w.A + (w.x,))), w.B, tuple(sorted(w.B + (w.x,)))]
+    )
     return Finding(ca.verdict, text, _case_evidence(ca),
                    _values_table(ca, extra, "The bound of the sets of Case 2, recomputed by SVD, "
                                  "and the printed values."))

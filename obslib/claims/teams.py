@@ -6,9 +6,9 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..studies import teams as ts
 from .._format import fixed, number, percent, setting, span
 from ..profiles import params
+from ..studies import teams as ts
 from ._ledger import Finding, Table, claim
 
 NB = "08_general_assignment"

@@ -15,13 +15,13 @@ from functools import lru_cache
 import numpy as np
 
 from .. import tracking as tr
+from .._format import fixed, listing, number, percent, setting
 from ..profiles import params
 from ..published_runs import published_run
 from ..studies import replay as rp
 from ..studies import tracking as study
 from ..studies.published import PUBLISHED_ADVERSARIAL, PUBLISHED_CIRCLE
 from ..studies.unchecked import NOTEBOOK as UNCHECKED
-from .._format import fixed, listing, number, percent, setting
 from ._ledger import Finding, Table, claim
 
 NB5 = "05_two_sensors_tracking"
@@ -230,12 +230,14 @@ def _fig6_best_pair(profile: str) -> Finding:
         (r"mean $\operatorname{tr}\Sigma$", fixed(st["best-pair"]["mean_trace"], 4),
          fixed(st["best-partner"]["mean_trace"], 4), fixed(st["fixed-pair"]["mean_trace"], 4)),
     ]
-    what = {"run_error": "runs where (1) has the lower mean error",
-            "run_trace": r"runs where (1) has the lower mean $\operatorname{tr}\Sigma$",
-            "error_stepmean": "steps where (1)'s mean error over the seeds is lower",
-            "trace_stepmean": r"steps where (1)'s mean $\operatorname{tr}\Sigma$ is lower",
-            "error_pointwise": "steps of single runs where (1)'s error is lower",
-            "trace_pointwise": r"steps of single runs where (1)'s $\operatorname{tr}\Sigma$ is lower"}
+    what = {
+        "run_error": "runs where (1) has the lower mean error",
+        "run_trace": r"runs where (1) has the lower mean $\operatorname{tr}\Sigma$",
+        "error_stepmean": "steps where (1)'s mean error over the seeds is lower",
+        "trace_stepmean": r"steps where (1)'s mean $\operatorname{tr}\Sigma$ is lower",
+        "error_pointwise": "steps of single runs where (1)'s error is lower",
+        "trace_pointwise": r"steps of single runs where (1)'s $\operatorname{tr}\Sigma$ is lower",
+    }
     rows += [(text, "", percent(w["best-partner"][k]), percent(w["fixed-pair"][k]))
              for k, text in what.items()]
     ev = {
@@ -322,8 +324,14 @@ def _fig6_correlation(profile: str) -> Finding:
                if n else "in none of them."))
     rows = [(STRATEGY_NAMES[s].capitalize(), number(d["error"]), number(d["trace"]),
              "yes" if holds[s] else "no") for s, d in corr["own"].items()]
-    rows.append(("the three pooled (per-step means over the seeds)", number(corr["pooled"]["error"]),
-                 number(corr["pooled"]["trace"]), ""))
+    rows.append(
+        (
+            "the three pooled (per-step means over the seeds)",
+            number(corr["pooled"]["error"]),
+            number(corr["pooled"]["trace"]),
+            "",
+        )
+    )
     ev = {"median_own": med, "median_euclidean": med_e, "pooled": pool, "holds": holds}
     return Finding(status, ours, ev, Table(
         f"Spearman correlation over time of the bound with the error and with "
@@ -355,7 +363,7 @@ def _fig5_k50(profile: str) -> Finding:
     spans = [list(ab) for ab in study.hot_windows(rate, K50_WINDOW, mw)]
     hot = listing([f"{a}" if a == b else f"{a} to {b}" for a, b in spans]) if spans else ""
     status = "reproduced" if ok_mc and ok_one else ("partly" if ok_mc or ok_one else "refuted")
-    ours = (f"Around $k = 50$ strategy (1) changes pair at "
+    ours = ("Around $k = 50$ strategy (1) changes pair at "
             + ("more than half of the transitions, more often than in the rest of the run"
                if status == "reproduced" else "fewer transitions than the paper suggests")
             + (f"; but windows of the same width starting at $k$ = {hot} switch at least as "

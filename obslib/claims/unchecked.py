@@ -11,16 +11,19 @@ from functools import lru_cache
 
 import numpy as np
 
+from .._format import count, fixed, number, percent, setting, small, span
 from ..assignment import relaxed_pair_assignment
 from ..profiles import params
-from ..studies import eq4, experiment_details as ed, fig9_measure as fm, hardness as hd
-from ..studies import greedy_vs_relaxed as ast
+from ..studies import eq4
+from ..studies import experiment_details as ed
+from ..studies import fig9_measure as fm
+from ..studies import greedy_vs_relaxed as gvr
+from ..studies import hardness as hd
 from ..studies import replay as rp
 from ..studies import teams as ts
 from ..studies import unchecked as uc
 from ..studies.published import CODE_REPOSITORY, CODE_URL_PRINTED
 from ..studies.unchecked import NOTEBOOK
-from .._format import count, fixed, listing, number, percent, setting, small, span
 from ._ledger import Finding, Table, claim
 
 
@@ -236,7 +239,7 @@ def _np_complete(profile: str) -> Finding:
 
 @lru_cache(maxsize=4)
 def _fig8(L_values: tuple, trials: int, seed: int, u_max: float):
-    return ast.fig8_sweep(list(L_values), trials, seed, u_max)
+    return gvr.fig8_sweep(list(L_values), trials, seed, u_max)
 
 
 def ordered_gap_example():

@@ -19,8 +19,18 @@ from itertools import combinations
 import numpy as np
 
 from .._kernels import normalise, pair_kernel
+from .._validate import (
+    as_float_array,
+    as_int,
+    as_int_range,
+    as_nonnegative,
+    as_positive,
+    as_triples,
+    as_u_max,
+    check_distinct,
+    check_not_on_targets,
+)
 from ..assignment import greedy_pairs_batch
-from .._validate import as_u_max, check_distinct, check_not_on_targets
 
 __all__ = [
     "pair_assignments",
@@ -38,7 +48,6 @@ __all__ = [
 MAX_ASSIGNMENTS = 200_000
 
 
-@lru_cache(maxsize=32)
 def pair_assignments(n: int, n_targets: int) -> tuple[np.ndarray, np.ndarray]:
     """All ways to give each of ``L`` targets its own pair out of ``N`` sensors, no sensor twice.
 
@@ -60,6 +69,11 @@ def pair_assignments(n: int, n_targets: int) -> tuple[np.ndarray, np.ndarray]:
     [(1, 3), (0, 2)]
     [(2, 3), (0, 1)]
     """
+    return _pair_assignments(as_int(n, "n", 0), as_int(n_targets, "n_targets", 0))
+
+
+@lru_cache(maxsize=32)
+def _pair_assignments(n, n_targets):
     if n < 2 * n_targets or n_targets < 1:
         raise ValueError(f"need L >= 1 and N >= 2L, got N = {n}, L = {n_targets}")
     out = []
@@ -69,7 +83,9 @@ def pair_assignments(n: int, n_targets: int) -> tuple[np.ndarray, np.ndarray]:
         if l == n_targets:
             out.append(tuple(chosen))
             if len(out) > MAX_ASSIGNMENTS:
-                raise ValueError(f"more than {MAX_ASSIGNMENTS} assignments for N = {n}, L = {n_targets}")
+                raise ValueError(
+                    f"more than {MAX_ASSIGNMENTS} assignments for N = {n}, L = {n_targets}"
+                )
             return
         for p in pairs:
             if p[0] not in used and p[1] not in used:
@@ -80,12 +96,13 @@ def pair_assignments(n: int, n_targets: int) -> tuple[np.ndarray, np.ndarray]:
     return arr[:, :, 0], arr[:, :, 1]
 
 
-#: Largest ``N`` :func:`optimal_values` accepts (its tables have up to ``2^N`` entries per instance).
+#: Largest ``N`` :func:`optimal_values` accepts (its tables have up to ``2^N`` entries per
+#: instance).
 MAX_DP_SENSORS = 16
 
 
 def _as_batch(W) -> np.ndarray:
-    W = np.asarray(W, dtype=float)
+    W = as_float_array(W, "W")
     if W.ndim != 4 or W.shape[1] != W.shape[2]:
         raise ValueError(f"W must be a batch of weight arrays of shape (K, N, N, L), got {W.shape}")
     k, n, _, n_targets = W.shape
@@ -118,7 +135,9 @@ def optimal_values(W) -> np.ndarray:
     W = _as_batch(W)
     k, n, _, n_targets = W.shape
     if n > MAX_DP_SENSORS:
-        raise ValueError(f"N = {n} sensors is too many for the exact optimum (at most {MAX_DP_SENSORS})")
+        raise ValueError(
+            f"N = {n} sensors is too many for the exact optimum (at most {MAX_DP_SENSORS})"
+        )
     ii, jj = np.triu_indices(n, 1)
     pair_mask = (np.int64(1) << ii) | (np.int64(1) << jj)
     states = np.zeros(1, dtype=np.int64)  # sensor sets reachable after the targets so far
@@ -144,7 +163,8 @@ def greedy_values(W) -> np.ndarray:
 
     Examples
     --------
-    On :func:`tight_weights` the greedy takes the heavy pair and is stuck with :math:`1 + \\varepsilon`:
+    On :func:`tight_weights` the greedy takes the heavy pair and is stuck with
+    :math:`1 + \\varepsilon`:
 
     >>> greedy_values(tight_weights(eps=1e-3)[None])
     array([1.001])
@@ -173,10 +193,12 @@ def batch_pair_bounds(sensors, targets, u_max) -> tuple[np.ndarray, np.ndarray]:
     >>> W.shape, valid, bool(np.array_equal(W[0], ob.pair_bounds(S[0], T[0], 1.0)))
     ((1, 4, 4, 2), array([ True]), True)
     """
-    S = np.asarray(sensors, dtype=float)
-    T = np.asarray(targets, dtype=float)
+    S = as_float_array(sensors, "sensors")
+    T = as_float_array(targets, "targets")
     if S.ndim != 3 or T.ndim != 3 or S.shape[2] != 2 or T.shape[2] != 2 or S.shape[0] != T.shape[0]:
-        raise ValueError(f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}")
+        raise ValueError(
+            f"need sensors (K, N, 2) and targets (K, L, 2), got {S.shape} and {T.shape}"
+        )
     if not (np.isfinite(S).all() and np.isfinite(T).all()):
         raise ValueError("sensor and target positions must be finite")
     u = float(as_u_max(u_max))
@@ -191,7 +213,13 @@ def batch_pair_bounds(sensors, targets, u_max) -> tuple[np.ndarray, np.ndarray]:
         v = v.reshape(n, k, n_targets, 2).transpose(1, 0, 2, 3)  # (K, N, L, 2)
         u2 = u2.reshape(k, n_targets)
         x, y = v[..., 0], v[..., 1]  # (K, N, L)
-        W = pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
+        W = pair_kernel(
+            x[:, :, None, :],
+            y[:, :, None, :],
+            x[:, None, :, :],
+            y[:, None, :, :],
+            u2[:, None, None, :],
+        )
     return W, valid
 
 
@@ -240,9 +268,9 @@ def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2),
     r"""Algorithm 1 against the exact optimum on random instances of the Fig. 8 kind.
 
     Each instance draws ``L`` uniformly from ``targets`` and :math:`N = 2L + e` with :math:`e` from
-    ``extra`` (both inclusive), positions uniform in :math:`[0, \mathrm{side}]^2`, weights the pair bounds
-    with ``u_max`` (Euclidean). Instances are drawn one after the other from one generator, then
-    solved in batches per ``(N, L)`` (:func:`greedy_values`, :func:`optimal_values`).
+    ``extra`` (both inclusive), positions uniform in :math:`[0, \mathrm{side}]^2`, weights the pair
+    bounds with ``u_max`` (Euclidean). Instances are drawn one after the other from one generator,
+    then solved in batches per ``(N, L)`` (:func:`greedy_values`, :func:`optimal_values`).
 
     Examples
     --------
@@ -250,6 +278,9 @@ def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2),
     >>> study.ratio.shape, bool(study.ratio.min() >= 1 / 3)
     ((20,), True)
     """
+    n_instances, seed = as_int(n_instances, "n_instances", 1), as_int(seed, "seed", 0)
+    targets, extra = as_int_range(targets, "targets", 1), as_int_range(extra, "extra", 0)
+    u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
     rng = np.random.default_rng(seed)
     sizes, geoms = [], []
     for _ in range(n_instances):
@@ -261,7 +292,9 @@ def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2),
     greedy, optimum = np.zeros(n_instances), np.zeros(n_instances)
     for n, L in sorted(set(sizes)):
         idx = np.flatnonzero((sizes_arr[:, 0] == n) & (sizes_arr[:, 1] == L))
-        W, _ = batch_pair_bounds(np.stack([geoms[i][0] for i in idx]), np.stack([geoms[i][1] for i in idx]), u_max)
+        W, _ = batch_pair_bounds(
+            np.stack([geoms[i][0] for i in idx]), np.stack([geoms[i][1] for i in idx]), u_max
+        )
         greedy[idx] = greedy_values(W)
         optimum[idx] = optimal_values(W)
     return GreedyStudy(sizes_arr[:, 0], sizes_arr[:, 1], greedy, optimum)
@@ -288,9 +321,10 @@ def worst_instance_search(n_sensors: int, n_targets: int, seed: int, n_starts: i
     >>> 1 / 3 <= ratio <= 1, sensors.shape, targets.shape
     (True, (4, 2), (2, 2))
     """
-    if n_starts < 1 or n_steps < 0:
-        raise ValueError(f"need n_starts >= 1 and n_steps >= 0, got {n_starts} and {n_steps}")
-    rng = np.random.default_rng(seed)
+    n_sensors, n_targets = as_int(n_sensors, "n_sensors", 2), as_int(n_targets, "n_targets", 1)
+    n_starts, n_steps = as_int(n_starts, "n_starts", 1), as_int(n_steps, "n_steps", 0)
+    u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
+    rng = np.random.default_rng(as_int(seed, "seed", 0))
     m = n_sensors + n_targets
     P = np.empty((n_starts, m, 2))  # sensors then targets, per start
     moved = np.empty((n_starts, n_steps), dtype=np.int64)
@@ -340,8 +374,9 @@ def charging(W, greedy_triples, optimal_triples) -> list[dict]:
     >>> [(r["pick"], len(r["charged"])) for r in rounds]
     [((0, 1, 0), 3), ((2, 3, 1), 0), ((4, 5, 2), 0)]
     """
-    W = np.asarray(W, dtype=float)
-    left = list(optimal_triples)
+    W = as_float_array(W, "W")
+    greedy_triples = as_triples(greedy_triples, W, "greedy_triples")
+    left = as_triples(optimal_triples, W, "optimal_triples")
     rounds = []
     for i, j, l in greedy_triples:
         hit = [t for t in left if {t[0], t[1]} & {i, j} or t[2] == l]
@@ -353,7 +388,9 @@ def charging(W, greedy_triples, optimal_triples) -> list[dict]:
             "charged_w": [float(W[t]) for t in hit],
         })
     if left:
-        raise ValueError(f"optimal triples never charged: {left} (greedy did not assign every target?)")
+        raise ValueError(
+            f"optimal triples never charged: {left} (greedy did not assign every target?)"
+        )
     return rounds
 
 
@@ -361,9 +398,9 @@ def tight_weights(eps: float = 1e-3) -> np.ndarray:
     r"""Weights (not from geometry) on which Algorithm 1 gets :math:`(1 + \varepsilon) / 3` of the
     optimum.
 
-    Six sensors and three targets: the triple ``(0, 1, t0)`` weighs :math:`1 + \varepsilon` and blocks the
-    optimal ``(0, 2, t1)``, ``(1, 3, t2)``, ``(4, 5, t0)`` of weight 1 each; every other weight
-    is 0. Theorem 6 holds for any :math:`\omega`, and this shows its 1/3 cannot be improved.
+    Six sensors and three targets: the triple ``(0, 1, t0)`` weighs :math:`1 + \varepsilon` and
+    blocks the optimal ``(0, 2, t1)``, ``(1, 3, t2)``, ``(4, 5, t0)`` of weight 1 each; every other
+    weight is 0. Theorem 6 holds for any :math:`\omega`, and this shows its 1/3 cannot be improved.
 
     Examples
     --------
@@ -371,7 +408,13 @@ def tight_weights(eps: float = 1e-3) -> np.ndarray:
     >>> round(float(greedy_values(W[None])[0] / optimal_values(W[None])[0]), 6)
     0.333667
     """
+    eps = as_nonnegative(eps, "eps")
     W = np.zeros((6, 6, 3))
-    for (i, j, l), w in {(0, 1, 0): 1 + eps, (0, 2, 1): 1.0, (1, 3, 2): 1.0, (4, 5, 0): 1.0}.items():
+    for (i, j, l), w in {
+        (0, 1, 0): 1 + eps,
+        (0, 2, 1): 1.0,
+        (1, 3, 2): 1.0,
+        (4, 5, 0): 1.0,
+    }.items():
         W[i, j, l] = W[j, i, l] = w
     return W

@@ -25,10 +25,11 @@ Target ``l`` moves by a control drawn uniformly from the disc of radius ``u_max`
 bounded unknown control): :math:`o_{k+1} = o_k + u_k`. Each filter predicts with the random walk
 :math:`\\hat x^- = \\hat x`, :math:`\\Sigma^- = \\Sigma + Q`, :math:`Q = (u_{max}^2 / 4) I`
 (the covariance of the uniform disc), and updates with the half squared ranges
-:math:`z_i = \\tfrac12 \\|p_i - o\\|^2 + n_i` (Section II; :func:`obslib.tracking.half_squared_range`)
-of its two sensors, :math:`n_i \\sim N(0, \\sigma^2)`, ``R = sigma^2 I``: the batched EKF of
-:mod:`obslib.tracking.kalman` (filterpy's equations, Joseph form), which stops with a
-``ValueError`` naming the target, step and seed where the innovation covariance is singular.
+:math:`z_i = \\tfrac12 \\|p_i - o\\|^2 + n_i` (Section II;
+:func:`obslib.tracking.half_squared_range`) of its two sensors, :math:`n_i \\sim N(0, \\sigma^2)`,
+``R = sigma^2 I``: the batched EKF of :mod:`obslib.tracking.kalman` (filterpy's equations, Joseph
+form), which stops with a ``ValueError`` naming the target, step and seed where the innovation
+covariance is singular.
 
 Order within step ``k``, as in :mod:`obslib.tracking`: (1) assign from the current estimates and
 covariances; (2) log each target's error :math:`\\|\\hat x - o\\|` and :math:`\\operatorname{tr}
@@ -49,6 +50,16 @@ import numpy as np
 
 from .. import tracking as tr
 from .._kernels import pair_kernel
+from .._validate import (
+    as_choice,
+    as_float_array,
+    as_instance,
+    as_int,
+    as_names,
+    as_positive,
+    as_sequence,
+    as_str,
+)
 from ..assignment import greedy_pairs_batch
 from ..tracking import kalman
 
@@ -58,10 +69,6 @@ __all__ = [
     "Scenario",
     "AssignmentRuns",
     "scenario",
-    "bound_weights",
-    "info_gain_weights",
-    "batch_greedy",
-    "random_assignments",
     "run",
     "run_all",
 ]
@@ -69,24 +76,6 @@ __all__ = [
 #: The assignment rules, in the order the studies report them.
 RULES = ("bound", "d-optimal", "random")
 METRICS = ("mahalanobis", "euclidean")
-
-
-def _positive(v, name, *, allow_zero=False):
-    try:
-        x = float(v)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a number, got {v!r}") from None
-    if not np.isfinite(x) or x < 0 or (x == 0 and not allow_zero):
-        raise ValueError(f"{name} must be {'non-negative' if allow_zero else 'positive'} and finite, got {v!r}")
-    return x
-
-
-def _count(v, name, minimum):
-    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
-        raise ValueError(f"{name} must be an integer, got {v!r}")
-    if v < minimum:
-        raise ValueError(f"{name} must be at least {minimum}, got {v}")
-    return int(v)
 
 
 @dataclass(frozen=True)
@@ -125,18 +114,18 @@ class AssignmentTrackingSetup:
 
     def __post_init__(self):
         put = lambda k, v: object.__setattr__(self, k, v)  # noqa: E731
-        L = _count(self.n_targets, "n_targets", 1)
+        L = as_int(self.n_targets, "n_targets", 1)
         put("n_targets", L)
-        n = 2 * L if self.n_sensors is None else _count(self.n_sensors, "n_sensors", 2)
+        n = 2 * L if self.n_sensors is None else as_int(self.n_sensors, "n_sensors", 2)
         if n < 2 * L:
             raise ValueError(f"n_sensors must be at least 2 n_targets = {2 * L}, got {n}")
         put("n_sensors", n)
-        put("steps", _count(self.steps, "steps", 1))
-        put("side", _positive(self.side, "side"))
-        put("u_max", _positive(self.u_max, "u_max"))
-        put("noise_std", _positive(self.noise_std, "noise_std"))
-        put("p0", _positive(self.p0, "p0"))
-        if self.metric not in METRICS:
+        put("steps", as_int(self.steps, "steps", 1))
+        put("side", as_positive(self.side, "side"))
+        put("u_max", as_positive(self.u_max, "u_max"))
+        put("noise_std", as_positive(self.noise_std, "noise_std"))
+        put("p0", as_positive(self.p0, "p0"))
+        if as_str(self.metric, "metric") not in METRICS:
             raise ValueError(f"metric must be one of {METRICS}, got {self.metric!r}")
 
     @property
@@ -149,7 +138,7 @@ class AssignmentTrackingSetup:
         """Measurement-noise variance, ``noise_std^2``."""
         return self.noise_std**2
 
-    def replace(self, **changes) -> "AssignmentTrackingSetup":
+    def replace(self, **changes) -> AssignmentTrackingSetup:
         """A validated copy with some fields changed."""
         return replace(self, **changes)
 
@@ -175,15 +164,19 @@ class Scenario:
     @property
     def truth(self) -> np.ndarray:
         """True positions ``o_k``, ``k = 1..steps + 1``, shape (B, steps + 1, L, 2)."""
-        return np.concatenate([self.start[:, None], self.start[:, None] + np.cumsum(self.controls, axis=1)], axis=1)
+        return np.concatenate(
+            [self.start[:, None], self.start[:, None] + np.cumsum(self.controls, axis=1)], axis=1
+        )
 
 
 def _seeds(seeds) -> tuple:
-    out = tuple(int(s) for s in np.atleast_1d(np.asarray(seeds)))
+    if isinstance(seeds, range):
+        seeds = list(seeds)
+    if isinstance(seeds, (int, np.integer)) and not isinstance(seeds, bool):
+        seeds = [seeds]
+    out = tuple(as_int(s, "seeds", 0) for s in as_sequence(seeds, "seeds"))
     if not out:
         raise ValueError("seeds must name at least one seed")
-    if any(s < 0 for s in out):
-        raise ValueError(f"seeds must be non-negative, got {out}")
     return out
 
 
@@ -204,8 +197,7 @@ def scenario(setup: AssignmentTrackingSetup, seeds) -> Scenario:
     >>> bool((np.sort(sc.perm, axis=-1) == np.arange(4)).all())
     True
     """
-    if not isinstance(setup, AssignmentTrackingSetup):
-        raise ValueError(f"setup must be an AssignmentTrackingSetup, got {type(setup).__name__}")
+    as_instance(setup, AssignmentTrackingSetup, "setup")
     seeds = _seeds(seeds)
     L, n, T = setup.n_targets, setup.n_sensors, setup.steps
     parts = {k: [] for k in ("sensors", "start", "estimate0", "controls", "noise", "perm")}
@@ -252,11 +244,13 @@ def bound_weights(sensors, xhat, cov, u_max, metric="mahalanobis") -> np.ndarray
     True
     """
     x, y, u2 = _bound_rows(sensors, xhat, cov, u_max, metric)
-    return pair_kernel(x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :])
+    return pair_kernel(
+        x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :]
+    )
 
 
 def _bound_rows(sensors, xhat, cov, u_max, metric):
-    """The scaled rows ``x, y`` ``(B, N, L)`` of :func:`bound_weights` and their ``u_max^2``
+    """The scaled rows ``x, y`` ``(B, N, L)`` of ``bound_weights`` and their ``u_max^2``
     ``(B, L)``."""
     B, N, L = sensors.shape[0], sensors.shape[1], xhat.shape[1]
     v = xhat[:, :, None, :] - sensors[:, None, :, :]  # (B, L, N, 2)
@@ -268,7 +262,7 @@ def _bound_rows(sensors, xhat, cov, u_max, metric):
 
 def _scaled(v, cov, metric):
     """Rows ``v`` ``(M, K, 2)`` scaled as the tracking engine scales the bound's rows
-    (:func:`obslib.tracking.choosers.scaled_rows`): Mahalanobis lengths in ``cov`` ``(M, 2, 2)``
+    (``choosers.scaled_rows``): Mahalanobis lengths in ``cov`` ``(M, 2, 2)``
     when ``metric`` says so, divided by each estimate's longest row."""
     c = (cov[:, 0, 0], cov[:, 0, 1], cov[:, 1, 0], cov[:, 1, 1])
     maha = np.full(v.shape[0], metric == "mahalanobis")
@@ -332,20 +326,20 @@ def batch_greedy(W) -> np.ndarray:
     True
     True
     """
-    W = np.asarray(W, dtype=float)
+    W = as_float_array(W, "W")
     ii, jj = np.triu_indices(W.shape[1], 1)
     return _greedy_upper(W[:, ii, jj], W.shape[1])
 
 
 def _upper_bound_weights(sensors, xhat, cov, u_max, metric, ii, jj) -> np.ndarray:
-    """The entries ``W[b, ii[p], jj[p], l]`` of :func:`bound_weights`, ``(B, P, L)``: the same
+    """The entries ``W[b, ii[p], jj[p], l]`` of ``bound_weights``, ``(B, P, L)``: the same
     rows and kernel for the pairs ``i < j`` only (half the kernel's work)."""
     x, y, u2 = _bound_rows(sensors, xhat, cov, u_max, metric)
     return pair_kernel(x[:, ii], y[:, ii], x[:, jj], y[:, jj], u2[:, None, :])
 
 
 def _upper_gain_weights(sensors, xhat, cov_pred, r, ii, jj) -> np.ndarray:
-    """The entries ``G[b, ii[p], jj[p], l]`` of :func:`info_gain_weights`, ``(B, P, L)``, with
+    """The entries ``G[b, ii[p], jj[p], l]`` of ``info_gain_weights``, ``(B, P, L)``, with
     its arithmetic, for the pairs ``i < j`` only."""
     h = xhat[:, None, :, :] - sensors[:, :, None, :]  # (B, N, L, 2)
     hx, hy = h[..., 0] / np.sqrt(r), h[..., 1] / np.sqrt(r)  # (B, N, L)
@@ -434,7 +428,11 @@ class AssignmentRuns:
 
     def lost(self, threshold: float, skip_first: bool = True) -> np.ndarray:
         """(B, L) bool: targets whose mean error after the update exceeds ``threshold``."""
-        e = self.post_error[:, 1:] if skip_first and self.post_error.shape[1] > 1 else self.post_error
+        e = (
+            self.post_error[:, 1:]
+            if skip_first and self.post_error.shape[1] > 1
+            else self.post_error
+        )
         return e.mean(axis=1) > threshold
 
     def mirrored(self) -> np.ndarray:
@@ -460,7 +458,7 @@ class AssignmentRuns:
 
 def _chosen_values(S, x, P, pr, u_max, metric, q, r):
     """The bound and the information gain of the chosen pairs ``pr`` (B, L, 2), each (B, L):
-    the entries of :func:`bound_weights` and :func:`info_gain_weights` at the chosen pairs, up
+    the entries of ``bound_weights`` and ``info_gain_weights`` at the chosen pairs, up
     to rounding, without scoring the other pairs."""
     bb = np.arange(S.shape[0])[:, None]
     ps = S[bb[..., None], pr]  # (B, L, 2, 2)
@@ -559,8 +557,7 @@ def run(setup: AssignmentTrackingSetup, rule: str, seeds) -> AssignmentRuns:
     >>> sorted(t) == sorted((i, j, l) for l, (i, j) in enumerate(r.pairs[0, 0]))
     True
     """
-    if rule not in RULES:
-        raise ValueError(f"unknown rule {rule!r}; known: {RULES}")
+    as_choice(rule, RULES, "rule")
     return _run(scenario(setup, seeds), [rule])[rule]
 
 
@@ -581,8 +578,5 @@ def run_all(setup: AssignmentTrackingSetup, seeds, rules=RULES) -> dict:
     >>> bool((runs["bound"].error[:, 0] == runs["random"].error[:, 0]).all())
     True
     """
-    rules = list(rules)
-    bad = [r for r in rules if r not in RULES]
-    if bad:
-        raise ValueError(f"unknown rule(s) {bad}; known: {RULES}")
+    rules = list(as_names(rules, "rules", RULES))
     return _run(scenario(setup, seeds), rules)

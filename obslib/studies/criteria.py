@@ -33,6 +33,21 @@ import numpy as np
 
 from .. import tracking as tr
 from .._kernels import inverse_condition, pair_kernel
+from .._validate import (
+    as_choice,
+    as_covariances,
+    as_float_array,
+    as_instance,
+    as_int,
+    as_mapping,
+    as_names,
+    as_nonnegative,
+    as_points,
+    as_positive,
+    as_real,
+    as_sequence,
+    as_str,
+)
 from . import assignment_tracking as at
 
 __all__ = [
@@ -70,6 +85,14 @@ def _known() -> tuple:
     return tuple(tr.STRATEGIES) + tuple(getattr(tr, "CRITERIA", ()))
 
 
+def _mc_iv(mc) -> dict:
+    """A Monte Carlo result ``{strategy: BatchResult}``."""
+    mc = as_mapping(mc, "mc")
+    for b in mc.values():
+        as_instance(b, tr.BatchResult, "mc")
+    return mc
+
+
 def available_strategies(names=PAPER_STRATEGIES + CRITERIA) -> list:
     """The ``names`` the tracking engine knows (:data:`obslib.tracking.STRATEGIES` and
     :data:`obslib.tracking.CRITERIA`), in order.
@@ -81,7 +104,7 @@ def available_strategies(names=PAPER_STRATEGIES + CRITERIA) -> list:
     >>> available_strategies() == list(PAPER_STRATEGIES + CRITERIA)  # all known
     True
     """
-    return [n for n in names if n in _known()]
+    return [n for n in as_names(names, "names") if n in _known()]
 
 
 def missing_strategies(names=PAPER_STRATEGIES + CRITERIA) -> list:
@@ -94,7 +117,7 @@ def missing_strategies(names=PAPER_STRATEGIES + CRITERIA) -> list:
     >>> missing_strategies()
     []
     """
-    return [n for n in names if n not in _known()]
+    return [n for n in as_names(names, "names") if n not in _known()]
 
 
 # --------------------------------------------------------------------------------------------
@@ -142,20 +165,20 @@ def criterion_scores(name: str, sensors, xhat, cov, Q, R, u_max, control=None,
     >>> bool(np.allclose(b[0], W[np.triu_indices(3, 1)], rtol=1e-12))
     True
     """
-    if name not in SCORES:
-        raise ValueError(f"unknown criterion {name!r}; known: {SCORES}")
-    S = np.asarray(sensors, dtype=float)
-    x = np.atleast_2d(np.asarray(xhat, dtype=float))
-    C = np.asarray(cov, dtype=float).reshape(-1, 2, 2)
-    if S.ndim != 2 or S.shape[1] != 2 or S.shape[0] < 2:
-        raise ValueError(f"sensors must have shape (N, 2) with N >= 2, got {S.shape}")
-    if x.shape[1] != 2 or C.shape[0] != x.shape[0]:
-        raise ValueError(f"xhat (B, 2) and cov (B, 2, 2) must match, got {x.shape} and {C.shape}")
+    as_choice(name, SCORES, "criterion")
+    S = as_points(sensors, "sensors", min_count=2)
+    x = as_points(np.atleast_2d(as_float_array(xhat, "xhat")), "xhat")
+    C = as_covariances(cov, x.shape[0], np.inf)
+    Q, R = as_covariances(Q, 1, np.inf, "Q")[0], as_covariances(R, 1, np.inf, "R")[0]
+    u_max = as_nonnegative(u_max, "u_max")
     if name == "exact-icn":
         if control is None:
             raise ValueError("exact-icn needs the target's control")
-        u = np.broadcast_to(np.asarray(control, dtype=float), x.shape)
-    if metric not in ("mahalanobis", "euclidean"):
+        u = as_float_array(control, "control")
+        if u.shape not in ((2,), x.shape) or not np.isfinite(u).all():
+            raise ValueError(f"control must be finite, of shape (2,) or {x.shape}, got {u.shape}")
+        u = np.broadcast_to(u, x.shape)
+    if as_str(metric, "metric") not in ("mahalanobis", "euclidean"):
         raise ValueError(f"metric must be 'mahalanobis' or 'euclidean', got {metric!r}")
     return _scores(name, S, x, C, np.asarray(Q, float), np.asarray(R, float), float(u_max),
                    u if name == "exact-icn" else None, metric)
@@ -175,7 +198,11 @@ def _scores(name, S, x, C, Q, R, u_max, u, metric):
     # J = (Sigma + Q)^{-1} + H^T R^{-1} H entry by entry (2x2 closed forms, no LAPACK calls)
     M = C + Q
     mdet = M[:, 0, 0] * M[:, 1, 1] - M[:, 0, 1] * M[:, 1, 0]
-    p00, p01, p11 = (M[:, 1, 1] / mdet)[:, None], (-M[:, 0, 1] / mdet)[:, None], (M[:, 0, 0] / mdet)[:, None]
+    p00, p01, p11 = (
+        (M[:, 1, 1] / mdet)[:, None],
+        (-M[:, 0, 1] / mdet)[:, None],
+        (M[:, 0, 0] / mdet)[:, None],
+    )
     rdet = R[0, 0] * R[1, 1] - R[0, 1] * R[1, 0]
     r00, r01, r11 = R[1, 1] / rdet, -R[0, 1] / rdet, R[0, 0] / rdet
     xi, yi, xj, yj = v[:, ii, 0], v[:, ii, 1], v[:, jj, 0], v[:, jj, 1]  # (B, P)
@@ -198,9 +225,9 @@ def _scores(name, S, x, C, Q, R, u_max, u, metric):
 def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
     """Paired comparison of per-run values (lower is better), run ``b`` against run ``b``.
 
-    Returns ``n``, the mean, median and standard deviation of ``other - reference``, the counts of runs
-    where each is clearly lower (:func:`obslib.tracking.clearly_lower`) and of ties, the two-sided
-    sign-test p-value (ties dropped; ``scipy.stats.binomtest`` at :math:`p = 1/2`) and the
+    Returns ``n``, the mean, median and standard deviation of ``other - reference``, the counts of
+    runs where each is clearly lower (:func:`obslib.tracking.clearly_lower`) and of ties, the
+    two-sided sign-test p-value (ties dropped; ``scipy.stats.binomtest`` at :math:`p = 1/2`) and the
     Wilcoxon signed-rank p-value of the nonzero differences (``scipy.stats.wilcoxon``: exact up
     to 50 differences, beyond that the normal approximation with the tie correction).
 
@@ -218,10 +245,16 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
     """
     from scipy import stats  # 0.6 s to import: only where a test is computed
 
-    a = np.asarray(reference, dtype=float)
-    b = np.asarray(other, dtype=float)
+    a = as_float_array(reference, "reference")
+    b = as_float_array(other, "other")
+    rtol = as_nonnegative(rtol, "rtol")
+    if not (np.isfinite(a).all() and np.isfinite(b).all()):
+        raise ValueError("reference and other must be finite")
     if a.shape != b.shape or a.ndim != 1 or a.size < 2:
-        raise ValueError(f"need two equal-length 1-D samples of at least 2 runs, got {a.shape}, {b.shape}")
+        raise ValueError(
+            f"reference and other must be two equal-length 1-D samples of at least 2 runs, got "
+            f"{a.shape}, {b.shape}"
+        )
     d = b - a
     ref_better = int(tr.clearly_lower(a, b, rtol).sum())
     other_better = int(tr.clearly_lower(b, a, rtol).sum())
@@ -259,7 +292,14 @@ def significance(row: dict, alpha: float = 0.01) -> str:
     >>> significance({"strategy": "best-pair"})  # the reference: no test
     'same'
     """
-    if row.get("vs_p_wilcoxon", 1.0) >= alpha:
+    row = as_mapping(row, "row")
+    alpha = as_real(alpha, "alpha")
+    if not 0 < alpha < 1:
+        raise ValueError(f"alpha must lie in (0, 1), got {alpha}")
+    p = row.get("vs_p_wilcoxon", 1.0)
+    if not isinstance(p, (int, float)) or ("vs_median_diff" not in row and p < alpha):
+        raise ValueError("row must be a row of summary_rows (vs_p_wilcoxon, vs_median_diff)")
+    if p >= alpha:
         return "same"
     return "better" if row["vs_median_diff"] < 0 else "worse"
 
@@ -290,6 +330,9 @@ def summary_rows(mc: dict, reference: str = REFERENCE, loss_threshold: float = 0
     >>> bool(np.isclose(rows[1]["mean_error"], err.mean(), rtol=1e-12))
     True
     """
+    mc = _mc_iv(mc)
+    as_str(reference, "reference")
+    loss_threshold = as_nonnegative(loss_threshold, "loss_threshold")
     ref_err = _run_means(mc[reference])[0] if reference in mc else None
     rows = []
     for name, b in mc.items():
@@ -333,9 +376,13 @@ def relog_bound(batch, setup):
     """
     import dataclasses
 
+    as_instance(batch, tr.BatchResult, "batch")
+    as_instance(setup, tr.TrackingSetup, "setup")
     B, K = batch.pairs.shape[:2]
     cov = batch.cov.reshape(-1, 2, 2) if setup.metric == "mahalanobis" else None
-    bound = tr.pair_bound_series(setup, batch.estimate.reshape(-1, 2), batch.pairs.reshape(-1, 2), cov)
+    bound = tr.pair_bound_series(
+        setup, batch.estimate.reshape(-1, 2), batch.pairs.reshape(-1, 2), cov
+    )
     return dataclasses.replace(batch, setup=setup, bound=bound.reshape(B, K))
 
 
@@ -376,13 +423,16 @@ def tracking_study(n_seeds: int, seed: int = 0, metrics=("mahalanobis", "euclide
     >>> bool(np.allclose(a, mc["best-pair"].error, rtol=1e-9))
     True
     """
-    if int(n_seeds) < 2:
+    n_seeds = as_int(n_seeds, "n_seeds")
+    if n_seeds < 2:
         raise ValueError(f"n_seeds must be at least 2 for the paired tests, got {n_seeds}")
-    metrics = tuple(metrics)
+    seed = as_int(seed, "seed", 0)
+    metrics = as_names(metrics, "metrics")
     bad = [m for m in metrics if m not in tr.METRICS]
     if bad or not metrics:
         raise ValueError(f"metrics must be among {tr.METRICS}, got {list(metrics)}")
-    strategies = tuple(available_strategies() if strategies is None else strategies)
+    strategies = tuple(available_strategies() if strategies is None
+                       else as_names(strategies, "strategies"))
     unknown = [s for s in strategies if s not in _known()]
     if unknown:
         raise ValueError(f"unknown strategies {unknown}; known: {_known()}")
@@ -409,6 +459,7 @@ def adversary_rows(mc: dict) -> list:
     >>> all(np.isclose(row[k], s[k], rtol=1e-9) for k in keys)
     True
     """
+    mc = _mc_iv(mc)
     crit = tr.ENTRAPMENT_CRITERIA
     rows = []
     for name, b in mc.items():
@@ -465,19 +516,29 @@ def assignment_study(p: dict, metric: str = "mahalanobis") -> dict:
     >>> bool(np.allclose(e, direct.post_error, rtol=1e-9))
     True
     """
-    targets = tuple(int(L) for L in p["assign_targets"])
-    return _assignment_study(targets, int(p["assign_seeds"]), int(p["seed"]), int(p["assign_steps"]),
-                             float(p["assign_side"]), float(p["assign_u_max"]),
-                             float(p["assign_noise_std"]), float(p["assign_p0"]), metric)
+    p = as_mapping(p, "p")
+    keys = ("assign_targets", "assign_seeds", "seed", "assign_steps", "assign_side",
+            "assign_u_max", "assign_noise_std", "assign_p0")
+    if not all(k in p for k in keys):
+        raise ValueError(f"p must hold the parameters {keys} (obslib.profiles.params)")
+    as_str(metric, "metric")
+    targets = tuple(as_int(L, "assign_targets", 1)
+                    for L in as_sequence(p["assign_targets"], "assign_targets"))
+    return _assignment_study(
+        targets, as_int(p["assign_seeds"], "assign_seeds", 1), as_int(p["seed"], "seed", 0),
+        as_int(p["assign_steps"], "assign_steps", 1), as_positive(p["assign_side"], "assign_side"),
+        as_positive(p["assign_u_max"], "assign_u_max"),
+        as_positive(p["assign_noise_std"], "assign_noise_std"),
+        as_positive(p["assign_p0"], "assign_p0"), metric)
 
 
 def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float = 0.5) -> list:
     """One row per ``(L, rule)``: mean, spread and median over runs of the per-run mean error
     summed over targets (after the update), ``lost`` (targets, over all runs, whose mean error
     exceeds ``loss_threshold``), ``lost_mirrored`` (those whose last estimate is nearer the
-    target's mirror image across its last pair's baseline than the target), ``switch_rate`` (fraction of steps where a target's pair
-    changes), the chosen pairs' bound and information gain summed over targets, and the paired
-    test against ``reference``.
+    target's mirror image across its last pair's baseline than the target), ``switch_rate``
+    (fraction of steps where a target's pair changes), the chosen pairs' bound and information gain
+    summed over targets, and the paired test against ``reference``.
 
     Examples
     --------
@@ -490,6 +551,13 @@ def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float 
     >>> bool(np.isclose(rows[2]["mean_error"], e.mean(), rtol=1e-12))
     True
     """
+    runs = as_mapping(runs, "runs")
+    for by_rule in runs.values():
+        for r in as_mapping(by_rule, "runs").values():
+            as_instance(r, at.AssignmentRuns, "runs")
+        if as_str(reference, "reference") not in by_rule:
+            raise ValueError(f"reference {reference!r} is not a rule of the runs")
+    loss_threshold = as_nonnegative(loss_threshold, "loss_threshold")
     rows = []
     for L, by_rule in runs.items():
         ref = by_rule[reference].run_mean_error()

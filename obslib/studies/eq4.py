@@ -25,6 +25,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from .._validate import as_float_array, as_int, as_nonnegative
 from ..bounds import lower_bound, lower_bounds, pair_bounds
 from ..observability import relative_rows
 
@@ -54,7 +55,7 @@ def _u_max(u_max) -> float:
 
 def _control(u) -> np.ndarray:
     try:
-        a = np.asarray(u, dtype=float)
+        a = as_float_array(u, "u")
     except (TypeError, ValueError):
         raise ValueError(f"u must be a 2-vector, got {u!r}") from None
     if a.shape != (2,) or not np.isfinite(a).all():
@@ -239,7 +240,7 @@ def bound_ratios(rows, counts, u_max) -> tuple[np.ndarray, np.ndarray]:
     True
     """
     um = _u_max(u_max)
-    r = np.asarray(rows, dtype=float)
+    r = as_float_array(rows, "rows")
     n = np.asarray(counts)
     if r.ndim != 3 or r.shape[-1] != 2 or n.shape != r.shape[:1] or not np.isfinite(r).all():
         raise ValueError(f"rows must be finite (n_scenes, rows, 2) with one count per scene, "
@@ -289,7 +290,6 @@ def pair_choice_changes(n_scenes: int, n_sensors: int, u_max: float, seed: int =
 AUDIT_SIDES = (1.0, 10.0, 100.0)
 
 
-@lru_cache(maxsize=4)
 def random_scene_audit(n_geometries: int, n_refine: int, seed: int, u_max: float):
     """The matrix as derived against Eq. (4) on random scenes of 2 to 6 sensors.
 
@@ -314,6 +314,16 @@ def random_scene_audit(n_geometries: int, n_refine: int, seed: int, u_max: float
     >>> sorted(ratios), bool(grid_err >= -1e-12), 0 <= below <= 3
     ([1.0, 10.0, 100.0], True, True)
     """
+    return _random_scene_audit(
+        as_int(n_geometries, "n_geometries", 1),
+        as_int(n_refine, "n_refine", 1),
+        as_int(seed, "seed", 0),
+        as_nonnegative(u_max, "u_max"),
+    )
+
+
+@lru_cache(maxsize=4)
+def _random_scene_audit(n_geometries, n_refine, seed, u_max):
     rng = np.random.default_rng(seed)
     out = {side: bound_ratios(*random_scenes(n_geometries, rng, side), u_max)[0]
            for side in AUDIT_SIDES}

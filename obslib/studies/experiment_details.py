@@ -19,12 +19,13 @@ target's objective than the 64 controls did.
 
 from __future__ import annotations
 
-import numpy as np
-
 from functools import lru_cache
+
+import numpy as np
 
 from .. import tracking as tr
 from .._kernels import normalise, pair_kernel
+from .._validate import as_float_array, as_int, as_str
 from ..bounds import pair_bounds
 from ..controls import disc_controls
 from ..published_runs import published_run
@@ -45,12 +46,12 @@ def whiten(points, cov) -> np.ndarray:
     >>> whiten([[2.0, 1.0]], np.diag([4.0, 1.0])).round(12).tolist()
     [[1.0, 1.0]]
     """
-    c = np.asarray(cov, dtype=float)
+    c = as_float_array(cov, "cov")
     if c.shape != (2, 2) or not np.allclose(c, c.T) or np.linalg.eigvalsh(c)[0] <= 0:
         raise ValueError(f"cov must be a symmetric positive-definite 2x2 matrix, got {c.tolist()}")
     lam, V = np.linalg.eigh(c)
     inv_sqrt = V @ np.diag(lam**-0.5) @ V.T
-    return np.asarray(points, dtype=float) @ inv_sqrt.T
+    return as_float_array(points, "points") @ inv_sqrt.T
 
 
 def _best_per_target(W) -> np.ndarray:
@@ -95,7 +96,7 @@ def metric_choices(name: str = "best-pair") -> dict:
     ...  0.0 <= m["agree_euclidean"] <= 1.0)
     (['euclidean', 'mixed', 'whitened'], 2, True)
     """
-    if name not in ("best-pair", "adversarial"):
+    if as_str(name, "name") not in ("best-pair", "adversarial"):
         raise ValueError(
             f"name must be 'best-pair' or 'adversarial' (runs of strategy (1)), got {name!r}"
         )
@@ -130,7 +131,7 @@ def metric_choices(name: str = "best-pair") -> dict:
 
 def _smallest_objective(ps, o, controls) -> np.ndarray:
     """``target_objective(ps, o, controls).min(axis=-1)``: the objective at the adversary's
-    pick (:func:`~obslib.tracking.adversary.adversary_moves`, the first minimiser), evaluated
+    pick (``adversary.adversary_moves``, the first minimiser), evaluated
     with target_objective's arithmetic for that control only (7201 controls x 315 steps:
     0.013 s against 1.1 s for every control's exact value)."""
     u = controls[adversary_moves(ps, o, controls)]
@@ -179,7 +180,6 @@ def control_set_gap(n_radii: int = 20, n_angles: int = 360) -> dict:
     }
 
 
-@lru_cache(maxsize=4)
 def control_set_entrapment(n_seeds: int, seed: int, n_radii: int, n_angles: int) -> dict:
     """The adversarial experiment (Sec. V-B) over ``n_seeds`` noise seeds from ``seed``, with the
     published controls and with a polar grid of the whole disc: does the ball free the target?
@@ -198,6 +198,16 @@ def control_set_entrapment(n_seeds: int, seed: int, n_radii: int, n_angles: int)
     >>> sorted(d), 0.0 <= d["disc"]["entrapped"] <= 1.0
     (['disc', 'paper'], True)
     """
+    return _control_set_entrapment(
+        as_int(n_seeds, "n_seeds", 1),
+        as_int(seed, "seed", 0),
+        as_int(n_radii, "n_radii", 1),
+        as_int(n_angles, "n_angles", 1),
+    )
+
+
+@lru_cache(maxsize=4)
+def _control_set_entrapment(n_seeds, seed, n_radii, n_angles):
     variants = adversary_variants(tr.PAPER_ADVERSARIAL, n_radii, n_angles)
     seeds = range(seed, seed + n_seeds)
     # both control sets in one batched pass (a run does not depend on the others of its pass)

@@ -19,8 +19,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import teams as ts
+from .._validate import as_int, as_ints, as_positive, as_str
 from ..bounds import relative_vectors
+from . import teams as ts
 
 __all__ = ["NAN_RULES", "literal_logdet_counts", "literal_fig9_sweep", "control_row_fig9_sweep"]
 
@@ -62,7 +63,7 @@ def literal_logdet_counts(sensors, targets, nan: str = "ignore") -> np.ndarray:
     >>> literal_logdet_counts(S, T).tolist()
     [4, 0]
     """
-    if nan not in NAN_RULES:
+    if as_str(nan, "nan") not in NAN_RULES:
         raise ValueError(f"nan must be one of {NAN_RULES}, got {nan!r}")
     v = relative_vectors(sensors, targets)  # validated, (N, L, 2)
     if v.shape[1] < 1:
@@ -133,10 +134,11 @@ def literal_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, sid
     >>> counts.shape, counts.sum(axis=2).tolist()
     ((2, 2, 5), [[6, 6], [8, 8]])
     """
-    if nan not in NAN_RULES:
+    if as_str(nan, "nan") not in NAN_RULES:
         raise ValueError(f"nan must be one of {NAN_RULES}, got {nan!r}")
-    N_values = [int(n) for n in N_values]
-    trials, n_targets = int(trials), int(n_targets)
+    N_values = as_ints(N_values, "N_values", 0)
+    trials, n_targets = as_int(trials, "trials", 1), as_int(n_targets, "n_targets", 1)
+    seed, side = as_int(seed, "seed", 0), as_positive(side, "side")
     n_max = max(N_values, default=0)
     v = np.zeros((len(N_values), trials, n_max, n_targets, 2))
     for a, n in enumerate(N_values):
@@ -144,7 +146,9 @@ def literal_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, sid
             S, T = ts.fig9_geometry(n, t, seed, n_targets, side)
             v[a, t, :n] = relative_vectors(S, T)
     n_sensors = np.repeat(np.array(N_values, dtype=int), trials)
-    out = _counts(v.reshape(-1, n_max, n_targets, 2), n_sensors, np.full(n_sensors.size, nan == "first"))
+    out = _counts(
+        v.reshape(-1, n_max, n_targets, 2), n_sensors, np.full(n_sensors.size, nan == "first")
+    )
     return out.reshape(len(N_values), trials, n_targets)
 
 
@@ -170,11 +174,10 @@ def control_row_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5,
     >>> counts.shape, bool((counts >= 1).all()), counts.sum(axis=2).tolist()
     ((1, 3, 5), True, [[10, 10, 10]])
     """
-    N_values = [int(n) for n in N_values]
-    trials, n_targets = int(trials), int(n_targets)
-    u_max = float(u_max)
-    if not np.isfinite(u_max) or u_max <= 0:
-        raise ValueError(f"u_max must be a positive number, got {u_max!r}")
+    N_values = as_ints(N_values, "N_values", 0)
+    trials, n_targets = as_int(trials, "trials", 1), as_int(n_targets, "n_targets", 1)
+    seed, side = as_int(seed, "seed", 0), as_positive(side, "side")
+    u_max = as_positive(u_max, "u_max")
     n_max = max(N_values, default=0)
     v = np.zeros((len(N_values), trials, n_max, n_targets, 2))
     u = np.zeros((len(N_values), trials, n_targets, 2))

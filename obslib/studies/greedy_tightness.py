@@ -15,9 +15,10 @@ from functools import lru_cache
 
 import numpy as np
 
-from . import assignment as st
+from .._validate import as_float_array, as_int, as_nonnegative, as_points
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..bounds import pair_bounds
+from . import assignment as sa
 
 __all__ = ["tight_geometry", "TIGHT_SENSORS", "TIGHT_TARGETS", "TIGHT_U_MAX", "tight_witness",
            "spread", "first_pick_margin", "jitter_ratios", "jitter_summary"]
@@ -53,7 +54,7 @@ def tight_witness():
 
 @lru_cache(maxsize=4)
 def _search(n_sensors, n_targets, seed, n_starts, n_steps, u_max):
-    return st.worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
+    return sa.worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
 
 
 def tight_geometry(n_sensors: int = 6, n_targets: int = 3, seed: int = 0, n_starts: int = 20,
@@ -74,13 +75,12 @@ def tight_geometry(n_sensors: int = 6, n_targets: int = 3, seed: int = 0, n_star
     >>> sensors.shape, targets.shape, 1 / 3 <= ratio <= 1
     ((6, 2), (3, 2), True)
     """
-    for name, v in (("n_sensors", n_sensors), ("n_targets", n_targets), ("n_starts", n_starts)):
-        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
-            raise ValueError(f"{name} must be a positive integer, got {v!r}")
+    n_sensors, n_targets = as_int(n_sensors, "n_sensors", 1), as_int(n_targets, "n_targets", 1)
+    n_starts, n_steps = as_int(n_starts, "n_starts", 1), as_int(n_steps, "n_steps", 0)
+    seed, u_max = as_int(seed, "seed", 0), as_nonnegative(u_max, "u_max")
     if n_sensors < 2 * n_targets:
         raise ValueError(f"need n_sensors >= 2 n_targets, got {n_sensors} and {n_targets}")
-    r, S, T = _search(int(n_sensors), int(n_targets), int(seed), int(n_starts), int(n_steps),
-                      float(u_max))
+    r, S, T = _search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
     return r, S.copy(), T.copy()
 
 
@@ -95,7 +95,9 @@ def spread(sensors, targets) -> float:
     >>> round(spread([[0.0, 0.0], [2.0, 0.0]], [[1.0, 0.0]]) ** 2, 12)
     0.666666666667
     """
-    P = np.vstack([np.asarray(sensors, float), np.asarray(targets, float)])
+    P = np.vstack([as_points(sensors, "sensors"), as_points(targets, "targets")])
+    if P.shape[0] == 0:
+        raise ValueError("sensors and targets are both empty")
     return float(np.sqrt(((P - P.mean(axis=0)) ** 2).sum(axis=1).mean()))
 
 
@@ -123,7 +125,7 @@ def first_pick_margin(sensors, targets, u_max: float = 1.0) -> dict:
     """
     W = pair_bounds(sensors, targets, u_max)
     g, o = greedy_pair_assignment(W), optimal_pair_assignment(W)
-    rounds = st.charging(W, g.triples, o.triples)
+    rounds = sa.charging(W, g.triples, o.triples)
     first = rounds[0]
     top = max(first["charged_w"]) if first["charged_w"] else 0.0
     return {
@@ -137,10 +139,10 @@ def first_pick_margin(sensors, targets, u_max: float = 1.0) -> dict:
 
 
 def _ratio_batch(S, T, u_max):
-    W, valid = st.batch_pair_bounds(S, T, u_max)
+    W, valid = sa.batch_pair_bounds(S, T, u_max)
     W[~valid] = 0.0
-    opt = st.optimal_values(W)
-    g = st.greedy_values(W)
+    opt = sa.optimal_values(W)
+    g = sa.greedy_values(W)
     ok = valid & (opt > 0)
     return np.where(ok, g / np.where(ok, opt, 1.0), np.nan)
 
@@ -174,8 +176,8 @@ def jitter_ratios(sensors, targets, fractions, n_draws: int, seed: int = 0, u_ma
     >>> r.shape, bool(np.allclose(r[0], first_pick_margin(S, T)["ratio"]))
     ((2, 3), True)
     """
-    S = np.asarray(sensors, dtype=float)
-    T = np.asarray(targets, dtype=float)
+    S = as_float_array(sensors, "sensors")
+    T = as_float_array(targets, "targets")
     if S.ndim != 2 or S.shape[1] != 2 or T.ndim != 2 or T.shape[1] != 2:
         raise ValueError(f"need sensors (N, 2) and targets (L, 2), got {S.shape} and {T.shape}")
     if S.shape[0] < 2 * T.shape[0] or T.shape[0] < 1:
@@ -184,7 +186,7 @@ def jitter_ratios(sensors, targets, fractions, n_draws: int, seed: int = 0, u_ma
         )
     if not (np.isfinite(S).all() and np.isfinite(T).all()):
         raise ValueError("sensor and target positions must be finite")
-    f = np.asarray(fractions, dtype=float).reshape(-1)
+    f = as_float_array(fractions, "fractions").reshape(-1)
     if f.size == 0 or not np.isfinite(f).all() or (f < 0).any():
         raise ValueError(f"fractions must be non-negative finite numbers, got {fractions!r}")
     if isinstance(n_draws, bool) or not isinstance(n_draws, (int, np.integer)) or n_draws < 1:
@@ -210,9 +212,14 @@ def jitter_summary(ratios, fractions) -> list[dict]:
     >>> row["median"], row["min"], row["below_half"], round(row["q05"], 12)
     (0.75, 0.5, 0.0, 0.525)
     """
-    r = np.asarray(ratios, dtype=float)
+    r = as_float_array(ratios, "ratios")
+    f = as_float_array(fractions, "fractions")
+    if r.ndim != 2 or f.shape != (r.shape[0],) or not np.isfinite(f).all():
+        raise ValueError(f"ratios (F, D) and fractions (F,) must match, got {r.shape}, {f.shape}")
+    if not all(np.isfinite(row).any() for row in r):
+        raise ValueError("ratios must hold a finite value for every fraction")
     rows = []
-    for frac, row in zip(fractions, r):
+    for frac, row in zip(f, r):
         v = row[np.isfinite(row)]
         rows.append({
             "fraction": float(frac),

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .._validate import as_bool, as_int, as_ints, as_mapping, as_nonnegative, as_positive
 from ..assignment import (
     greedy_pair_assignment,
     optimal_pair_assignment,
@@ -18,7 +19,14 @@ from ..bounds import pair_bounds
 from ..sweep import run_sweep
 from .assignment import MAX_DP_SENSORS, greedy_values, optimal_values
 
-__all__ = ["FIG8_KEYS", "FIG8_DENSE_WEIGHTS", "fig8_trial", "fig8_sweep", "Fig8Summary", "fig8_summary"]
+__all__ = [
+    "FIG8_KEYS",
+    "FIG8_DENSE_WEIGHTS",
+    "fig8_trial",
+    "fig8_sweep",
+    "Fig8Summary",
+    "fig8_summary",
+]
 
 #: The values each trial reports.
 FIG8_KEYS = ("greedy", "relaxed", "relaxed_ordered", "optimum")
@@ -42,6 +50,9 @@ def fig8_trial(n_targets: int, trial: int, seed: int, u_max: float = 1.0, side: 
     >>> t["greedy"] <= t["optimum"] <= t["relaxed"] <= t["relaxed_ordered"]
     True
     """
+    n_targets, trial = as_int(n_targets, "n_targets", 1), as_int(trial, "trial", 0)
+    seed, with_optimum = as_int(seed, "seed", 0), as_bool(with_optimum, "with_optimum")
+    u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
     rng = np.random.default_rng([seed, n_targets, trial])
     n = 2 * n_targets
     S = rng.uniform(0, side, size=(n, 2))
@@ -81,10 +92,16 @@ def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float
     >>> r["L"].tolist(), r["greedy"].shape
     ([1, 2], (2, 2))
     """
-    L_values = [int(L) for L in L_values]
+    L_values = as_ints(L_values, "L_values", 1)
+    trials, seed = as_int(trials, "trials", 1), as_int(seed, "seed", 0)
+    u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
+    optimum_max_L = as_int(optimum_max_L, "optimum_max_L", 0)
     tasks = [
-        dict(n_targets=L, trial=t, seed=seed, u_max=u_max, side=side, with_optimum=L <= optimum_max_L)
-        for L in L_values for t in range(trials)
+        dict(
+            n_targets=L, trial=t, seed=seed, u_max=u_max, side=side, with_optimum=L <= optimum_max_L
+        )
+        for L in L_values
+        for t in range(trials)
     ]
     results = run_sweep(fig8_trial, tasks, backend, n_jobs, scheduler, progress)
     out = {k: np.array([r[k] for r in results]).reshape(len(L_values), trials) for k in FIG8_KEYS}
@@ -112,6 +129,7 @@ def fig8_summary(sweep: dict) -> Fig8Summary:
     ...  bool((s.mean["greedy"] <= s.mean["relaxed"]).all()))
     ([1, 2], 1.0, True)
     """
+    sweep = as_mapping(sweep, "sweep")
     missing = [k for k in (*FIG8_KEYS, "L") if k not in sweep]
     if missing:
         raise ValueError(f"sweep lacks {missing}: pass the result of fig8_sweep")

@@ -28,6 +28,7 @@ import time
 
 import numpy as np
 
+from .._validate import ArgumentTypeError, as_int, as_ints, as_nonnegative, as_positive
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment, relaxed_pair_assignment
 from ..bounds import pair_bounds
 
@@ -41,12 +42,15 @@ __all__ = [
 ]
 
 
-def _check_3dm(q, triples) -> tuple[int, list]:
-    if isinstance(q, bool) or not isinstance(q, (int, np.integer)) or q < 1:
-        raise ValueError(f"q must be a positive integer, got {q!r}")
+def _three_dm_iv(q, triples) -> tuple[int, list]:
+    q = as_int(q, "q", 1)
     out = []
+    if isinstance(triples, (str, bytes)) or not isinstance(triples, (list, tuple)):
+        raise ArgumentTypeError(f"triples must be a list of (x, y, z), got {triples!r}")
     for t in triples:
-        if len(t) != 3 or not all(isinstance(a, (int, np.integer)) and 0 <= a < q for a in t):
+        if not isinstance(t, (tuple, list)) or len(t) != 3 or not all(
+                isinstance(a, (int, np.integer)) and not isinstance(a, bool) and 0 <= a < q
+                for a in t):
             raise ValueError(
                 f"each triple must be (x, y, z) with elements in 0..{q - 1}, got {t!r}"
             )
@@ -67,7 +71,7 @@ def three_dm_weights(q: int, triples) -> np.ndarray:
     >>> W.shape, float(W[0, 3, 1]), float(W[3, 0, 1]), float(W.sum())
     ((4, 4, 2), 1.0, 1.0, 2.0)
     """
-    q, ts = _check_3dm(q, triples)
+    q, ts = _three_dm_iv(q, triples)
     W = np.zeros((2 * q, 2 * q, q))
     for x, y, z in ts:
         W[x, q + y, z] = W[q + y, x, z] = 1.0
@@ -85,7 +89,7 @@ def has_perfect_matching(q: int, triples) -> bool:
     >>> has_perfect_matching(2, [(0, 0, 0), (1, 1, 0)])  # both use z = 0
     False
     """
-    q, ts = _check_3dm(q, triples)
+    q, ts = _three_dm_iv(q, triples)
     ts = sorted(set(ts))
     for combo in itertools.combinations(ts, q):
         if all(len({t[k] for t in combo}) == q for k in range(3)):
@@ -104,7 +108,7 @@ def random_3dm(q: int, n_triples: int, rng) -> list:
     >>> len(t), len(set(t)), all(0 <= v < 2 for triple in t for v in triple)
     (5, 5, True)
     """
-    q, _ = _check_3dm(q, [])
+    q, _ = _three_dm_iv(q, [])
     total = q**3
     if (isinstance(n_triples, bool) or not isinstance(n_triples, (int, np.integer))
             or not 0 <= n_triples <= total):
@@ -148,13 +152,7 @@ def reduction_check(n_instances: int, seed: int = 0, q_values=(2, 3, 4)) -> dict
 
 def _budget(time_budget) -> float:
     """The solver's time limit in seconds, a positive number, or a ValueError naming it."""
-    try:
-        budget = float(time_budget)
-    except (TypeError, ValueError):
-        raise ValueError(f"time_budget must be a positive number, got {time_budget!r}") from None
-    if not np.isfinite(budget) or budget <= 0:
-        raise ValueError(f"time_budget must be a positive number, got {time_budget!r}")
-    return budget
+    return as_positive(time_budget, "time_budget")
 
 
 def exact_solver_reach(L_values, time_budget: float, seed: int = 0, u_max: float = 1.0,
@@ -162,7 +160,8 @@ def exact_solver_reach(L_values, time_budget: float, seed: int = 0, u_max: float
     """Time the exact optimum of Problem 1 on random Fig. 8 instances (``N = 2L``).
 
     Sizes are tried in the given order until one does not finish within ``time_budget``
-    seconds (the solver's ``time_limit``); that size is reported as not solved and larger ones skipped.
+    seconds (the solver's ``time_limit``); that size is reported as not solved and larger ones
+    skipped.
 
     Returns
     -------
@@ -180,9 +179,9 @@ def exact_solver_reach(L_values, time_budget: float, seed: int = 0, u_max: float
     True
     """
     budget = _budget(time_budget)
-    Ls = [int(v) for v in L_values]
-    if not Ls or min(Ls) < 1:
-        raise ValueError(f"L_values must be positive integers, got {L_values!r}")
+    Ls = as_ints(L_values, "L_values", 1)
+    seed = as_int(seed, "seed", 0)
+    u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
     rows = []
     for L in Ls:
         rng = np.random.default_rng([seed, L])

@@ -10,12 +10,11 @@ Every audit is a pure function of its arguments and is cached.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from fractions import Fraction
 from functools import lru_cache
 
 import numpy as np
 
-from .._validate import positive_float, positive_int
+from .._validate import as_int, as_nonnegative, as_positive, as_sequence
 from ..bounds import pair_bound_polar, pair_bounds
 from ..pair_form import (
     GridMax,
@@ -25,139 +24,36 @@ from ..pair_form import (
     maximising_alpha,
     maximising_alpha_closed,
 )
-from .weyl import WeylAudit, dual_weyl_printed_range, weyl_audit  # the audits of notebook 02 are read here
 
-__all__ = [
-    "audit_ratios",
-    "max_difference_at_rational_points",
-    "paper_grid",
-    "Fig2Grid",
-    "fig2_grids",
-    "dual_weyl_printed_range",
-    "Theorem4Audit",
-    "theorem4_audit",
-    "PrintedMatrixAudit",
-    "printed_matrix_audit",
-    "Theorem5Audit",
-    "theorem5_audit",
-    "ThetaDerivativeAudit",
-    "theta_derivative_audit",
-    "AlphaDerivativeAudit",
-    "alpha_derivative_audit",
-    "alpha_star_thetas",
-    "AlphaStarAudit",
-    "alpha_star_audit",
-    "WeylAudit",
-    "weyl_audit",
-]
+# the audits of notebook 02 are read here
+from .weyl import WeylAudit, dual_weyl_printed_range, weyl_audit
+
+__all__ = ["audit_ratios",  "paper_grid", "Fig2Grid",
+           "fig2_grids", "dual_weyl_printed_range", "Theorem4Audit", "theorem4_audit",
+           "PrintedMatrixAudit", "printed_matrix_audit", "Theorem5Audit", "theorem5_audit",
+           "ThetaDerivativeAudit", "theta_derivative_audit", "AlphaDerivativeAudit",
+           "alpha_derivative_audit", "alpha_star_thetas", "AlphaStarAudit", "alpha_star_audit",
+           "WeylAudit", "weyl_audit"]
 
 
 def audit_ratios(u_max: float, d_io: float, u_over_d_curves) -> tuple:
     r"""The values of :math:`q = u_{\max} / d_{io}` the Theorem 5 audits use, sorted: Fig. 2's
-    :math:`u_{\max} / d_{io}`, the ``u_over_d_curves`` of the maximiser plot, and 0 (a stationary target).
+    :math:`u_{\max} / d_{io}`, the ``u_over_d_curves`` of the maximiser plot, and 0 (a stationary
+    target).
 
     Examples
     --------
     >>> audit_ratios(u_max=1.0, d_io=2.0, u_over_d_curves=[1.0])
     (0.0, 0.5, 1.0)
     """
-    u = positive_float("u_max", u_max, allow_zero=True)
-    d = positive_float("d_io", d_io)
-    curves = [positive_float("u_over_d_curves", c, allow_zero=True) for c in u_over_d_curves]
+    u = as_nonnegative(u_max, "u_max")
+    d = as_positive(d_io, "d_io")
+    curves = [as_nonnegative(c, "u_over_d_curves")
+              for c in as_sequence(u_over_d_curves, "u_over_d_curves")]
     return tuple(sorted({0.0, u / d, *curves}))
 
 
 # --- exact comparison at rational points ----------------------------------------------------
-def _rational(rng: np.random.Generator, lo: float, hi: float, den: int = 997):
-    import sympy as sp
-
-    k = int(rng.integers(int(np.ceil(lo * den)), int(np.floor(hi * den)) + 1))
-    f = Fraction(k, den)
-    return sp.Rational(f.numerator, f.denominator)
-
-
-def max_difference_at_rational_points(
-    lhs, rhs, ranges: dict, n_points: int, seed: int = 0, digits: int = 50, point_map=None
-) -> float:
-    """Largest ``|lhs - rhs|`` over random rational points, evaluated at ``digits`` digits.
-
-    Where SymPy cannot simplify ``lhs - rhs`` to zero, equality is decided by evaluation at
-    exact rational points with ``digits`` significant digits (mpmath): differences of order
-    ``10^-digits`` (relative to the size of the terms) mean the two expressions agree, while a
-    wrong expression differs by order one.
-
-    Parameters
-    ----------
-    lhs, rhs : sympy.Expr
-        The two expressions.
-    ranges : dict
-        ``symbol -> (lo, hi)``; each point draws every symbol as a rational ``k / 997`` in
-        ``[lo, hi]``.
-    n_points : int
-        Number of points (positive).
-    seed : int
-        Seed of the draw.
-    digits : int
-        Working precision in decimal digits, at least 15.
-    point_map : callable, optional
-        ``point -> dict`` of extra substitutions computed from the drawn point, e.g.
-        :func:`obslib.symbolic.cartesian_ratio_values`: exact SymPy values, evaluated to ``digits + 10`` digits,
-        or mpmath numbers already evaluated (at ``digits + 10`` digits, say), used as they are.
-
-    Returns
-    -------
-    float
-        The largest absolute difference; a point where the difference is not finite counts
-        as infinity.
-
-    Examples
-    --------
-    >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> expr = sp.sin(sy.THETA)**2 + sp.cos(sy.THETA)**2
-    >>> d = max_difference_at_rational_points(expr, 1, {sy.THETA: (0.0, 3.0)},
-    ...                                       n_points=5)
-    >>> d < 1e-40
-    True
-    """
-    import mpmath
-    import sympy as sp
-
-    if int(n_points) != n_points or n_points < 1:
-        raise ValueError(f"n_points must be a positive integer, got {n_points!r}")
-    if digits < 15:
-        raise ValueError(f"digits must be at least 15, got {digits!r}")
-    for s, r in ranges.items():
-        if not isinstance(s, sp.Symbol) or len(r) != 2 or not r[0] < r[1]:
-            raise ValueError(f"bad range for {s}: {r!r}")
-    diff = sp.sympify(lhs) - sp.sympify(rhs)
-    rng = np.random.default_rng(seed)
-    points = []
-    for _ in range(int(n_points)):
-        point = {s: _rational(rng, *r) for s, r in ranges.items()}
-        extra = point_map(point) if point_map is not None else {}
-        points.append((point, extra))
-    known = set(points[0][0]) | set(points[0][1])
-    free = diff.free_symbols - known
-    if free:
-        raise ValueError(f"no range for symbols {sorted(map(str, free))}")
-    syms = sorted(diff.free_symbols, key=str)
-    f = sp.lambdify(syms, diff, modules="mpmath", cse=True)
-    worst = mpmath.mpf(0)
-    with mpmath.workdps(digits):
-        for point, extra in points:
-            vals = {s: mpmath.mpf(r.p) / r.q for s, r in point.items()}
-            vals.update({
-                s: v if isinstance(v, mpmath.mpf) else mpmath.mpf(sp.N(v, digits + 10))
-                for s, v in extra.items()
-            })
-            val = abs(f(*[vals[s] for s in syms]))
-            if not mpmath.isfinite(val):
-                return float("inf")
-            worst = max(worst, val)
-    return float(worst)
-
-
 # --- Fig. 2 grid --------------------------------------------------------------------------------
 def paper_grid(alpha_max: float = 5.0, step: float = 0.1) -> tuple[np.ndarray, np.ndarray]:
     r"""The grid of the published Fig. 2: ``alpha = 0:step:alpha_max``, ``theta = -pi:step:pi``
@@ -178,8 +74,8 @@ def paper_grid(alpha_max: float = 5.0, step: float = 0.1) -> tuple[np.ndarray, n
     >>> alpha.size, theta.size, bool(np.isclose(theta, np.pi / 2).any())
     (51, 63, False)
     """
-    amax = positive_float("alpha_max", alpha_max)
-    h = positive_float("step", step)
+    amax = as_positive(alpha_max, "alpha_max")
+    h = as_positive(step, "step")
     n_a = int(np.floor(amax / h + 1e-9)) + 1
     n_t = int(np.floor(2 * np.pi / h + 1e-9)) + 1
     return np.arange(n_a) * h, -np.pi + np.arange(n_t) * h
@@ -196,7 +92,6 @@ class Fig2Grid:
     maximum: GridMax  #: its maximum and the grid points attaining it
 
 
-@lru_cache(maxsize=4)
 def fig2_grids(u_max: float, d_io: float, alpha_max: float, paper_step: float,
                fine_alpha_per_unit: int, fine_theta_quarter: int) -> dict:
     r"""Fig. 2's bound on the published grid (:func:`paper_grid`) and on a fine grid that holds
@@ -219,6 +114,14 @@ def fig2_grids(u_max: float, d_io: float, alpha_max: float, paper_step: float,
     >>> [(a, round(t / np.pi, 6)) for a, t in g["fine"].maximum.points]
     [(1.0, -0.5), (1.0, 0.5)]
     """
+    return _fig2_grids(as_nonnegative(u_max, "u_max"), as_positive(d_io, "d_io"),
+                       as_positive(alpha_max, "alpha_max"), as_positive(paper_step, "paper_step"),
+                       as_int(fine_alpha_per_unit, "fine_alpha_per_unit", 1),
+                       as_int(fine_theta_quarter, "fine_theta_quarter", 1))
+
+
+@lru_cache(maxsize=4)
+def _fig2_grids(u_max, d_io, alpha_max, paper_step, fine_alpha_per_unit, fine_theta_quarter):
     out = {}
     for name, (a, t) in (("paper", paper_grid(alpha_max, paper_step)),
                          ("fine", fine_grid(alpha_max, fine_alpha_per_unit, fine_theta_quarter))):
@@ -249,14 +152,14 @@ class Theorem4Audit:
 
 
 def _random_pair_scenes(n: int, seed: int):
-    """``n`` random two-sensor scenes ``(sensors (2, 2), target (2,), u_max)``, scales 1e-2 .. 1e2."""
+    """``n`` random two-sensor scenes ``(sensors (2, 2), target (2,), u_max)``, scales 1e-2 ..
+    1e2."""
     from ..scenes import random_scenes
 
-    return [(sc.sensors, sc.target, sc.u_max)
-            for sc in random_scenes(n, seed, n_sensors=(2, 2), scale=(1e-2, 1e2), kinds=("generic",))]
+    scenes = random_scenes(n, seed, n_sensors=(2, 2), scale=(1e-2, 1e2), kinds=("generic",))
+    return [(sc.sensors, sc.target, sc.u_max) for sc in scenes]
 
 
-@lru_cache(maxsize=8)
 def theorem4_audit(
     n_rational_points: int, n_random_points: int, seed: int, digits: int = 50
 ) -> Theorem4Audit:
@@ -284,12 +187,20 @@ def theorem4_audit(
     >>> a.max_error_pair_bounds < 1e-12
     True
     """
+    return _theorem4_audit(as_int(n_rational_points, "n_rational_points", 1),
+                           as_int(n_random_points, "n_random_points", 1), as_int(seed, "seed", 0),
+                           as_int(digits, "digits", 16))
+
+
+@lru_cache(maxsize=8)
+def _theorem4_audit(n_rational_points, n_random_points, seed, digits):
     import mpmath
 
     from .. import symbolic as sy
+    from ..symbolic.evaluation import max_difference_at_rational_points as mdiff
 
-    n_rat = positive_int("n_rational_points", n_rational_points)
-    n_rand = positive_int("n_random_points", n_random_points)
+    n_rat = as_int(n_rational_points, "n_rational_points", 1)
+    n_rand = as_int(n_random_points, "n_random_points", 1)
     res = sy.theorem4_residuals()
     polar_ok = all(e == 0 for e in res["polar matrix"])
     eig_ok = all(
@@ -302,7 +213,7 @@ def theorem4_audit(
     f_cart = sy.bound_from_eigenvalues(cmin, cmax)
     ranges = {s: (-3.0, 3.0) for s in sy.CARTESIAN_ARGS[:-1]}
     ranges[sy.U] = (0.0, 2.0)
-    cart_diff = max_difference_at_rational_points(
+    cart_diff = mdiff(
         f_cart, sy.theorem4_bound(), ranges, n_rat, seed, digits,
         point_map=lambda pt: sy.cartesian_ratio_values(pt, digits + 10),
     )
@@ -404,14 +315,18 @@ class Theorem5Audit:
     n_theta: int
 
 
-@lru_cache(maxsize=8)
-def theorem5_audit(
-    u_over_d: tuple,
-    alpha_max: float,
-    alpha_per_unit: int,
-    theta_quarter: int,
-    n_rational_points: int = 50,
-) -> Theorem5Audit:
+def _ratios_iv(u_over_d) -> tuple:
+    """The values of ``q = u_max / d_io`` of a Theorem 5 audit, a non-empty tuple of floats."""
+    if isinstance(u_over_d, np.ndarray):
+        u_over_d = u_over_d.tolist()
+    qs = tuple(as_nonnegative(q, "u_over_d") for q in as_sequence(u_over_d, "u_over_d"))
+    if not qs:
+        raise ValueError("u_over_d must list at least one value")
+    return qs
+
+
+def theorem5_audit(u_over_d: tuple, alpha_max: float, alpha_per_unit: int, theta_quarter: int,
+                   n_rational_points: int = 50) -> Theorem5Audit:
     """Locate the maximum and the zeros of the bound on :func:`fine_grid` for each ``q``.
 
     Theorem 5: the maximum ``1 / sqrt(1 + q^2)`` at ``alpha = 1``, ``theta = +-pi/2``; the
@@ -428,13 +343,20 @@ def theorem5_audit(
     >>> a.symbolic_max_exact
     True
     """
+    return _theorem5_audit(_ratios_iv(u_over_d), as_positive(alpha_max, "alpha_max"),
+                           as_int(alpha_per_unit, "alpha_per_unit", 1),
+                           as_int(theta_quarter, "theta_quarter", 1),
+                           as_int(n_rational_points, "n_rational_points", 1))
+
+
+@lru_cache(maxsize=8)
+def _theorem5_audit(u_over_d, alpha_max, alpha_per_unit, theta_quarter, n_rational_points):
     import sympy as sp
 
     from .. import symbolic as sy
+    from ..symbolic.evaluation import max_difference_at_rational_points as mdiff
 
-    qs = tuple(float(positive_float("u_over_d", q, allow_zero=True)) for q in u_over_d)
-    if not qs:
-        raise ValueError("u_over_d must list at least one value")
+    qs = u_over_d
     alpha, theta = fine_grid(alpha_max, alpha_per_unit, theta_quarter)
     gmax, argm, pred = [], [], []
     zero_lines = 0.0
@@ -454,7 +376,7 @@ def theorem5_audit(
         large = max(large, float(pair_bound_polar(1e6, theta, q).max()))
     f = sy.theorem4_bound()
     exact = sy.max_value_exact() == 0
-    printed = max_difference_at_rational_points(
+    printed = mdiff(
         sy.printed_max_halfpi(), f.subs(sy.THETA, sp.pi / 2),
         {sy.ALPHA: (0.01, 5.0), sy.Q: (0.0, 3.0)}, n_rational_points, 0, 30,
     )
@@ -482,7 +404,6 @@ class ThetaDerivativeAudit:
     corner_halfpi_slopes: tuple  #: (left, right) slopes in theta at alpha = 1, theta = pi/2, q = 1
 
 
-@lru_cache(maxsize=4)
 def theta_derivative_audit(n_rational_points: int, seed: int) -> ThetaDerivativeAudit:
     """Check the theta part of the proof of Theorem 5 symbolically (see
     :func:`obslib.symbolic.dbound_dtheta_closed`).
@@ -493,12 +414,19 @@ def theta_derivative_audit(n_rational_points: int, seed: int) -> ThetaDerivative
     >>> a.closed_form_equal, a.slope_at_zero_min > 0
     (True, True)
     """
+    return _theta_derivative_audit(
+        as_int(n_rational_points, "n_rational_points", 1), as_int(seed, "seed", 0)
+    )
+
+
+@lru_cache(maxsize=4)
+def _theta_derivative_audit(n_rational_points, seed):
     import mpmath
     import sympy as sp
 
     from .. import symbolic as sy
 
-    n = positive_int("n_rational_points", n_rational_points)
+    n = as_int(n_rational_points, "n_rational_points", 1)
     a, th, q = sy.ALPHA, sy.THETA, sy.Q
     closed_ok = sy.closed_forms_hold()["dtheta"]
     deriv = sy.lambdify_expr(sy.dbound_dtheta_closed(), sy.RATIO_ARGS, "mpmath", cse=True)
@@ -562,7 +490,6 @@ class AlphaDerivativeAudit:
     halfpi_second_derivative_below_1: float
 
 
-@lru_cache(maxsize=4)
 def alpha_derivative_audit(n_rational_points: int, seed: int) -> AlphaDerivativeAudit:
     """Check the alpha part of the proof of Theorem 5 (see
     :func:`obslib.symbolic.dbound_dalpha_closed`, :func:`obslib.symbolic.printed_dbound_dalpha`).
@@ -573,12 +500,19 @@ def alpha_derivative_audit(n_rational_points: int, seed: int) -> AlphaDerivative
     >>> a.closed_form_equal, a.numerator_equals_eq36, a.halfpi_printed_at_1
     (True, True, 0.0)
     """
+    return _alpha_derivative_audit(
+        as_int(n_rational_points, "n_rational_points", 1), as_int(seed, "seed", 0)
+    )
+
+
+@lru_cache(maxsize=4)
+def _alpha_derivative_audit(n_rational_points, seed):
     import mpmath
     import sympy as sp
 
     from .. import symbolic as sy
 
-    n = positive_int("n_rational_points", n_rational_points)
+    n = as_int(n_rational_points, "n_rational_points", 1)
     a, q = sy.ALPHA, sy.Q
     closed_ok = sy.closed_forms_hold()["dalpha"]
     num_ok = sp.expand(sy.stationarity_alpha() - sy.printed_stationarity_alpha()) == 0
@@ -629,7 +563,7 @@ def alpha_star_thetas(n_theta: int) -> np.ndarray:
     >>> (alpha_star_thetas(7) / np.pi).round(4)
     array([0.125, 0.25 , 0.375, 0.625, 0.75 , 0.875])
     """
-    n = positive_int("n_theta", n_theta)
+    n = as_int(n_theta, "n_theta", 1)
     theta = np.pi * (np.arange(1, n + 1) / (n + 1))
     return theta[np.abs(np.cos(theta)) > 1e-3]
 
@@ -650,7 +584,6 @@ class AlphaStarAudit:
     stationarity_at_1: str  #: Eq. (34) at alpha = 1, factored
 
 
-@lru_cache(maxsize=8)
 def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50) -> AlphaStarAudit:
     """Solve Eq. (34) numerically and in closed form on ``theta`` in ``(0, pi)`` for each ``q``.
 
@@ -665,11 +598,18 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
     >>> a.max_closed_vs_numeric < 1e-12, a.min_distance_from_1 > 0
     (True, True)
     """
+    return _alpha_star_audit(_ratios_iv(u_over_d), as_int(n_theta, "n_theta", 1),
+                             as_int(n_rational_points, "n_rational_points", 1))
+
+
+@lru_cache(maxsize=8)
+def _alpha_star_audit(u_over_d, n_theta, n_rational_points):
     import sympy as sp
 
     from .. import symbolic as sy
+    from ..symbolic.evaluation import max_difference_at_rational_points as mdiff
 
-    qs = tuple(float(positive_float("u_over_d", q, allow_zero=True)) for q in u_over_d)
+    qs = u_over_d
     theta = alpha_star_thetas(n_theta)
     coarse = np.linspace(0.0, 10.0, 1001)
     local = 1e-4 * np.arange(-50, 51)
@@ -690,7 +630,7 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
             min_dist = min(min_dist, float((num - 1.0).min()))
         else:
             q0 = max(q0, float(np.abs(num - 1.0).max()))
-    root = max_difference_at_rational_points(
+    root = mdiff(
         sy.stationarity_alpha().subs(sy.ALPHA, sp.sqrt(sy.alpha_star_squared())), 0,
         {sy.THETA: (0.02, 3.12), sy.Q: (0.0, 3.0)}, n_rational_points, 0, 40,
     )

@@ -14,7 +14,7 @@ and every entry the replay's pairs read must be known.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache, lru_cache
 
 import numpy as np
 
@@ -41,7 +41,7 @@ REPLAY_FILLS = (0.0, 10.0)
 LOG_TOLERANCE = 1e-9
 
 
-def _check_name(name) -> str:
+def _run_name_iv(name) -> str:
     if not isinstance(name, str) or name not in RUN_NAMES:
         raise ValueError(f"unknown published run {name!r}; accepted names: {', '.join(RUN_NAMES)}")
     return name
@@ -61,7 +61,7 @@ def replay_setup(name: str) -> tr.TrackingSetup:
     ...
     ValueError: unknown published run 'spiral'; accepted names: ...
     """
-    name = _check_name(name)
+    name = _run_name_iv(name)
     return tr.PAPER_ADVERSARIAL if name == "adversarial" else tr.PAPER_CIRCLE
 
 
@@ -141,7 +141,7 @@ def replay(name: str, fill: float = REPLAY_FILLS[0]) -> tr.TrackingResult:
     >>> r.steps, bool((r.pairs == published_run("best-pair").pairs).all())
     (315, True)
     """
-    name = _check_name(name)
+    name = _run_name_iv(name)
     try:
         fill = float(fill)
     except (TypeError, ValueError):
@@ -226,10 +226,10 @@ def compare_replay(name: str) -> ReplayComparison:
     >>> c.pair_mismatches, c.fills_agree
     (0, True)
     """
-    return _compare_replay(_check_name(name))
+    return _compare_replay(_run_name_iv(name))
 
 
-@lru_cache(maxsize=None)
+@cache
 def _compare_replay(name: str) -> ReplayComparison:
     pub = published_run(name)
     n = _replayable_steps(name)

@@ -13,9 +13,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .._validate import as_float_array, as_int, broadcast, check_scene_batch
 from ..bounds import lower_bounds, worst_case_controls
 from ..observability import inverse_condition_numbers, inverse_condition_numbers_polar
-from ..scenes import check_batch, random_scene_batch
+from ..scenes import random_scene_batch
 
 __all__ = [
     "Theorem1Audit",
@@ -143,6 +144,15 @@ def theorem3_terms(lam_before, lam_after, u2):
     >>> theorem3_terms((1.0, 4.0), (2.0, 4.0), u2=1.0)
     (4.0, 1.0)
     """
+    checked = {}
+    for name, lam in (("lam_before", lam_before), ("lam_after", lam_after), ("u2", u2)):
+        a = checked[name] = as_float_array(lam, name)
+        if name != "u2" and (a.ndim < 1 or a.shape[0] != 2):
+            raise ValueError(f"{name} must be (lambda_min, lambda_max), got shape {a.shape}")
+        if not np.isfinite(a).all() or (name == "u2" and (a < 0).any()):
+            raise ValueError(f"{name} must be finite" + (" and non-negative" * (name == "u2")))
+    broadcast({"lam_before": checked["lam_before"][0], "lam_after": checked["lam_after"][0],
+               "u2": checked["u2"]})
     (lmin, lmax), (lmin2, lmax2) = lam_before, lam_after
     return lmin2 * lmax - lmax2 * lmin, u2 * (lmin2 - lmin)
 
@@ -164,13 +174,14 @@ def theorem3_audit(n_trials: int, seed: int) -> Theorem3Audit:
     r"""Check Theorem 3 and the condition printed in its proof on random configurations.
 
     Each trial draws a "before" and an "after" set of 2-4 sensors, uniform in a square of
-    half-side :math:`10^{U(-1, 1)}` around a target at the origin, and a speed :math:`u \sim U(0, 2)`. The
-    theorem's condition ("stated") is that both :math:`C^{-1}(O(o))` and :math:`\sigma_{\min}(O(o))` do
-    not decrease; the proof's Eq. (27) ("printed") asks instead for the ratio not to decrease
-    and :math:`\lambda'_{\min} \ge \lambda_{\max}`. Also counted: each half of the stated condition alone,
-    and the weaker condition of Remark 2 (:math:`T_1 + T_2 \ge 0`), which is necessary and sufficient.
-    All trials are drawn and evaluated at once (``eigvalsh`` of the stacked 2x2 matrices
-    :math:`O(o)^T O(o)`); a witness is the first trial, in draw order, of its row.
+    half-side :math:`10^{U(-1, 1)}` around a target at the origin, and a speed
+    :math:`u \sim U(0, 2)`. The theorem's condition ("stated") is that both :math:`C^{-1}(O(o))` and
+    :math:`\sigma_{\min}(O(o))` do not decrease; the proof's Eq. (27) ("printed") asks instead for
+    the ratio not to decrease and :math:`\lambda'_{\min} \ge \lambda_{\max}`. Also counted: each
+    half of the stated condition alone, and the weaker condition of Remark 2
+    (:math:`T_1 + T_2 \ge 0`), which is necessary and sufficient. All trials are drawn and evaluated
+    at once (``eigvalsh`` of the stacked 2x2 matrices :math:`O(o)^T O(o)`); a witness is the first
+    trial, in draw order, of its row.
 
     Examples
     --------
@@ -179,15 +190,15 @@ def theorem3_audit(n_trials: int, seed: int) -> Theorem3Audit:
     ...  a.remark2_necessary_violations)
     ((168, 0), True, 0)
     """
-    rng = np.random.default_rng(seed)
-    T = int(n_trials)
+    rng = np.random.default_rng(as_int(seed, "seed", 0))
+    T = as_int(n_trials, "n_trials", 1)
     counts_n = rng.integers(2, 5, size=(T, 2))  # sensors before / after
     scale = 10.0 ** rng.uniform(-1, 1, size=(T, 2))
     sensors = rng.uniform(-1, 1, size=(T, 2, 4, 2)) * scale[..., None, None]
     u = rng.uniform(0, 2, size=T)
     valid = np.arange(4) < counts_n[..., None]  # (T, 2, 4)
     flat = np.where(valid[..., None], sensors, np.nan).reshape(2 * T, 4, 2)
-    check_batch(flat, np.zeros((2 * T, 2)), counts_n.reshape(-1))
+    check_scene_batch(flat, np.zeros((2 * T, 2)), counts_n.reshape(-1))
     rows = np.where(valid[..., None], -sensors, 0.0)  # o - p_i with o = 0, zero padding
     lam = np.linalg.eigvalsh(np.swapaxes(rows, -1, -2) @ rows)  # (T, 2, 2)
     u2 = u**2
@@ -246,10 +257,11 @@ def remark1_audit(n_scenes: int, seed: int, n_radii: int = 8, n_angles: int = 64
     For every scene: the exact :math:`C^{-1}` of the stationary target (:math:`O(o, 0)`, zero
     row included) against the bound in eigenvalue form with :math:`u_{\max} = 0` (``eigvalsh`` of
     :math:`O(o)^T O(o)`; compared as squares, since a tiny :math:`\lambda_{\min}` is only known to
-    :math:`\varepsilon \lambda_{\max}`); the exact :math:`C^{-1}` at the worst-case control (norm :math:`u_{\max}` along
-    the principal eigenvector) against the bound (SVD); and the minimum of the exact value
-    over a polar grid of the disc (:func:`obslib.controls.disc_controls`), which can only approach the bound
-    from above. All scenes at once, with the batched functions of :func:`theorem1_audit`.
+    :math:`\varepsilon \lambda_{\max}`); the exact :math:`C^{-1}` at the worst-case control (norm
+    :math:`u_{\max}` along the principal eigenvector) against the bound (SVD); and the minimum of
+    the exact value over a polar grid of the disc (:func:`obslib.controls.disc_controls`), which can
+    only approach the bound from above. All scenes at once, with the batched functions of
+    :func:`theorem1_audit`.
 
     Examples
     --------

@@ -13,8 +13,19 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..measures import MEASURES, measures_from_vectors, subset_masks
+from .._validate import (
+    as_choice,
+    as_eps,
+    as_instance,
+    as_int,
+    as_ints,
+    as_nonnegative,
+    as_positive,
+    as_sequence,
+    as_str,
+)
 from ..bound_tables import lower_bound_set_function, lower_bound_tables
+from ..measures import MEASURES, measures_from_vectors, subset_masks
 from ..submodularity import (
     ATOL,
     MAX_GROUND_SET,
@@ -116,8 +127,11 @@ def case_audit(case: str, min_sizes=(0, 2), u_max: float = FIG3_U_MAX, rtol: flo
     >>> c.verdict, [s for s, ok in c.matches.items() if not ok]
     ('refuted', [(0, 1, 2)])
     """
-    if case not in FIG3_CASES:
+    if as_str(case, "case") not in FIG3_CASES:
         raise ValueError(f"unknown case {case!r}; known: {list(FIG3_CASES)}")
+    min_sizes = as_ints(min_sizes, "min_sizes", 0)
+    u_max = as_nonnegative(u_max, "u_max")
+    rtol, atol = as_nonnegative(rtol, "rtol"), as_nonnegative(atol, "atol")
     sensors = FIG3_CASES[case]
     n = sensors.shape[0]
     omega = lower_bound_set_function(sensors, FIG3_TARGET, u_max)
@@ -168,8 +182,10 @@ def random_instances(n_instances: int, n_sensors: int, seed: int, kind: str = "g
     >>> sensors.shape, targets.shape
     ((3, 4, 2), (3, 2))
     """
-    if kind not in INSTANCE_KINDS:
+    if as_str(kind, "kind") not in INSTANCE_KINDS:
         raise ValueError(f"kind must be one of {INSTANCE_KINDS}, got {kind!r}")
+    n_instances, n_sensors = as_int(n_instances, "n_instances"), as_int(n_sensors, "n_sensors")
+    seed, side = as_int(seed, "seed", 0), as_positive(side, "side")
     if n_instances < 1 or not (1 <= n_sensors <= MAX_GROUND_SET):
         raise ValueError(f"need n_instances >= 1 and 1 <= n_sensors <= {MAX_GROUND_SET}")
     rng = np.random.default_rng(seed)
@@ -308,12 +324,15 @@ def measure_audit(name: str, n_instances: int, n_sensors: int, seed: int, eps: f
     >>> a.n_instances, a.increasing, a.submodular
     (40, True, True)
     """
-    if name not in MEASURES:
-        raise ValueError(f"unknown measure {name!r}; known: {MEASURES}")
+    as_choice(name, MEASURES, "measure")
+    if as_str(config, "config") not in [c[0] for c in CONFIGS]:
+        raise ValueError(f"unknown config {config!r}; known: {[c[0] for c in CONFIGS]}")
+    n_instances = as_int(n_instances, "n_instances", 1)
+    n_sensors = as_int(n_sensors, "n_sensors", 1)
+    seed, eps, u_max = as_int(seed, "seed", 0), as_eps(eps), as_nonnegative(u_max, "u_max")
     return _measure_audits((name,), n_instances, n_sensors, seed, eps, u_max, config)[name]
 
 
-@lru_cache(maxsize=8)
 def theorem8_audit(n_instances: int, n_sensors: int, seed: int, eps: float,
                    u_max: float) -> tuple[MeasureAudit, ...]:
     """Every measure of :data:`obslib.measures.MEASURES` under every one of :data:`CONFIGS`.
@@ -329,6 +348,17 @@ def theorem8_audit(n_instances: int, n_sensors: int, seed: int, eps: float,
     ...  sorted({r.measure for r in rows if not r.submodular}))
     (True, ['neg_trace_inverse', 'trace_inverse'])
     """
+    return _theorem8_audit(
+        as_int(n_instances, "n_instances", 1),
+        as_int(n_sensors, "n_sensors", 1),
+        as_int(seed, "seed", 0),
+        as_eps(eps),
+        as_nonnegative(u_max, "u_max"),
+    )
+
+
+@lru_cache(maxsize=8)
+def _theorem8_audit(n_instances, n_sensors, seed, eps, u_max):
     by_config = {c[0]: _measure_audits(MEASURES, n_instances, n_sensors, seed, eps, u_max, c[0])
                  for c in CONFIGS}
     return tuple(by_config[c[0]][name] for name in MEASURES for c in CONFIGS)
@@ -349,6 +379,10 @@ def theorem8_verdicts(rows) -> dict:
     >>> {k: verdicts[k] for k in ("trace", "logdet", "rank")}
     {'trace': 'reproduced', 'logdet': 'reproduced', 'rank': 'reproduced'}
     """
+
+    rows = as_sequence(rows, "rows")
+    for r in rows:
+        as_instance(r, MeasureAudit, "rows")
 
     def both(name):
         sel = [r for r in rows if r.measure == name]
@@ -384,7 +418,6 @@ class LowerBoundAudit:
         return asdict(self)
 
 
-@lru_cache(maxsize=8)
 def lower_bound_audit(n_instances: int, n_sensors: int, seed: int, u_max: float,
                       min_size: int = 2) -> LowerBoundAudit:
     """Exhaustive monotonicity/submodularity check of ``omega`` on ``generic`` random instances.
@@ -397,6 +430,17 @@ def lower_bound_audit(n_instances: int, n_sensors: int, seed: int, u_max: float,
     >>> a.n_not_increasing > 0, a.n_not_submodular > 0
     (True, True)
     """
+    return _lower_bound_audit(
+        as_int(n_instances, "n_instances", 1),
+        as_int(n_sensors, "n_sensors", 1),
+        as_int(seed, "seed", 0),
+        as_nonnegative(u_max, "u_max"),
+        as_int(min_size, "min_size", 0),
+    )
+
+
+@lru_cache(maxsize=8)
+def _lower_bound_audit(n_instances, n_sensors, seed, u_max, min_size):
     s, t = random_instances(n_instances, n_sensors, seed, "generic")
     vals = lower_bound_tables(t[:, None, :] - s, u_max)
     fl = audit_flags(vals, n_sensors, min_size)

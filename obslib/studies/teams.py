@@ -14,13 +14,37 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validate import as_eps, check_maximisable
+from .._validate import (
+    as_eps,
+    as_float_array,
+    as_int,
+    as_int_range,
+    as_ints,
+    as_positive,
+    as_str,
+    check_maximisable,
+)
 from ..bounds import relative_vectors
 from ..measures import MEASURES, measure_from_vectors, subset_masks
 from ..sweep import run_sweep
-from ..teams import MAXIMISABLE, best_team_labelling, greedy_team_assignment, greedy_team_counts, greedy_team_picks
+from ..teams import (
+    MAXIMISABLE,
+    best_team_labelling,
+    greedy_team_assignment,
+    greedy_team_counts,
+    greedy_team_picks,
+)
 
-__all__ = ["fig9_geometry", "fig9_trial", "fig9_trials", "fig9_sweep", "random_spread", "Evenness", "evenness", "greedy_vs_optimal_teams"]
+__all__ = [
+    "fig9_geometry",
+    "fig9_trial",
+    "fig9_trials",
+    "fig9_sweep",
+    "random_spread",
+    "Evenness",
+    "evenness",
+    "greedy_vs_optimal_teams",
+]
 
 
 def fig9_geometry(n_sensors, trial, seed, n_targets, side):
@@ -39,6 +63,9 @@ def fig9_geometry(n_sensors, trial, seed, n_targets, side):
     >>> bool((S1 != S).any())
     True
     """
+    n_sensors, trial = as_int(n_sensors, "n_sensors", 0), as_int(trial, "trial", 0)
+    seed, n_targets = as_int(seed, "seed", 0), as_int(n_targets, "n_targets", 0)
+    side = as_positive(side, "side")
     rng = np.random.default_rng([seed, n_sensors, trial])
     return rng.uniform(0, side, size=(n_sensors, 2)), rng.uniform(0, side, size=(n_targets, 2))
 
@@ -71,9 +98,14 @@ def fig9_trials(n_sensors: int, trials, seed: int, n_targets: int = 5, measure: 
     >>> fig9_trials(20, [0, 1], seed=0).sum(axis=1)
     array([20, 20])
     """
+    trials = as_ints(trials, "trials", 0)
     geoms = [fig9_geometry(n_sensors, t, seed, n_targets, side) for t in trials]
-    return greedy_team_counts(np.array([g[0] for g in geoms]).reshape(-1, n_sensors, 2),
-                              np.array([g[1] for g in geoms]).reshape(-1, n_targets, 2), measure, eps)
+    return greedy_team_counts(
+        np.array([g[0] for g in geoms]).reshape(-1, n_sensors, 2),
+        np.array([g[1] for g in geoms]).reshape(-1, n_targets, 2),
+        measure,
+        eps,
+    )
 
 
 def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: str = "logdet",
@@ -90,10 +122,19 @@ def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: st
     >>> fig9_sweep([20, 25], trials=2, seed=0).shape
     (2, 2, 5)
     """
-    N_values = [int(n) for n in N_values]
+    N_values = as_ints(N_values, "N_values", 0)
+    trials, seed = as_int(trials, "trials", 1), as_int(seed, "seed", 0)
+    as_str(measure, "measure")
     tasks = [
-        dict(n_sensors=n, trials=list(range(trials)), seed=seed, n_targets=n_targets, measure=measure, eps=eps,
-             side=side)
+        dict(
+            n_sensors=n,
+            trials=list(range(trials)),
+            seed=seed,
+            n_targets=n_targets,
+            measure=measure,
+            eps=eps,
+            side=side,
+        )
         for n in N_values
     ]
     counts = run_sweep(fig9_trials, tasks, backend, n_jobs, scheduler, progress)
@@ -110,6 +151,7 @@ def random_spread(n_sensors: int, n_targets: int) -> float:
     >>> round(random_spread(20, 5), 4)
     1.7889
     """
+    n_sensors, n_targets = as_int(n_sensors, "n_sensors", 0), as_int(n_targets, "n_targets", 1)
     p = 1.0 / n_targets
     return float(np.sqrt(n_sensors * p * (1 - p)))
 
@@ -142,8 +184,13 @@ def evenness(counts, N_values, n_targets: int) -> Evenness:
     >>> e.fair, bool((e.relative < 1).all())
     (array([4., 5.]), True)
     """
-    C = np.asarray(counts)
-    fair = np.asarray(N_values, dtype=float) / n_targets
+    C = as_float_array(counts, "counts")
+    N = as_float_array(N_values, "N_values")
+    n_targets = as_int(n_targets, "n_targets", 1)
+    if C.ndim != 3 or N.shape != (C.shape[0],) or C.shape[1] < 1:
+        raise ValueError(f"counts (len(N_values), trials, n_targets) and N_values must match, "
+                         f"got {C.shape} and {N.shape}")
+    fair = N / n_targets
     dev = np.abs(C.mean(axis=1) - fair[:, None])
     se = C.std(axis=1, ddof=1) / np.sqrt(C.shape[1]) if C.shape[1] > 1 else np.zeros(dev.shape)
     z = dev / np.where(se > 0, se, np.inf)
@@ -152,8 +199,15 @@ def evenness(counts, N_values, n_targets: int) -> Evenness:
     return Evenness(fair, within, baseline, within / baseline, float(dev.max()), z)
 
 
-def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets=(1, 3),
-                            measure: str = "logdet", eps: float = 1.0, side: float = 100.0) -> np.ndarray:
+def greedy_vs_optimal_teams(
+    n_instances: int,
+    seed: int,
+    sensors=(3, 7),
+    targets=(1, 3),
+    measure: str = "logdet",
+    eps: float = 1.0,
+    side: float = 100.0,
+) -> np.ndarray:
     """Greedy / exact optimum of Problem 2 on tiny random instances (array of ratios).
 
     Instances are drawn one after the other (``N``, then ``L``, then sensors and targets); those of
@@ -169,6 +223,9 @@ def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets
     """
     e = as_eps(eps)
     check_maximisable(measure, e, MEASURES, MAXIMISABLE)
+    n_instances, seed = as_int(n_instances, "n_instances", 1), as_int(seed, "seed", 0)
+    sensors, targets = as_int_range(sensors, "sensors", 1), as_int_range(targets, "targets", 1)
+    side = as_positive(side, "side")
     rng = np.random.default_rng(seed)
     draws = []
     for _ in range(n_instances):
@@ -178,15 +235,21 @@ def greedy_vs_optimal_teams(n_instances: int, seed: int, sensors=(3, 7), targets
     out = np.ones(n_instances)
     for n, L in sorted({(d[0], d[1]) for d in draws}):
         idx = [k for k, d in enumerate(draws) if d[:2] == (n, L)]
-        V = np.stack([relative_vectors(draws[k][2], draws[k][3]) for k in idx])  # (K, N, L, 2), validated
-        tables = [measure_from_vectors(V[:, :, l, :], subset_masks(n), measure, e) for l in range(L)]  # (K, 2^N)
+        V = np.stack(
+            [relative_vectors(draws[k][2], draws[k][3]) for k in idx]
+        )  # (K, N, L, 2), validated
+        tables = [
+            measure_from_vectors(V[:, :, l, :], subset_masks(n), measure, e) for l in range(L)
+        ]  # (K, 2^N)
         bits = 1 << np.arange(n, dtype=np.int64)
         opt = best_team_labelling(np.stack(tables))[1]
         picks_i, picks_l = greedy_team_picks(np.stack([draws[k][2] for k in idx]),
                                              np.stack([draws[k][3] for k in idx]), measure, e)
         g = np.zeros(len(idx))
         for l in range(L):
-            g += np.take_along_axis(tables[l], (np.where(picks_l == l, bits[picks_i], 0)).sum(axis=1)[:, None], 1)[:, 0]
+            g += np.take_along_axis(
+                tables[l], (np.where(picks_l == l, bits[picks_i], 0)).sum(axis=1)[:, None], 1
+            )[:, 0]
         with np.errstate(divide="ignore", invalid="ignore"):
             out[idx] = np.where(opt > 0, g / opt, 1.0)
     return out

@@ -11,6 +11,15 @@ from __future__ import annotations
 import numpy as np
 
 from .. import tracking as tr
+from .._validate import (
+    ArgumentTypeError,
+    as_float_array,
+    as_instance,
+    as_int,
+    as_mapping,
+    as_nonnegative,
+    as_real,
+)
 from ..controls import disc_controls
 from ..tracking import BatchResult, TrackingResult, TrackingSetup
 
@@ -49,7 +58,8 @@ def near_published(ours, published, rtol: float = FIGURE_TOLERANCE):
     >>> near_published([0.70, 0.60], 0.79).tolist()
     [True, False]
     """
-    ours = np.asarray(ours, dtype=float)
+    ours = as_float_array(ours, "ours")
+    published, rtol = as_real(published, "published"), as_nonnegative(rtol, "rtol")
     if published == 0:
         return ours == 0
     return np.abs(ours - published) <= rtol * abs(published)
@@ -74,6 +84,7 @@ def partner_arms(setup: TrackingSetup) -> dict:
     >>> sorted(arms), arms[0][0].fixed_pair, arms[0][1]
     ([0, 2, 3, 4, 5], (1, 0), 'fixed-pair')
     """
+    as_instance(setup, TrackingSetup, "setup")
     return {
         j: (setup.replace(fixed_pair=(setup.anchor, j)), "fixed-pair")
         for j in range(setup.n_sensors)
@@ -97,6 +108,9 @@ def partner_summary(runs: dict) -> dict:
     >>> sorted(s[0])
     ['lost', 'mean_bound', 'mean_error', 'mean_trace', 'median_error']
     """
+    runs = as_mapping(runs, "runs")
+    for r in runs.values():
+        as_instance(r, BatchResult, "runs")
     out = {}
     for j, r in runs.items():
         run_err = r.error[:, 1:].mean(axis=1)
@@ -141,9 +155,9 @@ def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> di
     >>> bool(np.isclose(ps[0]["mean_error"], e, rtol=1e-9))
     True
     """
-    tr.check_setup(setup)
-    n_seeds = tr.check_count(n_seeds, "n_seeds")
-    first_seed = tr.check_seed(first_seed, "first_seed")
+    as_instance(setup, tr.TrackingSetup, "setup")
+    n_seeds = as_int(n_seeds, "n_seeds", 1)
+    first_seed = as_int(first_seed, "first_seed", 0)
     seeds = range(first_seed, first_seed + n_seeds)
     return partner_summary(tr.simulate_many(partner_arms(setup), seeds=seeds))
 
@@ -163,6 +177,10 @@ def best_partners(ps: dict) -> dict:
     >>> list(best) == list(keys), [best[k] for k in keys]
     (True, [2, 0, 2, 0, 2])
     """
+    ps = as_mapping(ps, "ps")
+    keys = ("mean_trace", "mean_error", "median_error", "lost", "mean_bound")
+    if not ps or not all(isinstance(v, dict) and all(k in v for k in keys) for v in ps.values()):
+        raise ValueError(f"ps must map partners to rows of partner_summary (keys {keys})")
     best = {key: min(ps, key=lambda j: ps[j][key])
             for key in ("mean_trace", "mean_error", "median_error", "lost")}
     best["mean_bound"] = max(ps, key=lambda j: ps[j]["mean_bound"])
@@ -179,11 +197,25 @@ def stretches(mask, first: int = 1, min_length: int = 1) -> list:
     >>> stretches([True, True, False, True], first=1)
     [(1, 2), (4, 4)]
     """
-    m = np.asarray(mask, dtype=bool).ravel()
+    m = np.asarray(mask)
+    if m.dtype.kind != "b" and not (m.dtype.kind in "iu" and np.isin(m, (0, 1)).all()):
+        raise ArgumentTypeError(f"mask must be booleans, got dtype {m.dtype}")
+    m = m.astype(bool).ravel()
+    first, min_length = as_int(first, "first"), as_int(min_length, "min_length", 1)
     edge = np.diff(np.concatenate([[0], m.astype(np.int8), [0]]))
     starts, ends = np.flatnonzero(edge == 1), np.flatnonzero(edge == -1) - 1
     return [(int(a) + first, int(b) + first) for a, b in zip(starts, ends)
             if b - a + 1 >= min_length]
+
+
+def _window_iv(window) -> tuple:
+    """A window of steps ``(lo, hi)``, ``1 <= lo < hi``."""
+    if not (isinstance(window, (tuple, list)) and len(window) == 2):
+        raise ValueError(f"window must be (lo, hi), got {window!r}")
+    lo, hi = as_int(window[0], "window", 1), as_int(window[1], "window", 1)
+    if hi <= lo:
+        raise ValueError(f"window must have lo < hi, got {window!r}")
+    return lo, hi
 
 
 def _window_mask(size: int, window) -> np.ndarray:
@@ -206,7 +238,13 @@ def window_rates(switched, window=K50_WINDOW) -> tuple:
     >>> window_rates(switched, (30, 70))
     (1.0, 0.0)
     """
-    r = np.asarray(switched, dtype=float)
+    r = np.asarray(switched)
+    if r.dtype.kind not in "biuf":
+        raise ArgumentTypeError(f"switched must be a numeric series, got dtype {r.dtype}")
+    r = r.astype(float).ravel()
+    window = _window_iv(window)
+    if r.size < window[1] or not np.isfinite(r).all():
+        raise ValueError(f"switched must be a finite series of at least {window[1]} steps")
     win = _window_mask(r.size, window)
     return float(r[win].mean()), float(r[~win].mean())
 
@@ -229,9 +267,13 @@ def hot_windows(rate, window=K50_WINDOW, level=None) -> list:
     >>> hot_windows(rate, (30, 70), level=0.46)
     [(99, 141)]
     """
-    lo, hi = window
+    lo, hi = window = _window_iv(window)
     width = hi - lo
-    rate = np.asarray(rate, dtype=float)
+    rate = as_float_array(rate, "rate")
+    if rate.ndim != 1 or rate.size < hi or not np.isfinite(rate).all():
+        raise ValueError(f"rate must be a finite series of at least {hi} steps, got {rate.shape}")
+    if level is not None:
+        level = as_real(level, "level")
     if level is None:
         level = window_rates(rate, window)[0]
     roll = np.convolve(rate, np.ones(width) / width, mode="valid")  # roll[m]: k = m+1 .. m+width
@@ -257,6 +299,9 @@ def correlations(mc: dict) -> dict:
     >>> sorted(c), sorted(c["own"]), -1 <= c["pooled"]["error"] <= 1
     (['euclidean', 'own', 'pooled'], ['best-pair', 'fixed-pair'], True)
     """
+    mc = as_mapping(mc, "mc")
+    for r in mc.values():
+        as_instance(r, BatchResult, "mc")
     own, eu = {}, {}
     for name, r in mc.items():
         own[name] = {k: float(np.median(v)) for k, v in tr.bound_correlation(r, "own").items()}
@@ -284,6 +329,11 @@ def least_run_wins(cmp: dict) -> float:
     ...                          "b": {"run_error": 0.9, "run_trace": 0.8}}})
     0.6
     """
+    cmp = as_mapping(cmp, "cmp")
+    if not isinstance(cmp.get("wins"), dict) or not cmp["wins"] or not all(
+            isinstance(w, dict) and "run_error" in w and "run_trace" in w
+            for w in cmp["wins"].values()):
+        raise ValueError("cmp must be a result of obslib.tracking.compare_strategies")
     return min(w[k] for w in cmp["wins"].values() for k in ("run_error", "run_trace"))
 
 
@@ -307,9 +357,9 @@ def adversary_variants(setup: TrackingSetup, n_radii: int, n_angles: int) -> dic
     >>> list(v), len(v["disc"].controls), v["disc, next-pair"].adversary
     (['paper', 'next-pair', 'disc', 'disc, next-pair'], 9, 'next-pair')
     """
-    tr.check_setup(setup)
-    disc = disc_controls(setup.u_max, tr.check_count(n_radii, "n_radii"),
-                         tr.check_count(n_angles, "n_angles"))
+    as_instance(setup, tr.TrackingSetup, "setup")
+    disc = disc_controls(setup.u_max, as_int(n_radii, "n_radii", 1),
+                         as_int(n_angles, "n_angles", 1))
     return {
         "paper": setup,
         "next-pair": setup.replace(adversary="next-pair"),
@@ -341,7 +391,8 @@ def entrapment_summary(batch: BatchResult) -> dict:
     ...  s["max_from_start"] <= s["reach"])
     (2, True, True)
     """
-    batch.true_icn, batch.objective  # computed once for all runs
+    as_instance(batch, BatchResult, "batch")
+    _ = (batch.true_icn, batch.objective)  # computed once for all runs
     es = [tr.entrapment(batch.run(b)) for b in range(batch.n_runs)]
     return {
         "entrapped": float(np.mean([tr.is_entrapped(e) for e in es])),
@@ -384,6 +435,7 @@ def switch_mechanism(result: TrackingResult) -> dict:
     ...  0 <= m["closer"] <= 19)
     (19, True, True)
     """
+    as_instance(result, TrackingResult, "result")
     s = result.setup.sensor_array
     ps = s[result.pairs]
     before = np.hypot(*(result.truth[:, None, :] - ps).transpose(2, 0, 1)).min(axis=1)
@@ -425,6 +477,7 @@ def pooled_switch_mechanism(batch: BatchResult) -> dict:
     >>> p["transitions"], p["switches"] == int(batch.switched.sum())
     (38, True)
     """
+    as_instance(batch, BatchResult, "batch")
     ms = [switch_mechanism(batch.run(b)) for b in range(batch.n_runs)]
     trans = sum(m["transitions"] for m in ms)
     closer = sum(m["closer"] for m in ms)

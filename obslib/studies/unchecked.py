@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._validate import as_eps, as_float_array, as_int, as_ints, as_nonnegative, as_positive
 from ..bounds import relative_vectors
 from ..observability import inverse_condition_number
 from ..teams import greedy_team_assignment
@@ -46,12 +47,10 @@ def one_sensor_best(distance, u_max):
     >>> one_sensor_best([0.5, 2.0], 1.0).tolist()
     [1.0, 0.5]
     """
-    d = np.asarray(distance, dtype=float)
-    u_max = float(u_max)
+    d = as_float_array(distance, "distance")
+    u_max = as_nonnegative(u_max, "u_max")
     if not (np.isfinite(d).all() and (d > 0).all()):
         raise ValueError("distances must be positive and finite")
-    if not np.isfinite(u_max) or u_max < 0:
-        raise ValueError(f"u_max must be a non-negative number, got {u_max!r}")
     return np.minimum(u_max, d) / d
 
 
@@ -124,7 +123,11 @@ def team_constraint(N_values, trials: int, seed: int = 0, n_targets: int = 5, ep
     """
     out = {k: [] for k in ("targets_per_sensor", "team_min", "team_max", "constrained",
                            "unconstrained")}
-    for n in [int(v) for v in N_values]:
+    N_values = as_ints(N_values, "N_values", 0)
+    trials, seed = as_int(trials, "trials", 1), as_int(seed, "seed", 0)
+    n_targets, eps = as_int(n_targets, "n_targets", 1), as_eps(eps)
+    side = as_positive(side, "side")
+    for n in N_values:
         per_sensor, lo, hi, con, unc = 0, n, 0, [], []
         for t in range(int(trials)):
             S, T = fig9_geometry(n, t, seed, n_targets, side)

@@ -1,5 +1,6 @@
 """Audits of the Weyl step of Theorem 1's proof for 2x2 symmetric matrices: Eqs. (18)-(19) and the
-appendix's range of the dual Weyl inequality (notebook 02, claims of :mod:`obslib.claims.pair_form`)."""
+appendix's range of the dual Weyl inequality (notebook 02, claims of
+:mod:`obslib.claims.pair_form`)."""
 
 from __future__ import annotations
 
@@ -8,7 +9,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._validate import positive_int
+from .._validate import as_int
 from ..pair_form import random_symmetric_2x2, weyl_2x2_slacks
 
 __all__ = ["dual_weyl_printed_range", "WeylAudit", "weyl_audit"]
@@ -26,7 +27,7 @@ def dual_weyl_printed_range(r: int = 2) -> list[tuple[int, int, int]]:
     >>> dual_weyl_printed_range(2)
     [(1, 1, 0), (1, 2, 1), (2, 1, 1), (2, 2, 2)]
     """
-    r = positive_int("r", r)
+    r = as_int(r, "r", 1)
     return [(i, j, i + j - r) for i in range(1, r + 1) for j in range(1, r + 1) if i + j - r <= r]
 
 
@@ -49,7 +50,6 @@ class WeylAudit:
     invalid_indices: tuple  #: those with index < 1
 
 
-@lru_cache(maxsize=4)
 def weyl_audit(n_pairs: int, seed: int) -> WeylAudit:
     """Symbolic (triangle inequality) and random checks of Eqs. (18)-(19) for 2x2 matrices.
 
@@ -62,11 +62,16 @@ def weyl_audit(n_pairs: int, seed: int) -> WeylAudit:
     >>> a.invalid_indices
     ((1, 1, 0),)
     """
+    return _weyl_audit(as_int(n_pairs, "n_pairs", 1), as_int(seed, "seed", 0))
+
+
+@lru_cache(maxsize=4)
+def _weyl_audit(n_pairs, seed):
     import sympy as sp
 
     from .. import symbolic as sy
 
-    n = positive_int("n_pairs", n_pairs)
+    n = as_int(n_pairs, "n_pairs", 1)
     sym = {k: bool(sp.expand(s - t) == 0) for k, (s, t) in sy.weyl_2x2_slacks().items()}
     X = random_symmetric_2x2(n, seed)
     Y = random_symmetric_2x2(n, seed + 1)

@@ -69,3 +69,19 @@ def _double_angle(expr: sp.Expr) -> sp.Expr:
     """Products of ``sin``/``cos`` rewritten with double angles (SymPy's ``fu`` rules: TR8
     product-to-sum, TR5 ``sin^2 = 1 - cos^2``, TR10i sum-to-angle-difference)."""
     return TR10i(sp.expand(TR5(sp.expand(TR8(expr)))))
+
+
+def as_expr(value, name: str) -> sp.Expr:
+    """``value`` as a SymPy expression (a number or an expression; not text, which SymPy would
+    parse), or an :class:`obslib._validate.ArgumentTypeError` naming ``name``."""
+    from .._validate import ArgumentTypeError
+
+    if isinstance(value, (str, bytes, bool)) or value is None:
+        raise ArgumentTypeError(f"{name} must be a SymPy expression, got {value!r}")
+    try:
+        out = sp.sympify(value, strict=True)
+    except (sp.SympifyError, TypeError, ValueError):
+        raise ArgumentTypeError(f"{name} must be a SymPy expression, got {value!r}") from None
+    if not isinstance(out, sp.Expr):
+        raise ArgumentTypeError(f"{name} must be a SymPy expression, got {value!r}")
+    return out

@@ -8,13 +8,25 @@ compared by polynomial arithmetic.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 from sympy.simplify.fu import TR5, TR8
 
 from ._common import (
-    D_IO, D_JO, OX, OY, PIX, PIY, PJX, PJY, THETA_I, THETA_J, _double_angle, _eigen_parts,
+    D_IO,
+    D_JO,
+    OX,
+    OY,
+    PIX,
+    PIY,
+    PJX,
+    PJY,
+    THETA_I,
+    THETA_J,
+    _double_angle,
+    _eigen_parts,
+    as_expr,
 )  # fmt: skip
 
 __all__ = [
@@ -38,7 +50,7 @@ def relative_rows() -> sp.Matrix:
     return sp.Matrix([[OX - PIX, OY - PIY], [OX - PJX, OY - PJY]])
 
 
-@lru_cache(maxsize=None)
+@cache
 def cartesian_gram() -> sp.Matrix:
     r""":math:`O_{ij}(o)^T O_{ij}(o)` in Cartesian coordinates, derived (the true Eq. (32)).
 
@@ -101,7 +113,7 @@ def polar_substitution() -> dict:
     }
 
 
-@lru_cache(maxsize=None)
+@cache
 def polar_gram() -> sp.Matrix:
     r""":math:`O_{ij}^T O_{ij}` after the polar substitution of Eq. (8), derived.
 
@@ -179,7 +191,7 @@ def eigenvalues(m: sp.Matrix) -> tuple[sp.Expr, sp.Expr]:
     return (tr - root) / 2, (tr + root) / 2
 
 
-@lru_cache(maxsize=None)
+@cache
 def cartesian_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
     """:func:`eigenvalues` of :func:`cartesian_gram`, cached.
 
@@ -196,7 +208,7 @@ def cartesian_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
     return eigenvalues(cartesian_gram())
 
 
-@lru_cache(maxsize=None)
+@cache
 def polar_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
     r""":func:`eigenvalues` of :func:`polar_gram`, in double-angle form, cached.
 
@@ -250,7 +262,7 @@ def pythagorean_remainder(expr: sp.Expr) -> sp.Expr:
     """
     ci, si, cj, sj = sp.symbols("c_i s_i c_j s_j", real=True)
     rep = {sp.cos(THETA_I): ci, sp.sin(THETA_I): si, sp.cos(THETA_J): cj, sp.sin(THETA_J): sj}
-    poly = sp.expand(sp.expand_trig(expr).subs(rep))
+    poly = sp.expand(sp.expand_trig(as_expr(expr, "expr")).subs(rep))
     if poly.has(THETA_I, THETA_J):
         raise ValueError("expr is not a polynomial in cos and sin of theta_i, theta_j")
     gens = (ci, cj, si, sj)

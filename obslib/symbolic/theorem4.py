@@ -15,17 +15,41 @@ the paper as residuals that are 0 exactly when the two agree.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
+import numpy as np
 import sympy as sp
 
+from .._validate import ArgumentTypeError, as_bool, as_int, as_mapping
 from ._common import (
-    ALPHA, CARTESIAN_ARGS, D_IO, D_JO, OX, OY, PIX, PIY, PJX, PJY, Q, THETA, THETA_I, THETA_J, U,
-    _COS2, _D, _N,
+    _COS2,
+    _D,
+    _N,
+    ALPHA,
+    CARTESIAN_ARGS,
+    D_IO,
+    D_JO,
+    OX,
+    OY,
+    PIX,
+    PIY,
+    PJX,
+    PJY,
+    THETA,
+    THETA_I,
+    THETA_J,
+    Q,
+    U,
+    as_expr,
 )  # fmt: skip
 from .gram import (
-    discriminant_cartesian, eigenvalues, polar_eigenvalues, polar_gram, printed_eigenvalues,
-    printed_polar_gram, pythagorean_remainder,
+    discriminant_cartesian,
+    eigenvalues,
+    polar_eigenvalues,
+    polar_gram,
+    printed_eigenvalues,
+    printed_polar_gram,
+    pythagorean_remainder,
 )  # fmt: skip
 
 __all__ = [
@@ -45,6 +69,7 @@ def bound_from_eigenvalues(lmin, lmax, u=U) -> sp.Expr:
     >>> sy.bound_from_eigenvalues(sp.Integer(1), 3, u=1)
     1/2
     """
+    lmin, lmax, u = as_expr(lmin, "lmin"), as_expr(lmax, "lmax"), as_expr(u, "u")
     return sp.sqrt(lmin / (lmax + u**2))
 
 
@@ -72,13 +97,13 @@ def pull_out_of_roots(expr: sp.Expr) -> sp.Expr:
     >>> sy.pull_out_of_roots(sp.sqrt(sy.D_IO**4 + sy.D_IO**4 * sy.ALPHA**2))
     d_io**2*sqrt(alpha**2 + 1)
     """
-    return sp.sympify(expr).replace(
+    return as_expr(expr, "expr").replace(
         lambda e: e.is_Pow and e.exp.is_Rational and e.exp.q == 2,
         lambda e: sp.factor_terms(e.base) ** e.exp,
     )
 
 
-@lru_cache(maxsize=None)
+@cache
 def polar_ratio() -> sp.Expr:
     r""":math:`\lambda_{\min} / (\lambda_{\max} + u^2)` of :func:`polar_eigenvalues` after
     :func:`ratio_substitution`: :math:`d_{io}^2` leaves the square root
@@ -127,6 +152,13 @@ def cartesian_ratio_values(point: dict, digits: int | None = None) -> dict:
     >>> v[sy.ALPHA], v[sy.THETA], v[sy.Q]
     (2, pi/2, 1)
     """
+    point = as_mapping(point, "point")
+    for k, x in point.items():
+        if not isinstance(x, (int, float, sp.Rational, sp.Integer)) or isinstance(x, bool) or (
+                isinstance(x, float) and not np.isfinite(x)):
+            raise ArgumentTypeError(f"point: the value of {k} must be a finite number, got {x!r}")
+    if digits is not None:
+        digits = as_int(digits, "digits", 1)
     missing = [s for s in CARTESIAN_ARGS if s not in point]
     if missing:
         raise ValueError(f"point lacks values for {missing}")
@@ -150,7 +182,7 @@ def _ratio_values(v: dict, hypot, atan2) -> dict:
     return {ALPHA: dj / di, THETA: atan2(vjy, vjx) - atan2(viy, vix), Q: v[U] / di}
 
 
-@lru_cache(maxsize=None)
+@cache
 def theorem4_residuals() -> dict[str, sp.Expr]:
     r"""Every comparison of the derivation of Theorem 4 with the paper, as a residual that is 0
     exactly when the two agree (computed once).
@@ -202,7 +234,6 @@ def theorem4_radicand() -> sp.Expr:
     return 1 + ALPHA**4 + 2 * ALPHA**2 * _COS2
 
 
-@lru_cache(maxsize=None)
 def theorem4_bound(squared: bool = False) -> sp.Expr:
     r"""Theorem 4 (Eq. (9)) in :math:`\alpha`, :math:`\theta = \theta_{ji}` and
     :math:`q = u / d_{io}`.
@@ -220,6 +251,11 @@ def theorem4_bound(squared: bool = False) -> sp.Expr:
     >>> sy.theorem4_bound().subs({sy.ALPHA: 1, sy.THETA: sp.pi / 2, sy.Q: 0})
     1
     """
+    return _theorem4_bound(as_bool(squared, "squared"))
+
+
+@cache
+def _theorem4_bound(squared):
     ratio = _N / _D
     return ratio if squared else sp.sqrt(ratio)
 
@@ -257,14 +293,16 @@ def vanishes_with_radicals(expr: sp.Expr, radicals) -> bool:
     >>> sy.vanishes_with_radicals(r - sy.ALPHA - 1, [r])
     False
     """
-    radicals = [sp.sympify(r) for r in radicals]
+    if isinstance(radicals, (str, bytes)) or not isinstance(radicals, (list, tuple)):
+        raise ArgumentTypeError(f"radicals must be a list of square roots, got {radicals!r}")
+    radicals = [as_expr(r, "radicals") for r in radicals]
     if not all(r.is_Pow and r.exp == sp.S.Half for r in radicals):
         raise ValueError("radicals must be square roots")
     for k, r in enumerate(radicals):
         if any(r.base.has(outer) for outer in radicals[:k]):
             raise ValueError("radicals must be listed outermost first")
     ys = [sp.Dummy(f"y{k}") for k in range(len(radicals))]
-    e = sp.sympify(expr)
+    e = as_expr(expr, "expr")
     for r, y in zip(radicals, ys):
         e = e.subs(r, y)
     bases = [r.base.subs(dict(zip(radicals[k + 1:], ys[k + 1:]))) for k, r in enumerate(radicals)]

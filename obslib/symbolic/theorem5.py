@@ -9,11 +9,12 @@ which the paper does not give.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
-from ._common import ALPHA, C_SYM, D_SYM, Q, S_SYM, THETA, _COS2, _D, _S
+from .._validate import as_bool
+from ._common import _COS2, _D, _S, ALPHA, C_SYM, D_SYM, S_SYM, THETA, Q
 from .theorem4 import pull_out_of_roots, theorem4_bound, vanishes_with_radicals
 
 __all__ = [
@@ -25,7 +26,7 @@ __all__ = [
 ]  # fmt: skip
 
 
-@lru_cache(maxsize=None)
+@cache
 def max_value_exact() -> sp.Expr:
     r""":math:`C^{-1}(\alpha = 1, \theta = \pi/2) - 1 / \sqrt{1 + q^2}` with the common factor
     pulled out of the square roots (:func:`pull_out_of_roots`); 0 when Theorem 5's maximum value
@@ -41,7 +42,7 @@ def max_value_exact() -> sp.Expr:
     return sp.expand(pull_out_of_roots(at) - 1 / sp.sqrt(1 + Q**2))
 
 
-@lru_cache(maxsize=None)
+@cache
 def dbound_dtheta() -> sp.Expr:
     r""":math:`\partial C^{-1} / \partial\theta` of Theorem 4's expression, by SymPy (valid where
     :math:`S > 0` and :math:`C^{-1} > 0`).
@@ -59,7 +60,7 @@ def dbound_dtheta() -> sp.Expr:
 
 
 def _parts(abbreviate: bool):
-    if abbreviate:
+    if as_bool(abbreviate, "abbreviate"):
         return S_SYM, C_SYM, D_SYM
     return _S, theorem4_bound(), _D
 
@@ -108,7 +109,7 @@ def dbound_dtheta_at_zero() -> sp.Expr:
     return ALPHA / sp.sqrt((1 + ALPHA**2) * (1 + ALPHA**2 + Q**2))
 
 
-@lru_cache(maxsize=None)
+@cache
 def dbound_dalpha() -> sp.Expr:
     r""":math:`\partial C^{-1} / \partial\alpha` of Theorem 4's expression, by SymPy.
 
@@ -146,7 +147,7 @@ def stationarity_alpha(abbreviate: bool = False) -> sp.Expr:
     return (1 - ALPHA**2) * (1 - _COS2) + Q**2 * (S - (ALPHA**2 + _COS2))
 
 
-@lru_cache(maxsize=None)
+@cache
 def stationarity_alpha_at_1() -> sp.Expr:
     r"""Eq. (34) at :math:`\alpha = 1`, factored.
 
@@ -163,7 +164,7 @@ def stationarity_alpha_at_1() -> sp.Expr:
     return sp.factor(sp.expand(sp.expand_trig(stationarity_alpha().subs(ALPHA, 1))))
 
 
-@lru_cache(maxsize=None)
+@cache
 def closed_forms_hold() -> dict[str, bool]:
     r"""Whether SymPy's derivatives equal the factored forms, decided once by
     :func:`vanishes_with_radicals` with the radicals :math:`C` (Eq. (9)) and :math:`S`.
@@ -302,7 +303,7 @@ def bound_halfpi_piecewise() -> sp.Expr:
     )
 
 
-@lru_cache(maxsize=None)
+@cache
 def alpha_star_squared() -> sp.Expr:
     r""":math:`\alpha^{*2}`, the square of the maximising :math:`\alpha` for a fixed
     :math:`\theta`, derived.

@@ -31,12 +31,12 @@ prints a few readable lines and, last, one JSON object.
     trivial notebooks the same way, the fixed cost of a kernel per notebook, each one just
     before a notebook; ``exec_over_floor`` their ratio (target <= 3). ``stack_floor_s``: as many
     minimal notebooks of this book, each importing the stack every notebook starts with
-    (matplotlib, NumPy, pandas, myst-nb's ``glue``, ``obslib``, :func:`obslib.notebook.setup_figures`)
-    and showing one small figure; ``stack_over_floor`` is what that start costs before any
-    content, and ``exec_over_stack`` what the notebooks cost over it (a regression guard: at
-    most 2.5). The notebooks also run ``jobs`` at a time as ``make book`` runs them
-    (``--jobs``, default the cores available), in groups of similar length, each group right
-    after its notebooks ran alone: ``parallel_s`` sums the groups' wall times and
+    (matplotlib, NumPy, pandas, myst-nb's ``glue``, ``obslib``, ``obsbook.setup()``) and
+    showing one small figure; ``stack_over_floor`` is
+    what that start costs before any content, and ``exec_over_stack`` what the notebooks cost over
+    it (a regression guard: at most 2.5). The notebooks also run ``jobs`` at a time as ``make book``
+    runs them (``--jobs``, default the cores available), in groups of similar length, each group
+    right after its notebooks ran alone: ``parallel_s`` sums the groups' wall times and
     ``parallel_speedup`` is ``exec_s`` over it (target at least 1.6 on two cores).
     ``--profile quick`` runs the notebooks at the ``quick`` profile's tiny sizes instead: what
     the same notebooks, figures and derivations cost with almost no computation.
@@ -56,10 +56,28 @@ import time
 
 import numpy as np
 
+from .._validate import (
+    as_argv,
+    as_bool,
+    as_int,
+    as_ints,
+    as_mapping,
+    as_nonnegative,
+    as_points,
+    as_str,
+)
+
 __all__ = [
-    "one_pass", "bench_assignment", "bench_book", "bench_criteria", "bench_scaling", "evaluation_counts", "literal_count",
+    "one_pass",
+    "bench_assignment",
+    "bench_book",
+    "bench_criteria",
+    "bench_scaling",
+    "evaluation_counts",
+    "literal_count",
     "COUNTED",
-    "SCALING_SIZES", "main",
+    "SCALING_SIZES",
+    "main",
 ]
 
 #: Sizes ``N`` at which :func:`bench_scaling` times each algorithm (``L = N / 2``).
@@ -93,6 +111,9 @@ def one_pass(sensors, targets, u_max, chunk: int = 1 << 20, progress: bool = Fal
     >>> one_pass([[0, 0], [1, 0], [3, 1]], [[1, 1]], 1.0) >= 0  # in seconds
     True
     """
+    sensors, targets = as_points(sensors, "sensors"), as_points(targets, "targets")
+    u_max, chunk = as_nonnegative(u_max, "u_max"), as_int(chunk, "chunk", 1)
+    as_bool(progress, "progress")
     from tqdm import tqdm
 
     from ..assignment import upper_pair_weight_blocks
@@ -117,9 +138,13 @@ def evaluation_counts(sizes: dict, seed: int = 0) -> dict:
 
     Examples
     --------
-    >>> sorted(evaluation_counts({"N=6, L=2": (6, 2)}))  # doctest: +SKIP
-    ['N=6, L=2']
+    >>> sorted(evaluation_counts({"relaxed matching": [6, 8]}))
+    ['one pass', 'relaxed matching']
     """
+    sizes = as_mapping(sizes, "sizes")
+    for v in sizes.values():
+        as_ints(v, "sizes", 2)
+    seed = as_int(seed, "seed", 0)
     from .. import assignment as a
 
     algos = {
@@ -155,7 +180,13 @@ def literal_count(n_sensors: int, n_targets: int) -> int:
     >>> literal_count(4, 2)  # 6 pairs x 2 targets, then 1 pair x 1 target
     13
     """
-    return sum((n_sensors - 2 * r) * (n_sensors - 2 * r - 1) // 2 * (n_targets - r) for r in range(n_targets))
+    n_sensors, n_targets = as_int(n_sensors, "n_sensors", 0), as_int(n_targets, "n_targets", 0)
+    if n_sensors < 2 * n_targets:
+        raise ValueError(f"n_sensors must be at least 2 n_targets, got {n_sensors}, {n_targets}")
+    return sum(
+        (n_sensors - 2 * r) * (n_sensors - 2 * r - 1) // 2 * (n_targets - r)
+        for r in range(n_targets)
+    )
 
 
 #: Algorithms :func:`evaluation_counts` can run.
@@ -186,7 +217,13 @@ def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l
     """
     from ..assignment import greedy_pair_assignment, greedy_pair_assignment_literal
 
-    rng = np.random.default_rng(seed)
+    n_big, l_big = as_int(n_big, "n_big", 2), as_int(l_big, "l_big", 1)
+    n_small, l_small = as_int(n_small, "n_small", 2), as_int(l_small, "l_small", 1)
+    if (sensors is None) != (targets is None):
+        raise ValueError("give both sensors and targets, or neither")
+    if sensors is not None:
+        sensors, targets = as_int(sensors, "sensors", 2), as_int(targets, "targets", 1)
+    rng = np.random.default_rng(as_int(seed, "seed", 0))
     if sensors is not None:
         S, T = rng.uniform(0, 100, (sensors, 2)), rng.uniform(0, 100, (targets, 2))
         _say(f"greedy from geometry, N={sensors} L={targets}, one run")
@@ -207,11 +244,14 @@ def bench_assignment(n_big: int = 2000, l_big: int = 1000, n_small: int = 400, l
 
     S2, T2 = rng.uniform(0, 100, (n_small, 2)), rng.uniform(0, 100, (l_small, 2))
     _say(f"greedy from geometry, N={n_small} L={l_small}, best of 3")
-    small_s, g2 = _timed(lambda: greedy_pair_assignment(sensors=S2, targets=T2, u_max=1.0), repeat=3)
+    small_s, g2 = _timed(
+        lambda: greedy_pair_assignment(sensors=S2, targets=T2, u_max=1.0), repeat=3
+    )
     _say(f"greedy      N={n_small} L={l_small}: {small_s:8.3f} s")
     _say(f"literal Algorithm 1, N={n_small} L={l_small} (every remaining triple, every round)")
-    literal_s, lit = _timed(lambda: greedy_pair_assignment_literal(sensors=S2, targets=T2, u_max=1.0,
-                                                                   progress=True))
+    literal_s, lit = _timed(
+        lambda: greedy_pair_assignment_literal(sensors=S2, targets=T2, u_max=1.0, progress=True)
+    )
     if lit.triples != g2.triples:
         raise AssertionError("the greedy and the literal algorithm disagree")
     _say(f"literal     N={n_small} L={l_small}: {literal_s:8.2f} s")
@@ -233,13 +273,16 @@ def bench_scaling(seed: int = 0, repeat: int = 3) -> dict:
     --------
     >>> bench_scaling()  # doctest: +SKIP
     """
+    seed, repeat = as_int(seed, "seed", 0), as_int(repeat, "repeat", 1)
     from .. import assignment as a
     from ..bounds import pair_bounds
 
     algos = {
         "greedy (geometry)": lambda S, T: a.greedy_pair_assignment(sensors=S, targets=T, u_max=1.0),
         "greedy (from W)": lambda S, T: a.greedy_pair_assignment(pair_bounds(S, T, 1.0)),
-        "literal Algorithm 1": lambda S, T: a.greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0),
+        "literal Algorithm 1": lambda S, T: a.greedy_pair_assignment_literal(
+            sensors=S, targets=T, u_max=1.0
+        ),
         "relaxed matching": lambda S, T: a.relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0),
         "exact optimum": lambda S, T: a.optimal_pair_assignment(pair_bounds(S, T, 1.0)),
     }
@@ -279,7 +322,9 @@ def _machine() -> str:
             cpu = f"{models[0]} ({cpu})"
     except OSError:  # not Linux: the architecture only
         pass
-    return f"{cpu}, {os.cpu_count()} cores, Python {platform.python_version()}, numpy {np.__version__}"
+    return (
+        f"{cpu}, {os.cpu_count()} cores, Python {platform.python_version()}, numpy {np.__version__}"
+    )
 
 
 def bench_criteria(n_timing: int = 1000, seed: int = 0, repeat: int = 3) -> dict:
@@ -293,6 +338,8 @@ def bench_criteria(n_timing: int = 1000, seed: int = 0, repeat: int = 3) -> dict
     --------
     >>> bench_criteria(20, repeat=1)["per_pair_us"].keys()  # doctest: +SKIP
     """
+    n_timing, repeat = as_int(n_timing, "n_timing", 1), as_int(repeat, "repeat", 1)
+    seed = as_int(seed, "seed", 0)
     import timeit
 
     from .. import tracking as tr
@@ -347,11 +394,9 @@ def bench_book(profile: str = "paper", jobs: int | None = None) -> dict:
     from ..profiles import PROFILES, profile_names
     from .run import Run, default_jobs, execute, execute_all, longest_first, notebooks, precompile
 
-    if profile not in PROFILES:
+    if as_str(profile, "profile") not in PROFILES:
         raise ValueError(f"unknown profile {profile!r}; known: {profile_names()}")
-    jobs = default_jobs() if jobs is None else int(jobs)
-    if jobs < 1:
-        raise ValueError(f"jobs must be >= 1, got {jobs}")
+    jobs = default_jobs() if jobs is None else as_int(jobs, "jobs", 1)
     nbs = notebooks()
     precompile()  # as make book does
     with tempfile.TemporaryDirectory() as tmp:
@@ -432,10 +477,10 @@ import numpy as np
 import pandas as pd
 from myst_nb import glue
 
+import obsbook
 import obslib
-from obslib.notebook import setup_figures
 
-setup_figures()
+obsbook.setup()
 fig, ax = plt.subplots(figsize=(6, 3))
 ax.plot(np.arange(x + 9), label="x")
 ax.set_xlabel("step")
@@ -453,27 +498,33 @@ def parse_args(argv=None) -> argparse.Namespace:
     >>> parse_args(["book", "--profile", "quick"]).profile
     'quick'
     """
-    from .._io import OutputPathError, check_output_path
+    from .._io import OutputPathError, as_output_path
     from ..profiles import profile_names
 
     ap = argparse.ArgumentParser(prog="python -m obslib.bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("which", choices=["assignment", "book", "criteria", "scaling"], help="benchmark to run")
+    ap.add_argument(
+        "which", choices=["assignment", "book", "criteria", "scaling"], help="benchmark to run"
+    )
     ap.add_argument("--write", help="scaling, criteria: also write the JSON to this file")
-    ap.add_argument("--profile", default="paper", choices=profile_names(),
-                    help="book: parameter profile of the notebooks (default: paper, their defaults)")
+    ap.add_argument(
+        "--profile",
+        default="paper",
+        choices=profile_names(),
+        help="book: parameter profile of the notebooks (default: paper, their defaults)",
+    )
     ap.add_argument("--jobs", type=int, default=None,
                     help="book: notebooks side by side in the parallel runs (default: the cores)")
     ap.add_argument("--sensors", type=int, help="assignment: only the greedy from geometry, with "
                     "this many sensors (and --targets targets)")
     ap.add_argument("--targets", type=int, help="assignment: the number of targets of --sensors")
-    args = ap.parse_args(argv)
+    args = ap.parse_args(as_argv(argv))
     _check_assignment_size(ap, args)
     if args.write is not None:
         if args.which not in ("scaling", "criteria"):
             ap.error("--write applies to the scaling and criteria benchmarks only")
         try:
-            args.write = check_output_path(args.write)
+            args.write = as_output_path(args.write)
         except OutputPathError as exc:
             ap.error(f"--write {exc}")
     if args.profile != "paper" and args.which != "book":
@@ -484,7 +535,8 @@ def parse_args(argv=None) -> argparse.Namespace:
 
 
 def _check_assignment_size(ap, args) -> None:
-    """``--sensors N --targets L``: both or neither, for the assignment benchmark, ``N >= 2L >= 2``."""
+    """``--sensors N --targets L``: both or neither, for the assignment benchmark,
+    ``N >= 2L >= 2``."""
     given = (args.sensors is not None, args.targets is not None)
     if not any(given):
         return

@@ -51,7 +51,22 @@ __all__ = [
     "default_jobs", "execution_page", "main",
 ]
 
+from .._validate import (
+    ArgumentTypeError,
+    as_argv,
+    as_bool,
+    as_callable,
+    as_instance,
+    as_int,
+    as_mapping,
+    as_names,
+    as_nonnegative,
+    as_path,
+    as_sequence,
+    as_str,
+)
 from . import ROOT  # noqa: E402  the checkout obslib is installed from
+
 NOTEBOOK_DIR = ROOT / "notebooks"
 RUNS_DIR = ROOT / "_build" / "runs"
 TIMES_FILE = ROOT / "_build" / "execution_times.json"
@@ -84,10 +99,10 @@ def resolve(names) -> list[Path]:
     >>> [p.stem for p in resolve(["05"])]
     ['05_two_sensors_tracking']
     """
-    if not names:
+    if names is None or (isinstance(names, (list, tuple)) and not names):
         return notebooks()
     found = []
-    for name in names:
+    for name in as_names(names, "names"):
         p = Path(name)
         if p.suffix == ".ipynb" and p.exists():
             found.append(p.resolve())
@@ -95,7 +110,7 @@ def resolve(names) -> list[Path]:
         hits = [nb for nb in notebooks() if nb.stem == name or nb.stem.startswith(f"{name}_")]
         if len(hits) != 1:
             known = ", ".join(nb.stem for nb in notebooks())
-            raise ValueError(f"no single notebook matches {name!r}; known: {known}")
+            raise ValueError(f"names: no single notebook matches {name!r}; known: {known}")
         found.append(hits[0])
     return found
 
@@ -118,7 +133,7 @@ def declared_parameters(path: Path) -> dict:
     """
     from ..profiles import parameter_cell
 
-    return parameter_cell(path)
+    return parameter_cell(as_path(path, "path", exists=True))
 
 
 class Run(NamedTuple):
@@ -132,6 +147,19 @@ class Run(NamedTuple):
     overrides: dict = {}
 
 
+def _overrides_iv(overrides) -> dict:
+    """``-p`` values: a mapping of parameter names to JSON values (numbers, text, lists)."""
+    overrides = {} if overrides is None else as_mapping(overrides, "overrides")
+    try:
+        json.dumps(overrides, allow_nan=False)
+    except (TypeError, ValueError):
+        raise ValueError(f"overrides must be JSON values (numbers, text, lists), got "
+                         f"{overrides!r}") from None
+    if not all(isinstance(k, str) for k in overrides):
+        raise ArgumentTypeError(f"overrides must be named by strings, got {list(overrides)}")
+    return overrides
+
+
 def run_label(profile: str | None, overrides: dict) -> str:
     """Folder name of a rerun: the profile, and a short hash of the overrides if any.
 
@@ -143,6 +171,9 @@ def run_label(profile: str | None, overrides: dict) -> str:
     >>> a == run_label(None, {"seed": 3}) != b, a[:6]
     (True, 'paper-')
     """
+    if profile is not None:
+        as_str(profile, "profile")
+    overrides = _overrides_iv(overrides)
     label = profile or "paper"
     if overrides:
         text = json.dumps(overrides, sort_keys=True, separators=(",", ":"))
@@ -155,9 +186,9 @@ def plan(paths, profile: str | None, overrides: dict, in_place: bool,
     """Every :class:`Run` of a command, all parameters checked first.
 
     Every notebook's parameters (profile values and ``-p`` overrides) are checked against the
-    parameters it declares, their ranges and constraints (:func:`obslib.profiles.check_parameters`)
-    before anything runs, so a bad value or a name unknown to the second notebook fails before
-    the first starts.
+    parameters it declares, their ranges and constraints
+    (:func:`obslib.profiles.validated_parameters`) before anything runs, so a bad value or a name
+    unknown to the second notebook fails before the first starts.
 
     Raises
     ------
@@ -174,9 +205,13 @@ def plan(paths, profile: str | None, overrides: dict, in_place: bool,
     ...
     ValueError: ...n_seeds = 2.5 is not accepted; expected an integer >= 1
     """
-    from ..profiles import PROFILES, check_parameters
+    from ..profiles import PROFILES, validated_parameters
 
-    runs_dir = RUNS_DIR if runs_dir is None else Path(runs_dir)
+    paths = [as_path(p, "paths", exists=True) for p in as_sequence(paths, "paths")]
+    if profile is not None and as_str(profile, "profile") not in PROFILES:
+        raise ValueError(f"unknown profile {profile!r}; known: {sorted(PROFILES)}")
+    overrides, in_place = _overrides_iv(overrides), as_bool(in_place, "in_place")
+    runs_dir = RUNS_DIR if runs_dir is None else as_path(runs_dir, "runs_dir")
     label = run_label(profile, overrides)
     runs = []
     for nb in paths:
@@ -186,7 +221,7 @@ def plan(paths, profile: str | None, overrides: dict, in_place: bool,
         declared = declared_parameters(nb)
         parameters = dict(PROFILES[profile or "paper"].get(nb.stem, {}))
         parameters.update(overrides)
-        parameters = check_parameters(nb.stem, parameters, declared)
+        parameters = validated_parameters(nb.stem, parameters, declared)
         runs.append(Run(nb, runs_dir / label / nb.name, parameters, label, profile,
                         dict(overrides)))
     return runs
@@ -271,7 +306,13 @@ def execute(src: Path, dst: Path, parameters: dict | None = None, progress=False
     """
     import papermill as pm
 
-    parameters = dict(parameters or {})
+    src, dst = as_path(src, "src", exists=True), as_path(dst, "dst")
+    if src.suffix != ".ipynb":
+        raise ValueError(f"src {src}: not a notebook (.ipynb)")
+    parameters = {} if parameters is None else as_mapping(parameters, "parameters")
+    if not isinstance(progress, (bool, dict)):
+        raise ArgumentTypeError(f"progress must be True, False or tqdm's arguments, got "
+                                f"{progress!r}")
     if parameters:
         declared = declared_parameters(src)
         unknown = sorted(set(parameters) - set(declared))
@@ -334,6 +375,14 @@ class RunFailed(RuntimeError):
         self.error = error
 
 
+def _runs_iv(runs) -> list:
+    """A list of :class:`Run`."""
+    runs = as_sequence(runs, "runs")
+    for r in runs:
+        as_instance(r, Run, "runs")
+    return runs
+
+
 def longest_first(runs: list) -> list:
     """Runs ordered by their last in-place time, longest first, so the cores finish together.
 
@@ -346,7 +395,7 @@ def longest_first(runs: list) -> list:
         last = json.loads(TIMES_FILE.read_text())
     except (OSError, ValueError):
         last = {}
-    return sorted(runs, key=lambda r: -float(last.get(r.notebook.name, 0.0)))
+    return sorted(_runs_iv(runs), key=lambda r: -float(last.get(r.notebook.name, 0.0)))
 
 
 def execute_all(runs, jobs: int = 1, progress: bool | None = None, on_done=None) -> dict:
@@ -370,9 +419,13 @@ def execute_all(runs, jobs: int = 1, progress: bool | None = None, on_done=None)
     """
     from tqdm import tqdm
 
-    if jobs < 1:
-        raise ValueError(f"jobs must be >= 1, got {jobs}")
-    runs = longest_first(list(runs)) if jobs > 1 else list(runs)
+    jobs = as_int(jobs, "jobs", 1)
+    runs = _runs_iv(runs)
+    if progress is not None:
+        as_bool(progress, "progress")
+    if on_done is not None:
+        as_callable(on_done, "on_done")
+    runs = longest_first(runs) if jobs > 1 else runs
     os.environ.setdefault("PYTHONHASHSEED", "0")  # kernels inherit it
     disable = None if progress is None else not progress
     slots = list(range(min(jobs, len(runs)), 0, -1))  # bar positions below the overall bar
@@ -427,7 +480,7 @@ def _record(run: Run, seconds: float) -> None:
         "overrides": run.overrides,  # the -p values
         "injected": run.parameters,  # the profile's and the -p values, injected by papermill
         "parameters": {**declared_parameters(run.notebook), **run.parameters},  # all of them
-        "finished": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+        "finished": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
         "seconds": round(seconds, 2),
     }
     run.dst.parent.mkdir(parents=True, exist_ok=True)  # the runner's own folder under _build/
@@ -454,6 +507,13 @@ def execution_page(times: dict, jobs: int = 1, wall: float | None = None) -> str
     """
     import platform
 
+    times = as_mapping(times, "times")
+    if not all(isinstance(k, str) and isinstance(v, (int, float)) and not isinstance(v, bool)
+               and v == v for k, v in times.items()):
+        raise ValueError("times must map notebook names to seconds")
+    jobs = as_int(jobs, "jobs", 1)
+    if wall is not None:
+        wall = as_nonnegative(wall, "wall")
     if jobs == 1:
         together = "one at a time"
     else:
@@ -505,7 +565,7 @@ def parse_args(argv=None) -> argparse.Namespace:
                     help="notebooks run side by side (default: the cores available, %(default)s)")
     ap.add_argument("--no-progress", action="store_true",
                     help="no progress bars (they are shown only on a terminal anyway)")
-    args = ap.parse_args(argv)
+    args = ap.parse_args(as_argv(argv))
 
     if args.in_place and (args.profile or args.p):
         ap.error("--in-place runs the defaults; reruns with --profile or -p go to _build/runs/")

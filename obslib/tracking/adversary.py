@@ -8,7 +8,7 @@ its set that minimises the exact inverse condition number
     u^\star = \operatorname*{arg\,min}_{u \in U} C^{-1}\!\left(
     \begin{bmatrix} (o + u - p_i)^T \\ (o + u - p_j)^T \\ u^T \end{bmatrix}\right),
 
-the first minimiser in the order of :math:`U` (both engines use :func:`adversary_moves`).
+the first minimiser in the order of :math:`U` (both engines use ``adversary_moves``).
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ import numpy as np
 from .._kernels import matmul_rows
 from .model import inverse_condition
 
-__all__ = ["control_basis", "adversary_moves"]
+__all__ = []
 
 
 def control_basis(controls) -> np.ndarray:
@@ -47,7 +47,7 @@ def adversary_moves(eval_ps, o, controls, basis=None, barred=None) -> np.ndarray
     (:math:`a \\times b + (a - b) \\times u`, :math:`a \\times u`, :math:`b \\times u`), so
     :math:`\\det(M^T M)` (their sum of squares, Cauchy-Binet) and :math:`\\operatorname{tr}(M^T M)`
     are quadratics in :math:`u`: one matrix product with the monomials of the controls
-    (:func:`control_basis`) gives both for all runs and controls. :math:`C^{-1}(M)` is an
+    (``control_basis``) gives both for all runs and controls. :math:`C^{-1}(M)` is an
     increasing function of :math:`t = 4 \\det / \\operatorname{tr}^2` (:math:`C^{-2} =
     \\lambda_{\\min} / \\lambda_{\\max}` and :math:`t = 4 \\lambda_{\\min} \\lambda_{\\max} /
     (\\lambda_{\\min} + \\lambda_{\\max})^2`), so the controls whose

@@ -11,17 +11,25 @@ engine's run of the same seed.
 from __future__ import annotations
 
 import dataclasses
-from typing import Iterable
+from collections.abc import Iterable
 
 import numpy as np
 
-from .adversary import adversary_moves, control_basis
-from .choosers import PairChooser, candidates, check_strategy, fixed_pair_bound, pair_draws
+from .._validate import (
+    ArgumentTypeError,
+    as_choice,
+    as_float_array,
+    as_int,
+    as_names,
+    as_noise_table,
+)
 from . import kalman
+from .adversary import adversary_moves, control_basis
+from .choosers import NAMES, PairChooser, candidates, fixed_pair_bound, pair_draws
 from .ekf import singular_update_message
 from .model import circle_truth, pair_index
 from .results import BatchResult, TrackingResult, derived_arrays
-from .setup import TrackingSetup, check_count, check_noise, check_seed, noise_table
+from .setup import TrackingSetup, noise_table
 
 __all__ = ["simulate_many", "simulate_batch", "monte_carlo"]
 
@@ -31,8 +39,8 @@ _ROW_FIELDS = ("metric", "anchor", "fixed_pair", "adversary", "controls")
 
 class _Filters:
     """The states of ``R`` extended Kalman filters (estimate ``xx, xy``, covariance entries
-    ``p00, p01, p10, p11``) and their step: :func:`~obslib.tracking.kalman.predict`, then
-    :func:`~obslib.tracking.kalman.update`."""
+    ``p00, p01, p10, p11``) and their step: ``kalman.predict``, then
+    ``kalman.update``."""
 
     def __init__(self, setup: TrackingSetup, R_: int):
         self.xx = np.full(R_, float(setup.estimate0[0]))
@@ -78,7 +86,7 @@ class _Adversaries:
 
     Runs with different control sets (``barred``: each run's own set is a contiguous block of
     ``controls``) are screened block by block, each against its own controls only: the pick
-    within a block is the one :func:`~obslib.tracking.adversary.adversary_moves` makes with the
+    within a block is the one ``adversary.adversary_moves`` makes with the
     other blocks barred, without evaluating them (notebook 06's stronger adversaries: 20 runs
     with 9 controls next to 20 with 1801; 0.3 s against 1.7 s for their 315 moves)."""
 
@@ -125,7 +133,7 @@ def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
     metric (``maha``), adversary (``nextpair``), chooser (``kinds`` and ``draws`` of
     :class:`~obslib.tracking.choosers.PairChooser`) and noise table: run ``r`` uses
     ``tables[r % B]``. An adversary's controls are ``controls`` (default: the setup's) less each
-    run's ``barred`` ones (see :func:`~obslib.tracking.adversary.adversary_moves`).
+    run's ``barred`` ones (see ``adversary.adversary_moves``).
 
     With an ``"exact-icn"`` run in the pass, the target moves before the next choice (the
     oracle needs the control that brings it to its next position; no run of such a pass may
@@ -206,7 +214,7 @@ def _collect(chooser, best_log, bound, est, cov, best, truth) -> dict:
 # --------------------------------------------------------------------------------------------
 
 
-def _check_arms(arms) -> dict:
+def _arms_iv(arms) -> dict:
     try:
         arms = dict(arms)
     except (TypeError, ValueError):
@@ -222,21 +230,22 @@ def _check_arms(arms) -> dict:
             raise ValueError(
                 f"arm {name!r}: setup must be a TrackingSetup, got {type(setup).__name__}"
             )
-        check_strategy(strategy)
+        as_choice(strategy, NAMES, "strategy")
     return arms
 
 
-def _check_seeds(seeds, noise):
+def _seeds_iv(seeds, noise):
     if (seeds is None) == (noise is None):
         raise ValueError("give either seeds or noise tables")
     if noise is not None:
-        given = np.asarray(noise, dtype=float)
+        given = as_float_array(noise, "noise")
         if given.ndim != 3:
             raise ValueError(f"noise must have shape (B, steps, N), got {given.shape}")
         return (), given
     if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
-        raise TypeError(f"seeds must be an iterable of non-negative integers, got {seeds!r}")
-    seeds = tuple(check_seed(x, "each seed") for x in seeds)
+        raise ArgumentTypeError(
+            f"seeds must be an iterable of non-negative integers, got {seeds!r}")
+    seeds = tuple(as_int(x, "each seed", 0) for x in seeds)
     if not seeds:
         raise ValueError("seeds is empty")
     return seeds, None
@@ -329,8 +338,8 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
     >>> runs["eu"].pairs.shape, runs["eu"].seeds
     ((3, 30, 2), (0, 1, 2))
     """
-    arms = _check_arms(arms)
-    seeds, given = _check_seeds(seeds, noise)
+    arms = _arms_iv(arms)
+    seeds, given = _seeds_iv(seeds, noise)
     first: dict = {}
     for name, arm in arms.items():
         first.setdefault(_run_key(arm), name)
@@ -357,7 +366,7 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
                 drawn[tkey] = np.stack([noise_table(base, x) for x in seeds])
             tables = drawn[tkey]
         else:
-            tables = np.stack([check_noise(base, t) for t in given])
+            tables = np.stack([as_noise_table(t, (base.steps, base.n_sensors)) for t in given])
         B = tables.shape[0]
         cand = np.concatenate([np.tile(candidates(*arms[n]), (B, 1)) for n in names])
         maha = np.repeat([arms[n][0].metric == "mahalanobis" for n in names], B)
@@ -412,7 +421,7 @@ def simulate_batch(setup: TrackingSetup, strategy: str, seeds=None, noise=None) 
     >>> b.n_runs, b.run(0).pairs[:2].tolist()
     (2, [[3, 5], [3, 5]])
     """
-    check_strategy(strategy)
+    as_choice(strategy, NAMES, "strategy")
     return simulate_many({strategy: (setup, strategy)}, seeds=seeds, noise=noise)[strategy]
 
 
@@ -447,15 +456,13 @@ def monte_carlo(
     >>> bool((mc["random"].noise == mc["best-pair"].noise).all())
     True
     """
-    n_seeds = check_count(n_seeds, "n_seeds")
-    batch = check_count(batch, "batch")
-    first_seed = check_seed(first_seed, "first_seed")
+    n_seeds = as_int(n_seeds, "n_seeds", 1)
+    batch = as_int(batch, "batch", 1)
+    first_seed = as_int(first_seed, "first_seed", 0)
     if isinstance(strategies, str):
-        raise TypeError(f"strategies must be a list of names, got the string {strategies!r}; "
-                        f"write [{strategies!r}]")
-    strategies = list(strategies)
-    for s in strategies:
-        check_strategy(s)
+        raise ArgumentTypeError(f"strategies must be a list of names, got the string "
+                                f"{strategies!r}; write [{strategies!r}]")
+    strategies = list(as_names(strategies, "strategies", NAMES))
     if not strategies:
         return {}
     seeds = list(range(first_seed, first_seed + n_seeds))

@@ -50,7 +50,7 @@ noise of the pair):
     :math:`u_{k-1} = o_k - o_{k-1}` that brought the target to :math:`o_k` (zero at step 1;
     the control of :attr:`~obslib.tracking.TrackingResult.true_icn`);
 ``"random"``
-    a uniformly random pair, drawn from :func:`pair_draws` of the run's seed.
+    a uniformly random pair, drawn from ``pair_draws`` of the run's seed.
 
 The logged bound of every run stays the paper's pair bound of the chosen pair (the setup's
 metric), so all runs compare with Fig. 6. Ties keep the first maximum in ``(i, j)`` order (the
@@ -64,21 +64,15 @@ from __future__ import annotations
 import numpy as np
 
 from .._kernels import pair_kernel
+from .._validate import as_choice, as_covariances, as_float_array, as_instance
 from .model import inverse_condition, pair_index
 
 __all__ = [
     "STRATEGIES",
     "CRITERIA",
     "NAMES",
-    "pair_draws",
-    "information_scores",
-    "icn_scores",
-    "check_strategy",
     "candidates",
-    "mahalanobis_sq",
-    "scaled_rows",
     "PairChooser",
-    "fixed_pair_bound",
     "choose_pairs",
 ]
 
@@ -93,28 +87,8 @@ CRITERIA = ("d-optimal", "a-optimal", "e-optimal", "exact-icn", "random")
 NAMES = STRATEGIES + CRITERIA
 
 
-def check_strategy(strategy, known=NAMES) -> str:
-    """``strategy`` if it is one of ``known``, else a ValueError (TypeError for a non-string).
-
-    Examples
-    --------
-    >>> from obslib.tracking.choosers import check_strategy
-    >>> check_strategy("d-optimal")
-    'd-optimal'
-    >>> check_strategy("worst-pair")  # doctest: +ELLIPSIS
-    Traceback (most recent call last):
-    ...
-    ValueError: unknown strategy 'worst-pair'; known: ...
-    """
-    if not isinstance(strategy, str):
-        raise TypeError(f"strategy must be a string, one of {known}; got {strategy!r}")
-    if strategy not in known:
-        raise ValueError(f"unknown strategy {strategy!r}; known: {known}")
-    return strategy
-
-
 def candidates(setup, strategy: str) -> np.ndarray:
-    """Which pairs (in ``(i, j)`` order, :func:`~obslib.tracking.model.pair_index`) a strategy
+    """Which pairs (in ``(i, j)`` order, ``model.pair_index``) a strategy
     chooses among, ``(P,)`` bool.
 
     Best pair and the :data:`CRITERIA`: all; best partner: the pairs containing the anchor (in
@@ -130,6 +104,10 @@ def candidates(setup, strategy: str) -> np.ndarray:
     ...  for s in ("best-pair", "best-partner", "fixed-pair")]
     [15, 5, 1]
     """
+    from .setup import TrackingSetup
+
+    as_instance(setup, TrackingSetup, "setup")
+    as_choice(strategy, NAMES, "strategy")
     ii, jj = pair_index(setup.n_sensors)
     if strategy == "fixed-pair":
         i, j = sorted(setup.fixed_pair)
@@ -232,14 +210,14 @@ class PairChooser:
     Built once per batched pass from each run's candidate pairs ``cand`` (``(R, P)`` bool,
     :func:`candidates`) and metric (``maha``, ``(R,)`` bool). Calling it with the runs'
     estimates and covariance entries returns the chosen pair's index (in
-    :func:`~obslib.tracking.model.pair_index` order) and bound: the rows of
-    :func:`scaled_rows`, then the kernel of :func:`obslib.pair_bounds` for the run's candidate
+    ``model.pair_index`` order) and bound: the rows of
+    ``scaled_rows``, then the kernel of :func:`obslib.pair_bounds` for the run's candidate
     pairs only. The pick is the first maximum among the candidates in ``(i, j)`` order.
 
     Runs of the :data:`CRITERIA` (``kinds``, ``(R,)``: ``"bound"`` for the paper's strategies
-    or a criterion's name) choose among all pairs by :func:`information_scores` (with the
-    setup's ``Q`` and ``R``), :func:`icn_scores` or the ``draws`` ``(R, steps + 1)`` of
-    :func:`pair_draws`.
+    or a criterion's name) choose among all pairs by ``information_scores`` (with the
+    setup's ``Q`` and ``R``), ``icn_scores`` or the ``draws`` ``(R, steps + 1)`` of
+    ``pair_draws``.
 
     Runs with a single candidate (the fixed pair) need no scores to choose, and the criteria do
     not compute the bound, so the call leaves their bound out (NaN) (the rows
@@ -276,8 +254,8 @@ class PairChooser:
         # the criteria's rows; their bound, like the single candidates', is evaluated afterwards
         self.criteria = [(c, np.flatnonzero(kinds == c)) for c in CRITERIA if (kinds == c).any()]
         self.deferred = np.flatnonzero(~by_bound | (counts == 1))
-        self.Q = None if Q is None else np.asarray(Q, dtype=float)
-        self.W = None if R is None else np.linalg.inv(np.asarray(R, dtype=float))
+        self.Q = None if Q is None else as_float_array(Q, "Q")
+        self.W = None if R is None else np.linalg.inv(as_float_array(R, "R"))
         self.draws = draws
 
     def __call__(self, xx, xy, p00, p01, p10, p11, control=None, k: int = 0):
@@ -329,7 +307,7 @@ class PairChooser:
 
 def fixed_pair_bound(sx, sy, i, j, u2, x, c, maha) -> np.ndarray:
     """Theorem 4's bound of the pair ``(i[m], j[m])`` at estimate ``x[m]`` (covariance ``c[m]``,
-    Mahalanobis where ``maha[m]``), ``(M,)``: the rows of :func:`scaled_rows` for the pair's two
+    Mahalanobis where ``maha[m]``), ``(M,)``: the rows of ``scaled_rows`` for the pair's two
     sensors only, in chunks that stay in cache.
 
     Examples
@@ -440,22 +418,22 @@ def icn_scores(hx, hy, control, ii, jj) -> np.ndarray:
     stack = np.empty((M, P, 3, 2))
     stack[:, :, 0, 0], stack[:, :, 0, 1] = hx[:, ii], hy[:, ii]
     stack[:, :, 1, 0], stack[:, :, 1, 1] = hx[:, jj], hy[:, jj]
-    stack[:, :, 2, :] = np.asarray(control, dtype=float)[:, None, :]
+    stack[:, :, 2, :] = as_float_array(control, "control")[:, None, :]
     return inverse_condition(stack)
 
 
 def _icn_picks(hx, hy, control, ii, jj) -> np.ndarray:
     """``icn_scores(hx, hy, control, ii, jj).argmax(axis=1)`` without the exact value of every
-    pair: the screen of :func:`~obslib.tracking.adversary.adversary_moves`, maximised.
+    pair: the screen of ``adversary.adversary_moves``, maximised.
 
     :math:`C^{-1}` increases with :math:`\\det G / \\operatorname{tr}^2 G` of the stacked rows,
     here :math:`(h_i \\times h_j)^2 + (h_i \\times u)^2 + (h_j \\times u)^2` over
     :math:`(|h_i|^2 + |h_j|^2 + |u|^2)^2` from per-sensor terms; the pairs within ``1e-11`` of
     a row's largest ratio (the screen's rounding is some 1e-15) contain the exact maximiser,
-    and only they get :func:`icn_scores`'s exact value; the first exact maximum wins, as
+    and only they get ``icn_scores``'s exact value; the first exact maximum wins, as
     ``argmax``. Rows with a non-finite ratio or extreme lengths get every pair's exact
     value. (200 estimates x 15 pairs: 0.3 ms against 1.0 ms.)"""
-    u = np.asarray(control, dtype=float)
+    u = as_float_array(control, "control")
     ux, uy = u[:, 0, None], u[:, 1, None]
     with np.errstate(all="ignore"):  # extreme scales: such rows take the exact path below
         cu = hx * uy - hy * ux  # h_k x u, (M, N)
@@ -491,7 +469,7 @@ def choose_pairs(setup, strategy: str, xhat, cov, control=None):
     ``strategy`` is one of the paper's :data:`STRATEGIES` or a state-based criterion
     (``"d-optimal"``, ``"a-optimal"``, ``"e-optimal"`` with the setup's ``Q`` and ``R``;
     ``"exact-icn"`` with the targets' ``control`` ``(B, 2)``). ``"random"`` has no state-based
-    pick: its picks are :func:`pair_draws` of the run's seed.
+    pick: its picks are ``pair_draws`` of the run's seed.
 
     Returns
     -------
@@ -514,23 +492,23 @@ def choose_pairs(setup, strategy: str, xhat, cov, control=None):
     [[0, 2], [2, 5], [3, 5]]
     """
     from .._validate import as_points
-    from .setup import check_covariances, check_setup
+    from .setup import MAX_COV_SCALE, TrackingSetup
 
-    check_setup(setup)
-    check_strategy(strategy)
+    as_instance(setup, TrackingSetup, "setup")
+    as_choice(strategy, NAMES, "strategy")
     if strategy == "random":
         raise ValueError("the random chooser has no state-based pick: its picks are "
                          "pair_draws(seed, steps, n_pairs)")
-    x = as_points(np.atleast_2d(np.asarray(xhat, dtype=float)), "xhat")
+    x = as_points(np.atleast_2d(as_float_array(xhat, "xhat")), "xhat")
     b = x.shape[0]
     if cov is None and setup.metric == "euclidean" and strategy in STRATEGIES:
         c = np.broadcast_to(np.eye(2), (b, 2, 2))
     else:
-        c = check_covariances(cov, b)
+        c = as_covariances(cov, b, MAX_COV_SCALE)
     if strategy == "exact-icn":
         if control is None:
             raise ValueError("exact-icn needs the targets' control, shape (B, 2)")
-        u = as_points(np.atleast_2d(np.asarray(control, dtype=float)), "control")
+        u = as_points(np.atleast_2d(as_float_array(control, "control")), "control")
         if u.shape[0] != b:
             raise ValueError(f"control must have one row per estimate ({b}), got {u.shape[0]}")
     else:

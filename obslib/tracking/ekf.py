@@ -26,11 +26,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from .choosers import CRITERIA, PairChooser, candidates, check_strategy, pair_draws
+from .._validate import as_choice, as_instance, as_int, as_noise_table
+from .choosers import CRITERIA, NAMES, PairChooser, candidates, pair_draws
 from .kalman import innovation_is_regular
 from .model import circle_truth, half_squared_range, range_jacobian, target_objective
 from .results import TrackingResult, derived_arrays
-from .setup import TrackingSetup, check_noise, check_seed, check_setup, noise_table
+from .setup import TrackingSetup, noise_table
 
 __all__ = ["simulate"]
 
@@ -51,7 +52,7 @@ def singular_update_message(x, ps, k: int, run: int | None = None) -> str:
 
 def _update(ekf, z, ps, k: int) -> None:
     """filterpy's EKF update (after its predict), with a ValueError naming the cause where the
-    innovation covariance is singular (:func:`~obslib.tracking.kalman.innovation_is_regular`)
+    innovation covariance is singular (``kalman.innovation_is_regular``)
     instead of filterpy's LinAlgError or a silently wrong gain."""
     x = ekf.x[:, 0]
     H = range_jacobian(ekf.x, ps)
@@ -85,7 +86,7 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
         replay). Default: :func:`~obslib.tracking.noise_table` of ``seed``.
     seed : int
         Seed of the noise table when ``noise`` is not given, and of the ``"random"`` chooser's
-        draws (:func:`~obslib.tracking.choosers.pair_draws`, a separate stream) in any case.
+        draws (``choosers.pair_draws``, a separate stream) in any case.
 
     Returns
     -------
@@ -101,14 +102,14 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
     """
     from filterpy.kalman import ExtendedKalmanFilter
 
-    check_setup(setup)
-    check_strategy(strategy)
+    as_instance(setup, TrackingSetup, "setup")
+    as_choice(strategy, NAMES, "strategy")
     if noise is None or strategy == "random":
-        seed = check_seed(seed)
+        seed = as_int(seed, "seed", 0)
     if noise is None:
         table, used_seed = noise_table(setup, seed), seed
     else:
-        table, used_seed = check_noise(setup, noise), None
+        table, used_seed = as_noise_table(noise, (setup.steps, setup.n_sensors)), None
     oracle = strategy == "exact-icn"
     if oracle and setup.motion == "adversarial" and setup.adversary == "next-pair":
         raise ValueError("an exact-icn run cannot face a next-pair adversary: each needs the "
@@ -141,7 +142,9 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
     chooser = PairChooser(s, cand, [setup.metric == "mahalanobis"], setup.u_max**2, [kind],
                           setup.Q, setup.R, draws)
 
-    def choose(k, control=np.zeros((1, 2))):
+    no_control = np.zeros((1, 2))
+
+    def choose(k, control=no_control):
         x, P = ekf.x[:, 0], ekf.P
         best, b = chooser(x[:1].copy(), x[1:].copy(), *(P[a, e, None] for a in (0, 1)
                                                         for e in (0, 1)), control, k)

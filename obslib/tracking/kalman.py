@@ -17,11 +17,12 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["SINGULAR_RTOL", "SingularInnovation", "innovation_is_regular", "predict", "update"]
+__all__ = ["SINGULAR_RTOL", "SingularInnovation"]
 
 #: The update stops with :class:`SingularInnovation` when the innovation covariance
-#: ``S = H P H^T + R`` is singular to this relative precision, ``det S <= SINGULAR_RTOL * S_00 S_11``
-#: (its gain would carry no correct digit); the filterpy engine applies the same test.
+#: ``S = H P H^T + R`` is singular to this relative precision,
+#: ``det S <= SINGULAR_RTOL * S_00 S_11`` (its gain would carry no correct digit); the filterpy
+#: engine applies the same test.
 SINGULAR_RTOL = 1e-13
 
 
@@ -85,7 +86,7 @@ def update(x, P, s0, s1, z, R):
 
     Returns the new ``x`` and ``P`` (tuples of component arrays). Raises
     :class:`SingularInnovation` when ``S`` is singular for some filter
-    (:func:`innovation_is_regular`).
+    (``innovation_is_regular``).
 
     Examples
     --------

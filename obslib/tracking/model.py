@@ -16,16 +16,15 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _kernels
+from .._validate import as_float_array, as_instance, broadcast
 from ..bounds import relative_vectors
 
 __all__ = [
     "half_squared_range",
     "range_jacobian",
     "circle_truth",
-    "pair_index",
     "pair_bound_series",
     "target_objective",
-    "inverse_condition",
 ]
 
 
@@ -43,8 +42,27 @@ def circle_truth(setup) -> np.ndarray:
     >>> circle_truth(PAPER_CIRCLE.replace(steps=2)).round(4).tolist()
     [[5.0, 3.0], [4.9994, 3.06], [4.9976, 3.12]]
     """
+    from .setup import TrackingSetup
+
+    as_instance(setup, TrackingSetup, "setup")
     a = setup.rate * np.arange(setup.steps + 1)
     return np.asarray(setup.center) + setup.radius * np.column_stack([np.cos(a), np.sin(a)])
+
+
+def _state_iv(x, pair_sensors):
+    """Finite positions ``x`` (``(2, 1)``, filterpy's column, or ``(..., 2)``) and sensors
+    ``(..., 2, 2)`` whose leading shapes broadcast."""
+    x = as_float_array(x, "x")
+    ps = as_float_array(pair_sensors, "pair_sensors")
+    if x.shape != (2, 1) and (x.ndim < 1 or x.shape[-1] != 2):
+        raise ValueError(f"x must have shape (2, 1) or (..., 2), got {x.shape}")
+    if ps.ndim < 2 or ps.shape[-1] != 2:
+        raise ValueError(f"pair_sensors must have shape (..., M, 2), got {ps.shape}")
+    if not (np.isfinite(x).all() and np.isfinite(ps).all()):
+        raise ValueError("x and pair_sensors must be finite")
+    if x.shape != (2, 1):
+        broadcast({"x": x[..., None, :], "pair_sensors": ps})
+    return x, ps
 
 
 def half_squared_range(x, pair_sensors) -> np.ndarray:
@@ -59,8 +77,7 @@ def half_squared_range(x, pair_sensors) -> np.ndarray:
     >>> half_squared_range([1.0, 2.0], [[0.0, 0.0], [4.0, 6.0]]).tolist()
     [2.5, 12.5]
     """
-    x = np.asarray(x, dtype=float)
-    ps = np.asarray(pair_sensors, dtype=float)
+    x, ps = _state_iv(x, pair_sensors)
     if x.shape == (2, 1):
         d = ps - x[:, 0]
         return (0.5 * (d[:, 0] ** 2 + d[:, 1] ** 2))[:, None]
@@ -76,8 +93,7 @@ def range_jacobian(x, pair_sensors) -> np.ndarray:
     >>> range_jacobian([1.0, 2.0], [[0.0, 0.0], [4.0, 6.0]]).tolist()
     [[1.0, 2.0], [-3.0, -4.0]]
     """
-    x = np.asarray(x, dtype=float)
-    ps = np.asarray(pair_sensors, dtype=float)
+    x, ps = _state_iv(x, pair_sensors)
     if x.shape == (2, 1):
         return x[:, 0][None, :] - ps
     return x[..., None, :] - ps
@@ -115,6 +131,9 @@ def pair_bound_series(setup, points, pairs, cov=None) -> np.ndarray:
     >>> pair_bound_series(PAPER_CIRCLE, [[5.5, 3.5]], [[3, 5]]).round(4).tolist()
     [0.7855]
     """
+    from .setup import TrackingSetup
+
+    as_instance(setup, TrackingSetup, "setup")
     v = relative_vectors(setup.sensors, points, cov)  # validated, (N, K, 2)
     K = v.shape[1]
     pr = np.asarray(pairs)
@@ -139,7 +158,7 @@ def inverse_condition(rows) -> np.ndarray:
     >>> inverse_condition(rows).round(12).tolist()
     [0.5, 0.0]
     """
-    return _kernels.inverse_condition(np.asarray(rows, dtype=float))
+    return _kernels.inverse_condition(as_float_array(rows, "rows"))
 
 
 def target_objective(pair_sensors, position, controls) -> np.ndarray:
@@ -166,9 +185,18 @@ def target_objective(pair_sensors, position, controls) -> np.ndarray:
     ...                  [[0.0, 0.0], [0.1, 0.0]]).round(4)
     array([1.    , 0.9512])
     """
-    ps = np.asarray(pair_sensors, dtype=float)
-    o = np.asarray(position, dtype=float)
-    u = np.asarray(controls, dtype=float)
+    ps = as_float_array(pair_sensors, "pair_sensors")
+    o = as_float_array(position, "position")
+    u = as_float_array(controls, "controls")
+    for name, a, tail in (("pair_sensors", ps, "(..., 2, 2)"), ("position", o, "(..., 2)"),
+                          ("controls", u, "(K, 2)")):
+        if a.ndim < len(tail.split(",")) - tail.count("...") or a.shape[-1] != 2:
+            raise ValueError(f"{name} must have shape {tail}, got {a.shape}")
+        if not np.isfinite(a).all():
+            raise ValueError(f"{name} must be finite")
+    if ps.shape[-2] != 2:
+        raise ValueError(f"pair_sensors must have shape (..., 2, 2), got {ps.shape}")
+    broadcast({"position": o[..., None, None, :], "pair_sensors": ps[..., None, :, :]})
     nxt = o[..., None, :] + u  # (..., K, 2)
     rows = nxt[..., :, None, :] - ps[..., None, :, :]  # (..., K, 2, 2)
     uu = np.broadcast_to(u, nxt.shape)[..., None, :]  # (..., K, 1, 2)

@@ -15,7 +15,7 @@ import numpy as np
 from .model import inverse_condition
 from .setup import TrackingSetup
 
-__all__ = ["TrackingResult", "BatchResult", "derived_arrays"]
+__all__ = ["TrackingResult", "BatchResult"]
 
 
 def derived_arrays(est, cov, truth_ext) -> dict:

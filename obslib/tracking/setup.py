@@ -14,7 +14,18 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validate import as_point, as_points, check_distinct, check_spd2
+from .._validate import (
+    as_instance,
+    as_int,
+    as_mapping,
+    as_nonnegative,
+    as_point,
+    as_points,
+    as_positive,
+    as_real_array,
+    check_distinct,
+    check_spd_any_scale,
+)
 
 __all__ = [
     "METRICS",
@@ -28,18 +39,14 @@ __all__ = [
     "paper_controls",
     "noise_table",
     "setup_from_params",
-    "check_setup",
-    "check_noise",
-    "check_seed",
-    "check_count",
-    "check_covariances",
 ]
 
 METRICS = ("mahalanobis", "euclidean")
 ADVERSARIES = ("current-pair", "next-pair")
 MOTIONS = ("circle", "adversarial")
 
-#: Largest entry of ``cov0``, ``Q`` and ``R`` the filter can carry (see ``_check_spd_any_scale``).
+#: Largest entry of ``cov0``, ``Q`` and ``R`` the filter can carry: the determinant of the
+#: innovation covariance ``S = H P H^T + R`` is of the order of the square of ``P``'s entries.
 MAX_COV_SCALE = 1e100
 
 #: The six sensors s1..s6 of Section V (Figs. 4-7).
@@ -62,8 +69,9 @@ def paper_controls(u_max: float, n_angles: int = 63, dphi: float = 0.1) -> np.nd
     >>> paper_controls(0.1).shape
     (64, 2)
     """
-    phi = dphi * np.arange(n_angles)
-    ring = float(u_max) * np.column_stack([np.cos(phi), np.sin(phi)])
+    u_max = as_nonnegative(u_max, "u_max")
+    phi = as_positive(dphi, "dphi") * np.arange(as_int(n_angles, "n_angles", 1))
+    ring = u_max * np.column_stack([np.cos(phi), np.sin(phi)])
     return np.vstack([np.zeros((1, 2)), ring])
 
 
@@ -72,79 +80,23 @@ def paper_controls(u_max: float, n_angles: int = 63, dphi: float = 0.1) -> np.nd
 # --------------------------------------------------------------------------------------------
 
 
-def _bad_kind(value) -> str | None:
-    """What makes ``value`` not a real number (or nested sequence of them): ``"a bool"``,
-    ``"a complex number"``, ``"text"``, or None."""
-    if isinstance(value, np.ndarray):
-        kind = value.dtype.kind
-        if kind == "O":
-            return next(filter(None, map(_bad_kind, value.ravel())), None)
-        return {"b": "a bool", "c": "a complex number", "U": "text", "S": "text"}.get(kind)
-    if isinstance(value, (bool, np.bool_)):
-        return "a bool"
-    if isinstance(value, (complex, np.complexfloating)):
-        return "a complex number"
-    if isinstance(value, (str, bytes)):
-        return "text"
-    if isinstance(value, (list, tuple)):
-        return next(filter(None, map(_bad_kind, value)), None)
-    return None
-
-
-def _real_array(value, name: str, what: str) -> np.ndarray:
-    """``value`` as a float array, or a named error: TypeError for text, bools and complex
-    numbers (which ``float`` would coerce silently or drop), ValueError for the rest."""
-    got = _bad_kind(value)
-    if got:
-        raise TypeError(f"{name} must be {what}, got {got}: {value!r}")
-    try:
-        return np.asarray(value, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"{name} must be {what}: {exc}") from None
-
-
 def _matrix(value, name: str) -> tuple:
     """A symmetric positive-definite 2x2 matrix as a tuple of tuples, or ValueError."""
-    m = _real_array(value, name, "a real 2x2 matrix or a real number")
+    m = as_real_array(value, name, "a real 2x2 matrix or a real number")
     if m.ndim == 0:
         m = m * np.eye(2)
     if m.shape != (2, 2):
         raise ValueError(f"{name} must be a 2x2 matrix (or a scalar times I), got shape {m.shape}")
-    _check_spd_any_scale(m, name)
+    check_spd_any_scale(m, name, MAX_COV_SCALE)
     return tuple(map(tuple, m.tolist()))
 
 
-def _check_spd_any_scale(m: np.ndarray, name: str) -> None:
-    """:func:`obslib._validate.check_spd2` on ``m`` divided by its largest entry, so that a
-    positive definite matrix of any scale passes (its determinant may underflow or overflow
-    in floating point), and a scale the filter cannot carry is named.
-
-    The determinant of the filter's innovation covariance ``S = H P H^T + R`` is of the order
-    of the square of ``P``'s entries times the squared distances, so entries beyond
-    :data:`MAX_COV_SCALE` are refused with their name.
-    """
-    if not np.isfinite(m).all():
-        raise ValueError(f"{name} has a non-finite entry: {m.tolist()}")
-    top = float(np.abs(m).max())
-    if top == 0:
-        raise ValueError(f"{name} is not positive definite: {m.tolist()}")
-    try:
-        check_spd2(m / top, name)  # scaled: a determinant of any scale stays representable
-    except ValueError as exc:
-        raise ValueError(f"{str(exc).split(': [')[0]}: {m.tolist()}") from None
-    if top > MAX_COV_SCALE:
-        raise ValueError(
-            f"{name} has entries of scale {top:.3g}; the filter's innovation covariance "
-            f"H P H^T + R would overflow: keep entries below {MAX_COV_SCALE:g}"
-        )
-
-
 def _point(value, name: str) -> tuple:
-    return tuple(as_point(_real_array(value, name, "a real point (x, y)"), name).tolist())
+    return tuple(as_point(as_real_array(value, name, "a real point (x, y)"), name).tolist())
 
 
 def _scalar(value, name: str, *, positive=False, nonneg=False) -> float:
-    arr = _real_array(value, name, "a real number")
+    arr = as_real_array(value, name, "a real number")
     if arr.ndim != 0:
         raise ValueError(f"{name} must be a number, got shape {arr.shape}")
     v = float(arr)
@@ -244,7 +196,7 @@ class TrackingSetup:
         put = lambda name, value: object.__setattr__(self, name, value)  # noqa: E731
         if self.sensors is None or np.size(np.asarray(self.sensors, dtype=object)) == 0:
             raise ValueError("setup has no sensors; the strategies need at least 2")
-        s = as_points(_real_array(self.sensors, "sensors", "real points (x, y)"), "sensors")
+        s = as_points(as_real_array(self.sensors, "sensors", "real points (x, y)"), "sensors")
         if s.shape[0] == 0:
             raise ValueError("setup has no sensors; the strategies need at least 2")
         if s.shape[0] < 2:
@@ -275,7 +227,7 @@ class TrackingSetup:
         elif self.start is not None:
             raise ValueError("start is for the adversarial target; the circle starts on the circle")
         if self.controls is not None:
-            c = _real_array(self.controls, "controls", "real points (ux, uy)")
+            c = as_real_array(self.controls, "controls", "real points (ux, uy)")
             c = as_points(c, "controls", min_count=1)
             norms = np.hypot(c[:, 0], c[:, 1])
             over = norms > self.u_max * (1 + 1e-12)
@@ -322,7 +274,7 @@ class TrackingSetup:
             return paper_controls(self.u_max)
         return np.array(self.controls, dtype=float)
 
-    def replace(self, **changes) -> "TrackingSetup":
+    def replace(self, **changes) -> TrackingSetup:
         """A validated copy with some fields changed (:func:`dataclasses.replace`)."""
         return dataclasses.replace(self, **changes)
 
@@ -359,7 +311,8 @@ def setup_from_params(base: TrackingSetup, params: dict) -> TrackingSetup:
     >>> setup_from_params(PAPER_CIRCLE, {"q": 0.2, "n_seeds": 5}).Q
     ((0.2, 0.0), (0.0, 0.2))
     """
-    check_setup(base)
+    as_instance(base, TrackingSetup, "base")
+    params = as_mapping(params, "params")
     changes = {PARAM_FIELDS[k]: v for k, v in params.items() if k in PARAM_FIELDS}
     return base.replace(**changes)
 
@@ -367,97 +320,6 @@ def setup_from_params(base: TrackingSetup, params: dict) -> TrackingSetup:
 # --------------------------------------------------------------------------------------------
 # Checks shared by the engines
 # --------------------------------------------------------------------------------------------
-
-
-def check_setup(setup, what: str = "setup") -> "TrackingSetup":
-    """``setup`` if it is a :class:`TrackingSetup`, else a ValueError naming ``what``.
-
-    Examples
-    --------
-    >>> from obslib.tracking import PAPER_CIRCLE, check_setup
-    >>> check_setup(PAPER_CIRCLE) is PAPER_CIRCLE
-    True
-    >>> check_setup("circle", "base")
-    Traceback (most recent call last):
-    ...
-    ValueError: base must be a TrackingSetup, got str
-    """
-    if not isinstance(setup, TrackingSetup):
-        raise ValueError(f"{what} must be a TrackingSetup, got {type(setup).__name__}")
-    return setup
-
-
-def check_seed(seed, name: str = "seed") -> int:
-    """A seed as an ``int`` (a non-negative integer, not a bool), or a named error.
-
-    Examples
-    --------
-    >>> check_seed(3)
-    3
-    """
-    if isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (int, np.integer)):
-        raise TypeError(f"{name} must be a non-negative integer, got {seed!r}")
-    if seed < 0:
-        raise ValueError(f"{name} must be a non-negative integer, got {seed}")
-    return int(seed)
-
-
-def check_covariances(cov, n: int, name: str = "cov") -> np.ndarray:
-    """Covariances as an ``(n, 2, 2)`` array (one ``(2, 2)`` is shared), each finite, symmetric
-    and positive definite at any scale (checked divided by its largest entry, so that a
-    determinant that underflows does not reject it), or a named ValueError.
-
-    Examples
-    --------
-    A shared covariance is broadcast; a tiny one is accepted; an indefinite one is not:
-
-    >>> import numpy as np
-    >>> from obslib.tracking.setup import check_covariances
-    >>> check_covariances(np.eye(2), 3).shape
-    (3, 2, 2)
-    >>> check_covariances(1e-200 * np.eye(2), 1).shape
-    (1, 2, 2)
-    >>> check_covariances([[1.0, 2.0], [2.0, 1.0]], 1)
-    Traceback (most recent call last):
-    ...
-    ValueError: cov 0 is not positive definite: [[1.0, 2.0], [2.0, 1.0]]
-    """
-    c = _real_array(cov, name, "real 2x2 matrices")
-    if c.shape == (2, 2):
-        c = np.broadcast_to(c, (n, 2, 2))
-    if c.shape != (n, 2, 2):
-        raise ValueError(f"{name} must have shape (2, 2) or ({n}, 2, 2), got {c.shape}")
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        top = np.abs(c).max(axis=(1, 2))
-        m = c / top[:, None, None]
-        ok = (np.isfinite(c).all(axis=(1, 2)) & (top > 0)
-              & (np.abs(m[:, 0, 1] - m[:, 1, 0]) <= 1e-12)
-              & (m[:, 0, 0] > 0) & (m[:, 0, 0] * m[:, 1, 1] - m[:, 0, 1] * m[:, 1, 0] > 0))
-    if not ok.all():
-        k = int(np.flatnonzero(~ok)[0])
-        _check_spd_any_scale(c[k], f"{name} {k}")
-    return c
-
-
-def check_count(value, name: str) -> int:
-    """A count as an ``int`` (an integer of at least 1, not a bool), or a named error.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from obslib.tracking import check_count
-    >>> check_count(np.int64(3), "n_seeds")
-    3
-    >>> check_count(0, "n_seeds")
-    Traceback (most recent call last):
-    ...
-    ValueError: n_seeds must be at least 1, got 0
-    """
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-        raise TypeError(f"{name} must be an integer, got {value!r}")
-    if value < 1:
-        raise ValueError(f"{name} must be at least 1, got {value}")
-    return int(value)
 
 
 def noise_table(setup: TrackingSetup, seed: int = 0) -> np.ndarray:
@@ -471,36 +333,6 @@ def noise_table(setup: TrackingSetup, seed: int = 0) -> np.ndarray:
     >>> noise_table(PAPER_CIRCLE, 0).shape
     (315, 6)
     """
-    check_setup(setup)
-    rng = np.random.default_rng(check_seed(seed))
+    as_instance(setup, TrackingSetup, "setup")
+    rng = np.random.default_rng(as_int(seed, "seed", 0))
     return rng.normal(0.0, setup.noise_std, size=(setup.steps, setup.n_sensors))
-
-
-def check_noise(setup: TrackingSetup, noise) -> np.ndarray:
-    """A noise table for ``setup`` as a float ``(steps, N)`` array, or a ValueError naming the
-    first non-finite entry or the wrong shape.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from obslib.tracking import PAPER_CIRCLE
-    >>> from obslib.tracking.setup import check_noise
-    >>> setup = PAPER_CIRCLE.replace(steps=2)
-    >>> check_noise(setup, np.zeros((2, 6))).shape
-    (2, 6)
-    >>> table = np.zeros((2, 6))
-    >>> table[1, 3] = np.nan
-    >>> check_noise(setup, table)
-    Traceback (most recent call last):
-    ...
-    ValueError: noise of sensor 3 at step 2 is not finite
-    """
-    t = _real_array(noise, "noise", "a real (steps, sensors) table")
-    want = (setup.steps, setup.n_sensors)
-    if t.shape != want:
-        raise ValueError(f"noise table must have shape {want} (steps, sensors), got {t.shape}")
-    bad = ~np.isfinite(t)
-    if bad.any():
-        k, i = (int(v) for v in np.argwhere(bad)[0])
-        raise ValueError(f"noise of sensor {i} at step {k + 1} is not finite")
-    return t

@@ -12,6 +12,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._kernels import pair_series
+from .._validate import (
+    as_float_array,
+    as_instance,
+    as_int,
+    as_nonnegative,
+    as_point,
+    as_real,
+    broadcast,
+)
 from .results import BatchResult, TrackingResult
 
 __all__ = [
@@ -62,7 +71,8 @@ def clearly_lower(a, b, rtol: float = TIE_RTOL) -> np.ndarray:
     >>> clearly_lower([1.0, 1.0], [2.0, 1.0 + 1e-12]).tolist()
     [True, False]
     """
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    a, b = broadcast({"a": as_float_array(a, "a"), "b": as_float_array(b, "b")})
+    rtol = as_nonnegative(rtol, "rtol")
     return a < b - rtol * np.maximum(np.abs(a), np.abs(b))
 
 
@@ -151,8 +161,13 @@ def spearman(a, b, axis: int = -1) -> np.ndarray:
     """
     from scipy import stats  # 0.6 s to import: not at ``import obslib``
 
-    ra = stats.rankdata(np.asarray(a, dtype=float), axis=axis)
-    rb = stats.rankdata(np.asarray(b, dtype=float), axis=axis)
+    a, b = as_float_array(a, "a"), as_float_array(b, "b")
+    axis = as_int(axis, "axis")
+    if a.shape != b.shape or a.ndim == 0 or not -a.ndim <= axis < a.ndim or a.shape[axis] < 2:
+        raise ValueError(f"a and b must have the same shape, with at least 2 values along axis "
+                         f"{axis}, got {a.shape} and {b.shape}")
+    ra = stats.rankdata(a, axis=axis)
+    rb = stats.rankdata(b, axis=axis)
     return _pearson(ra, rb, axis)
 
 
@@ -262,10 +277,15 @@ def mirror_point(points, a, b) -> np.ndarray:
     >>> mirror_point([1.0, 1.0], [0.0, 0.0], [2.0, 0.0]).tolist()
     [1.0, -1.0]
     """
-    a = np.asarray(a, dtype=float)
-    d = np.asarray(b, dtype=float) - a
+    a, b = as_point(a, "a"), as_point(b, "b")
+    if (a == b).all():
+        raise ValueError(f"a and b must be two points of a line, got twice {a.tolist()}")
+    d = b - a
     d = d / np.hypot(*d)
-    v = np.asarray(points, dtype=float) - a
+    v = as_float_array(points, "points")
+    if v.ndim < 1 or v.shape[-1] != 2 or not np.isfinite(v).all():
+        raise ValueError(f"points must be finite, of shape (..., 2), got {v.shape}")
+    v = v - a
     return a + 2 * (v @ d)[..., None] * d - v
 
 
@@ -431,9 +451,10 @@ def is_entrapped(e: Entrapment, reach_fraction=None, bound_mean=None, icn_min=No
     >>> tracking.is_entrapped(e, bound_mean=1.5)
     False
     """
+    as_instance(e, Entrapment, "e")
     c = dict(ENTRAPMENT_CRITERIA)
     given = {"reach_fraction": reach_fraction, "bound_mean": bound_mean, "icn_min": icn_min}
-    c.update({k: v for k, v in given.items() if v is not None})
+    c.update({k: as_real(v, k) for k, v in given.items() if v is not None})
     return bool(
         e.max_from_start <= c["reach_fraction"] * e.reach
         and e.bound_mean >= c["bound_mean"]

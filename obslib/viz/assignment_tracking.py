@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+from .._validate import as_mapping
 from .criteria import draw_boxes
+from .style import as_figsize
 
 __all__ = ["plot_assignment_errors"]
 
@@ -39,6 +41,12 @@ def plot_assignment_errors(runs: dict, figsize=(7.5, 3.6)):
     """
     import matplotlib.pyplot as plt
 
+    runs = as_mapping(runs, "runs")
+    for by_rule in runs.values():
+        if not as_mapping(by_rule, "runs") or not all(
+                hasattr(r, "run_mean_error") for r in by_rule.values()):
+            raise ValueError("runs must map L to {rule: AssignmentRuns} (assignment_study)")
+    figsize = as_figsize(figsize)
     if not runs:
         raise ValueError("no assignment runs to plot")
     Ls = list(runs)

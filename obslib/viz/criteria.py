@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .style import GREY, LOOKS
+from .._validate import as_float_array, as_mapping, as_names, as_sequence, as_str
+from .style import GREY, LOOKS, as_axes, as_figsize
 
 __all__ = ["LABELS", "draw_boxes", "plot_run_errors"]
 
@@ -39,7 +40,16 @@ def draw_boxes(ax, data, names, labels=None, looks=None):
     from matplotlib.colors import to_rgba
     from matplotlib.ticker import FormatStrFormatter, LogLocator
 
-    labels, looks = dict(labels or {}), dict(looks or {})
+    as_axes(ax)
+    names = as_names(names, "names")
+    labels = {} if labels is None else as_mapping(labels, "labels")
+    looks = {} if looks is None else as_mapping(looks, "looks")
+    data = as_sequence(data, "data")
+    if len(data) != len(names):
+        raise ValueError(f"data has {len(data)} series for {len(names)} names")
+    data = [as_float_array(d, "data") for d in data]
+    if any(d.ndim != 1 or not np.isfinite(d).all() for d in data):
+        raise ValueError("data must be finite 1-D series")
     parts = ax.boxplot(data, whis=(5, 95), patch_artist=True, flierprops={"ms": 2},
                        medianprops={"color": "k"})
     for box, flier, name in zip(parts["boxes"], parts["fliers"], names):
@@ -81,6 +91,9 @@ def plot_run_errors(study: dict, metric: str = "mahalanobis", figsize=(7.5, 6.0)
     """
     import matplotlib.pyplot as plt
 
+    study = as_mapping(study, "study")
+    as_str(metric, "metric")
+    figsize = as_figsize(figsize)
     settings = [s for s in ("circle", "adversary") if (s, metric) in study]
     if not settings:
         raise ValueError(f"the study has no runs with metric {metric!r}")

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import positive_float
-from .style import OKABE_ITO, SEQUENTIAL, look
+from .._validate import as_float_array, as_positive, as_real, as_str
+from .style import OKABE_ITO, SEQUENTIAL, as_axes, look
 
 __all__ = ["plot_fig1", "plot_fig2"]
 
@@ -29,10 +29,11 @@ def plot_fig1(
     """
     import matplotlib.pyplot as plt
 
-    d_io = positive_float("d_io", d_io)
-    d_jo = positive_float("d_jo", d_jo)
-    if not (np.isfinite(theta_i) and np.isfinite(theta_j)):
-        raise ValueError("theta_i and theta_j must be finite")
+    d_io = as_positive(d_io, "d_io")
+    d_jo = as_positive(d_jo, "d_jo")
+    theta_i, theta_j = as_real(theta_i, "theta_i"), as_real(theta_j, "theta_j")
+    if ax is not None:
+        as_axes(ax)
     if ax is None:
         fig, ax = plt.subplots(figsize=(4.1, 3), layout="constrained")
     pi_ = d_io * np.array([np.cos(theta_i), np.sin(theta_i)])
@@ -83,7 +84,7 @@ def _ray_hits(cs, start, direction) -> list:
     """For each level of the contour set ``cs``, the distance along the ray from ``start`` in
     the unit ``direction`` (data units) to its first crossing of that level's lines, or None
     where the ray never crosses them."""
-    d = np.asarray(direction, dtype=float)
+    d = as_float_array(direction, "direction")
     hits = []
     for path in cs.get_paths():
         best = None
@@ -113,8 +114,8 @@ def _label_along_ray(ax, cs, start, direction, box_in, fontsize: float = 10.0,
     between labelled ones. Levels the ray never crosses, or crosses less than a text height
     from the axes' edge, are labelled where matplotlib puts them.
     """
-    start = np.asarray(start, dtype=float)
-    d = np.asarray(direction, dtype=float) / np.hypot(*direction)
+    start = as_float_array(start, "start")
+    d = as_float_array(direction, "direction") / np.hypot(*direction)
     x0, x1 = ax.get_xlim()
     y0, y1 = ax.get_ylim()
     per_unit = np.array([box_in[0] / (x1 - x0), box_in[1] / (y1 - y0)])  # inches per data unit
@@ -160,7 +161,8 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     Parameters
     ----------
     alpha, theta : 1-D arrays
-        Grid axes; ``Z`` has shape ``(len(theta), len(alpha))`` (:func:`obslib.pair_form.bound_surface`).
+        Grid axes; ``Z`` has shape ``(len(theta), len(alpha))``
+        (:func:`obslib.pair_form.bound_surface`).
     levels : sequence of float
         Contour levels (Fig. 2: 0.1 ... 0.7).
     title : str
@@ -192,13 +194,21 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     import matplotlib.pyplot as plt
     from matplotlib.ticker import MaxNLocator
 
-    if panels not in ("all", "contour"):
+    if as_str(panels, "panels") not in ("all", "contour"):
         raise ValueError(f"panels must be 'all' or 'contour', got {panels!r}")
-    a = np.asarray(alpha, dtype=float)
-    t = np.asarray(theta, dtype=float)
-    Z = np.asarray(Z, dtype=float)
-    if Z.shape != (t.size, a.size):
-        raise ValueError(f"Z must have shape {(t.size, a.size)}, got {Z.shape}")
+    a = as_float_array(alpha, "alpha")
+    t = as_float_array(theta, "theta")
+    Z = as_float_array(Z, "Z")
+    if Z.shape != (t.size, a.size) or a.ndim != 1 or t.ndim != 1:
+        raise ValueError(f"Z must have shape (len(theta), len(alpha)) = {(t.size, a.size)}, "
+                         f"got {Z.shape}")
+    for name, x in (("alpha", a), ("theta", t), ("Z", Z)):
+        if not np.isfinite(x).all():
+            raise ValueError(f"{name} must be finite")
+    levels = as_float_array(levels, "levels")
+    if levels.ndim != 1 or not np.isfinite(levels).all() or (np.diff(levels) <= 0).any():
+        raise ValueError("levels must be finite and increasing")
+    as_str(title, "title")
     A, T = np.meshgrid(a, t)
     X, Y = A * np.cos(T), A * np.sin(T)
     if mark is not None:

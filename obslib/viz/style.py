@@ -34,7 +34,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 __all__ = ["OKABE_ITO", "GREY", "SEQUENTIAL", "Look", "LOOKS", "look", "PUBLISHED_STYLE",
-           "REPLAY_STYLE"]
+           "REPLAY_STYLE", "as_axes", "as_figsize"]
 
 #: Okabe and Ito's colours (https://jfly.uni-koeln.de/color/), by their names.
 OKABE_ITO = {
@@ -133,7 +133,7 @@ def look(name: str) -> Look:
     """
     key = _ALIASES.get(name, name) if isinstance(name, str) else None
     if key not in LOOKS:
-        raise ValueError(f"no look for {name!r}; known: {', '.join([*LOOKS, *_ALIASES])}")
+        raise ValueError(f"name: no look for {name!r}; known: {', '.join([*LOOKS, *_ALIASES])}")
     return LOOKS[key]
 
 
@@ -141,3 +141,36 @@ def look(name: str) -> Look:
 PUBLISHED_STYLE = {"lw": 4.0, "alpha": 0.3, "solid_capstyle": "round"}
 #: The replay with the published noise: a thin line (or small dots) of the same colour on top.
 REPLAY_STYLE = {"lw": 1.0}
+
+
+def as_axes(ax, name: str = "ax"):
+    """``ax`` if it is a matplotlib ``Axes``, else a ValueError naming ``name``.
+
+    Examples
+    --------
+    >>> as_axes(None)
+    Traceback (most recent call last):
+    ...
+    ValueError: ax must be a matplotlib Axes, got NoneType
+    """
+    from matplotlib.axes import Axes
+
+    if not isinstance(ax, Axes):
+        raise ValueError(f"{name} must be a matplotlib Axes, got {type(ax).__name__}")
+    return ax
+
+
+def as_figsize(figsize) -> tuple:
+    """A figure size ``(width, height)`` in inches, both finite and positive.
+
+    Examples
+    --------
+    >>> as_figsize([7.5, 3])
+    (7.5, 3.0)
+    """
+    from .._validate import as_positive
+
+    if isinstance(figsize, (str, bytes)) or not isinstance(figsize, (tuple, list)) or len(
+            figsize) != 2:
+        raise ValueError(f"figsize must be (width, height) in inches, got {figsize!r}")
+    return tuple(as_positive(v, "figsize") for v in figsize)

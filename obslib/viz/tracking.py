@@ -10,7 +10,19 @@ from __future__ import annotations
 
 import numpy as np
 
-from .style import LOOKS, PUBLISHED_STYLE, REPLAY_STYLE, look
+from .._validate import (
+    as_bool,
+    as_float_array,
+    as_instance,
+    as_int,
+    as_nonnegative,
+    as_point,
+    as_points,
+    as_positive,
+    as_str,
+)
+from ..tracking import TrackingResult
+from .style import LOOKS, PUBLISHED_STYLE, REPLAY_STYLE, as_axes, as_figsize, look
 
 __all__ = [
     "CHI2_2DOF_9973",
@@ -49,10 +61,15 @@ def cov_ellipse(mean, cov, chi2: float = CHI2_2DOF_9973, n: int = 100) -> np.nda
     >>> e.shape, bool(np.allclose(e[:, 0] ** 2 / 4 + e[:, 1] ** 2, 1.0))
     ((50, 2), True)
     """
-    w, v = np.linalg.eigh(np.asarray(cov, dtype=float))
+    mean = as_point(mean, "mean")
+    cov = as_float_array(cov, "cov")
+    if cov.shape != (2, 2) or not np.isfinite(cov).all():
+        raise ValueError(f"cov must be a finite 2 x 2 matrix, got shape {cov.shape}")
+    chi2, n = as_nonnegative(chi2, "chi2"), as_int(n, "n", 2)
+    w, v = np.linalg.eigh(cov)
     t = np.linspace(0, 2 * np.pi, n)
     circle = np.column_stack([np.cos(t), np.sin(t)])
-    return np.asarray(mean, dtype=float) + (circle * np.sqrt(chi2 * np.clip(w, 0, None))) @ v.T
+    return mean + (circle * np.sqrt(chi2 * np.clip(w, 0, None))) @ v.T
 
 
 _SUBSCRIPT = str.maketrans("0123456789", "".join(chr(0x2080 + d) for d in range(10)))
@@ -68,7 +85,7 @@ def sensor_label(i: int) -> str:
     >>> sensor_label(0), sensor_label(11)
     ('s₁', 's₁₂')
     """
-    return "s" + str(int(i) + 1).translate(_SUBSCRIPT)
+    return "s" + str(as_int(i, "i", 0) + 1).translate(_SUBSCRIPT)
 
 
 def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
@@ -91,7 +108,11 @@ def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
     ['s₁', 's₂']
     >>> plt.close(fig)
     """
-    s = np.asarray(sensors, dtype=float)
+    as_axes(ax)
+    s = as_points(sensors, "sensors")
+    ms = as_positive(ms, "ms")
+    if label is not None:
+        as_str(label, "label")
     ax.plot(*s.T, **look("sensor").kw(ms=ms, label=label or "_sensors"))
     ax.set_ymargin(max(ax.get_ymargin(), 0.12))
     for n, p in enumerate(s):
@@ -121,6 +142,13 @@ def draw_snapshot(ax, result, k: int, *, legend: bool = True, ellipse_scale=1.0)
     (True, 6)
     >>> plt.close(fig)
     """
+    as_axes(ax)
+    as_instance(result, TrackingResult, "result")
+    k = as_int(k, "k", 1)
+    if k > result.pairs.shape[0]:
+        raise ValueError(f"k must be a step of the run, 1..{result.pairs.shape[0]}, got {k}")
+    as_bool(legend, "legend")
+    ellipse_scale = as_positive(ellipse_scale, "ellipse_scale")
     i = k - 1
     s = result.setup.sensor_array
     draw_sensors(ax, s, label="sensors")
@@ -265,10 +293,11 @@ def animate(result, every: int = 3, dpi: int = 100, figsize=(7.5, 3.6), interval
     """
     import matplotlib.pyplot as plt
 
-    if int(every) < 1:
-        raise ValueError(f"every must be at least 1, got {every}")
-    if not dpi > 0:
-        raise ValueError(f"dpi must be positive, got {dpi}")
+    as_instance(result, TrackingResult, "result")
+    every = as_int(every, "every", 1)
+    dpi = as_positive(dpi, "dpi")
+    figsize = as_figsize(figsize)
+    interval = as_positive(interval, "interval")
     s = result.setup.sensor_array
     fig, (ax, axb) = plt.subplots(1, 2, figsize=figsize, dpi=dpi, layout="constrained",
                                   gridspec_kw={"width_ratios": [1, 1.15]})
@@ -344,6 +373,9 @@ def animation_html(anim, uid: str = "anim") -> str:
     """
     import re
 
+    if not hasattr(anim, "to_jshtml"):
+        raise ValueError(f"anim must be an animation (animate()), got {type(anim).__name__}")
+    as_str(uid, "uid")
     fig = getattr(anim, "_fig", None)  # a matplotlib animation's figure
     canvas = None if fig is None else fig.canvas
     if canvas is not None and not hasattr(canvas, "get_renderer"):
@@ -371,28 +403,25 @@ def animation_html(anim, uid: str = "anim") -> str:
     return re.sub(r'<link[^>]*href="(?:https?:)?//[^"]*"[^>]*>\s*', "", html)
 
 
-def _float_array(name: str, a, ndim: tuple) -> np.ndarray:
-    try:
-        out = np.asarray(a, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be an array of numbers") from None
+def _float_array(a, name: str, ndim: tuple) -> np.ndarray:
+    out = as_float_array(a, name)
     if out.ndim not in ndim:
         raise ValueError(f"{name} must have {' or '.join(map(str, ndim))} dimensions, "
                          f"got shape {out.shape}")
     return out
 
 
-def _check_overlay(published, replay, x):
-    pub = _float_array("published", published, (1, 2))
+def _overlay_iv(published, replay, x):
+    pub = _float_array(published, "published", (1, 2))
     if pub.ndim == 2 and pub.shape[1] != 2:
         raise ValueError(f"a path must have shape (n, 2), got published {pub.shape}")
     if pub.ndim == 1 and x is None:
         raise ValueError("a series (1-D published) needs x, e.g. the steps 1..n")
-    rep = None if replay is None else _float_array("replay", replay, (pub.ndim,))
+    rep = None if replay is None else _float_array(replay, "replay", (pub.ndim,))
     if rep is not None and rep.shape[1:] != pub.shape[1:]:
         raise ValueError(f"replay {rep.shape} does not match published {pub.shape}")
     if x is not None:
-        x = _float_array("x", x, (1,))
+        x = _float_array(x, "x", (1,))
         if x.size < max(pub.shape[0], 0 if rep is None else rep.shape[0]):
             raise ValueError(f"x has {x.size} values, fewer than the series")
     return pub, rep, x
@@ -432,7 +461,8 @@ def draw_published_overlay(ax, published, replay=None, *, x=None, color=None, la
     >>> [line.get_label() for line in ax.get_lines()]
     ['bound, published', 'bound, replay']
     """
-    pub, rep, x = _check_overlay(published, replay, x)
+    as_axes(ax)
+    pub, rep, x = _overlay_iv(published, replay, x)
 
     def xy(a):
         return (x[: a.shape[0]], a) if a.ndim == 1 else (a[:, 0], a[:, 1])
@@ -444,8 +474,8 @@ def draw_published_overlay(ax, published, replay=None, *, x=None, color=None, la
     return ax
 
 
-def _check_codes(name, a, n=None):
-    out = _float_array(name, a, (1,))
+def _codes_iv(a, name, n=None):
+    out = _float_array(a, name, (1,))
     if n is not None and out.size != n:
         raise ValueError(f"{name} has {out.size} steps, published has {n}")
     return out
@@ -477,8 +507,9 @@ def draw_pair_overlay(ax, published, replay=None, *, color=None, label=None):
     >>> [line.get_ydata().tolist() for line in ax.get_lines()]
     [[3.0, 3.0, 5.0], [3.0, 3.0, 5.0]]
     """
-    pub = _check_codes("published", published)
-    rep = None if replay is None else _check_codes("replay", replay, pub.size)
+    as_axes(ax)
+    pub = _codes_iv(published, "published")
+    rep = None if replay is None else _codes_iv(replay, "replay", pub.size)
     k = np.arange(1, pub.size + 1)
     color = look("best-pair").color if color is None else color
     lab = (lambda w: None) if label is None else (lambda w: f"{label}, {w}")

@@ -1,29 +1,34 @@
-"""Section IV-A's studies (obslib.studies.assignment): the batch optimum against the MILP, the
-charging argument, the tight weights, the ledger."""
+"""Section IV-A's studies (obslib.studies.assignment): the batch optimum against HiGHS's 0-1
+program, the charging argument, the tight weights, the ledger."""
 
 import numpy as np
 import pytest
 
 import obslib as ob
-from obslib.studies import assignment as st
 from obslib import claims
+from obslib.studies import assignment as sa
 
 
 def test_enumerated_optimum_equals_milp():
     rng = np.random.default_rng(0)
     for n, L in [(4, 2), (5, 2), (6, 3), (7, 3), (8, 4)]:
-        Ws = np.stack([ob.pair_bounds(rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (L, 2)), 1.0) for _ in range(5)])
-        for W, v in zip(Ws, st.optimal_values(Ws)):
+        Ws = np.stack(
+            [
+                ob.pair_bounds(rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (L, 2)), 1.0)
+                for _ in range(5)
+            ]
+        )
+        for W, v in zip(Ws, sa.optimal_values(Ws)):
             assert v == pytest.approx(ob.optimal_pair_assignment(W).value, abs=1e-12)
 
 
 def test_pair_assignments_count():
     # N!/(2^L (N-2L)!) ordered choices of L disjoint pairs
     for n, L, count in [(4, 2, 6), (6, 3, 90), (8, 3, 2520), (5, 1, 10)]:
-        P, Q = st.pair_assignments(n, L)
+        P, Q = sa.pair_assignments(n, L)
         assert P.shape == (count, L) and np.all(P < Q)
     with pytest.raises(ValueError, match="N >= 2L"):
-        st.pair_assignments(3, 2)
+        sa.pair_assignments(3, 2)
 
 
 def test_charging_covers_the_optimum_within_three_times_each_pick():
@@ -31,32 +36,38 @@ def test_charging_covers_the_optimum_within_three_times_each_pick():
     for _ in range(100):
         W = ob.pair_bounds(rng.uniform(0, 100, (8, 2)), rng.uniform(0, 100, (3, 2)), 1.0)
         g, o = ob.greedy_pair_assignment(W), ob.optimal_pair_assignment(W)
-        rounds = st.charging(W, g.triples, o.triples)
+        rounds = sa.charging(W, g.triples, o.triples)
         assert sum(len(r["charged"]) for r in rounds) == len(o.triples)
         for r in rounds:
             assert len(r["charged"]) <= 3 and all(w <= r["w"] + 1e-12 for w in r["charged_w"])
 
 
 def test_tight_weights_give_one_third():
-    W = st.tight_weights(1e-6)
+    W = sa.tight_weights(1e-6)
     ratio = ob.greedy_pair_assignment(W).value / ob.optimal_pair_assignment(W).value
     assert ratio == pytest.approx((1 + 1e-6) / 3)
 
 
 def test_search_result_is_what_it_claims():
-    r, S, T = st.worst_instance_search(6, 3, seed=3, n_starts=2, n_steps=50)
+    r, S, T = sa.worst_instance_search(6, 3, seed=3, n_starts=2, n_steps=50)
     W = ob.pair_bounds(S, T, 1.0)
-    assert r == pytest.approx(ob.greedy_pair_assignment(W).value / ob.optimal_pair_assignment(W).value)
+    assert r == pytest.approx(
+        ob.greedy_pair_assignment(W).value / ob.optimal_pair_assignment(W).value
+    )
     assert r >= 1 / 3
 
 
 def test_section_4a_statuses_follow_the_evidence():
     recs = {r.id: r for r in claims.evaluate("quick", ids=["thm6", "thm6-practice"])}
     ev = recs["thm6"].evidence
-    assert recs["thm6"].status == ("reproduced" if min(ev["min_ratio"], ev["worst_search_ratio"]) >= 1 / 3 else "refuted")
+    assert recs["thm6"].status == (
+        "reproduced" if min(ev["min_ratio"], ev["worst_search_ratio"]) >= 1 / 3 else "refuted"
+    )
     assert ev["tight_weights_ratio"] == pytest.approx(1.001 / 3)
     pe = recs["thm6-practice"].evidence
-    expected = "refuted" if pe["quantile_05"] < 0.75 else "reproduced"  # searched layouts: thm6-tight
+    expected = (
+        "refuted" if pe["quantile_05"] < 0.75 else "reproduced"
+    )  # searched layouts: thm6-tight
     assert recs["thm6-practice"].status == expected
 
 
@@ -64,11 +75,11 @@ def test_dynamic_programming_optimum_equals_enumeration_exactly():
     rng = np.random.default_rng(4)
     for n, L in [(2, 1), (5, 1), (4, 2), (7, 2), (6, 3), (9, 3), (8, 4), (10, 4), (10, 5)]:
         S, T = rng.uniform(0, 100, (20, n, 2)), rng.uniform(0, 100, (20, L, 2))
-        W, valid = st.batch_pair_bounds(S, T, 1.0)
+        W, valid = sa.batch_pair_bounds(S, T, 1.0)
         assert valid.all()
-        P, Q = st.pair_assignments(n, L)
+        P, Q = sa.pair_assignments(n, L)
         by_enumeration = W[:, P, Q, np.arange(L)[None, :]].sum(axis=2).max(axis=1)
-        np.testing.assert_array_equal(st.optimal_values(W), by_enumeration)
+        np.testing.assert_array_equal(sa.optimal_values(W), by_enumeration)
 
 
 def test_batch_greedy_and_weights_equal_the_single_instance_functions():
@@ -77,11 +88,13 @@ def test_batch_greedy_and_weights_equal_the_single_instance_functions():
         S, T = rng.uniform(0, 100, (30, n, 2)), rng.uniform(0, 100, (30, L, 2))
         S[0, 1] = S[0, 0]  # two sensors coincide
         S[1, 0] = T[1, 0]  # a sensor on a target
-        W, valid = st.batch_pair_bounds(S, T, 2.5)
+        W, valid = sa.batch_pair_bounds(S, T, 2.5)
         assert valid.tolist() == [False, False] + [True] * 28
         for k in range(2, 30):
             np.testing.assert_array_equal(W[k], ob.pair_bounds(S[k], T[k], 2.5))
-        np.testing.assert_array_equal(st.greedy_values(W[2:]), [ob.greedy_pair_assignment(w).value for w in W[2:]])
+        np.testing.assert_array_equal(
+            sa.greedy_values(W[2:]), [ob.greedy_pair_assignment(w).value for w in W[2:]]
+        )
 
 
 @pytest.mark.parametrize("c", [1e-200, 1e200, 2.0**1000])
@@ -91,24 +104,24 @@ def test_batch_weights_do_not_depend_on_the_unit(c):
     rng = np.random.default_rng(8)
     S, T = rng.uniform(0, 1, (4, 5, 2)), rng.uniform(0, 1, (4, 2, 2))
     with np.errstate(all="raise"):
-        W, valid = st.batch_pair_bounds(S * c, T * c, 0.7 * c)
+        W, valid = sa.batch_pair_bounds(S * c, T * c, 0.7 * c)
     assert valid.all()
-    np.testing.assert_allclose(W, st.batch_pair_bounds(S, T, 0.7)[0], rtol=1e-12, atol=1e-15)
+    np.testing.assert_allclose(W, sa.batch_pair_bounds(S, T, 0.7)[0], rtol=1e-12, atol=1e-15)
     for k in range(4):
         np.testing.assert_array_equal(W[k], ob.pair_bounds(S[k] * c, T[k] * c, 0.7 * c))
 
 
 def test_batch_functions_reject_bad_input():
     with pytest.raises(ValueError, match="N >= 2L"):
-        st.optimal_values(np.zeros((1, 3, 3, 2)))
+        sa.optimal_values(np.zeros((1, 3, 3, 2)))
     with pytest.raises(ValueError, match="too many"):
-        st.optimal_values(np.zeros((1, 18, 18, 2)))
+        sa.optimal_values(np.zeros((1, 18, 18, 2)))
     with pytest.raises(ValueError, match="shape"):
-        st.greedy_values(np.zeros((3, 3, 2)))
+        sa.greedy_values(np.zeros((3, 3, 2)))
     with pytest.raises(ValueError, match="finite"):
-        st.batch_pair_bounds(np.full((1, 2, 2), np.nan), np.zeros((1, 1, 2)), 1.0)
+        sa.batch_pair_bounds(np.full((1, 2, 2), np.nan), np.zeros((1, 1, 2)), 1.0)
     with pytest.raises(ValueError, match="u_max"):
-        st.batch_pair_bounds(np.zeros((1, 2, 2)), np.ones((1, 1, 2)), -1.0)
+        sa.batch_pair_bounds(np.zeros((1, 2, 2)), np.ones((1, 1, 2)), -1.0)
 
 
 def test_search_equals_the_sequential_local_search():
@@ -119,7 +132,7 @@ def test_search_equals_the_sequential_local_search():
 
     def ratio(S, T):
         W = ob.pair_bounds(S, T, 1.0)
-        P, Q = st.pair_assignments(n, L)
+        P, Q = sa.pair_assignments(n, L)
         opt = W[P, Q, np.arange(L)[None, :]].sum(axis=1).max()
         return ob.greedy_pair_assignment(W).value / opt
 
@@ -141,7 +154,7 @@ def test_search_equals_the_sequential_local_search():
                 S, T, r = S2, T2, r2
         if r < best[0]:
             best = (r, S, T)
-    r, S, T = st.worst_instance_search(n, L, seed, starts, steps)
+    r, S, T = sa.worst_instance_search(n, L, seed, starts, steps)
     assert r == best[0]
     np.testing.assert_array_equal(S, best[1])
     np.testing.assert_array_equal(T, best[2])

@@ -6,20 +6,20 @@ import pytest
 
 import obslib as ob
 from obslib import claims
-from obslib.studies import greedy_vs_relaxed as st
+from obslib.studies import greedy_vs_relaxed as gvr
 
 
 def test_fig8_trials_do_not_depend_on_sweep_order():
-    a = st.fig8_sweep([3, 1, 2], trials=2, seed=5)
-    b = st.fig8_sweep([1, 2, 3], trials=2, seed=5)
+    a = gvr.fig8_sweep([3, 1, 2], trials=2, seed=5)
+    b = gvr.fig8_sweep([1, 2, 3], trials=2, seed=5)
     for k in ("greedy", "relaxed", "relaxed_ordered"):
         np.testing.assert_array_equal(a[k][[1, 2, 0]], b[k])
-    t = st.fig8_trial(2, 1, 5)
+    t = gvr.fig8_trial(2, 1, 5)
     assert t["greedy"] == b["greedy"][1, 1]
 
 
 def test_fig8_values_are_ordered_as_the_theory_says():
-    r = st.fig8_sweep([1, 2, 3, 4, 5], trials=3, seed=0, optimum_max_L=5)
+    r = gvr.fig8_sweep([1, 2, 3, 4, 5], trials=3, seed=0, optimum_max_L=5)
     assert np.all(r["greedy"] <= r["optimum"] + 1e-12)
     assert np.all(r["optimum"] <= r["relaxed"] + 1e-12)
     assert np.all(r["relaxed"] <= r["relaxed_ordered"] + 1e-12)
@@ -38,7 +38,7 @@ def test_fig8_dense_and_pruned_paths_agree():
     from obslib.assignment import relaxed_from_geometry
 
     for L in (3, 9, 20):
-        t = st.fig8_trial(L, 0, 3)
+        t = gvr.fig8_trial(L, 0, 3)
         rng = np.random.default_rng([3, L, 0])
         S, T = rng.uniform(0, 100, (2 * L, 2)), rng.uniform(0, 100, (L, 2))
         plain, ordered = relaxed_from_geometry(S, T, 1.0)
@@ -48,12 +48,12 @@ def test_fig8_dense_and_pruned_paths_agree():
 
 
 def test_fig8_summary_is_the_mean_over_trials():
-    r = st.fig8_sweep([1, 3], trials=4, seed=1)
-    s = st.fig8_summary(r)
+    r = gvr.fig8_sweep([1, 3], trials=4, seed=1)
+    s = gvr.fig8_summary(r)
     for k in ("greedy", "relaxed", "relaxed_ordered"):
         for a in range(2):
             assert s.mean[k][a] == pytest.approx(sum(r[k][a].tolist()) / 4, rel=1e-14)
             assert s.std[k][a] == pytest.approx(np.sqrt(np.mean((r[k][a] - s.mean[k][a]) ** 2)))
     assert s.ratio.tolist() == pytest.approx([1.0, s.mean["greedy"][1] / s.mean["relaxed"][1]])
     with pytest.raises(ValueError, match="fig8_sweep"):
-        st.fig8_summary({"greedy": r["greedy"]})
+        gvr.fig8_summary({"greedy": r["greedy"]})

@@ -1,4 +1,5 @@
-"""Section III's audits (obslib.studies.section3) against scene-by-scene loops over the public functions."""
+"""Section III's audits (obslib.studies.section3) against scene-by-scene loops over the public
+functions."""
 
 import numpy as np
 import pytest
@@ -12,11 +13,14 @@ from obslib.studies import section3 as bc
 
 def _unit_disc_draws(n_scenes, n_controls, seed):
     rng = np.random.default_rng(seed + 1)
-    return rng.uniform(size=(n_scenes, n_controls)), rng.uniform(0, 2 * np.pi, size=(n_scenes, n_controls))
+    return rng.uniform(size=(n_scenes, n_controls)), rng.uniform(
+        0, 2 * np.pi, size=(n_scenes, n_controls)
+    )
 
 
 def test_theorem1_audit_equals_a_scene_by_scene_loop():
-    """The batched audit against lower_bound / worst_case_control / inverse_condition_number per scene."""
+    """The batched audit against lower_bound / worst_case_control / inverse_condition_number per
+    scene."""
     n, m, seed = 300, 16, 4
     a = bc.theorem1_audit(n, m, seed)
     batch = random_scene_batch(n, seed)
@@ -64,7 +68,8 @@ def test_theorem2_audit_equals_a_scene_by_scene_loop():
 
 
 def test_theorem3_audit_equals_a_trial_by_trial_loop():
-    """The same draws as theorem3_audit, decided one trial at a time from relative_rows and eigvalsh."""
+    """The same draws as theorem3_audit, decided one trial at a time from relative_rows and
+    eigvalsh."""
     n, seed = 3000, 6
     a = bc.theorem3_audit(n, seed)
     rng = np.random.default_rng(seed)

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from obslib import tracking as tr
+from obslib._validate import ArgumentTypeError
 from obslib.studies import tracking as study
 
 CIRCLE = tr.PAPER_CIRCLE
@@ -97,13 +98,15 @@ def test_near_published_is_a_relative_window_and_zero_is_exact():
 
 
 def test_study_arguments_of_the_wrong_kind_raise():
-    with pytest.raises(TypeError, match="n_seeds must be an integer"):
+    with pytest.raises(ArgumentTypeError, match="n_seeds must be an integer"):
         study.partner_study(CIRCLE, 2.5)
     with pytest.raises(ValueError, match="n_seeds must be at least 1"):
         study.partner_study(CIRCLE, 0)
-    with pytest.raises(TypeError, match="first_seed must be a non-negative integer"):
+    with pytest.raises(ArgumentTypeError, match="first_seed must be an integer, got None"):
         study.partner_study(CIRCLE, 2, None)
-    with pytest.raises(TypeError, match="n_angles must be an integer"):
+    with pytest.raises(ValueError, match="first_seed must be at least 0, got -1"):
+        study.partner_study(CIRCLE, 2, -1)
+    with pytest.raises(ArgumentTypeError, match="n_angles must be an integer"):
         study.adversary_variants(ADV, 3, 10.0)
     with pytest.raises(ValueError, match="setup must be a TrackingSetup"):
         study.adversary_variants({"u_max": 0.1}, 3, 10)

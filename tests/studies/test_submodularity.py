@@ -8,7 +8,7 @@ import pytest
 
 import obslib as ob
 import obslib.measures as me
-import obslib.submodularity as core
+import obslib.submodularity as subm
 from obslib.bound_tables import lower_bound_tables
 from obslib.measures import measure_from_vectors, subset_masks
 from obslib.studies import submodularity as sm
@@ -141,14 +141,18 @@ def test_random_instances_are_seeded_and_legal():
 
 
 def test_random_audits_equal_the_per_instance_audits():
-    """lower_bound_audit and measure_audit (fast verdicts) against audit_tables instance by instance."""
+    """lower_bound_audit and measure_audit (fast verdicts) against audit_tables instance by
+    instance."""
     for u_max, min_size in ((1.0, 2), (0.0, 2), (0.5, 0)):
         a = sm.lower_bound_audit(150, 5, 3, u_max, min_size)
         s, t = sm.random_instances(150, 5, 3, "generic")
-        audits = core.audit_tables(lower_bound_tables(t[:, None, :] - s, u_max), 5, min_size)
+        audits = subm.audit_tables(lower_bound_tables(t[:, None, :] - s, u_max), 5, min_size)
         assert a.n_not_increasing == sum(not x.monotone_increasing for x in audits)
         assert a.n_not_submodular == sum(not x.submodular for x in audits)
-        for key, attr in (("witness", "submodular_witness"), ("monotone_witness", "monotone_witness")):
+        for key, attr in (
+            ("witness", "submodular_witness"),
+            ("monotone_witness", "monotone_witness"),
+        ):
             hits = [(len(getattr(x, attr).B), i) for i, x in enumerate(audits) if getattr(x, attr)]
             w = getattr(a, key)
             if not hits:
@@ -161,10 +165,13 @@ def test_random_audits_equal_the_per_instance_audits():
 
 
 def test_theorem8_rows_equal_per_instance_audits():
-    """theorem8_audit (instances and tr/det shared, fast verdicts) against audit_tables per instance."""
+    """theorem8_audit (instances and tr/det shared, fast verdicts) against audit_tables per
+    instance."""
     n_inst, n_sens, seed, eps, u_max = 60, 4, 5, 1.0, 1.0
     rows = sm.theorem8_audit(n_inst, n_sens, seed, eps, u_max)
-    assert [(r.measure, r.config) for r in rows] == [(m, c[0]) for m in me.MEASURES for c in sm.CONFIGS]
+    assert [(r.measure, r.config) for r in rows] == [
+        (m, c[0]) for m in me.MEASURES for c in sm.CONFIGS
+    ]
     for r in rows:
         assert r == sm.measure_audit(r.measure, n_inst, n_sens, seed, eps, u_max, r.config)
     for name, use_eps, use_u, min_size, kinds in ((c[0],) + c[1:] for c in sm.CONFIGS):
@@ -176,7 +183,7 @@ def test_theorem8_rows_equal_per_instance_audits():
                 for i in range(n_inst):
                     u = u_max * np.array([np.cos(phi[i]), np.sin(phi[i])]) if use_u else None
                     table = me.measure_table(s[i], t[i], measure, eps if use_eps else 0.0, u)
-                    audits.append(core.audit_set_function(s[i], values=table, min_size=min_size))
+                    audits.append(subm.audit_set_function(s[i], values=table, min_size=min_size))
             r = next(x for x in rows if x.measure == measure and x.config == name)
             assert r.n_instances == len(audits)
             assert r.n_not_increasing == sum(not a.monotone_increasing for a in audits)

@@ -1,4 +1,5 @@
-"""Fig. 9 study (obslib.studies.teams): order-independent trials, counts consistent with the greedy, the ledger rules."""
+"""Fig. 9 study (obslib.studies.teams): order-independent trials, counts consistent with the greedy,
+the ledger rules."""
 
 import numpy as np
 
@@ -24,8 +25,12 @@ def test_statuses_follow_the_evidence():
     rel = np.array(recs["fig9-even"].evidence["relative_to_random"])
     lit = np.array(recs["fig9-even"].evidence["literal_relative_to_random"])  # no eps I prior
     even = [(rel < 1).all(), (lit < 1).all()]
-    assert recs["fig9-even"].status == ("reproduced" if all(even) else "partly" if any(even) else "refuted")
-    assert recs["greedy-half"].status == ("reproduced" if recs["greedy-half"].evidence["min_ratio"] >= 0.5 else "refuted")
+    assert recs["fig9-even"].status == (
+        "reproduced" if all(even) else "partly" if any(even) else "refuted"
+    )
+    assert recs["greedy-half"].status == (
+        "reproduced" if recs["greedy-half"].evidence["min_ratio"] >= 0.5 else "refuted"
+    )
 
 
 def test_evenness_statistics_by_hand():

@@ -9,9 +9,9 @@ import pytest
 import sympy as sp
 
 import obslib as ob
-from obslib.scenes import random_scenes
 from obslib import symbolic as sy
-from obslib.studies.pair_form import max_difference_at_rational_points
+from obslib.scenes import random_scenes
+from obslib.symbolic.evaluation import max_difference_at_rational_points
 
 A, TH, Q = sy.ALPHA, sy.THETA, sy.Q
 CART_RANGES = {**{s: (-3.0, 3.0) for s in sy.CARTESIAN_ARGS[:-1]}, sy.U: (0.0, 2.0)}
@@ -78,8 +78,10 @@ def test_a_wrong_closed_form_is_detected():
 
 
 def _scenes(n, seed):
-    return [(sc.sensors, sc.target, sc.u_max)
-            for sc in random_scenes(n, seed, n_sensors=(2, 2), scale=(1e-2, 1e2), kinds=("generic",))]
+    return [
+        (sc.sensors, sc.target, sc.u_max)
+        for sc in random_scenes(n, seed, n_sensors=(2, 2), scale=(1e-2, 1e2), kinds=("generic",))
+    ]
 
 
 def test_lambdified_cartesian_bound_equals_pair_bounds():

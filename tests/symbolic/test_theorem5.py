@@ -8,7 +8,7 @@ import sympy as sp
 
 import obslib as ob
 from obslib import symbolic as sy
-from obslib.studies.pair_form import max_difference_at_rational_points
+from obslib.symbolic.evaluation import max_difference_at_rational_points
 
 A, TH, Q = sy.ALPHA, sy.THETA, sy.Q
 

@@ -13,7 +13,9 @@ def test_literal_count_equals_a_counted_run():
     rng = np.random.default_rng(0)
     for n, L in [(4, 2), (10, 5), (30, 15), (12, 3)]:
         S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (L, 2))
-        assert greedy_pair_assignment_literal(sensors=S, targets=T, u_max=1.0).n_evaluations == literal_count(n, L)
+        assert greedy_pair_assignment_literal(
+            sensors=S, targets=T, u_max=1.0
+        ).n_evaluations == literal_count(n, L)
 
 
 def test_evaluation_counts_one_pass_and_greedy():
@@ -41,7 +43,9 @@ def quick_criteria(monkeypatch):
     from obslib.tools import bench
 
     ran = []
-    monkeypatch.setattr(bench, "bench_criteria", lambda: ran.append(1) or {"per_pair_us": {"x": 1.5}})
+    monkeypatch.setattr(
+        bench, "bench_criteria", lambda: ran.append(1) or {"per_pair_us": {"x": 1.5}}
+    )
     return ran
 
 

@@ -37,7 +37,7 @@ def _ends(rule, default) -> list:
 
 def _valid(notebook: str, values: dict, declared: dict) -> bool:
     try:
-        pr.check_parameters(notebook, values, declared)
+        pr.validated_parameters(notebook, values, declared)
     except ValueError:
         return False
     return True
@@ -94,7 +94,7 @@ def test_boundary_cases_cover_every_end_and_are_accepted():
             for value in _ends(rule, declared[name]):
                 assert any(c.get(name) == value for c in cases), (nb, name, value)
         for c in cases:
-            pr.check_parameters(nb, c, declared)
+            pr.validated_parameters(nb, c, declared)
 
 
 @pytest.mark.boundaries

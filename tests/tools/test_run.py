@@ -29,7 +29,11 @@ def write_notebook(path, params_source, code):
     nb.cells = [p] + [new_code_cell(c) for c in code]
     for k, c in enumerate(nb.cells):
         c.id = f"c{k}"
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
     nbformat.write(nb, path)
     return path
 
@@ -56,7 +60,9 @@ def test_execute_injects_parameters_and_strips_run_metadata(tiny_notebook, tmp_p
     run.execute(tiny_notebook, out, {"n": 5})
     nb = json.loads(out.read_text())
     assert "papermill" not in nb["metadata"]
-    assert all("papermill" not in c["metadata"] and "execution" not in c["metadata"] for c in nb["cells"])
+    assert all(
+        "papermill" not in c["metadata"] and "execution" not in c["metadata"] for c in nb["cells"]
+    )
     outputs = [o for c in nb["cells"] if c["cell_type"] == "code" for o in c["outputs"]]
     assert any("".join(o.get("text", "")) == "105\n" for o in outputs)
     assert json.loads(tiny_notebook.read_text())["cells"][1]["outputs"] == []  # source untouched
@@ -82,7 +88,8 @@ def test_stream_chunks_are_merged():
     assert [o.get("text") for o in merged] == ["a\nb\n", "w\n", None, "c\n"]
 
 
-# --------------------------------------------------------------------------- parameters checked first
+# --------------------------------------------------------------------------- parameters checked
+# first
 
 
 def refused(argv, monkeypatch, capsys) -> str:
@@ -104,26 +111,49 @@ def test_bad_parameter_value_fails_before_any_notebook_runs(value, expected, mon
     assert "n_seeds" in err and "05_two_sensors_tracking" in err and expected in err
 
 
-@pytest.mark.parametrize("argv, expected", [
-    # values that used to crash a notebook halfway, now outside the declared range
-    (["-p", "n_sensors", "1", "04"], "n_sensors = 1 is not accepted; expected an integer in [2, 10]"),
-    (["-p", "n_sensors", "30", "04"], "n_sensors = 30 is not accepted; expected an integer in [2, 10]"),
-    (["-p", "L_max", "1", "07"], "L_max = 1 is not accepted; expected an integer in [2, 200]"),
-    (["-p", "steps", "1", "05"], "steps = 1 is not accepted; expected an integer in [10, 10000]"),
-    (["-p", "alpha_max", "1e-9", "02"], "alpha_max = 1e-09 is not accepted; expected a number in [1, 100]"),
-    (["-p", "eps", "1e-300", "04"], "eps = 1e-300 is not accepted; expected a number in [1e-06, 1e+06]"),
-    # dependencies between parameters
-    (["-p", "targets_min", "5", "03"], "targets_min = 5, targets_max = 4 are not accepted; "
-                                       "expected targets_min <= targets_max"),
-    (["-p", "search_targets", "4", "03"], "expected 2 * search_targets <= search_sensors"),
-    (["-p", "N_min", "60", "08"], "expected N_min <= N_max"),
-    (["-p", "contour_levels", "[0.5, 0.2]", "02"], "contour levels increase"),
-    (["-p", "metric", "'manhattan'", "05"], "one of 'mahalanobis', 'euclidean'"),
-    (["-p", "times_file", "'nosuch.json'", "09"], "the path of an existing file"),
-    # a name given twice
-    (["--profile", "quick", "-p", "n_scenes", "1", "-p", "n_scenes", "2", "01"],
-     "n_scenes given more than once"),
-])
+@pytest.mark.parametrize(
+    "argv, expected",
+    [
+        # values that would crash a notebook halfway lie outside the declared range
+        (
+            ["-p", "n_sensors", "1", "04"],
+            "n_sensors = 1 is not accepted; expected an integer in [2, 10]",
+        ),
+        (
+            ["-p", "n_sensors", "30", "04"],
+            "n_sensors = 30 is not accepted; expected an integer in [2, 10]",
+        ),
+        (["-p", "L_max", "1", "07"], "L_max = 1 is not accepted; expected an integer in [2, 200]"),
+        (
+            ["-p", "steps", "1", "05"],
+            "steps = 1 is not accepted; expected an integer in [10, 10000]",
+        ),
+        (
+            ["-p", "alpha_max", "1e-9", "02"],
+            "alpha_max = 1e-09 is not accepted; expected a number in [1, 100]",
+        ),
+        (
+            ["-p", "eps", "1e-300", "04"],
+            "eps = 1e-300 is not accepted; expected a number in [1e-06, 1e+06]",
+        ),
+        # dependencies between parameters
+        (
+            ["-p", "targets_min", "5", "03"],
+            "targets_min = 5, targets_max = 4 are not accepted; "
+            "expected targets_min <= targets_max",
+        ),
+        (["-p", "search_targets", "4", "03"], "expected 2 * search_targets <= search_sensors"),
+        (["-p", "N_min", "60", "08"], "expected N_min <= N_max"),
+        (["-p", "contour_levels", "[0.5, 0.2]", "02"], "contour levels increase"),
+        (["-p", "metric", "'manhattan'", "05"], "one of 'mahalanobis', 'euclidean'"),
+        (["-p", "times_file", "'nosuch.json'", "09"], "the path of an existing file"),
+        # a name given twice
+        (
+            ["--profile", "quick", "-p", "n_scenes", "1", "-p", "n_scenes", "2", "01"],
+            "n_scenes given more than once",
+        ),
+    ],
+)
 def test_values_outside_the_declared_ranges_are_command_line_errors(argv, expected, monkeypatch,
                                                                     capsys):
     err = refused(["--profile", "quick"] + argv if "--profile" not in argv else argv,
@@ -137,18 +167,18 @@ def test_unknown_parameter_of_the_second_notebook_fails_before_the_first(monkeyp
 
 
 def test_parameter_checks_accept_good_values_and_convert_numbers():
-    from obslib.profiles import check_parameters
+    from obslib.profiles import validated_parameters
 
     nb = "05_two_sensors_tracking"
-    assert check_parameters(nb, {"u_max": 2, "n_seeds": 3}) == {"u_max": 2.0, "n_seeds": 3}
-    assert check_parameters("08_general_assignment", {"eps_values": [1, 0.5]}) == {
+    assert validated_parameters(nb, {"u_max": 2, "n_seeds": 3}) == {"u_max": 2.0, "n_seeds": 3}
+    assert validated_parameters("08_general_assignment", {"eps_values": [1, 0.5]}) == {
         "eps_values": [1.0, 0.5]}
     for bad in ({"metric": "no"}, {"u_max": -1.0}, {"u_max": float("nan")}, {"n_seeds": 5.0}):
         with pytest.raises(ValueError, match=f"parameter {next(iter(bad))}"):
-            check_parameters(nb, bad)
+            validated_parameters(nb, bad)
     for bad in ({"eps_values": [0.0]}, {"eps_values": []}, {"eps_values": 1.0}):
         with pytest.raises(ValueError, match="expected a non-empty list, each entry number in"):
-            check_parameters("08_general_assignment", bad)
+            validated_parameters("08_general_assignment", bad)
 
 
 def test_every_parameter_has_a_declared_range():
@@ -161,12 +191,12 @@ def test_every_parameter_has_a_declared_range():
 @pytest.mark.parametrize("profile", ["paper", "quick"])
 def test_every_profile_passes_the_parameter_checks(profile):
     # the profiles' values and the notebooks' own defaults lie in the declared ranges
-    from obslib.profiles import PROFILES, check_parameters, defaults
+    from obslib.profiles import PROFILES, defaults, validated_parameters
 
     for nb in run.notebooks():
         declared = defaults(nb.stem)
-        check_parameters(nb.stem, PROFILES[profile][nb.stem], declared)
-        check_parameters(nb.stem, declared, declared)
+        validated_parameters(nb.stem, PROFILES[profile][nb.stem], declared)
+        validated_parameters(nb.stem, declared, declared)
 
 
 # --------------------------------------------------------------------------- reruns

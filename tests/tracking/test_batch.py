@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from obslib import tracking as tr
+from obslib._validate import ArgumentTypeError
 from obslib.studies import tracking as study
 
 CIRCLE = tr.PAPER_CIRCLE
@@ -105,15 +106,17 @@ def test_simulate_many_bad_arguments_raise():
 
 
 def test_monte_carlo_arguments_of_the_wrong_kind_raise():
-    with pytest.raises(TypeError, match="strategies must be a list of names, got the string"):
+    with pytest.raises(ArgumentTypeError, match="strategies must be a list of names, got the str"):
         tr.monte_carlo(CIRCLE, 2, strategies="best-pair")
-    with pytest.raises(TypeError, match="n_seeds must be an integer"):
+    with pytest.raises(ArgumentTypeError, match="n_seeds must be an integer"):
         tr.monte_carlo(CIRCLE, 2.5)
-    with pytest.raises(TypeError, match="first_seed must be a non-negative integer"):
+    with pytest.raises(ArgumentTypeError, match="n_seeds must be an integer, got 2.0"):
+        tr.monte_carlo(CIRCLE, n_seeds=2.0)
+    with pytest.raises(ArgumentTypeError, match="first_seed must be an integer, got None"):
         tr.monte_carlo(CIRCLE, 2, first_seed=None)
-    with pytest.raises(TypeError, match="each seed must be a non-negative integer"):
+    with pytest.raises(ArgumentTypeError, match="each seed must be an integer, got None"):
         tr.simulate_batch(CIRCLE, "best-pair", seeds=[0, None])
-    with pytest.raises(TypeError, match="seeds must be an iterable"):
+    with pytest.raises(ArgumentTypeError, match="seeds must be an iterable"):
         tr.simulate_batch(CIRCLE, "best-pair", seeds=5)
 
 

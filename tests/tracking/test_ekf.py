@@ -8,6 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from obslib import tracking as tr
+from obslib._validate import ArgumentTypeError
 
 CIRCLE = tr.PAPER_CIRCLE
 ADV = tr.PAPER_ADVERSARIAL
@@ -178,11 +179,11 @@ def test_bad_run_arguments_raise():
 
 
 def test_seed_and_strategy_of_the_wrong_kind_raise():
-    with pytest.raises(TypeError, match="seed must be a non-negative integer, got None"):
+    with pytest.raises(ArgumentTypeError, match="seed must be an integer, got None"):
         tr.simulate(CIRCLE, "best-pair", seed=None)
-    with pytest.raises(TypeError, match="seed must be a non-negative integer, got True"):
+    with pytest.raises(ArgumentTypeError, match="seed must be an integer, got True"):
         tr.simulate(CIRCLE, "best-pair", seed=True)
-    with pytest.raises(TypeError, match="strategy must be a string"):
+    with pytest.raises(ArgumentTypeError, match="strategy must be a string"):
         tr.simulate(CIRCLE, 3)
 
 

@@ -91,7 +91,7 @@ def test_values_of_the_wrong_kind_raise_type_errors(changes, match):
 
 
 def test_a_covariance_too_large_for_the_filter_is_named():
-    """1e300 I used to pass validation and fail later as "cov of target 0"."""
+    """1e300 I is refused where it is given, not later as "cov of target 0"."""
     with pytest.raises(ValueError, match=r"cov0 has entries of scale 1e\+300"):
         CIRCLE.replace(cov0=1e300)
     with pytest.raises(ValueError, match="Q has entries of scale"):

@@ -52,7 +52,11 @@ def test_ties_between_strategies_count_for_neither():
     np.testing.assert_array_equal(tr.clearly_lower(b, a), [False, False, False, False])
     # a strategy compared with an identical copy of itself wins nowhere
     mc = tr.monte_carlo(CIRCLE.replace(steps=30), 3, first_seed=0)
-    same = {"best-pair": mc["best-pair"], "best-partner": mc["best-pair"], "fixed-pair": mc["fixed-pair"]}
+    same = {
+        "best-pair": mc["best-pair"],
+        "best-partner": mc["best-pair"],
+        "fixed-pair": mc["fixed-pair"],
+    }
     assert all(v == 0.0 for v in tr.compare_strategies(same)["wins"]["best-partner"].values())
 
 

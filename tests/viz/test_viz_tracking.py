@@ -66,7 +66,7 @@ def test_overlay_rejects_bad_input():
         viz.draw_published_overlay(_ax(), np.zeros((3, 2)), np.zeros((3, 3)))
     with pytest.raises(ValueError, match="fewer"):
         viz.draw_published_overlay(_ax(), [1.0, 2.0], x=[1])
-    with pytest.raises(ValueError, match="numbers"):
+    with pytest.raises(ValueError, match="published must be numeric"):
         viz.draw_published_overlay(_ax(), ["a"], x=[1])
     with pytest.raises(ValueError, match="steps"):
         viz.draw_pair_overlay(_ax(), [1, 2, 3], [1, 2])
