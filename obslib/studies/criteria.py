@@ -44,6 +44,7 @@ from .._validate import (
     as_nonnegative,
     as_points,
     as_positive,
+    as_psd2,
     as_real,
     as_sequence,
     as_str,
@@ -169,7 +170,7 @@ def criterion_scores(name: str, sensors, xhat, cov, Q, R, u_max, control=None,
     S = as_points(sensors, "sensors", min_count=2)
     x = as_points(np.atleast_2d(as_float_array(xhat, "xhat")), "xhat")
     C = as_covariances(cov, x.shape[0], np.inf)
-    Q, R = as_covariances(Q, 1, np.inf, "Q")[0], as_covariances(R, 1, np.inf, "R")[0]
+    Q, R = as_psd2(Q, "Q"), as_covariances(R, 1, np.inf, "R")[0]
     u_max = as_nonnegative(u_max, "u_max")
     if name == "exact-icn":
         if control is None:
