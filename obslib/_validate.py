@@ -21,8 +21,7 @@ __all__ = ["ArgumentTypeError", "MissingFileError", "as_float_array", "as_points
            "as_u_max", "as_cov", "as_int", "as_bool", "as_eps", "as_positive", "as_nonnegative",
            "as_real", "as_str", "as_path", "as_names", "as_argv", "as_mapping", "as_callable",
            "as_sequence", "as_ints", "as_triples", "as_int_range", "broadcast", "as_rank_rtol",
-           "as_measure_name", "as_weights", "as_real_array", "as_covariances", "as_psd2",
-           "as_noise_table",
+           "as_measure_name", "as_weights", "as_real_array", "as_covariances", "as_noise_table",
            "as_instance", "as_choice", "check_spd_any_scale", "check_spd2", "check_distinct",
            "check_not_on_targets", "check_differences", "check_weight_memory", "check_pair_sizes",
            "check_maximisable", "check_scene_batch", "as_stack", "as_u_max_stack",
@@ -294,33 +293,6 @@ def as_covariances(cov, n: int, max_scale: float, name: str = "cov") -> np.ndarr
         k = int(np.flatnonzero(~ok)[0])
         check_spd_any_scale(c[k], f"{name} {k}", max_scale)
     return c
-
-
-def as_psd2(value, name: str) -> np.ndarray:
-    """A finite, symmetric, positive semi-definite 2x2 matrix (a process noise may be zero), or a
-    named ValueError.
-
-    Examples
-    --------
-    >>> as_psd2([[0, 0], [0, 0]], "Q").tolist()
-    [[0.0, 0.0], [0.0, 0.0]]
-    >>> as_psd2([[1, 0], [0, -1]], "Q")
-    Traceback (most recent call last):
-    ...
-    ValueError: Q is not positive semi-definite: [[1.0, 0.0], [0.0, -1.0]]
-    """
-    m = as_real_array(value, name, "a real 2x2 matrix")
-    if m.shape != (2, 2):
-        raise ValueError(f"{name} must have shape (2, 2), got {m.shape}")
-    if not np.isfinite(m).all():
-        raise ValueError(f"{name} has a non-finite entry: {m.tolist()}")
-    top = float(np.abs(m).max())
-    n = m / top if top > 0 else m
-    if abs(n[0, 1] - n[1, 0]) > 1e-12:
-        raise ValueError(f"{name} is not symmetric: {m.tolist()}")
-    if n[0, 0] < 0 or n[1, 1] < 0 or n[0, 0] * n[1, 1] - n[0, 1] * n[1, 0] < -1e-12:
-        raise ValueError(f"{name} is not positive semi-definite: {m.tolist()}")
-    return m
 
 
 def as_noise_table(noise, shape: tuple) -> np.ndarray:

@@ -44,8 +44,8 @@ from .._validate import (
     as_nonnegative,
     as_points,
     as_positive,
-    as_psd2,
     as_real,
+    as_real_array,
     as_sequence,
     as_str,
 )
@@ -126,6 +126,23 @@ def missing_strategies(names=PAPER_STRATEGIES + CRITERIA) -> list:
 # --------------------------------------------------------------------------------------------
 
 
+def _process_noise_iv(Q) -> np.ndarray:
+    """The filter's process noise ``Q``: finite, symmetric and positive semi-definite (it may be
+    zero, a target known to stand still), or a named ValueError."""
+    m = as_real_array(Q, "Q", "a real 2x2 matrix")
+    if m.shape != (2, 2):
+        raise ValueError(f"Q must have shape (2, 2), got {m.shape}")
+    if not np.isfinite(m).all():
+        raise ValueError(f"Q has a non-finite entry: {m.tolist()}")
+    top = float(np.abs(m).max())
+    n = m / top if top > 0 else m
+    if abs(n[0, 1] - n[1, 0]) > 1e-12:
+        raise ValueError(f"Q is not symmetric: {m.tolist()}")
+    if n[0, 0] < 0 or n[1, 1] < 0 or n[0, 0] * n[1, 1] - n[0, 1] * n[1, 0] < -1e-12:
+        raise ValueError(f"Q is not positive semi-definite: {m.tolist()}")
+    return m
+
+
 def criterion_scores(name: str, sensors, xhat, cov, Q, R, u_max, control=None,
                      metric: str = "mahalanobis") -> np.ndarray:
     """Each criterion's score of every pair at a batch of estimates, shape (B, P).
@@ -170,7 +187,7 @@ def criterion_scores(name: str, sensors, xhat, cov, Q, R, u_max, control=None,
     S = as_points(sensors, "sensors", min_count=2)
     x = as_points(np.atleast_2d(as_float_array(xhat, "xhat")), "xhat")
     C = as_covariances(cov, x.shape[0], np.inf)
-    Q, R = as_psd2(Q, "Q"), as_covariances(R, 1, np.inf, "R")[0]
+    Q, R = _process_noise_iv(Q), as_covariances(R, 1, np.inf, "R")[0]
     u_max = as_nonnegative(u_max, "u_max")
     if name == "exact-icn":
         if control is None:
