@@ -107,6 +107,9 @@ DATA_FILE = File("a JSON file written by the benchmark command")
 #: Notebook 03's exact optimum is a dynamic program over the 2^N sets of N = 2L + extra sensors.
 EXACT = "the exact optimum runs over the 2^N sets of N = 2 L + extra <= 16 sensors"
 
+#: Notebook 08 compares the teams that the targets get.
+TEAMS = "the even split compares the teams of two targets or more"
+
 RANGES: dict[str, dict[str, object]] = {
     "01_model_and_bound": {
         "seed": SEED, "n_scenes": COUNT, "n_controls": COUNT, "n_trials_thm3": COUNT,
@@ -147,7 +150,8 @@ RANGES: dict[str, dict[str, object]] = {
     },
     "05_two_sensors_tracking": {
         "seed": SEED, "n_seeds": COUNT,
-        "steps": Range(10, 10_000, "the switch-rate figure smooths over 9 transitions"),
+        "steps": Range(71, 10_000, "the switch rates around k = 50 are read over the "
+                       "transitions k = 30 to 70 and compared with the rest"),
         "u_max": Range(1e-3, 1e3), "noise_std": Range(0.0, 10.0),
         "q": Range(1e-6, 1e3), "r": Range(1e-6, 1e3), "p0": Range(1e-6, 1e3),
         "metric": METRICS, "anim_every": COUNT, "anim_dpi": Range(20, 300),
@@ -164,9 +168,11 @@ RANGES: dict[str, dict[str, object]] = {
         "L_extended": Range(1, 400), "trials_extended": COUNT,
     },
     "08_general_assignment": {
-        "seed": SEED, "n_targets": Range(1, 20), "N_min": Range(1, 200), "N_max": Range(1, 200),
-        "trials": COUNT, "eps": Range(1e-6, 1e6), "side": Range(1e-3, 1e6),
-        "eps_values": Range(1e-6, 1e6), "compare_N": Range(1, 200), "compare_trials": COUNT,
+        "seed": SEED, "n_targets": Range(2, 20, TEAMS), "N_min": Range(2, 200, TEAMS),
+        "N_max": Range(2, 200, TEAMS),
+        "trials": Range(2, why="the teams' spread over trials needs two of them"),
+        "eps": Range(1e-6, 1e6), "side": Range(1e-3, 1e6),
+        "eps_values": Range(1e-6, 1e6), "compare_N": Range(2, 200, TEAMS), "compare_trials": COUNT,
         "n_tiny": COUNT,
     },
     "09_scaling": {
@@ -183,7 +189,8 @@ RANGES: dict[str, dict[str, object]] = {
         "assign_p0": Range(1e-6, 1e3), "assign_loss": Range(1e-3, 1e3),
     },
     "11_unchecked_statements": {
-        "seed": SEED, "n_seeds_typical": COUNT, "jitter_fractions": Range(0.0, 1.0),
+        "seed": SEED, "n_seeds_typical": COUNT, "jitter_fractions": Range(
+            1e-12, 1.0, "the jitters are drawn on a log scale, where 0 has no place"),
         "n_jitter": COUNT, "n_geometries": COUNT, "n_refine": COUNT, "u_max": Range(1e-3, 1e3),
         "n_3dm": COUNT, "solver_L": Range(1, 40), "time_budget": Range(0.1, 3600.0),
         "problem3_L": Range(1, 200), "problem3_trials": COUNT, "n_seeds_disc": COUNT,

@@ -219,14 +219,14 @@ def exact_ratio_spread(L: int, n_instances: int, time_budget: float, seed: int =
     >>> r.shape, bool(((r >= 1 / 3) & (r <= 1 + 1e-12)).all())
     ((4,), True)
     """
-    for name, v in (("L", L), ("n_instances", n_instances)):
-        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
-            raise ValueError(f"{name} must be a positive integer, got {v!r}")
+    L, n_instances = as_int(L, "L", 1), as_int(n_instances, "n_instances", 1)
     budget = _budget(time_budget)
-    out = np.full(int(n_instances), np.nan)
-    for k in range(int(n_instances)):
-        rng = np.random.default_rng([seed, int(L), k])
-        S, T = rng.uniform(0, side, (2 * int(L), 2)), rng.uniform(0, side, (int(L), 2))
+    seed = as_int(seed, "seed", 0)
+    u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
+    out = np.full(n_instances, np.nan)
+    for k in range(n_instances):
+        rng = np.random.default_rng([seed, L, k])
+        S, T = rng.uniform(0, side, (2 * L, 2)), rng.uniform(0, side, (L, 2))
         W = pair_bounds(S, T, u_max)
         try:
             opt = optimal_pair_assignment(W, time_limit=budget)

@@ -465,7 +465,7 @@ def pooled_switch_mechanism(batch: BatchResult) -> dict:
         sensor of the pair), ``switch_if_closer`` (switch rate after such a move),
         ``switch_fraction`` (all switches over all transitions), ``switches``, ``raised``
         (fraction of switches that leave a higher exact C^-1 than the target aimed at) and
-        ``mean_gain``.
+        ``mean_gain``. A rate over no event (no switch, no move closer) is NaN.
 
     Examples
     --------
@@ -482,12 +482,19 @@ def pooled_switch_mechanism(batch: BatchResult) -> dict:
     trans = sum(m["transitions"] for m in ms)
     closer = sum(m["closer"] for m in ms)
     n_sw = sum(m["switches"] for m in ms)
+
+    def pooled(key, weight, total):
+        # a run without the event has a NaN rate and weight 0: it adds nothing
+        if total == 0:
+            return float("nan")
+        return sum(m[key] * m[weight] for m in ms if m[weight]) / total
+
     return {
         "transitions": trans,
-        "closer_fraction": closer / trans,
-        "switch_if_closer": sum(m["switch_if_closer"] * m["closer"] for m in ms) / max(closer, 1),
-        "switch_fraction": n_sw / trans,
+        "closer_fraction": closer / trans if trans else float("nan"),
+        "switch_if_closer": pooled("switch_if_closer", "closer", closer),
+        "switch_fraction": n_sw / trans if trans else float("nan"),
         "switches": n_sw,
-        "raised": sum(m["raised"] * m["switches"] for m in ms) / max(n_sw, 1),
-        "mean_gain": sum(m["mean_gain"] * m["switches"] for m in ms) / max(n_sw, 1),
+        "raised": pooled("raised", "switches", n_sw),
+        "mean_gain": pooled("mean_gain", "switches", n_sw),
     }

@@ -90,6 +90,19 @@ def test_pooled_switch_mechanism_counts_over_all_transitions():
     assert m["raised"] == pytest.approx(raised / max(switches, 1))
 
 
+def test_pooled_switch_mechanism_of_runs_without_switches_is_nan_not_zero():
+    # a run with a single transition and one switch-free run: the rates over no event are
+    # undefined, while those over events that happened are pooled from the runs that had them
+    b = tr.simulate_batch(tr.PAPER_ADVERSARIAL.replace(steps=2), "fixed-pair", seeds=[0, 1])
+    m = study.pooled_switch_mechanism(b)
+    assert m["transitions"] == 2 and m["switches"] == 0
+    assert np.isnan(m["raised"]) and np.isnan(m["mean_gain"])
+    if 0 < m["closer_fraction"]:
+        assert m["switch_if_closer"] == 0.0
+    else:
+        assert np.isnan(m["switch_if_closer"])
+
+
 def test_near_published_is_a_relative_window_and_zero_is_exact():
     assert study.near_published(0.79 * 1.149, 0.79) and not study.near_published(0.79 * 1.151, 0.79)
     assert study.near_published(0.0, 0) and not study.near_published(1e-9, 0)
