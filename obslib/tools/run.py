@@ -383,28 +383,34 @@ def _runs_iv(runs) -> list:
     return runs
 
 
-def longest_first(runs: list) -> list:
-    """Runs ordered by their last in-place time, longest first, so the cores finish together.
+def longest_first(runs: list, expected: dict | None = None) -> list:
+    """Runs ordered by their expected time, longest first, so the cores finish together.
+
+    ``expected`` maps notebook file names to seconds; by default, the last in-place times (a
+    notebook without one keeps its place after those with one).
 
     Examples
     --------
     >>> longest_first([])
     []
     """
-    try:
-        last = json.loads(TIMES_FILE.read_text())
-    except (OSError, ValueError):
-        last = {}
-    return sorted(_runs_iv(runs), key=lambda r: -float(last.get(r.notebook.name, 0.0)))
+    if expected is None:
+        try:
+            expected = json.loads(TIMES_FILE.read_text())
+        except (OSError, ValueError):
+            expected = {}
+    expected = as_mapping(expected, "expected")
+    return sorted(_runs_iv(runs), key=lambda r: -float(expected.get(r.notebook.name, 0.0)))
 
 
-def execute_all(runs, jobs: int = 1, progress: bool | None = None, on_done=None) -> dict:
+def execute_all(runs, jobs: int = 1, progress: bool | None = None, on_done=None,
+                expected: dict | None = None) -> dict:
     """Execute ``runs`` (from :func:`plan`), ``jobs`` at a time; ``{notebook name: seconds}``.
 
     Each notebook runs in its own kernel, as serially: the outputs are the same whatever
-    ``jobs``. The longest notebooks (by their last in-place time) start first. ``on_done(run,
-    seconds)`` is called in this thread as each finishes. ``progress``: bars on standard error
-    (``None``: when it is a terminal).
+    ``jobs``. The longest notebooks start first, by ``expected`` (see :func:`longest_first`;
+    default: their last in-place times). ``on_done(run, seconds)`` is called in this thread as
+    each finishes. ``progress``: bars on standard error (``None``: when it is a terminal).
 
     Raises
     ------
@@ -425,7 +431,7 @@ def execute_all(runs, jobs: int = 1, progress: bool | None = None, on_done=None)
         as_bool(progress, "progress")
     if on_done is not None:
         as_callable(on_done, "on_done")
-    runs = longest_first(runs) if jobs > 1 else runs
+    runs = longest_first(runs, expected) if jobs > 1 else runs
     os.environ.setdefault("PYTHONHASHSEED", "0")  # kernels inherit it
     disable = None if progress is None else not progress
     slots = list(range(min(jobs, len(runs)), 0, -1))  # bar positions below the overall bar
