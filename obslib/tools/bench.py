@@ -29,7 +29,7 @@ prints a few readable lines and, last, one JSON object.
     ``exec_s``: executing every notebook at its default parameters one at a time (papermill, one
     kernel per notebook, into a scratch folder); ``floor_s``: executing the same number of
     trivial notebooks the same way, the fixed cost of a kernel per notebook, each one just
-    before a notebook; ``exec_over_floor`` their ratio (target <= 3). ``stack_floor_s``: as many
+    before a notebook; ``exec_over_floor`` their ratio. ``stack_floor_s``: as many
     minimal notebooks of this book, each importing the stack every notebook starts with
     (matplotlib, NumPy, pandas, myst-nb's ``glue``, ``obslib``, ``obsbook.setup()``) and
     showing one small figure; ``stack_over_floor`` is

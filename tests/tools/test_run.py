@@ -126,7 +126,7 @@ def test_bad_parameter_value_fails_before_any_notebook_runs(value, expected, mon
         (["-p", "L_max", "1", "07"], "L_max = 1 is not accepted; expected an integer in [2, 200]"),
         (
             ["-p", "steps", "1", "05"],
-            "steps = 1 is not accepted; expected an integer in [10, 10000]",
+            "steps = 1 is not accepted; expected an integer in [71, 10000]",
         ),
         (
             ["-p", "alpha_max", "1e-9", "02"],
