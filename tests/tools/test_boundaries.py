@@ -1,6 +1,6 @@
 """Every notebook runs to the end at the boundary values of each of its declared ranges.
 
-The runs are slow (177 notebook runs at the quick sizes, 8 to 10 minutes on two busy cores), so
+The runs are slow (178 notebook runs at the quick sizes, 10 to 12 minutes on two cores), so
 they are marked ``boundaries``: ``make test`` leaves them out (it checks only that the cases
 are accepted) and ``.ci/run`` runs them as a separate step::
 
