@@ -173,18 +173,13 @@ def _eq4_collapse(profile: str) -> Finding:
 # ---------------------------------------------------------------------------------------------
 
 
-@lru_cache(maxsize=4)
-def _reach(L_values: tuple, time_budget: float, seed: int, u_max: float):
-    return hd.exact_solver_reach(L_values, time_budget, seed, u_max)
-
-
 #: Instances of the largest size solved, over which greedy / optimum is reported.
 N_SPREAD = 8
 
 
 @lru_cache(maxsize=4)
-def _spread(L: int, time_budget: float, seed: int, u_max: float):
-    return hd.exact_ratio_spread(L, N_SPREAD, time_budget, seed, u_max)
+def _exact(L_values: tuple, time_budget: float, seed: int, u_max: float):
+    return hd.exact_optimum_study(L_values, N_SPREAD, time_budget, seed, u_max)
 
 
 @claim(
@@ -205,12 +200,11 @@ def _np_complete(profile: str) -> Finding:
     geometric case is open; refuted: the reduction fails on some instance."""
     p = params(NOTEBOOK, profile)
     red = hd.reduction_check(p["n_3dm"], p["seed"])
-    reach = _reach(tuple(p["solver_L"]), float(p["time_budget"]), p["seed"], p["u_max"])
-    solved = [r for r in reach if r["solved"]]
-    top = max((r["L"] for r in solved), default=0)
+    ex = _exact(tuple(p["solver_L"]), float(p["time_budget"]), p["seed"], p["u_max"])
+    reach, spread = ex["reach"], ex["spread"]
+    top = ex["largest_solved"] or 0
     ok = red["agree"] == red["n"]
     status = "partly" if ok else "refuted"
-    spread = _spread(top, float(p["time_budget"]), p["seed"], p["u_max"]) if top else np.array([])
     done = spread[np.isfinite(spread)]
     ours = (
         "It is NP-complete for the arbitrary weights Problem 1 is posed with, by a reduction "

@@ -39,6 +39,7 @@ __all__ = [
     "reduction_check",
     "exact_solver_reach",
     "exact_ratio_spread",
+    "exact_optimum_study",
 ]
 
 
@@ -200,6 +201,34 @@ def exact_solver_reach(L_values, time_budget: float, seed: int = 0, u_max: float
             "relaxed": relaxed_pair_assignment(W).value,
         })
     return rows
+
+
+def exact_optimum_study(L_values, n_spread: int, time_budget: float, seed: int = 0,
+                        u_max: float = 1.0) -> dict:
+    """How far the exact optimum of Problem 1 reaches (:func:`exact_solver_reach`), and greedy
+    over optimum on ``n_spread`` instances of the largest size solved
+    (:func:`exact_ratio_spread`).
+
+    Returns
+    -------
+    dict
+        ``reach`` (the rows of :func:`exact_solver_reach`), ``largest_solved`` (``L``, or
+        ``None`` when no size was solved within ``time_budget``) and ``spread`` (the ratios,
+        empty when no size was solved).
+
+    Examples
+    --------
+    >>> from obslib.studies.hardness import exact_optimum_study
+    >>> s = exact_optimum_study([2, 3], 2, time_budget=30.0)
+    >>> s["largest_solved"], s["spread"].shape
+    (3, (2,))
+    """
+    n_spread = as_int(n_spread, "n_spread", 1)
+    reach = exact_solver_reach(L_values, time_budget, seed, u_max)
+    top = max((r["L"] for r in reach if r["solved"]), default=None)
+    spread = (exact_ratio_spread(top, n_spread, time_budget, seed, u_max) if top is not None
+              else np.array([]))
+    return {"reach": reach, "largest_solved": top, "spread": spread}
 
 
 def exact_ratio_spread(L: int, n_instances: int, time_budget: float, seed: int = 0,
