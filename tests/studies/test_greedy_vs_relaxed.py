@@ -57,3 +57,19 @@ def test_fig8_summary_is_the_mean_over_trials():
     assert s.ratio.tolist() == pytest.approx([1.0, s.mean["greedy"][1] / s.mean["relaxed"][1]])
     with pytest.raises(ValueError, match="fig8_sweep"):
         gvr.fig8_summary({"greedy": r["greedy"]})
+
+
+def test_fig8_sweep_equals_its_trials_bit_for_bit(monkeypatch):
+    # the sweep solves the trials of one L in blocks (batched weights, greedy, optimum); a small
+    # block budget splits them (two trials per block at L = 7, one at L = 9), L = 9 takes the
+    # exact solver (N > MAX_DP_SENSORS), L = 41 is the first above FIG8_DENSE_WEIGHTS
+    assert gvr._is_dense(40) and not gvr._is_dense(41)
+    monkeypatch.setattr(gvr, "_BLOCK_WEIGHTS", 3000)
+    L_values, trials, seed = [1, 7, 9, 40, 41], 3, 11
+    r = gvr.fig8_sweep(L_values, trials, seed, 1.5, 50.0, optimum_max_L=9)
+    for a, L in enumerate(L_values):
+        for t in range(trials):
+            one = gvr.fig8_trial(L, t, seed, 1.5, 50.0, with_optimum=L <= 9)
+            for k in gvr.FIG8_KEYS:
+                assert np.array_equal(r[k][a, t], one[k], equal_nan=True), (L, t, k)
+    assert np.isnan(r["optimum"][3:]).all() and not np.isnan(r["optimum"][:3]).any()
