@@ -248,7 +248,7 @@ def _complete(n, n_targets, triples):
 
 
 #: Nodes the search may visit before handing the reduced model to HiGHS (bounds the time on
-#: adversarial instances; random Fig. 8 instances at L = 20 need 700 to 32,000, about 30 us each).
+#: adversarial instances; random Fig. 8 instances at L = 20 need 700 to 32,000, about 20 us each).
 MAX_NODES = 100_000
 
 
