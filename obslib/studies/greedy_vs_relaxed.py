@@ -10,7 +10,6 @@ import numpy as np
 
 from .._validate import as_bool, as_int, as_ints, as_mapping, as_nonnegative, as_positive
 from ..assignment import (
-    _relaxed_from_cost,
     greedy_pair_assignment,
     optimal_pair_assignment,
     relaxed_from_geometry,
@@ -102,10 +101,10 @@ def _fig8_block(n_targets: int, first: int, stop: int, seed: int, u_max: float, 
     :func:`obslib.studies.assignment.batch_pair_bounds` (bit for bit :func:`obslib.pair_bounds`),
     the greedy in one batched call of :func:`~obslib.studies.assignment.greedy_values` (each
     instance's rounds are independent of the others'), the optimum likewise, and each relaxed
-    matching by the worker of :func:`obslib.relaxed_pair_assignment` on the same ``(L, P)``
-    matrix, without validating again weights valid by construction. The 600 trials of the
-    notebook's sweep (``L = 1 .. 20``, 30 trials, optimum up to ``L = 6``) took 0.95 s one trial
-    per task and take 0.32 s this way (``_rounds`` had run 600 times on a batch of one). Large
+    matching by :func:`obslib.relaxed_pair_assignment` of its ``W``. The 600 trials of the
+    notebook's sweep (``L = 1 .. 20``, 30 trials, optimum up to ``L = 6``) took 1.2 to 1.7 s one
+    trial per task and take 0.5 to 0.7 s this way, measured side by side (the greedy had run 600
+    times on a batch of one). Large
     instances, and a degenerate draw (which :func:`obslib.pair_bounds` refuses), go through
     :func:`fig8_trial`.
     """
@@ -120,13 +119,8 @@ def _fig8_block(n_targets: int, first: int, stop: int, seed: int, u_max: float, 
         rows = [fig8_trial(n_targets, t, seed, u_max, side, with_optimum) for t in trials]
         return {k: np.array([r[k] for r in rows], dtype=float) for k in FIG8_KEYS}
     n = 2 * n_targets
-    ii, jj = np.triu_indices(n, 1)
-    cost = W[:, ii, jj, :]  # (K, P, L): of each W, what relaxed_pair_assignment reads
-    relaxed = {
-        key: np.array([_relaxed_from_cost(n, ii, jj, c.T, ordered, counted=None).value
-                       for c in cost])
-        for key, ordered in (("relaxed", False), ("relaxed_ordered", True))
-    }
+    relaxed = {key: np.array([relaxed_pair_assignment(w, ordered).value for w in W])
+               for key, ordered in (("relaxed", False), ("relaxed_ordered", True))}
     out = {"greedy": greedy_values(W), **relaxed, "optimum": np.full(len(trials), np.nan)}
     if with_optimum:
         out["optimum"] = (optimal_values(W) if n <= MAX_DP_SENSORS
