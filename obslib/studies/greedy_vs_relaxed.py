@@ -22,6 +22,7 @@ from .assignment import MAX_DP_SENSORS, batch_pair_bounds, greedy_values, optima
 __all__ = [
     "FIG8_KEYS",
     "FIG8_DENSE_WEIGHTS",
+    "fig8_instance",
     "fig8_trial",
     "fig8_sweep",
     "Fig8Summary",
@@ -44,12 +45,41 @@ def _is_dense(n_targets: int) -> bool:
     return n * (n - 1) // 2 * n_targets <= FIG8_DENSE_WEIGHTS
 
 
-def _draw(n_targets: int, trial: int, seed: int, side: float) -> tuple:
-    """The sensors ``(2L, 2)`` and targets ``(L, 2)`` of one Fig. 8 trial, in that order."""
+def fig8_instance(n_targets: int, trial: int, seed: int, side: float = 100.0) -> tuple:
+    """The instance of one Fig. 8 trial: ``N = 2L`` sensors ``(2L, 2)`` and ``L`` targets
+    ``(L, 2)`` uniform in ``[0, side]^2``, drawn in that order from
+    ``numpy.random.default_rng([seed, L, trial])``.
+
+    Examples
+    --------
+    >>> S, T = fig8_instance(n_targets=3, trial=0, seed=0)
+    >>> S.shape, T.shape
+    ((6, 2), (3, 2))
+    """
+    return _draw(as_int(n_targets, "n_targets", 1), as_int(trial, "trial", 0),
+                 as_int(seed, "seed", 0), as_positive(side, "side"))
+
+
+def _draw(n_targets, trial, seed, side) -> tuple:
     rng = np.random.default_rng([seed, n_targets, trial])
     S = rng.uniform(0, side, size=(2 * n_targets, 2))
     T = rng.uniform(0, side, size=(n_targets, 2))
     return S, T
+
+
+def _dense_values(W, with_optimum: bool) -> dict:
+    """Key of :data:`FIG8_KEYS` -> values of the instances with all their weights ``W``
+    ``(K, N, N, L)`` at hand: the greedy in one batched call (each instance's rounds are
+    independent of the others'), each relaxed matching from its ``W``, the optimum (NaN unless
+    ``with_optimum``) by the dynamic program in one batched call up to
+    :data:`~obslib.studies.assignment.MAX_DP_SENSORS` sensors, else by the exact solver."""
+    relaxed = {key: np.array([relaxed_pair_assignment(w, ordered).value for w in W])
+               for key, ordered in (("relaxed", False), ("relaxed_ordered", True))}
+    out = {"greedy": greedy_values(W), **relaxed, "optimum": np.full(len(W), np.nan)}
+    if with_optimum:
+        out["optimum"] = (optimal_values(W) if W.shape[1] <= MAX_DP_SENSORS
+                          else np.array([optimal_pair_assignment(w).value for w in W]))
+    return out
 
 
 def fig8_trial(n_targets: int, trial: int, seed: int, u_max: float = 1.0, side: float = 100.0,
@@ -71,25 +101,18 @@ def fig8_trial(n_targets: int, trial: int, seed: int, u_max: float = 1.0, side: 
     seed, with_optimum = as_int(seed, "seed", 0), as_bool(with_optimum, "with_optimum")
     u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
     S, T = _draw(n_targets, trial, seed, side)
-    W = None
     if _is_dense(n_targets):  # small: every weight, computed once
-        W = pair_bounds(S, T, u_max)
-        greedy = float(greedy_values(W[None])[0])
-        relaxed = [relaxed_pair_assignment(W, ordered) for ordered in (False, True)]
-    else:  # large: each algorithm evaluates only the pairs that can matter
-        greedy = greedy_pair_assignment(sensors=S, targets=T, u_max=u_max).value
-        relaxed = relaxed_from_geometry(S, T, u_max)
-    out = {
-        "greedy": greedy,
+        values = _dense_values(pair_bounds(S, T, u_max)[None], with_optimum)
+        return {k: float(v[0]) for k, v in values.items()}
+    # large: each algorithm evaluates only the pairs that can matter
+    relaxed = relaxed_from_geometry(S, T, u_max)
+    return {
+        "greedy": greedy_pair_assignment(sensors=S, targets=T, u_max=u_max).value,
         "relaxed": relaxed[0].value,
         "relaxed_ordered": relaxed[1].value,
-        "optimum": np.nan,
+        "optimum": (optimal_pair_assignment(pair_bounds(S, T, u_max)).value if with_optimum
+                    else np.nan),
     }
-    if with_optimum:
-        W = pair_bounds(S, T, u_max) if W is None else W
-        out["optimum"] = (float(optimal_values(W[None])[0]) if 2 * n_targets <= MAX_DP_SENSORS
-                          else optimal_pair_assignment(W).value)
-    return out
 
 
 def _fig8_block(n_targets: int, first: int, stop: int, seed: int, u_max: float, side: float,
@@ -99,9 +122,7 @@ def _fig8_block(n_targets: int, first: int, stop: int, seed: int, u_max: float, 
 
     Small instances are solved together: the weights by
     :func:`obslib.studies.assignment.batch_pair_bounds` (bit for bit :func:`obslib.pair_bounds`),
-    the greedy in one batched call of :func:`~obslib.studies.assignment.greedy_values` (each
-    instance's rounds are independent of the others'), the optimum likewise, and each relaxed
-    matching by :func:`obslib.relaxed_pair_assignment` of its ``W``. The 600 trials of the
+    then the values as one trial computes them, for the whole block at once. The 600 trials of the
     notebook's sweep (``L = 1 .. 20``, 30 trials, optimum up to ``L = 6``) took 1.2 to 1.7 s one
     trial per task and take 0.5 to 0.7 s this way, measured side by side (the greedy had run 600
     times on a batch of one). Large
@@ -118,14 +139,7 @@ def _fig8_block(n_targets: int, first: int, stop: int, seed: int, u_max: float, 
     if W is None:
         rows = [fig8_trial(n_targets, t, seed, u_max, side, with_optimum) for t in trials]
         return {k: np.array([r[k] for r in rows], dtype=float) for k in FIG8_KEYS}
-    n = 2 * n_targets
-    relaxed = {key: np.array([relaxed_pair_assignment(w, ordered).value for w in W])
-               for key, ordered in (("relaxed", False), ("relaxed_ordered", True))}
-    out = {"greedy": greedy_values(W), **relaxed, "optimum": np.full(len(trials), np.nan)}
-    if with_optimum:
-        out["optimum"] = (optimal_values(W) if n <= MAX_DP_SENSORS
-                          else np.array([optimal_pair_assignment(w).value for w in W]))
-    return out
+    return _dense_values(W, with_optimum)
 
 
 def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float = 100.0,

@@ -31,6 +31,7 @@ import numpy as np
 from .._validate import ArgumentTypeError, as_int, as_ints, as_nonnegative, as_positive
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment, relaxed_pair_assignment
 from ..bounds import pair_bounds
+from .greedy_vs_relaxed import fig8_instance
 
 __all__ = [
     "three_dm_weights",
@@ -234,7 +235,8 @@ def exact_optimum_study(L_values, n_spread: int, time_budget: float, seed: int =
 def exact_ratio_spread(L: int, n_instances: int, time_budget: float, seed: int = 0,
                        u_max: float = 1.0, side: float = 100.0) -> np.ndarray:
     """Greedy over the exact optimum of Problem 1 on ``n_instances`` random Fig. 8 instances of
-    one size (``N = 2L``; instance ``k`` drawn from ``default_rng([seed, L, k])``).
+    one size: instance ``k`` is trial ``k`` of Fig. 8
+    (:func:`~obslib.studies.greedy_vs_relaxed.fig8_instance`).
 
     Returns
     -------
@@ -254,9 +256,7 @@ def exact_ratio_spread(L: int, n_instances: int, time_budget: float, seed: int =
     u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
     out = np.full(n_instances, np.nan)
     for k in range(n_instances):
-        rng = np.random.default_rng([seed, L, k])
-        S, T = rng.uniform(0, side, (2 * L, 2)), rng.uniform(0, side, (L, 2))
-        W = pair_bounds(S, T, u_max)
+        W = pair_bounds(*fig8_instance(L, k, seed, side), u_max)
         try:
             opt = optimal_pair_assignment(W, time_limit=budget)
         except RuntimeError:
