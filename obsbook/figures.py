@@ -71,9 +71,8 @@ def setup() -> None:
       hand. It measures every text before the draw: on five of the book's figures (a line
       plot, Fig. 2 with and without its surfaces, six tracking snapshots, the criteria's box
       plots) drawing took 26-51 % longer than with margins written down (10-65 ms a figure),
-      and recording the texts for the checks adds 5-12 %. Each figure is still drawn once: the
-      PNG is printed with ``bbox_inches=None`` (the inline backend's default ``"tight"`` would
-      draw it a second time to measure it).
+      and recording the texts for the checks adds 5-12 %. Each figure is still drawn once
+      (:func:`render`).
     - ``axes.titley = 1.0``: a title sits just above its axes. Matplotlib's default (``None``)
       lifts it over tick labels on top of the axes, which costs measuring every tick label at
       each draw (about 15 % of the book's drawing time); no 2-D axes of the book has top tick
@@ -171,6 +170,12 @@ def render(fig) -> tuple[bytes, dict]:
     image, y downwards) and, for text turned by other than a right angle, ``quad`` (the four
     corners of the turned box).
 
+    The Agg canvas prints the PNG itself, so the layout engine runs inside the figure's one
+    draw. ``savefig`` (and the inline backend's formatter, even without ``"tight"``) draws a
+    figure with a layout engine twice, the first time with drawing switched off only to run
+    the engine; the image is the same byte for byte. On the book's 47 figures this takes
+    drawing from 13.9 s to 12.8 s.
+
     Examples
     --------
     >>> from matplotlib.figure import Figure
@@ -181,11 +186,13 @@ def render(fig) -> tuple[bytes, dict]:
     >>> png[:4], d["size"], "x" in [t["text"] for t in d["texts"]]
     (b'\\x89PNG', [300, 200], True)
     """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
     found: dict = {}
     buf = BytesIO()
+    canvas = fig.canvas if isinstance(fig.canvas, FigureCanvasAgg) else FigureCanvasAgg(fig)
     with _recording_texts(found):
-        fig.canvas.print_figure(buf, format="png", dpi=fig.dpi, bbox_inches=None,
-                                facecolor=fig.get_facecolor(), edgecolor=fig.get_edgecolor())
+        canvas.print_png(buf)
     size = [int(round(fig.bbox.width)), int(round(fig.bbox.height))]
     return buf.getvalue(), {"size": size, "dpi": float(fig.dpi), "texts": list(found.values())}
 

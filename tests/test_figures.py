@@ -76,6 +76,42 @@ def test_only_drawn_tick_labels_are_recorded():
     assert sorted(_texts(_describe(fig))) == ["t2", "t3", "t4", "t5"]
 
 
+def _two_panels() -> Figure:
+    fig = Figure(figsize=(5, 3), dpi=100, layout="constrained")
+    ax0, ax1 = fig.subplots(1, 2)
+    ax0.plot([1, 10, 100], [3, 1, 2], label="a line")
+    ax0.set_xscale("log")
+    ax0.set_xlabel("distance (m)")
+    ax0.legend()
+    ax1.imshow(np.arange(12.0).reshape(3, 4))
+    ax1.set_title("an image")
+    fig.suptitle("two panels")
+    return fig
+
+
+def test_a_laid_out_figure_is_drawn_once_into_the_image_savefig_makes():
+    # savefig first draws a figure with drawing switched off to run its layout engine, then
+    # again for the image; render lays it out inside its one draw: the same bytes
+    buf = BytesIO()
+    _two_panels().savefig(buf, format="png")
+    fig = _two_panels()
+    draws = []
+    original = Figure.draw
+
+    def counted(self, renderer):
+        draws.append(renderer)
+        return original(self, renderer)
+
+    Figure.draw = counted
+    try:
+        png, _ = figures.render(fig)
+    finally:
+        Figure.draw = original
+    assert len(draws) == 1
+    assert png == buf.getvalue()
+    assert fig.get_layout_engine() is not None  # the figure keeps its layout engine
+
+
 def test_the_formatter_output_reaches_ipython_as_metadata():
     from IPython.core.formatters import DisplayFormatter
 
