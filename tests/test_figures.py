@@ -89,7 +89,7 @@ def _two_panels() -> Figure:
     return fig
 
 
-def test_a_laid_out_figure_is_drawn_once_into_the_image_savefig_makes():
+def test_a_laid_out_figure_is_drawn_once_into_the_image_savefig_makes(monkeypatch):
     # savefig first draws a figure with drawing switched off to run its layout engine, then
     # again for the image; render lays it out inside its one draw: the same bytes
     buf = BytesIO()
@@ -102,11 +102,9 @@ def test_a_laid_out_figure_is_drawn_once_into_the_image_savefig_makes():
         draws.append(renderer)
         return original(self, renderer)
 
-    Figure.draw = counted
-    try:
-        png, _ = figures.render(fig)
-    finally:
-        Figure.draw = original
+    monkeypatch.setattr(Figure, "draw", counted)
+    png, _ = figures.render(fig)
+    monkeypatch.undo()
     assert len(draws) == 1
     assert png == buf.getvalue()
     assert fig.get_layout_engine() is not None  # the figure keeps its layout engine

@@ -84,10 +84,10 @@ def _dense_values(W, with_optimum: bool) -> dict:
 
 def fig8_trial(n_targets: int, trial: int, seed: int, u_max: float = 1.0, side: float = 100.0,
                with_optimum: bool = False) -> dict:
-    """One trial of Fig. 8: ``N = 2L`` sensors and ``L`` targets uniform in ``[0, side]^2``.
+    """One trial of Fig. 8, on the instance :func:`fig8_instance` draws.
 
-    The draw depends only on ``(seed, L, trial)`` (``numpy.random.default_rng([seed, L, trial])``),
-    so a sweep gives the same numbers in any order, serially or in parallel. Returns the greedy,
+    The draw depends only on ``(seed, L, trial)``, so a sweep gives the same numbers in any
+    order, serially or in parallel. Returns the greedy,
     relaxed (Problem 3), ordered-pair relaxed (the original code's) values, and the exact optimum
     when ``with_optimum`` (NaN otherwise).
 
