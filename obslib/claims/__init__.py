@@ -1,16 +1,19 @@
-"""The claims ledger: one entry per claim of the paper (and per question of this book beyond the
-paper), each with a function that re-checks it.
+"""The claims ledger: one entry per statement of the paper (and per question of this book, per
+finding about the authors' code, per statement of their later material), each with a function
+that re-checks it.
 
 >>> import obslib.claims as claims
 >>> records = claims.evaluate(profile="quick")          # doctest: +SKIP
 >>> {r.id: r.status for r in records}["thm1"]            # doctest: +SKIP
 'reproduced'
 
-Each record has ``id``, ``kind`` (``"paper"`` or ``"beyond"``), ``where``, ``title``,
-``statement``, ``paper``, ``ours``, ``status``, ``notebook``, ``label``, ``evidence`` and
-``table``. A claim of the paper has a verdict of :data:`STATUSES`; an entry beyond the paper a
-status word of :data:`BEYOND_STATUSES` (see :mod:`obslib.claims._ledger`). A status never
-depends on the profile. The book's reproduction report is rendered from :func:`evaluate` at the
+Each record has ``id``, ``kind`` (one of :data:`KINDS`), ``where``, ``title``, ``quote``,
+``statement``, ``paper``, ``summary``, ``ours``, ``status``, ``caveat``, ``notebook``,
+``label``, ``evidence`` and ``table``. A statement of the paper has a verdict of
+:data:`STATUSES`; the other kinds have their own status words (:data:`STATUS_WORDS`; see
+:mod:`obslib.claims._ledger`). A status never depends on the profile. A check is a pure function
+of its parameters: :func:`resolve` gives them for a profile, :func:`recheck` checks one entry
+with a chapter's own. The book's reproduction report is rendered from :func:`evaluate` at the
 ``paper`` profile by the book's own tooling (``python -m obsbook.report``);
 :mod:`obslib.claims.robustness` varies the experiments' parameters one at a time.
 
@@ -20,7 +23,9 @@ Entries live in one submodule per section of the paper, imported below in paper 
 from .._validate import as_instance, as_sequence
 from ._ledger import (
     BEYOND_STATUSES,
+    CODE_STATUSES,
     KINDS,
+    QUOTED_KINDS,
     REQUIRED_IDS,
     STATUS_WORDS,
     STATUSES,
@@ -30,7 +35,9 @@ from ._ledger import (
     Table,
     claim,
     evaluate,
+    recheck,
     registry,
+    resolve,
 )
 
 # Registration order is paper order (kept out of the import sorting).
@@ -51,6 +58,8 @@ __all__ = [
     "KINDS",
     "STATUSES",
     "BEYOND_STATUSES",
+    "CODE_STATUSES",
+    "QUOTED_KINDS",
     "STATUS_WORDS",
     "REQUIRED_IDS",
     "Claim",
@@ -59,7 +68,9 @@ __all__ = [
     "Table",
     "claim",
     "evaluate",
+    "recheck",
     "registry",
+    "resolve",
     "as_json",
 ]
 

@@ -1,9 +1,8 @@
 """How robust are the ledger's verdicts to the parameters the paper fixed?
 
-For a claim, :func:`verdict_robustness` re-evaluates its check with one parameter of its notebook
-changed at a time, through the parameter profiles of :mod:`obslib.profiles`: a temporary
-profile equal to a base profile (``quick`` by default: the paper's parameters with smaller Monte
-Carlo sizes) with that one change, removed afterwards. The dimensions are the target's speed
+For a claim, :func:`verdict_robustness` re-evaluates its check, a pure function of its
+parameters, with one parameter of its notebook changed at a time from those of a base profile
+(``paper`` by default: the paper's parameters). The dimensions are the target's speed
 bound ``u_max``, the measurement noise ``noise_std``, the distance metric of the pair bound
 (``metric``) and the Monte Carlo size (the notebook's number of seeds, instances or trials). A
 dimension applies to a claim when its notebook has that parameter (the metric: the tracking
@@ -24,16 +23,15 @@ report, since recomputing it takes longer than the rest of the report. Only clai
 
 from __future__ import annotations
 
-import copy
 import json
-from contextlib import contextmanager
+from pathlib import Path
 
 from .._io import write_output
 from .._validate import as_mapping, as_names, as_path, as_sequence, as_str
-from ..profiles import PROFILES, params, profile_names
-from ._ledger import evaluate, registry
+from ..profiles import RANGES, profile_names
+from ._ledger import _record, evaluate, registry, resolve
 
-__all__ = ["DIMENSIONS", "SIZE_KEYS", "TRACKING_NOTEBOOKS", "FIXED_BY_PUBLISHED_RUN", "HEADERS",
+__all__ = ["DATA", "caveat", "caveats", "DIMENSIONS", "SIZE_KEYS", "TRACKING_NOTEBOOKS", "FIXED_BY_PUBLISHED_RUN", "HEADERS",
            "default_ids", "verdict_robustness", "describe", "robustness_table", "to_json",
            "write_json", "read_json"]
 
@@ -44,6 +42,10 @@ DIMENSIONS = {
     "metric": ("mahalanobis", "euclidean"),
     "size": (0.5, 2.0),
 }
+
+#: The stored study, computed at the paper's values (``python -m obslib.claims --robustness
+#: --write`` writes it here by default).
+DATA = Path(__file__).resolve().parents[1] / "data" / "robustness.json"
 
 #: Parameter names that set a notebook's Monte Carlo size, in order of preference.
 SIZE_KEYS = ("n_seeds", "n_instances", "trials", "n_scenes")
@@ -59,24 +61,9 @@ FIXED_BY_PUBLISHED_RUN = {
     "fig7-figure-data": ("u_max", "noise_std", "metric", "size"),
 }
 
-_TMP = "_robustness"
-
-
-@contextmanager
-def _profile_with(base: str, notebook: str, key: str, value):
-    """A temporary profile: ``base`` with ``notebook``'s ``key`` set to ``value``."""
-    table = copy.deepcopy(PROFILES[base])
-    table.setdefault(notebook, {})[key] = value
-    PROFILES[_TMP] = table
-    try:
-        yield _TMP
-    finally:
-        del PROFILES[_TMP]
-
-
 def _base_iv(base) -> str:
     """A profile to start from (a name of :func:`obslib.profiles.profile_names`)."""
-    if as_str(base, "base") not in profile_names() or base == _TMP:
+    if as_str(base, "base") not in profile_names():
         raise ValueError(f"base: unknown profile {base!r}; known: {profile_names()}")
     return base
 
@@ -176,18 +163,19 @@ def verdict_robustness(ids=None, base: str = "quick", dimensions=None) -> list[d
         raise ValueError(f"unknown claim id(s): {missing}")
     rows = []
     for cid in ids:
-        nb = reg[cid].notebook
-        (rec,) = evaluate(base, ids=[cid])
+        c = reg[cid]
+        p = resolve(cid, base)
+        rec = _record(c, c.check(p))
         fixed = [d for d in FIXED_BY_PUBLISHED_RUN.get(cid, ()) if d in dims]
-        row = {"id": cid, "notebook": nb, "base": rec.status, "variants": {}, "fixed": fixed}
-        if nb in PROFILES["paper"]:
-            for dim, options in _variants(params(nb, base), nb).items():
+        row = {"id": cid, "notebook": c.notebook, "base": rec.status, "variants": {},
+               "fixed": fixed}
+        if c.notebook in RANGES:
+            for dim, options in _variants(p, c.notebook).items():
                 if dim not in dims or dim in fixed:
                     continue
                 got = []
                 for label, key, value in options:
-                    with _profile_with(base, nb, key, value) as name:
-                        (r,) = evaluate(name, ids=[cid])
+                    r = _record(c, c.check({**p, key: value}))
                     got.append((label, r.status, _finding(r) == _finding(rec)))
                 row["variants"][dim] = got
         rows.append(row)
@@ -261,6 +249,73 @@ def describe(row: dict, status: str | None = None) -> tuple[str, list[str]]:
     cells = [_cell(row["base"], row["variants"].get(d), d in row.get("fixed", ()))
              for d in DIMENSIONS]
     return verdict, cells
+
+
+#: How a factor of a parameter reads in a caveat.
+_FACTORS = {"0.25": "a quarter of", "0.5": "half", "2": "twice", "4": "four times"}
+
+#: What each Monte Carlo size counts, in words.
+_SIZE_WORDS = {"n_seeds": "the noise seeds", "n_instances": "the instances", "trials": "the trials",
+               "n_scenes": "the scenes"}
+
+
+def _changed_words(dim: str, label: str) -> str:
+    """One variant in words: ``with a quarter of $u_{\\max}$``, ``with Euclidean distances``."""
+    if dim == "metric":
+        return f"with {label.capitalize()} distances"
+    last = label.split()[-1]
+    factor = _FACTORS.get(last[1:], f"{last[1:]} times")
+    if dim == "u_max":
+        return f"with {factor} " + r"$u_{\max}$"
+    if dim == "noise_std":
+        return f"with {factor} the measurement noise"
+    return f"with {factor} {_SIZE_WORDS.get(label.split()[0], 'the Monte Carlo size')}"
+
+
+def caveat(row: dict, status: str | None = None) -> str:
+    """The sentence a verdict carries when the robustness study changes it, or ``""``.
+
+    Says the verdict at the base parameters and, grouped by verdict, every change of one
+    parameter that gives another.
+
+    Examples
+    --------
+    >>> row = {"id": "c1", "base": "reproduced",
+    ...        "variants": {"u_max": [("x0.25", "refuted"), ("x2", "reproduced")],
+    ...                     "metric": [("euclidean", "refuted")],
+    ...                     "size": [("n_seeds x0.5", "partly")]}}
+    >>> print(caveat(row))
+    Reproduced at the paper's values; refuted with a quarter of $u_{\\max}$ and with Euclidean \
+distances; partly with half the noise seeds.
+    >>> caveat({"id": "c2", "base": "partly", "variants": {"u_max": [("x2", "partly")]}})
+    ''
+    """
+    (row,) = _rows_iv([row])
+    base = status or row["base"]
+    by_status: dict = {}
+    for dim in DIMENSIONS:
+        for label, st, *_ in row["variants"].get(dim, ()):
+            if st != base:
+                by_status.setdefault(st, []).append(_changed_words(dim, label))
+    if not by_status:
+        return ""
+    parts = []
+    for st, changes in by_status.items():
+        words = changes[0] if len(changes) == 1 else ", ".join(changes[:-1]) + " and " + changes[-1]
+        parts.append(f"{st} {words}")
+    return f"{base.capitalize()} at the paper's values; " + "; ".join(parts) + "."
+
+
+def caveats(data: dict | None = None) -> dict:
+    """Id -> caveat sentence (:func:`caveat`) of every row of the stored study whose verdict
+    changes (default: the data of :data:`DATA`, when it was computed at the paper's values)."""
+    if data is None:
+        if not DATA.exists():
+            return {}
+        data = read_json(DATA)
+    if as_mapping(data, "data").get("base") != "paper":
+        return {}
+    return {row["id"]: text for row in _rows_iv(data["rows"]) if (text := caveat(row))}
 
 
 def robustness_table(rows, statuses=None) -> str:
