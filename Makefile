@@ -18,7 +18,7 @@ $(STAMP): requirements.txt pyproject.toml
 # JOBS: notebooks executed side by side (default: every core available), e.g. make book JOBS=1
 book: $(STAMP)
 	$(BIN)/python -m obslib.run --in-place $(if $(JOBS),--jobs $(JOBS))
-	$(BIN)/python -m obsbook.report --profile paper --write book/report.md
+	$(BIN)/python -m obsbook.report --profile paper --write book/report.md --front book/_front.md
 	$(BIN)/jupyter-book build . --builder html --warningiserror --nitpick --keep-going
 
 test: $(STAMP)

@@ -3,10 +3,13 @@
 ``python -m obsbook.report --profile paper --write book/report.md`` evaluates
 :func:`obslib.claims.evaluate` and writes the page: a header explaining the verdicts, the counts
 of the paper's claims by verdict, the table of the paper's claims, the claims that do not hold as
-printed, one entry per claim (the claim, the paper's words, our finding and the table under it,
-the link to the section of the book that shows the evidence), the book's own questions apart,
-and how robust the verdicts are (from ``book/data/robustness.json``, written by
-``python -m obslib.claims --robustness --write ...``).
+printed, one entry per claim (the paper's words, the claim, our finding in one sentence with its
+caveat, the fuller finding and the table under it, the link to the section of the book that shows
+the evidence), the findings about the authors' code, the statements of their later material and
+the book's own questions apart, and how robust the verdicts are (from
+``obslib/data/robustness.json``, written by ``python -m obslib.claims --robustness --write ...``).
+Every verdict carries the caveat of the robustness study where a change of one parameter changes
+it.
 
 Parts of the page sit between marker comments (:data:`MARKERS`) so that another page can include
 them with MyST's ``{include}`` directive (``start-after`` / ``end-before``): the sentence counting
@@ -24,8 +27,9 @@ from pathlib import Path
 from obslib._format import count, number
 from obslib.claims import REQUIRED_IDS, STATUSES
 
-__all__ = ["ROOT", "MARKERS", "render_report", "notebook_targets", "typeset", "list_table",
-           "counts_sentence", "main"]
+__all__ = ["ROOT", "MARKERS", "SECTIONS", "PAPER_LABELS", "render_report", "notebook_targets",
+           "typeset", "list_table", "counts_sentence", "quote_myst", "verdict_line",
+           "statement_of", "exceptions_table", "main"]
 
 #: The checkout the book is built from: ``notebooks/`` and ``book/`` live here.
 ROOT = Path(__file__).resolve().parents[1]
@@ -39,45 +43,76 @@ MARKERS = {
 HEADER = """\
 # Reproduction report
 
-This page is the referee's report of the book: every claim the paper makes, what we found when
-we recomputed it, and the verdict, each with a link to the section of the book that shows the
-evidence. All checks were run at {parameters}; the parameters of every experiment are on the
-{{doc}}`experimental setup <setup>` page. A verdict says what the evidence gives, whatever we
+This page is the referee's report of the book: every statement the paper prints, what we found
+when we recomputed it, and the verdict, each with a link to the section of the book that shows
+the evidence. All checks were run at {parameters}; the parameters of every experiment are on
+the {{doc}}`experimental setup <setup>` page. A verdict says what the evidence gives, whatever we
 expected:
 
-- **reproduced**: the claim holds as stated;
-- **partly**: it holds with a correction, or only in part;
+- **reproduced**: the statement holds as printed. Where the authors' code departs from the text
+  in a way that changes no conclusion the statement draws, the departure is reported apart, among
+  the findings about the code, and not held against the statement;
+- **partly**: it holds only with a correction (a condition added, a quantifier or a number
+  changed), or only for part of what it says; the entry says which part;
 - **refuted**: the evidence contradicts the statement as printed;
 - **untestable**: nothing we can compute decides it.
 
-For a claim about a printed formula or a step of a proof, the claim is what the paper prints, so
-*refuted* means that the printed formula is wrong, not necessarily the theorem. A verdict does not
-depend on the sizes of the experiments: the same checks at smaller Monte Carlo sizes give the
-same verdicts. The questions this book asks beyond the paper are reported apart, at the end, as
-findings with their own status words (**answered** or **open**); they are not claims of the
-paper and are not counted with them. Every check can be rerun from the command line,
-`python -m obslib.claims --profile {profile}`, or one claim with
+For a statement about a printed formula or a step of a proof, the statement is what the paper
+prints, so *refuted* means that the printed formula is wrong, not necessarily the theorem. Each
+entry quotes the paper's own words. Where changing one parameter of an experiment changes a
+verdict (see [How robust are the verdicts?](#report-robustness)), the verdict says so wherever it
+is stated.
+
+Three other kinds of entry are reported apart and never counted as verdicts on the paper: the
+findings about the authors' code and saved runs ([The authors' code](#report-code)), the
+statements of the authors' later material, which the paper never published
+([The authors' later experiment](#report-later)), and the questions this book asks beyond the
+paper ([Beyond the paper](#report-beyond)). Every check can be rerun from the command line,
+`python -m obslib.claims --profile {profile}`, or one entry with
 `python -m obslib.claims --id thm1`.
 """
 
-BEYOND_INTRO = """\
-The paper does not ask these questions; the book does, because a reader deciding whether to use
-the bound asks them. Each is reported as a finding: **answered** when the evidence settles the
-question (the finding says how), **open** when it does not. They are not verdicts on the paper.
-"""
+#: Per kind other than ``paper``: the section's anchor, heading and introduction, the word for
+#: its status and the caption of its table.
+SECTIONS = {
+    "code": (
+        "report-code", "The authors' code and saved runs",
+        "What the authors' code does and what their saved runs hold, against what the paper's "
+        "text says. **agrees**: the code or the runs are what the text describes, or follow "
+        "from it; **differs**: they depart from the text, and the finding says how and how much "
+        "it matters. These are findings about the code, not verdicts on the paper.",
+        "Finding", "The findings about the authors' code and saved runs.",
+    ),
+    "later": (
+        "report-later", "The authors' later experiment",
+        "The authors' code repository holds an experiment the paper never published: several "
+        "targets tracked in closed loop, the sensors reassigned at every step. Its statements "
+        "are judged like the paper's, with the saved data as evidence; they are verdicts on that "
+        "later material, never on the paper, and are not counted with the paper's claims.",
+        "Verdict on the later material", "The statements of the authors' later experiment.",
+    ),
+    "beyond": (
+        "report-beyond", "Beyond the paper: the book's own questions",
+        "The paper does not ask these questions; the book does, because a reader deciding "
+        "whether to use the bound asks them. Each is reported as a finding: **answered** when "
+        "the evidence settles the question (the finding says how), **open** when it does not. "
+        "They are not verdicts on the paper.",
+        "Status", "The book's own questions and their status.",
+    ),
+}
 
 ROBUSTNESS_INTRO = """\
-Every claim that is partly reproduced or refuted, and every claim of the tracking experiments, is
-checked again with one parameter of its experiment changed at a time: the speed bound
-$u_{{\\max}}$ and the measurement noise $\\sigma$ scaled by 0.25, 0.5, 2 and 4, the distances of
-the pair bound computed with the other metric (Euclidean instead of Mahalanobis), and the number
-of noise seeds, instances or trials halved and doubled. The reruns keep the paper's other
-parameters but start from the smaller Monte Carlo sizes of the profile `{base}`. A cell reads
-*holds* when the verdict is the same at every value tried, *unchanged finding* when not even the
-numbers change (the check does not use that parameter of its experiment), names the verdict
-where it changes, and reads *n/a* when the experiment has no such parameter. The numbers of a
-published run are not varied in the parameters that run was made with. Rerun with
-`python -m obslib.claims --robustness`.
+Every claim of the paper that is partly reproduced or refuted, and every claim of the tracking
+experiments, is checked again with one parameter of its experiment changed at a time: the speed
+bound $u_{{\\max}}$ and the measurement noise $\\sigma$ scaled by 0.25, 0.5, 2 and 4, the
+distances of the pair bound computed with the other metric (Euclidean instead of Mahalanobis),
+and the number of noise seeds, instances or trials halved and doubled. The reruns start from
+{start} and change one of them at a time. A cell reads *holds* when the verdict is the same at
+every value tried, *unchanged finding* when not even the numbers change (the check does not use
+that parameter of its experiment), names the verdict where it changes, and reads *n/a* when the
+experiment has no such parameter. The numbers of a published run are not varied in the
+parameters that run was made with. Where a verdict changes, its entry above and every page that
+states it say so. Rerun with `python -m obslib.claims --robustness`.
 """
 
 _MATH = re.compile(r"(\$\$.*?\$\$|\$[^$]+\$|`[^`]*`)", re.S)
@@ -283,8 +318,90 @@ def counts_sentence(records) -> str:
     return f"Of the {number(len(paper))} claims of the paper in the ledger, {tally}{none}."
 
 
+#: The paper's labels that quotes may refer to (``\ref{...}``), with the numbers the paper
+#: prints for them.
+PAPER_LABELS = {
+    "prob:unique": "1", "prob:general": "2", "prob:perfect": "3",
+    "thm:lower_bound": "1", "thm:sensor_n_1": "2", "thm:sensor_n_gre2": "3",
+    "thm:lower_bound_ijo": "4", "thm:$ij_pair_extreme$": "5", "thm:lem_optimal_fin": "6",
+    "Them:invcond_not_sub": "7", "thm:submodular_observability_measure": "8",
+    "algorithm:unique_pair_assignment": "1", "remark:rem2": "2",
+    "eqn:multi_sensor_target_system": "(3)", "observability_multi_sensor_target": "(4)",
+    "eqn:new_multi_sensor_target": "(5)", "eqn:lower_bound_i_j_o": "(9)",
+    "eqn:assumption_singular_condition": "(27)", "eqn:conslusion_singular_condition": "(28)",
+    "eqn:maximum_unkown_extreme": "(34)",
+    "fig:lower_bound_surf_contour": "2", "fig:position_cond_test_nonsubmodular": "3",
+    "fig:flexible_best_pairing": "4", "fig:best_fixed_selection": "5",
+    "fig:compare_pair_threecase": "6", "fig:target_entrap": "7",
+    "fig:comparsion_perfect_unique": "8", "fig:trial_submodular_obs.eps": "9",
+}  # fmt: skip
+
+_LATEX_TEXT = [
+    (re.compile(r"``(.*?)''", re.S), r"“\1”"),
+    (re.compile(r"\\emph\{([^{}]*)\}"), r"*\1*"),
+    (re.compile(r"\\textbf\{([^{}]*)\}"), r"**\1**"),
+    (re.compile(r"~?\\cite\{[^{}]*\}"), ""),
+    (re.compile(r"(?<!\\)--"), "–"),
+    (re.compile(r"(?<!\\)~"), " "),
+]
+
+
+def quote_myst(quote: str) -> str:
+    """The paper's words (LaTeX as printed) as MyST: math kept, ``\\emph``, quotes, ties,
+    dashes and citations of the text converted, ``\\ref`` replaced by the number the paper
+    prints (:data:`PAPER_LABELS`).
+
+    Examples
+    --------
+    >>> print(quote_myst(r"solve Problem~\ref{prob:unique} for any $\omega(\cdot)$"))
+    solve Problem 1 for any $\omega(\cdot)$
+    >>> print(quote_myst(r"is ``trapped'' by the \emph{sensors}~\cite{x}."))
+    is “trapped” by the *sensors*.
+    """
+    parts = re.split(r"(\$[^$]*\$)", " ".join(str(quote).split()))
+    out = []
+    for i, part in enumerate(parts):
+        if i % 2:
+            out.append(part)
+            continue
+
+        def ref(m):
+            if m.group(1) not in PAPER_LABELS:
+                raise ValueError(f"quote refers to the label {m.group(1)!r}, which "
+                                 "PAPER_LABELS does not number")
+            return PAPER_LABELS[m.group(1)]
+
+        part = re.sub(r"\\ref\{([^{}]*)\}", ref, part)
+        for pattern, repl in _LATEX_TEXT:
+            part = pattern.sub(repl, part)
+        out.append(part)
+    return "".join(out)
+
+
 def _verdict(status: str) -> str:
     return f"**{status}**"
+
+
+def verdict_line(r) -> str:
+    """The verdict as the book states it: the status in bold, and its caveat when the
+    robustness study changes it.
+
+    Examples
+    --------
+    >>> from obslib.claims import Record
+    >>> r = Record("x", "", "", "", "", "partly", "", {}, caveat="Partly at the paper's values; "
+    ...            "refuted with twice $u_{\\max}$.")
+    >>> verdict_line(r)
+    "**partly** (partly at the paper's values; refuted with twice $u_{\\max}$)"
+    """
+    if not r.caveat:
+        return _verdict(r.status)
+    return f"{_verdict(r.status)} ({r.caveat[0].lower()}{r.caveat[1:].rstrip('.')})"
+
+
+def statement_of(r) -> str:
+    """The entry's one sentence as every summary states it: its summary, then its caveat."""
+    return typeset(r.summary + (f" {r.caveat}" if r.caveat else ""))
 
 
 def _entry(r, evidence: str, label: str) -> list:
@@ -292,20 +409,23 @@ def _entry(r, evidence: str, label: str) -> list:
         f"(claim-{r.id})=",
         f"### {typeset(r.title).rstrip('.')}",
         "",
-        f"*Where in the paper:* {typeset(r.where)}. *{label}:* {_verdict(r.status)}. "
+        f"*Where:* {typeset(r.where)}. *{label}:* {verdict_line(r)}. "
         f"*Evidence:* {evidence}. *Rerun:* `python -m obslib.claims --id {r.id}`.",
         "",
+    ]
+    if r.quote:
+        lines += ["**The paper's words.**", "", f"> {quote_myst(r.quote)}", ""]
+    lines += [
         f"**The claim.** {typeset(r.statement)}",
         "",
-        f"**The paper.** {typeset(r.paper)}",
+        f"**The paper's support.** {typeset(r.paper)}",
         "",
     ]
-    if r.later:
-        lines += [f"**The later version.** {typeset(r.later)}", ""]
-    lines += [
-        f"**What we found.** {typeset(r.ours)}",
-        "",
-    ]
+    if r.journal:
+        lines += [f"**The later version.** {typeset(r.journal)}", ""]
+    lines += [f"**In one sentence.** {statement_of(r)}", ""]
+    if r.ours != r.summary:
+        lines += [f"**In detail.** {typeset(r.ours)}", ""]
     if r.table is not None:
         t = r.table
 
@@ -326,16 +446,33 @@ def robustness_section(records, robustness: dict) -> list:
     rows = [row for row in robustness["rows"] if row["id"] in have]
     if not rows:
         return []
-    intro = ROBUSTNESS_INTRO.format(base=robustness["base"])
+    start = ("the paper's parameters" if robustness["base"] == "paper" else
+             f"the parameters of the profile `{robustness['base']}` (the paper's, with smaller "
+             "Monte Carlo sizes)")
+    intro = ROBUSTNESS_INTRO.format(start=start)
     body = []
     for row in rows:
         r = have[row["id"]]
         verdict, cells = rb.describe(row, r.status)
         body.append([f"[{typeset(r.title)}](#claim-{r.id})", verdict] + cells)
-    return (["## How robust are the verdicts?", "", " ".join(intro.split()), ""]
+    return (["(report-robustness)=", "## How robust are the verdicts?", "",
+             " ".join(intro.split()), ""]
             + list_table("Each verdict with one parameter of its experiment changed at a time.",
                          ["claim", "verdict"] + [rb.HEADERS[d] for d in rb.DIMENSIONS], body,
                          name="tab-report-robustness") + [""])
+
+
+def exceptions_table(records) -> list:
+    """Lines of the table of the paper's claims that do not hold as printed: the claim, its
+    verdict (with its caveat) and its one sentence."""
+    paper = [r for r in records if r.kind == "paper"]
+    bad = [r for s in ("refuted", "partly") for r in paper if r.status == s]
+    if not bad:
+        return ["Every claim of the paper holds as printed."]
+    return list_table("The paper's claims that do not hold as printed, refuted first.",
+                      ["claim", "verdict", "what we found"],
+                      [[f"[{typeset(r.title)}](#claim-{r.id})", verdict_line(r), statement_of(r)]
+                       for r in bad], widths=(3, 2, 5))
 
 
 def render_report(records, profile: str = "paper", targets=None, robustness=None) -> str:
@@ -344,7 +481,8 @@ def render_report(records, profile: str = "paper", targets=None, robustness=None
     Parameters
     ----------
     records : list of obslib.claims.Record
-        The evaluated ledger (:func:`obslib.claims.evaluate`).
+        The evaluated ledger (:func:`obslib.claims.evaluate`, with the caveats of the
+        robustness study).
     profile : str
         The profile the records were evaluated at (named on the page).
     targets : dict, optional
@@ -367,7 +505,6 @@ def render_report(records, profile: str = "paper", targets=None, robustness=None
         return f"[{typeset(r.title)}](#claim-{r.id})"
 
     paper = [r for r in records if r.kind == "paper"]
-    beyond = [r for r in records if r.kind == "beyond"]
     tally = Counter(r.status for r in paper)
     parameters = ("the paper's parameters (profile `paper`)" if profile == "paper" else
                   f"the parameters of the profile `{profile}`")
@@ -380,41 +517,37 @@ def render_report(records, profile: str = "paper", targets=None, robustness=None
         MARKERS["counts"][1],
         "",
     ]
-    if beyond:
-        lines += [f"The book's own questions, {number(len(beyond))} of them, are reported apart "
-                  "in [Beyond the paper](#report-beyond).", ""]
+    others = [(kind, [r for r in records if r.kind == kind]) for kind in SECTIONS]
+    others = [(kind, rs) for kind, rs in others if rs]
+    if others:
+        lines += ["Reported apart: " + "; ".join(
+            f"[{SECTIONS[kind][1][0].lower()}{SECTIONS[kind][1][1:]}](#{SECTIONS[kind][0]}) "
+            f"({number(len(rs))} {'entry' if len(rs) == 1 else 'entries'})"
+            for kind, rs in others) + ".", ""]
     lines += list_table("The paper's claims by verdict.", ["verdict", "claims"],
                         [[s, tally.get(s, 0)] for s in STATUSES] + [["total", len(paper)]],
                         name="tab-report-counts") + [""]
     lines += ["## The paper's claims", "",
-              "Each claim links to its entry below, which states it, quotes the paper and says "
-              "what we found; the last column links to the section of the book that shows the "
-              "evidence.", ""]
+              "Each claim links to its entry below, which quotes the paper, states the claim and "
+              "says what we found; the last column links to the section of the book that shows "
+              "the evidence.", ""]
     lines += list_table("Every claim of the paper, its verdict and the evidence.",
                         ["claim", "verdict", "evidence"],
-                        [[title(r), _verdict(r.status), evidence(r)] for r in paper],
-                        name="tab-report-claims", widths=(5, 1, 4)) + [""]
-    bad = [r for s in ("refuted", "partly") for r in paper if r.status == s]
+                        [[title(r), verdict_line(r), evidence(r)] for r in paper],
+                        name="tab-report-claims", widths=(5, 2, 3)) + [""]
     lines += ["## What does not hold as printed", "", MARKERS["exceptions"][0]]
-    if bad:
-        lines += list_table("The paper's claims that do not hold as printed.",
-                            ["claim", "verdict", "evidence"],
-                            [[title(r), _verdict(r.status), evidence(r)] for r in bad],
-                            widths=(5, 1, 4))
-    else:
-        lines.append("Every claim of the paper holds as stated.")
+    lines += exceptions_table(records)
     lines += [MARKERS["exceptions"][1], "", "## The claims one by one", ""]
     for r in paper:
         lines += _entry(r, evidence(r), "Verdict")
-    if beyond:
-        lines += ["(report-beyond)=", "## Beyond the paper: the book's own questions", "",
-                  " ".join(BEYOND_INTRO.split()), ""]
-        lines += list_table("The book's own questions and their status.",
-                            ["question", "status", "evidence"],
-                            [[title(r), _verdict(r.status), evidence(r)] for r in beyond],
-                            name="tab-report-beyond", widths=(5, 1, 4)) + [""]
-        for r in beyond:
-            lines += _entry(r, evidence(r), "Status")
+    for kind, rs in others:
+        anchor, heading, intro, label, caption = SECTIONS[kind]
+        lines += [f"({anchor})=", f"## {heading}", "", intro, ""]
+        lines += list_table(caption, ["entry", "status", "evidence"],
+                            [[title(r), verdict_line(r), evidence(r)] for r in rs],
+                            name=f"tab-{anchor}", widths=(5, 2, 3)) + [""]
+        for r in rs:
+            lines += _entry(r, evidence(r), label)
     if robustness:
         lines += robustness_section(records, robustness)
     missing = [i for i in REQUIRED_IDS if i not in {r.id for r in records}]
@@ -426,43 +559,52 @@ def render_report(records, profile: str = "paper", targets=None, robustness=None
 
 
 def main(argv=None) -> int:
-    """``python -m obsbook.report [--profile P] [--write FILE] [--robustness FILE]
-    [--notebooks DIR]``: render the report, print it or store it (exit status 2 for a bad
+    """``python -m obsbook.report [--profile P] [--write FILE] [--front FILE]
+    [--robustness FILE] [--notebooks DIR]``: render the report (and with ``--front`` the front
+    page's generated parts, :mod:`obsbook.front`), print it or store it (exit status 2 for a bad
     profile or path)."""
     from obslib._io import OutputPathError, as_output_path, write_output
     from obslib.claims import evaluate
-    from obslib.claims.robustness import read_json
+    from obslib.claims import robustness as rb
     from obslib.profiles import profile_names
+
+    from .front import render_front
 
     ap = argparse.ArgumentParser(prog="python -m obsbook.report",
                                  description="Render the reproduction report from the ledger.")
     ap.add_argument("--profile", default="paper", choices=profile_names())
     ap.add_argument("--write", help="store the page here (default: print it)")
-    ap.add_argument("--robustness", default=str(ROOT / "book" / "data" / "robustness.json"),
-                    help="the stored robustness data (default: book/data/robustness.json)")
+    ap.add_argument("--front", help="also store the front page's generated parts here")
+    ap.add_argument("--robustness", default=str(rb.DATA),
+                    help="the stored robustness data (default: obslib/data/robustness.json)")
     ap.add_argument("--notebooks", default=str(ROOT / "notebooks"),
                     help="the notebooks whose section labels the evidence links go to")
     args = ap.parse_args(argv)
-    if args.write is not None:
-        try:
-            args.write = as_output_path(args.write)
-        except OutputPathError as exc:
-            ap.error(f"--write {exc}")
+    for name in ("write", "front"):
+        if getattr(args, name) is not None:
+            try:
+                setattr(args, name, as_output_path(getattr(args, name)))
+            except OutputPathError as exc:
+                ap.error(f"--{name} {exc}")
     if not Path(args.notebooks).is_dir():
         ap.error(f"--notebooks {args.notebooks}: not a directory")
     robustness = None
     if Path(args.robustness).exists():
         try:
-            robustness = read_json(args.robustness)
+            robustness = rb.read_json(args.robustness)
         except ValueError as exc:
             ap.error(f"--robustness {exc}")
-    records = evaluate(args.profile)
+    caveats = rb.caveats(robustness) if robustness and args.profile == "paper" else {}
+    records = evaluate(args.profile, caveats=caveats)
     text = render_report(records, args.profile, notebook_targets(args.notebooks), robustness)
     if args.write is None:
         print(text, end="")
     else:
         write_output(args.write, text)
         print(f"{args.write}: {len(records)} entries")
+    if args.front is not None:
+        write_output(args.front, render_front(records))
+        print(f"{args.front}: the front page's findings")
     return 0
 
 

@@ -1,12 +1,14 @@
 """Command line: ``python -m obslib.claims [--profile P] [--id ID ...] [--json] [--write FILE]``.
 
-Prints one line per entry of the ledger (id, kind, status, finding), or with ``--json`` every
-field of every entry. ``--write FILE`` stores the JSON there instead of printing it.
+Prints one line per entry of the ledger (id, kind, status, its one sentence), or with
+``--json`` every field of every entry. ``--write FILE`` stores the JSON there instead of printing
+it. At the paper's parameters every record carries the caveat of the stored robustness study.
 
 With ``--robustness`` it re-evaluates the claims of the paper with one parameter changed at a
-time (:func:`obslib.claims.robustness.verdict_robustness`, from the profile ``quick`` unless
+time (:func:`obslib.claims.robustness.verdict_robustness`, from the paper's parameters unless
 ``--profile`` says otherwise) and prints the table, or stores the data with ``--write FILE.json``
-(the book's report reads ``book/data/robustness.json``).
+(the report and the chapters read ``obslib/data/robustness.json``; about ten minutes on two
+cores).
 """
 
 from __future__ import annotations
@@ -33,7 +35,7 @@ def parse_args(argv=None) -> argparse.Namespace:
     ap = argparse.ArgumentParser(prog="python -m obslib.claims", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--profile", default=None, choices=profile_names(),
-                    help="parameter profile (default: paper; quick with --robustness)")
+                    help="parameter profile (default: paper)")
     ap.add_argument("--id", action="append", dest="ids", help="only this entry (repeatable)")
     ap.add_argument("--json", action="store_true", help="print every field as JSON")
     ap.add_argument("--write", help="store the JSON (or with --robustness the data) in this file")
@@ -42,7 +44,7 @@ def parse_args(argv=None) -> argparse.Namespace:
                     "are partly or refuted and the tracking claims")
     args = ap.parse_args(as_argv(argv))
     if args.profile is None:
-        args.profile = "quick" if args.robustness else "paper"
+        args.profile = "paper"
     if args.ids:
         known = list(registry())
         unknown = [i for i in args.ids if i not in known]
@@ -77,7 +79,8 @@ def main(argv=None) -> int:
         else:
             print(rb.robustness_table(rows), end="")
         return 0
-    records = evaluate(args.profile, args.ids)
+    caveats = rb.caveats() if args.profile == "paper" else {}
+    records = evaluate(args.profile, args.ids, caveats=caveats)
     if args.write or args.json:
         text = json.dumps(as_json(records), indent=1, default=float) + "\n"
         if args.write:
@@ -87,7 +90,8 @@ def main(argv=None) -> int:
             sys.stdout.write(text)
     else:
         for r in records:
-            print(f"{r.id:28s} {r.kind:6s} {r.status:11s} {' '.join(r.ours.split())}")
+            said = r.summary + (f" {r.caveat}" if r.caveat else "")
+            print(f"{r.id:28s} {r.kind:6s} {r.status:11s} {said}")
     return 0
 
 

@@ -3,8 +3,9 @@
 
 Each audit draws seeded random scenes (:mod:`obslib.scenes`), computes the quantity a claim
 is about in two independent ways, and returns the counts and extremes that decide it. The
-claims ledger (:mod:`obslib.claims`) and notebook 01 both call these functions, so the
-report and the notebook show the same numbers.
+claims ledger (:mod:`obslib.claims`) and notebook 01 both call these functions, which are
+cached on their arguments (:func:`obslib._memo.memoized`), so the report and the notebook show
+the numbers of one computation.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .._memo import memoized
 from .._validate import as_float_array, as_int, broadcast, check_scene_batch
 from ..bounds import lower_bounds, worst_case_controls
 from ..observability import inverse_condition_numbers, inverse_condition_numbers_polar
@@ -28,6 +30,10 @@ __all__ = [
     "theorem3_terms",
     "Remark1Audit",
     "remark1_audit",
+    "RankAudit",
+    "rank_observability_audit",
+    "SquaredRangeAudit",
+    "squared_range_audit",
 ]
 
 #: Absolute slack allowed when comparing two floating-point evaluations of values in [0, 1].
@@ -46,6 +52,7 @@ class Theorem1Audit:
     min_slack_by_kind: dict = field(default_factory=dict)
 
 
+@memoized()
 def theorem1_audit(n_scenes: int, n_controls: int, seed: int) -> Theorem1Audit:
     r"""Check Theorem 1, :math:`\underline{C}^{-1} \le C^{-1}(O(o, u))`, for random :math:`\|u\| \le
     u_{\max}`.
@@ -100,6 +107,7 @@ class Theorem2Audit:
     exact_range: tuple  #: (min, max) of the exact one-sensor ``C^{-1}`` over random controls
 
 
+@memoized()
 def theorem2_audit(n_scenes: int, seed: int) -> Theorem2Audit:
     r"""Check Theorem 2: with one sensor the bound is 0 wherever the sensor is.
 
@@ -170,6 +178,7 @@ class Theorem3Audit:
     remark2_necessary_violations: int
 
 
+@memoized()
 def theorem3_audit(n_trials: int, seed: int) -> Theorem3Audit:
     r"""Check Theorem 3 and the condition printed in its proof on random configurations.
 
@@ -251,6 +260,7 @@ class Remark1Audit:
     min_over_disc_gap: float
 
 
+@memoized()
 def remark1_audit(n_scenes: int, seed: int, n_radii: int = 8, n_angles: int = 64) -> Remark1Audit:
     r"""Check Remark 1 (the bound is exact for :math:`u_o = 0`) and its moving-target counterpart.
 
@@ -289,3 +299,141 @@ def remark1_audit(n_scenes: int, seed: int, n_radii: int = 8, n_angles: int = 64
         max_moving_error=float(moving),
         min_over_disc_gap=float(gap),
     )
+
+
+@dataclass(frozen=True)
+class RankAudit:
+    """The rank test of Sec. III against what the outputs can tell apart, in random scenes."""
+
+    n_full: int  #: scenes whose matrix of Eq. (5) has full column rank
+    #: min over them of the smallest stretch of the output map over sigma_min of Eq. (4)
+    min_ratio: float
+    min_stretch: float  #: the smallest stretch over them, relative to the scene's length scale
+    n_deficient: int  #: one sensor and a stationary target: rank one
+    max_twin_gap: float  #: max relative output difference between a position and its twin
+    max_deficient_icn: float  #: max C^-1 of the rank-one matrices (0: singular)
+    icn_range: tuple  #: (min, max) of C^-1 over every scene (in [0, 1])
+
+
+def _outputs(sensors: np.ndarray, o: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """The outputs of Eq. (3) and their rates: ``z_i = |p_i - o|^2 / 2``, ``(o - p_i) . u``,
+    for positions ``o`` of shape (..., 2); shape (..., 2 N)."""
+    d = o[..., None, :] - sensors
+    return np.concatenate([0.5 * (d**2).sum(-1), d @ u], axis=-1)
+
+
+@memoized()
+def rank_observability_audit(n_scenes: int, seed: int, n_directions: int = 72) -> RankAudit:
+    r"""Check the rank test of Sec. III: full column rank of :math:`O(o, u_o)` and local
+    observability.
+
+    The outputs the sensors see near a position are the measurements and their rates, the map
+    :math:`F(o) = (z_i(o), \dot z_i(o))_i` whose Jacobian has the rows of Eq. (4). For random
+    scenes of 1 to 4 sensors and controls (zero for a quarter of them), the smallest stretch
+    :math:`\min_{\lVert d\rVert = 1} \lVert F(o + \varepsilon d) - F(o)\rVert / \varepsilon`
+    over ``n_directions`` directions is compared with :math:`\sigma_{\min}` of that Jacobian
+    (it is that value, to the grid and to first order in :math:`\varepsilon`), which has the
+    rank of Eq. (5)'s matrix: positive stretch means no nearby position gives the same
+    outputs. Where the matrix has rank one (one
+    sensor, a stationary target) the position turned about the sensor by a small angle is an
+    exact twin: the outputs are the same.
+
+    Examples
+    --------
+    >>> a = rank_observability_audit(200, seed=0)
+    >>> a.min_ratio > 0.99, a.max_twin_gap < 1e-12, a.max_deficient_icn < 1e-7
+    (True, True, True)
+    """
+    n_scenes = as_int(n_scenes, "n_scenes", 4)
+    seed = as_int(seed, "seed", 0)
+    n_directions = as_int(n_directions, "n_directions", 8)
+    rng = np.random.default_rng(seed)
+    phi = 2 * np.pi * np.arange(n_directions) / n_directions
+    dirs = np.column_stack([np.cos(phi), np.sin(phi)])
+    ratios, stretches, twins, deficient_icn, icns = [], [], [], [], []
+    for k in range(n_scenes):
+        n = int(rng.integers(1, 5))
+        scale = float(10.0 ** rng.uniform(-1, 2))
+        o = rng.uniform(-scale, scale, size=2)
+        sensors = o + rng.uniform(-scale, scale, size=(n, 2))
+        u = np.zeros(2) if k % 4 == 0 else rng.uniform(-scale, scale, size=2)
+        M = np.vstack([o - sensors, u])  # Eq. (5)
+        sv = np.linalg.svd(M, compute_uv=False)
+        icns.append(sv[-1] / sv[0])
+        # the Jacobian of F: the rows of Eq. (4), a control row per sensor (same rank as M)
+        sv4 = np.linalg.svd(np.vstack([o - sensors, np.tile(u, (n, 1))]), compute_uv=False)
+        if n == 1 and not u.any():
+            # rank one: turn o about the sensor by a small angle, same range, zero rate
+            c, s = np.cos(1e-3), np.sin(1e-3)
+            twin = sensors[0] + np.array([[c, -s], [s, c]]) @ (o - sensors[0])
+            gap = np.abs(_outputs(sensors, twin, u) - _outputs(sensors, o, u)).max()
+            twins.append(gap / scale**2)
+            deficient_icn.append(sv[-1] / sv[0])
+            continue
+        eps = 1e-6 * scale
+        diff = _outputs(sensors, o + eps * dirs, u) - _outputs(sensors, o, u)
+        stretch = np.sqrt((diff**2).sum(-1)).min() / eps
+        ratios.append(stretch / sv4[-1])
+        stretches.append(stretch / scale)
+    return RankAudit(
+        n_full=len(ratios),
+        min_ratio=float(min(ratios)),
+        min_stretch=float(min(stretches)),
+        n_deficient=len(twins),
+        max_twin_gap=float(max(twins)) if twins else 0.0,
+        max_deficient_icn=float(max(deficient_icn)) if deficient_icn else 0.0,
+        icn_range=(float(min(icns)), float(max(icns))),
+    )
+
+
+@dataclass(frozen=True)
+class SquaredRangeAudit:
+    """Half the squared range against the range itself, for a stationary target."""
+
+    n_scenes: int
+    n_sensors: int
+    same_rank: int  #: scenes where the two matrices have the same rank
+    pair_differs: float  #: share of scenes where the best pair by C^-1 differs
+    icn_ratio: tuple  #: (min, max) over scenes of the best pair's C^-1, range over squared range
+
+
+@memoized()
+def squared_range_audit(n_scenes: int, seed: int, n_sensors: int = 6) -> SquaredRangeAudit:
+    r"""What the square in :math:`z_i = \tfrac12\lVert p_i - o\rVert^2` changes.
+
+    With the range :math:`\lVert p_i - o\rVert` as the measurement, the sensor's row of the
+    local observability matrix is the unit vector :math:`(o - p_i)^T / d_i` instead of
+    :math:`(o - p_i)^T` (:func:`obslib.symbolic.lie.lie_rows`), so the rank is the same but not
+    the condition number. For a stationary target, where the exact :math:`C^{-1}` is
+    :math:`\sigma_{\min}/\sigma_{\max}` of the rows (Remark 1), the best pair of ``n_sensors``
+    random sensors is chosen by each measurement model; the share of scenes where the two
+    choices differ says whether the square is only a convenience.
+
+    Examples
+    --------
+    >>> a = squared_range_audit(300, seed=0)
+    >>> a.same_rank == a.n_scenes, 0 < a.pair_differs < 1
+    (True, True)
+    """
+    n_scenes = as_int(n_scenes, "n_scenes", 1)
+    seed = as_int(seed, "seed", 0)
+    n_sensors = as_int(n_sensors, "n_sensors", 3)
+    rng = np.random.default_rng(seed)
+    targets = rng.uniform(0, 100, size=(n_scenes, 2))
+    sensors = rng.uniform(0, 100, size=(n_scenes, n_sensors, 2))
+    rows = targets[:, None, :] - sensors
+    unit = rows / np.linalg.norm(rows, axis=-1, keepdims=True)
+    i, j = np.triu_indices(n_sensors, 1)
+
+    def pair_icn(r):
+        pairs = np.stack([r[:, i], r[:, j]], axis=2)  # (S, P, 2, 2)
+        return inverse_condition_numbers(pairs.reshape(-1, 2, 2)).reshape(n_scenes, -1)
+
+    sq, rg = pair_icn(rows), pair_icn(unit)
+    best_sq, best_rg = sq.argmax(axis=1), rg.argmax(axis=1)
+    k = np.arange(n_scenes)
+    same_rank = int((np.linalg.matrix_rank(rows) == np.linalg.matrix_rank(unit)).sum())
+    ratio = rg[k, best_rg] / sq[k, best_sq]
+    return SquaredRangeAudit(n_scenes, n_sensors, same_rank,
+                             float(np.mean(best_sq != best_rg)),
+                             (float(ratio.min()), float(ratio.max())))
