@@ -1,5 +1,7 @@
-"""Verdict robustness (obslib.claims.robustness): variations go through temporary profiles."""
+"""Verdict robustness (obslib.claims.robustness): each variant is the check, a pure function of
+its parameters, called with one of them changed; the caveats a verdict then carries."""
 
+import dataclasses
 import json
 
 import pytest
@@ -9,30 +11,51 @@ from obslib import claims
 from obslib.claims import robustness as rb
 from obslib.profiles import PROFILES, params
 
-ROBUSTNESS_FILE = report.ROOT / "book" / "data" / "robustness.json"
+ROBUSTNESS_FILE = rb.DATA
 
 
 def test_identity_variation_reproduces_the_base_verdict(monkeypatch):
-    # changing u_max by a factor 1 must give the base verdict back, through a temporary profile
+    # changing u_max by a factor 1 must give the base verdict and the very same finding back
     monkeypatch.setitem(rb.DIMENSIONS, "u_max", (1.0,))
     (row,) = rb.verdict_robustness(["thm7-case2"], dimensions=["u_max"])
     (rec,) = claims.evaluate("quick", ids=["thm7-case2"])
     assert row["base"] == rec.status
-    # and the very same finding, which the row records
     assert row["variants"] == {"u_max": [("x1", rec.status, True)]}
-    assert rb._TMP not in PROFILES  # the temporary profile is gone
 
 
-def test_temporary_profile_sets_one_parameter_and_is_removed_on_error():
-    nb = "05_two_sensors_tracking"
-    with pytest.raises(RuntimeError):
-        with rb._profile_with("quick", nb, "noise_std", 1.25) as name:
-            p, q = params(nb, name), params(nb, "quick")
-            assert p["noise_std"] == 1.25
-            assert {k: v for k, v in p.items() if k != "noise_std"} == {
-                k: v for k, v in q.items() if k != "noise_std"}
-            raise RuntimeError("boom")
-    assert rb._TMP not in PROFILES
+def test_a_variation_changes_one_parameter_and_no_global_table(monkeypatch):
+    """Each variant calls the check with the base parameters and one changed: no profile is
+    written, and the check sees exactly that one change."""
+    from obslib.claims import _ledger
+
+    seen = []
+    c = claims.registry()["fig6-best-pair"]
+
+    def spy(p):
+        seen.append(dict(p))
+        return c.check(p)
+
+    monkeypatch.setitem(_ledger._REGISTRY, c.id, dataclasses.replace(c, check=spy))
+    before = {k: dict(v) for k, v in PROFILES.items()}
+    rb.verdict_robustness([c.id], base="quick", dimensions=["noise_std"])
+    assert {k: dict(v) for k, v in PROFILES.items()} == before
+    base = params(c.notebook, "quick")
+    assert seen[0] == base
+    for p, f in zip(seen[1:], rb.DIMENSIONS["noise_std"]):
+        assert p == {**base, "noise_std": base["noise_std"] * f}
+
+
+def test_caveat_sentences_name_each_change_in_words():
+    row = {"id": "a", "base": "partly",
+           "variants": {"u_max": [("x0.25", "refuted"), ("x4", "partly")],
+                        "noise_std": [("x2", "reproduced")],
+                        "size": [("n_seeds x0.5", "reproduced"), ("n_seeds x2", "partly")]}}
+    assert rb.caveat(row) == ("Partly at the paper's values; refuted with a quarter of "
+                              "$u_{\\max}$; reproduced with twice the measurement noise and "
+                              "with half the noise seeds.")
+    assert rb.caveat({"id": "b", "base": "reproduced", "variants": {}}) == ""
+    assert rb.caveats({"base": "quick", "dimensions": {}, "rows": [row]}) == {}
+    assert rb.caveats({"base": "paper", "dimensions": {}, "rows": [row]}) == {"a": rb.caveat(row)}
 
 
 def test_dimensions_follow_the_notebook_parameters():
@@ -62,7 +85,7 @@ def test_table_says_where_a_verdict_changes():
         },
     ]
     assert rb.describe(rows[0], "refuted") == (
-        "refuted (partly at the smaller sizes)",
+        "refuted (partly in the stored study)",
         ["holds", "n/a", "refuted at Euclidean", "unchanged finding"])
     assert rb.describe(rows[1]) == ("reproduced", ["fixed by the published run"] * 4)
     lines = rb.robustness_table(rows, statuses={"a": "refuted"}).splitlines()
@@ -87,7 +110,7 @@ def stored():
 
 def test_stored_robustness_covers_the_current_ledger(stored):
     # same claims, same base verdicts, same dimensions as a fresh evaluation: else rerun
-    # python -m obslib.claims --robustness --write book/data/robustness.json
+    # python -m obslib.claims --robustness --write obslib/data/robustness.json
     base = stored["base"]
     assert stored["dimensions"] == {k: list(v) for k, v in rb.DIMENSIONS.items()}
     recs = {r.id: r.status for r in claims.evaluate(base)}
@@ -113,7 +136,7 @@ def test_report_section_from_the_stored_data(stored):
     rows = [line for line in sec.splitlines() if line.startswith("* - [")]
     # only the claims of the report that the data covers, each linking to its entry
     assert len(rows) == 1 and "(#claim-fig7-switch-mechanism)" in rows[0]
-    assert "  - refuted at Euclidean" in sec.splitlines()
+    assert "  - refuted at Euclidean" in sec.splitlines() or stored["base"] == "paper"
     assert "How robust" not in report.render_report(recs, "quick", targets={})
 
 
@@ -136,10 +159,11 @@ def test_cli_robustness_write_needs_json(capsys, tmp_path):
     with pytest.raises(SystemExit) as exc:
         parse_args(["--robustness", "--write", str(tmp_path / "r.md")])
     assert exc.value.code == 2 and "must end in .json" in capsys.readouterr().err
-    assert parse_args(["--robustness"]).profile == "quick"
+    assert parse_args(["--robustness"]).profile == "paper"
     assert parse_args([]).profile == "paper"
     out = tmp_path / "r.json"
-    assert main(["--robustness", "--id", "thm7-case2", "--write", str(out)]) == 0
+    assert main(["--robustness", "--profile", "quick", "--id", "thm7-case2", "--write",
+                 str(out)]) == 0
     data = rb.read_json(out)
     assert [r["id"] for r in data["rows"]] == ["thm7-case2"] and data["base"] == "quick"
     assert json.loads(out.read_text()) == json.loads(rb.to_json(data["rows"], "quick"))

@@ -239,13 +239,13 @@ def describe(row: dict, status: str | None = None) -> tuple[str, list[str]]:
     >>> describe(row)
     ('partly', ['refuted at ×2', 'n/a', 'n/a', 'n/a'])
     >>> describe(row, "refuted")[0]
-    'refuted (partly at the smaller sizes)'
+    'refuted (partly in the stored study)'
     """
     (row,) = _rows_iv([row])
     if status is not None:
         as_str(status, "status")
     shown = status or row["base"]
-    verdict = shown if shown == row["base"] else f"{shown} ({row['base']} at the smaller sizes)"
+    verdict = shown if shown == row["base"] else f"{shown} ({row['base']} in the stored study)"
     cells = [_cell(row["base"], row["variants"].get(d), d in row.get("fixed", ()))
              for d in DIMENSIONS]
     return verdict, cells

@@ -1,0 +1,90 @@
+"""The front page's findings, the report's verdict lines and the chapters' verdict boxes are
+the ledger's one sentences (obsbook.front, obsbook.report, obsbook.verdicts)."""
+
+import re
+
+import pytest
+
+from obsbook import front, report, verdicts
+from obslib import claims
+from obslib.tools.run import ROOT
+
+
+def _record(id, status, kind="paper", summary="It holds.", caveat="", label=None):
+    return claims.Record(id, "", "", "", summary, status, "01_model_and_bound", {},
+                         title=f"Claim {id}.", label=label or f"{id}-evidence", kind=kind,
+                         summary=summary, caveat=caveat)
+
+
+def test_a_headline_must_agree_with_the_ledger():
+    recs = [_record("a", "reproduced"), _record("b", "refuted", summary="It fails.")]
+    ok = front.Headline("A holds, B does not.", {"a": "reproduced", "b": "refuted"})
+    text = front.render_front(recs, (ok,))
+    assert "- **A holds, B does not.** It holds. ([evidence](#a-evidence)) It fails." in text
+    wrong = front.Headline("Both hold.", {"a": "reproduced", "b": "reproduced"})
+    with pytest.raises(ValueError, match="asserts 'b' is reproduced, but the ledger finds it"):
+        front.render_front(recs, (wrong,))
+    with pytest.raises(ValueError, match="does not hold"):
+        front.render_front(recs, (front.Headline("C.", {"c": "reproduced"}),))
+
+
+def test_the_exceptions_table_lists_refuted_then_partly_with_their_sentences():
+    recs = [_record("a", "partly", summary="Only in part.",
+                    caveat="Partly at the paper's values; refuted with twice $u_{\\max}$."),
+            _record("b", "refuted", summary="It fails."), _record("c", "reproduced"),
+            _record("d", "differs", kind="code", summary="The code differs.")]
+    text = front.render_front(recs, ())
+    table = text.split(front.MARKERS["exceptions"][0])[1]
+    assert table.index("claim-b") < table.index("claim-a")
+    assert "claim-c" not in table and "claim-d" not in table  # only the paper's claims
+    assert ("**partly** (partly at the paper's values; refuted with twice $u_{\\max}$)"
+            in table)
+    assert "Only in part. Partly at the paper's values; refuted with twice" in table
+
+
+def test_a_box_is_the_entry_s_sentence_with_its_caveat_and_link():
+    r = _record("x-1", "partly", summary="Only in part.", caveat="Partly at the paper's "
+                "values; refuted with half the noise seeds.")
+    text = verdicts.box(r)
+    assert text.startswith("```{admonition} Verdict: partly\n:class: verdict verdict-partly\n")
+    assert ("Only in part. Partly at the paper's values; refuted with half the noise seeds. "
+            "[The report's entry](#claim-x-1)") in text
+    code = verdicts.box(_record("y", "differs", kind="code", summary="It differs."))
+    assert code.startswith("```{admonition} The authors' code: differs")
+    assert verdicts.glue_name("x-1") == "verdict_x_1"
+
+
+def test_quotes_render_as_myst():
+    assert report.quote_myst(r"the target is ``trapped'' by the sensors") == \
+        "the target is “trapped” by the sensors"
+    assert report.quote_myst(r"Theorem~\ref{thm:lower_bound} and $a~b$") == "Theorem 1 and $a~b$"
+    with pytest.raises(ValueError, match="does not number"):
+        report.quote_myst(r"Equation~\ref{eqn:nope}")
+
+
+def test_every_quote_of_the_ledger_renders():
+    for c in claims.registry().values():
+        if c.quote:
+            text = report.quote_myst(c.quote)
+            assert "\\ref" not in text and "\\cite" not in text and "~" not in re.sub(
+                r"\$[^$]*\$", "", text), c.id
+
+
+def test_committed_front_fragment_is_the_ledger_at_the_paper_profile():
+    from obslib.claims import robustness as rb
+
+    recs = claims.evaluate("paper", caveats=rb.caveats())
+    assert (ROOT / "book" / "_front.md").read_text() == front.render_front(recs), (
+        "book/_front.md is stale: run python -m obsbook.report --front book/_front.md")
+
+
+def test_the_front_page_states_no_claim_of_its_own():
+    """Outside its generated parts the front page names no verdict and links no entry: every
+    statement about an entry comes from the ledger."""
+    text = (ROOT / "book" / "intro.md").read_text()
+    own = re.sub(r"```\{include\}.*?```", "", text, flags=re.S)
+    assert "claim-" not in own and "-evidence" not in own
+    for word in ("reproduced", "refuted", "partly"):
+        assert not re.search(rf"\b{word}\b", own), word
+    for start, end in front.MARKERS.values():
+        assert f'"{start}"' in text and f'"{end}"' in text
