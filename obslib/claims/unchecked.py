@@ -693,21 +693,28 @@ def _half_citation(p: dict) -> Finding:
     )
 
 
-#: The misprints of notation and indexing, as printed and as the book reads them.
+#: The misprints of notation, indexing and wording, as printed and as the book reads them, in
+#: the order of the paper.
 MISPRINTS = (
+    (r"Problems 1 and 2: $\sum_{i=1}^{L}$ of terms indexed by $l$", r"$\sum_{l=1}^{L}$"),
+    (r"Problems 1-3: $\mathcal{S} := \{s_0, \ldots, s_N\}$, $\mathcal{T} := \{t_0, \ldots, "
+     r"t_L\}$: $N + 1$ sensors and $L + 1$ targets",
+     r"$s_1, \dots, s_N$ and $t_1, \dots, t_L$, as the constraints $i = 1, \dots, N$ have them"),
+    ("Sec. III: the sensors “can improve the lower bound on the condition number”",
+     "the lower bound on the inverse of the condition number"),
+    (r"Theorem 3: “the smallest singular number” of $O(o)$", "its smallest singular value"),
+    (r"Sec. IV: the Mahalanobis distance for $i\in\{1,,...,N\}$", r"$i \in \{1, \dots, N\}$"),
+    ("Sec. IV-A: “We can use the inverse of the condition number” (Eq. (9)) as the weight",
+     "its lower bound, Eq. (9), which the experiments use"),
     ("Algorithm 1: “while true”, no stopping rule",
      r"stop when every target has its pair, which comes first since $N \ge 2L$"),
     (r"Algorithm 1: “Remove $\{s_i,s_j\}$ from union sensor $S$”, after selecting "
      r"$(\sigma_1(l), \sigma_2(l), t_l)$",
      r"remove $\sigma_1(l)$ and $\sigma_2(l)$ from the sensor set $\mathcal{S}$"),
-    (r"Problems 1 and 2: $\sum_{i=1}^{L}$ of terms indexed by $l$", r"$\sum_{l=1}^{L}$"),
-    (r"Problems 1-3: $\mathcal{S} := \{s_0, \ldots, s_N\}$, $\mathcal{T} := \{t_0, \ldots, "
-     r"t_L\}$: $N + 1$ sensors and $L + 1$ targets",
-     r"$s_1, \dots, s_N$ and $t_1, \dots, t_L$, as the constraints $i = 1, \dots, N$ have them"),
-    (r"Theorem 3: “the smallest singular number” of $O(o)$", "its smallest singular value"),
-    ("Sec. III: the sensors “can improve the lower bound on the condition number”",
-     "the lower bound on the inverse of the condition number"),
-    (r"Sec. IV: the Mahalanobis distance for $i\in\{1,,...,N\}$", r"$i \in \{1, \dots, N\}$"),
+    ("Sec. IV-A: “We present the following lemmas”, followed by Theorem 6 and no lemma",
+     "the following theorem"),
+    (r"Proof of Theorem 6: the value charged is “at most twice of $(s_i,s_j,t_l)$”",
+     r"at most twice $\omega(s_i,s_j,t_l)$"),
     (r"Sec. IV-B: the submodular welfare problem over “independent sets $\{S_i \mid S_i\in S, "
      r"~i=\{1,2,...n\}\}$”",
      r"disjoint sets $S_i \subseteq \mathcal{S}$, $i \in \{1, \dots, n\}$: $S_i \in S$ would "
@@ -730,13 +737,14 @@ MISPRINTS = (
     notebook=NOTEBOOK,
 )
 def _typos(p: dict) -> Finding:
-    """Misprints of notation and indexing, read off the text (nothing to compute): partly, since
-    each has an obvious intended reading that the book implements (:data:`MISPRINTS`)."""
+    """Misprints of notation, indexing and wording, read off the text (nothing to compute):
+    partly, since each has an obvious intended reading that the book implements
+    (:data:`MISPRINTS`)."""
     n = len(MISPRINTS)
     return Finding(
         "partly",
-        summary=f"The paper has {number(n)} misprints of notation and indexing, each with an "
-        "obvious intended reading, which the book follows.",
+        summary=f"The paper has {number(n)} misprints of notation, indexing and wording, each "
+        "with an obvious intended reading, which the book follows.",
         evidence={"misprints": [printed for printed, _ in MISPRINTS]},
         table=Table("The misprints and their reading.", ("printed", "read as"), MISPRINTS),
     )
