@@ -726,7 +726,7 @@ MISPRINTS = (
 
 @claim(
     id="paper-typos",
-    where="Algorithm 1, Problems 1-3, Secs. III, IV and V",
+    where="Problems 1-3, Algorithm 1, Theorems 3 and 6, Secs. III to V",
     statement="Algorithm 1, Problems 1-3, the sets $\\mathcal{S}$ and $\\mathcal{T}$ and the "
     "notation of Sections III to V are stated correctly.",
     title="Algorithm 1, Problems 1-3 and the notation, as printed.",

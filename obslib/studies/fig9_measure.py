@@ -243,7 +243,7 @@ def fig9_measure_sweeps(N_min: int, N_max: int, trials: int, seed: int, n_target
     >>> fig9_measure_sweeps(8, 9, trials=2, seed=0) is s  # computed once
     True
     """
-    N_min, N_max = as_int(N_min, "N_min", 0), as_int(N_max, "N_max", 0)
+    N_min, N_max = as_int(N_min, "N_min", 1), as_int(N_max, "N_max", 1)
     if N_max < N_min:
         raise ValueError(f"N_max must be at least N_min, got {N_min} and {N_max}")
     return _fig9_measure_sweeps(N_min, N_max, as_int(trials, "trials", 1),
