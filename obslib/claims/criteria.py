@@ -124,8 +124,9 @@ def runs_and_mean(row: dict, alpha: float = ALPHA) -> dict:
 
     Examples
     --------
-    >>> r = {"vs_reference_better": 81, "vs_other_better": 119, "vs_p_sign": 0.0087,
-    ...      "vs_p_wilcoxon": 0.44, "vs_median_diff": -0.012, "vs_mean_diff": 0.016}
+    >>> r = {"vs_reference_better": 81, "vs_other_better": 119,
+    ...      "vs_p_sign": 0.0087, "vs_p_wilcoxon": 0.44,
+    ...      "vs_median_diff": -0.012, "vs_mean_diff": 0.016}
     >>> runs_and_mean(r)
     {'runs': 'other', 'test': 'sign', 'mean': 'bound'}
     """

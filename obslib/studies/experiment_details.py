@@ -171,8 +171,10 @@ def unit_dependence(name: str = "best-pair", factor: float = 10.0) -> dict:
     --------
     >>> from obslib.studies.experiment_details import unit_dependence
     >>> u = unit_dependence("best-pair", 10.0)
-    >>> round(u["first_bound"], 3), round(u["first_bound_scaled"], 3), u["first_pair"]
-    (0.874, 0.177, (3, 5))
+    >>> round(u["first_bound"], 3), round(u["first_bound_scaled"], 3)
+    (0.874, 0.177)
+    >>> u["first_pair"], u["first_pair_scaled"]
+    ((3, 5), (3, 5))
     >>> u["euclidean_gap"] < 1e-12, unit_dependence("best-pair", 1.0)["changed"]
     (True, 0.0)
     """

@@ -183,7 +183,8 @@ def fixed_pair_typicality(batch: BatchResult, rtol: float = FIGURE_TOLERANCE) ->
     --------
     >>> from obslib import tracking
     >>> from obslib.studies.tracking import fixed_pair_typicality
-    >>> b = tracking.simulate_batch(tracking.PAPER_CIRCLE, "fixed-pair", seeds=range(4))
+    >>> setup = tracking.PAPER_CIRCLE
+    >>> b = tracking.simulate_batch(setup, "fixed-pair", seeds=range(4))
     >>> t = fixed_pair_typicality(b)
     >>> sorted(t["percentile"]), 0 <= t["share_like"] <= 1
     (['mean_bound', 'mean_error', 'mean_trace'], True)
