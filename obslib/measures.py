@@ -10,7 +10,7 @@ assignment of Problem 2 calls) and, vectorised, for many subsets and many instan
 Conventions
 -----------
 Rows.
-    ``O`` has the rows ``o - p_i`` of the chosen sensors (Eq. (4)), so
+    ``O`` has the rows ``o - p_i`` of the chosen sensors (Eq. (5)), so
     ``O^T O = sum_i (o - p_i)(o - p_i)^T`` is a sum of one rank-one term per sensor.
 The ``u`` row.
     ``u=None`` (default) leaves it out: the stationary target, and the matrix the paper's
@@ -137,7 +137,7 @@ def symmetric_observability_matrix(sensors, target, u=None, eps: float = 0.0) ->
     target : array_like, shape (2,)
         Target position ``o``.
     u : array_like, shape (2,), optional
-        A fixed known control, appended as the last row of ``O`` (Eq. (4)).
+        A fixed known control, appended as the last row of ``O`` (Eq. (5)).
     eps : float
         Prior information added on the diagonal (``>= 0``).
 

@@ -296,6 +296,15 @@ def test_kinds_take_their_own_status_words(records):
     assert set(claims.CODE_STATUSES).isdisjoint(claims.STATUSES)
 
 
+def test_new_entries_exist_with_their_verdicts(records):
+    want = {"sec5b-control-ball": "differs", "intro-vs-problem2": "partly",
+            "footnote1-two-sensors": "partly", "sec5d-logdet-measure": "differs",
+            "code-link": "agrees", "sec5a-umax-speed": "reproduced",
+            "sec4-mahalanobis-units": "partly", "problem3-ordered": "differs",
+            "published-replay": "differs"}
+    assert {i: records[i].status for i in want} == want
+
+
 @pytest.fixture(scope="module")
 def paper_records():
     """The ledger at the paper's sizes (about 25 s on a quiet two-core machine)."""

@@ -143,18 +143,44 @@ def test_literal_sweep_uses_the_fig9_instances():
         fm.literal_logdet_counts(S, T, "max")
 
 
-def test_fig9_status_names_the_prior():
+def test_fig9_status_follows_the_three_measures():
     (r,) = claims.evaluate("quick", ids=["fig9-even"])
-    rel = np.array(r.evidence["relative_to_random"])
-    lit = np.array(r.evidence["literal_relative_to_random"])
-    even = [(rel < 1).all(), (lit < 1).all()]
-    assert r.status == ("reproduced" if all(even) else "partly" if any(even) else "refuted")
-    assert r.evidence["literal_target1_share"] == 1.0
-    assert "prior" in r.ours
+    e = r.evidence
+    text = all(hi < 1 for _, hi in e["text_relative_to_random"].values())
+    code, prior = e["code_relative_to_random"][1] < 1, e["prior_relative_to_random"][1] < 1
+    assert (e["text_even"], e["code_even"], e["prior_even"]) == (text, code, prior)
+    want = ("reproduced" if text and code else "partly" if text or code or prior else "refuted")
+    assert r.status == want == "partly"
+    # the code's measure, resolved exactly, puts every sensor on target 1 (no prior, no row)
+    assert e["target1_share"]["code"] == 1.0 and "every sensor on target 1" in r.summary
+    # every direction of the control row tried is reported
+    assert len(e["text_relative_to_random"]) == len(fm.CONTROL_DIRECTIONS)
+
+
+@pytest.mark.parametrize("direction", [0.0, np.pi / 2, 2.0])
+def test_control_row_in_one_direction_matches_an_exact_reference(direction):
+    Ns, trials, seed, L = [4, 7], 2, 3, 3
+    got = fm.control_row_fig9_sweep(Ns, trials, seed, L, side=20.0, u_max=1.5,
+                                    direction=direction)
+    U = (1.5 * np.array([np.cos(direction), np.sin(direction)])).tolist()
+    for a, n in enumerate(Ns):
+        for t in range(trials):
+            S, T = ts.fig9_geometry(n, t, seed, L, 20.0)
+            want = _reference_control_row(S.tolist(), T.tolist(), [U] * L)
+            np.testing.assert_array_equal(got[a, t], want)
+
+
+def test_fig9_measure_sweeps_are_the_single_sweeps():
+    s = fm.fig9_measure_sweeps(20, 22, 2, 1, eps=1.0)
+    np.testing.assert_array_equal(s["prior"], ts.fig9_sweep([20, 21, 22], 2, 1, 5, "logdet", 1.0))
+    np.testing.assert_array_equal(s["code"], fm.literal_fig9_sweep([20, 21, 22], 2, 1))
+    np.testing.assert_array_equal(s["text"][None], fm.control_row_fig9_sweep([20, 21, 22], 2, 1))
+    with pytest.raises(ValueError, match="N_max"):
+        fm.fig9_measure_sweeps(5, 4, 2, 1)
 
 
 # --------------------------------------------------------------------------------------------
-# Sec. III: the derived matrix against Eq. (4)
+# Sec. III: the derived matrix (Eq. (4)) against Eq. (5)
 # --------------------------------------------------------------------------------------------
 
 from obslib.bounds import lower_bound  # noqa: E402
@@ -162,12 +188,12 @@ from obslib.observability import inverse_condition_number  # noqa: E402
 from obslib.studies import eq4  # noqa: E402
 
 
-def test_derived_matrix_gram_is_eq4_with_sqrt_n_control():
+def test_derived_matrix_gram_is_eq5_with_sqrt_n_control():
     rng = np.random.default_rng(1)
     S, o, u = rng.normal(size=(4, 2)), rng.normal(size=2), rng.normal(size=2)
     Od = eq4.derived_matrix(S, o, u)
     assert Od.shape == (8, 2)
-    # C^-1 of the derived matrix = C^-1 of Eq. (4) with u scaled by sqrt(N) (SVD vs closed form)
+    # C^-1 of the derived matrix = C^-1 of Eq. (5) with u scaled by sqrt(N) (SVD vs closed form)
     want = inverse_condition_number(S, o, np.sqrt(4) * u)
     assert eq4.derived_inverse_condition(S, o, u) == pytest.approx(want, rel=1e-10)
 
@@ -361,18 +387,38 @@ def test_disc_never_does_worse_than_the_published_set_by_more_than_the_grid():
 
 
 def test_unchecked_statuses_follow_the_evidence():
-    ids = ["eq4-collapse", "sec5c-np-complete", "problem3-ordered", "sec4-mahalanobis-angle",
-           "sec5b-control-ball", "greedy-half-citation", "paper-typos"]
+    ids = ["eq5-collapse", "sec5c-np-complete", "problem3-ordered", "sec4-mahalanobis-angle",
+           "sec4-mahalanobis-units", "sec5b-control-ball", "greedy-half-citation", "paper-typos",
+           "code-link", "sec5d-logdet-measure"]
     recs = {r.id: r for r in claims.evaluate("quick", ids=ids)}
-    ev = recs["eq4-collapse"].evidence
-    assert recs["eq4-collapse"].status == ("reproduced" if ev["violations"] == 0 else "partly")
+    ev = recs["eq5-collapse"].evidence
+    assert recs["eq5-collapse"].status == ("reproduced" if ev["violations"] == 0 else "partly")
     assert ev["grid_minus_closed_form"] >= -1e-12
     red = recs["sec5c-np-complete"].evidence["reduction"]
     assert recs["sec5c-np-complete"].status == ("partly" if red["agree"] == red["n"] else "refuted")
     p3 = recs["problem3-ordered"].evidence
-    assert recs["problem3-ordered"].status == ("partly" if p3["share_larger"] > 0 else "reproduced")
+    assert recs["problem3-ordered"].status == ("differs" if p3["share_larger"] > 0 else "agrees")
+    # a departure of the code that changes nothing the figure shows is said to change nothing
+    assert (p3["max_mean_shift"] < 0.01 * p3["largest_mean"]) == (
+        "changes nothing the figure shows" in recs["problem3-ordered"].summary)
+    ball = recs["sec5b-control-ball"].evidence
+    assert recs["sec5b-control-ball"].status == ("differs" if ball["per_step_gap_max"] > 1e-9
+                                                 else "agrees")
+    assert "changes nothing the figure shows" in recs["sec5b-control-ball"].summary
+    m = recs["sec4-mahalanobis-angle"].evidence
+    agree = min(m["best-pair"]["agree_whitened"], m["adversarial"]["agree_whitened"])
+    assert recs["sec4-mahalanobis-angle"].status == ("agrees" if agree == 1 else "differs")
+    d = recs["sec5d-logdet-measure"].evidence
+    assert recs["sec5d-logdet-measure"].status == ("agrees" if d["same_teams"] else "differs")
+    kinds = {i: claims.registry()[i].kind for i in ids}
+    assert {i for i, k in kinds.items() if k == "code"} == {
+        "problem3-ordered", "sec4-mahalanobis-angle", "sec5b-control-ball", "code-link",
+        "sec5d-logdet-measure"}
     for r in recs.values():
         assert r.notebook == "11_unchecked_statements"
+    # the old id of the derived matrix's entry is gone; its evidence section keeps its target
+    assert "eq4-collapse" not in claims.registry()
+    assert recs["eq5-collapse"].label == "eq4-collapse-evidence"
 
 
 # --------------------------------------------------------------------------------------------
@@ -529,3 +575,77 @@ def test_independent_checks_count_what_the_noise_does_not_fix():
         assert k["shared_noise"] == int(((read != name) & (read != "")).sum())
     assert rp.independent_checks("best-pair")["shared_noise"] == 0  # its own entries first
     assert rp.independent_checks("best-partner")["shared_noise"] > 0
+
+
+# --------------------------------------------------------------------------------------------
+# Sec. IV: the unit of length with Mahalanobis distances
+# --------------------------------------------------------------------------------------------
+
+
+def _theorem4_mixed(S, o, cov, u_max):
+    """The experiments' score of every pair by Theorem 4's closed form: alpha and
+    u_max^2 / d_io^2 from Mahalanobis distances, theta_ji the Euclidean angle."""
+    P = np.linalg.inv(cov)
+    v = S - o
+    d = np.sqrt(np.einsum("ni,ij,nj->n", v, P, v))
+    ang = np.arctan2(v[:, 1], v[:, 0])
+    best = (-1.0, None)
+    for i in range(len(S)):
+        for j in range(i + 1, len(S)):
+            a, th = d[j] / d[i], ang[j] - ang[i]
+            root = np.sqrt(1 + a**4 + 2 * a**2 * np.cos(2 * th))
+            w = np.sqrt((1 + a**2 - root) / (1 + a**2 + root + 2 * u_max**2 / d[i] ** 2))
+            best = max(best, (w, (i, j)), key=lambda x: x[0])
+    return best
+
+
+def test_unit_dependence_by_theorem4_closed_form():
+    from obslib.published_runs import published_run
+    from obslib.tracking import PAPER_CIRCLE
+
+    u = ed.unit_dependence("best-pair", 10.0)
+    run = published_run("best-pair")
+    S, o, C = PAPER_CIRCLE.sensor_array, run.estimate[0], run.cov[0]
+    w1, pair1 = _theorem4_mixed(S, o, C, PAPER_CIRCLE.u_max)
+    w10, pair10 = _theorem4_mixed(10 * S, 10 * o, 100 * C, 10 * PAPER_CIRCLE.u_max)
+    assert u["first_bound"] == pytest.approx(w1, rel=1e-9)
+    assert u["first_bound_scaled"] == pytest.approx(w10, rel=1e-9)
+    assert (round(w1, 3), round(w10, 3)) == (0.874, 0.177)
+    assert u["first_pair"] == pair1 and u["first_pair_scaled"] == pair10
+    # step by step along the run: the share of steps whose best pair changes with the unit
+    changed = np.mean([_theorem4_mixed(S, x, c, 3.0)[1] != _theorem4_mixed(10 * S, 10 * x,
+                                                                           100 * c, 30.0)[1]
+                       for x, c in zip(run.estimate[::5], run.cov[::5])])
+    assert abs(changed - u["changed"]) < 0.1  # every fifth step against all of them
+    with pytest.raises(ValueError, match="factor"):
+        ed.unit_dependence("best-pair", 0.0)
+
+
+def test_units_entry_states_the_bound_at_the_first_step():
+    (r,) = claims.evaluate("quick", ids=["sec4-mahalanobis-units"])
+    assert r.kind == "paper" and r.status == "partly"
+    assert "from 0.874 to 0.177" in r.summary
+
+
+# --------------------------------------------------------------------------------------------
+# The address of the code
+# --------------------------------------------------------------------------------------------
+
+
+def test_code_link_counts_the_stored_commits():
+    import csv
+    from importlib import resources
+
+    from obslib.studies.published import CODE_URL_PRINTED
+
+    text = resources.files("obslib").joinpath("data", "code_repository", "commits.csv").read_text()
+    rows = list(csv.DictReader(ln for ln in text.splitlines() if not ln.startswith("#")))
+    account = CODE_URL_PRINTED.split("/")[3]
+    (r,) = claims.evaluate("quick", ids=["code-link"])
+    e = r.evidence
+    assert e["n_commits"] == len(rows) == 10
+    assert e["by_printed_account"] == sum(x["author"] == account for x in rows)
+    assert r.status == ("agrees" if e["by_printed_account"] == len(rows) else "differs")
+    assert (e["first"], e["last"]) == (min(x["author_date"] for x in rows)[:10],
+                                       max(x["author_date"] for x in rows)[:10])
+    assert all(len(x["commit"]) == 40 for x in rows)

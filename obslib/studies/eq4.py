@@ -1,12 +1,13 @@
-"""Section III's observability matrix as derived, against its rewriting as Eq. (4).
+"""Section III's observability matrix as derived (Eq. (4)), against its rewriting (Eq. (5)).
 
 Section III computes the local nonlinear observability matrix with the Lie derivatives of every
-measurement ``h_i``: each sensor contributes its gradient row ``o - p_i``, a row ``u_o`` (the
-first Lie derivative's gradient) and zero rows. It then "rewrites" the matrix as Eq. (4),
-``[o - p_1; ...; o - p_N; u_o]``, keeping a single ``u_o`` row. The two have the same rank, but
-not the same singular values: the derived matrix has ``O_d^T O_d = O(o)^T O(o) + N u u^T``, so
-``u`` weighs ``sqrt(N)`` times as much. Theorem 1 bounds ``C^{-1}`` of Eq. (4); for the derived
-matrix the same argument gives the bound with ``u_max`` replaced by ``sqrt(N) u_max``:
+measurement ``h_i`` (Eq. (4)): each sensor contributes its gradient row ``o - p_i``, a row
+``u_o`` (the first Lie derivative's gradient) and zero rows. It then "rewrites" the matrix as
+Eq. (5), ``[o - p_1; ...; o - p_N; u_o]``, keeping a single ``u_o`` row. The two have the same
+rank, but not the same singular values: the derived matrix has
+``O_d^T O_d = O(o)^T O(o) + N u u^T``, so ``u`` weighs ``sqrt(N)`` times as much. Theorem 1
+bounds ``C^{-1}`` of Eq. (5); for the derived matrix the same argument gives the bound with
+``u_max`` replaced by ``sqrt(N) u_max``:
 
 .. math::
 
@@ -64,7 +65,7 @@ def _control(u) -> np.ndarray:
 
 
 def derived_matrix(sensors, target, u) -> np.ndarray:
-    """The observability matrix as Section III derives it (before Eq. (4)), zero rows dropped.
+    """The observability matrix as Section III derives it (Eq. (4)), zero rows dropped.
 
     Rows ``o - p_1, u, o - p_2, u, ..., o - p_N, u``: each sensor's zeroth and first Lie
     derivative gradients (the higher ones are zero). Shape ``(2N, 2)``.
@@ -165,7 +166,7 @@ def worst_derived_on_disc(sensors, target, u_max, n_radii: int = 20, n_angles: i
 
 
 def bound_ratio(sensors, target, u_max) -> float:
-    """Worst ``C^{-1}`` of the derived matrix over Theorem 1's bound (Eq. (4)); ``<= 1``.
+    """Worst ``C^{-1}`` of the derived matrix over Theorem 1's bound (for Eq. (5)); ``<= 1``.
 
     Examples
     --------
@@ -253,7 +254,7 @@ def bound_ratios(rows, counts, u_max) -> tuple[np.ndarray, np.ndarray]:
 
 def pair_choice_changes(n_scenes: int, n_sensors: int, u_max: float, seed: int = 0,
                         side: float = 10.0) -> float:
-    """Share of random scenes where the best pair by Theorem 4 differs between Eq. (4)
+    """Share of random scenes where the best pair by Theorem 4 differs between Eq. (5)
     (``u_max``) and the derived matrix (``sqrt(2) u_max``: two sensors, two ``u`` rows).
 
     Sensors and one target uniform in ``[0, side]^2``, Euclidean distances.
@@ -291,7 +292,7 @@ AUDIT_SIDES = (1.0, 10.0, 100.0)
 
 
 def random_scene_audit(n_geometries: int, n_refine: int, seed: int, u_max: float):
-    """The matrix as derived against Eq. (4) on random scenes of 2 to 6 sensors.
+    """The matrix as derived (Eq. (4)) against Eq. (5) on random scenes of 2 to 6 sensors.
 
     ``n_geometries`` scenes of each side of :data:`AUDIT_SIDES` give the worst case of the
     derived matrix over the disc divided by Theorem 1's bound (:func:`bound_ratio`);

@@ -25,7 +25,7 @@ import numpy as np
 
 from .. import tracking as tr
 from .._kernels import normalise, pair_kernel
-from .._validate import as_float_array, as_int, as_str
+from .._validate import as_float_array, as_int, as_positive, as_str
 from ..bounds import pair_bounds
 from ..controls import disc_controls
 from ..published_runs import published_run
@@ -33,7 +33,8 @@ from ..tracking.adversary import adversary_moves
 from ..tracking.model import inverse_condition
 from .tracking import adversary_variants, entrapment_summary
 
-__all__ = ["whiten", "metric_choices", "control_set_gap", "control_set_entrapment"]
+__all__ = ["whiten", "metric_choices", "unit_dependence", "control_set_gap",
+           "control_set_entrapment"]
 
 
 def whiten(points, cov) -> np.ndarray:
@@ -86,7 +87,7 @@ def metric_choices(name: str = "best-pair") -> dict:
     dict
         ``pairs`` (name -> ``(steps, 2)`` int), ``agree_whitened`` and ``agree_euclidean`` (share
         of steps where the mixed choice is the same), ``logged_match`` (share of steps where the
-        mixed choice is the logged pair).
+        mixed choice is the logged pair). Computed once per run (cached).
 
     Examples
     --------
@@ -96,20 +97,35 @@ def metric_choices(name: str = "best-pair") -> dict:
     ...  0.0 <= m["agree_euclidean"] <= 1.0)
     (['euclidean', 'mixed', 'whitened'], 2, True)
     """
+    return _metric_choices(_strategy1_run_iv(name))
+
+
+def _strategy1_run_iv(name) -> str:
+    """A published run of strategy (1): ``"best-pair"`` or ``"adversarial"``."""
     if as_str(name, "name") not in ("best-pair", "adversarial"):
         raise ValueError(
             f"name must be 'best-pair' or 'adversarial' (runs of strategy (1)), got {name!r}"
         )
+    return name
+
+
+def _logged_covariances(name: str, run) -> np.ndarray:
+    """The covariance at every logged step of a published run (the adversarial log keeps none:
+    it is replayed, exactly, see :mod:`obslib.studies.replay`)."""
+    if run.cov is not None:
+        return run.cov
+    from .replay import replay
+
+    return replay(name).cov
+
+
+@lru_cache(maxsize=2)
+def _metric_choices(name: str) -> dict:
     run = published_run(name)
     setup = tr.PAPER_ADVERSARIAL if name == "adversarial" else tr.PAPER_CIRCLE
     S, u_max = setup.sensor_array, setup.u_max
     est = run.estimate
-    if run.cov is not None:
-        cov = run.cov
-    else:  # the adversarial log keeps no covariance: replay it (exact, see studies.replay)
-        from .replay import replay
-
-        cov = replay(name).cov
+    cov = _logged_covariances(name, run)
     # every step at once: pair_bounds evaluates each target on its own, so the bounds are those
     # of one call per step (0.03 s against 0.27 s per run for 3 x 315 calls)
     out = {"mixed": _best_per_target(pair_bounds(S, est, u_max, cov=cov)),
@@ -126,6 +142,67 @@ def metric_choices(name: str = "best-pair") -> dict:
         "agree_whitened": same("mixed", "whitened"),
         "agree_euclidean": same("mixed", "euclidean"),
         "logged_match": float((out["mixed"] == run.pairs).all(axis=1).mean()),
+    }
+
+
+def unit_dependence(name: str = "best-pair", factor: float = 10.0) -> dict:
+    """The experiments' bound with every length multiplied by ``factor``: does the unit of length
+    change it?
+
+    Mahalanobis distances have no unit, but ``u_max`` (a length per step) does, so the term
+    ``u_max^2 / d_io^2`` of Theorem 4 that the experiments evaluate with Mahalanobis ``d_io``
+    changes with the unit of length. At every logged estimate of a published run of strategy
+    (1) the bound of every pair is evaluated as the experiments do
+    (:func:`obslib.pair_bounds` with the logged covariance), once as logged and once with the
+    sensors, the estimate and ``u_max`` multiplied by ``factor`` and the covariance by
+    ``factor**2`` (the same scene in another unit); Euclidean distances, for comparison, give
+    the same bound in every unit.
+
+    Returns
+    -------
+    dict
+        ``factor``; ``first_bound`` and ``first_bound_scaled``, the best pair's bound at step 1
+        in both units, and ``first_pair``, ``first_pair_scaled`` (0-based); ``changed``, the share
+        of logged steps whose best pair differs between the units; ``logged_match``, the share
+        where the best pair in the logged unit is the logged pair; ``euclidean_gap``, the largest
+        change of a Euclidean bound between the units.
+
+    Examples
+    --------
+    >>> from obslib.studies.experiment_details import unit_dependence
+    >>> u = unit_dependence("best-pair", 10.0)
+    >>> round(u["first_bound"], 3), round(u["first_bound_scaled"], 3)
+    (0.874, 0.177)
+    >>> u["first_pair"], u["first_pair_scaled"]
+    ((3, 5), (3, 5))
+    >>> u["euclidean_gap"] < 1e-12, unit_dependence("best-pair", 1.0)["changed"]
+    (True, 0.0)
+    """
+    name = _strategy1_run_iv(name)
+    factor = as_positive(factor, "factor")
+    return _unit_dependence(name, factor)
+
+
+@lru_cache(maxsize=4)
+def _unit_dependence(name: str, factor: float) -> dict:
+    run = published_run(name)
+    setup = tr.PAPER_ADVERSARIAL if name == "adversarial" else tr.PAPER_CIRCLE
+    S, u_max, est = setup.sensor_array, setup.u_max, run.estimate
+    cov = _logged_covariances(name, run)
+    W = pair_bounds(S, est, u_max, cov=cov)
+    Wf = pair_bounds(factor * S, factor * est, factor * u_max, cov=factor**2 * cov)
+    best, best_f = _best_per_target(W), _best_per_target(Wf)
+    eu = pair_bounds(S, est, u_max)
+    eu_f = pair_bounds(factor * S, factor * est, factor * u_max)
+    return {
+        "factor": factor,
+        "first_bound": float(W[..., 0].max()),
+        "first_bound_scaled": float(Wf[..., 0].max()),
+        "first_pair": tuple(int(i) for i in best[0]),
+        "first_pair_scaled": tuple(int(i) for i in best_f[0]),
+        "changed": float((best != best_f).any(axis=1).mean()),
+        "logged_match": float((best == run.pairs).all(axis=1).mean()),
+        "euclidean_gap": float(np.abs(eu - eu_f).max()),
     }
 
 
@@ -152,7 +229,7 @@ def control_set_gap(n_radii: int = 20, n_angles: int = 360) -> dict:
     dict
         ``paper`` and ``disc`` (``(steps,)`` minima), ``gap`` (paper - disc, ``>= 0`` up to the
         grid), ``logged_match`` (largest difference between the paper set's minimum and the
-        logged objective).
+        logged objective). Computed once per grid (cached).
 
     Examples
     --------
@@ -163,9 +240,11 @@ def control_set_gap(n_radii: int = 20, n_angles: int = 360) -> dict:
     ...  bool(np.allclose(g["gap"], g["paper"] - g["disc"])))
     (True, True)
     """
-    for nm, v in (("n_radii", n_radii), ("n_angles", n_angles)):
-        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
-            raise ValueError(f"{nm} must be a positive integer, got {v!r}")
+    return _control_set_gap(as_int(n_radii, "n_radii", 1), as_int(n_angles, "n_angles", 1))
+
+
+@lru_cache(maxsize=4)
+def _control_set_gap(n_radii: int, n_angles: int) -> dict:
     run = published_run("adversarial")
     setup = tr.PAPER_ADVERSARIAL
     ps = setup.sensor_array[run.pairs]  # (steps, 2, 2)

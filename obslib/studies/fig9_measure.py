@@ -17,15 +17,28 @@ resolves NaN gains by a stated rule:
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 
-from .._validate import as_int, as_ints, as_positive, as_str
+from .._validate import as_int, as_ints, as_positive, as_real, as_str
 from ..bounds import relative_vectors
 from . import teams as ts
 
-__all__ = ["NAN_RULES", "literal_logdet_counts", "literal_fig9_sweep", "control_row_fig9_sweep"]
+__all__ = ["NAN_RULES", "FIG9_U_MAX", "CONTROL_DIRECTIONS", "literal_logdet_counts",
+           "literal_fig9_sweep", "control_row_fig9_sweep", "fig9_measure_sweeps"]
 
 NAN_RULES = ("ignore", "first")
+
+#: The norm of the control row ``u_o`` of the text's measure in the sweeps of Fig. 9: the paper
+#: never states the control (nor ``u_max``) of Fig. 9; 1 is the ``u_max`` of its other
+#: assignment experiment, Fig. 8.
+FIG9_U_MAX = 1.0
+
+#: The directions of the control row tried (radians, the same for every target); ``None`` draws
+#: a direction per target (:func:`control_row_fig9_sweep`). ``u_o u_o^T`` is the same for
+#: ``u_o`` and ``-u_o``, so these cover the half-turn.
+CONTROL_DIRECTIONS = (None, 0.0, np.pi / 4, np.pi / 2, 3 * np.pi / 4)
 
 
 def _value(det):
@@ -153,12 +166,14 @@ def literal_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, sid
 
 
 def control_row_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5,
-                           side: float = 100.0, u_max: float = 1.0) -> np.ndarray:
+                           side: float = 100.0, u_max: float = 1.0,
+                           direction: float | None = None) -> np.ndarray:
     """Counts ``(len(N_values), trials, L)`` of the Fig. 9 sweep with the measure the text of
     Sec. V-D names, ``log det O(o, u_o)^T O(o, u_o)``: the team's rows and a control row ``u_o``.
 
-    Each target gets a control of norm ``u_max`` in a direction drawn uniformly from
-    ``default_rng([seed, N, trial, 1])`` (the geometries are those of
+    Each target gets a control of norm ``u_max``: in the direction ``direction`` (an angle in
+    radians, the same for every target) when it is given, else in a direction drawn uniformly
+    from ``default_rng([seed, N, trial, 1])`` for each target (the geometries are those of
     :func:`obslib.studies.teams.fig9_sweep`). With the control row a team of one sensor is
     non-singular unless its row is parallel to ``u_o``, so the first gains are
     ``log((u x r)^2) - (-inf) = +inf``; ties are resolved as in :func:`literal_logdet_counts`
@@ -173,11 +188,18 @@ def control_row_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5,
     >>> counts = control_row_fig9_sweep([10], trials=3, seed=0)
     >>> counts.shape, bool((counts >= 1).all()), counts.sum(axis=2).tolist()
     ((1, 3, 5), True, [[10, 10, 10]])
+
+    Every target's control along the x axis:
+
+    >>> control_row_fig9_sweep([10], trials=3, seed=0, direction=0.0).shape
+    (1, 3, 5)
     """
     N_values = as_ints(N_values, "N_values", 0)
     trials, n_targets = as_int(trials, "trials", 1), as_int(n_targets, "n_targets", 1)
     seed, side = as_int(seed, "seed", 0), as_positive(side, "side")
     u_max = as_positive(u_max, "u_max")
+    if direction is not None:
+        direction = as_real(direction, "direction")
     n_max = max(N_values, default=0)
     v = np.zeros((len(N_values), trials, n_max, n_targets, 2))
     u = np.zeros((len(N_values), trials, n_targets, 2))
@@ -185,9 +207,58 @@ def control_row_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5,
         for t in range(trials):
             S, T = ts.fig9_geometry(n, t, seed, n_targets, side)
             v[a, t, :n] = relative_vectors(S, T)
-            phi = np.random.default_rng([seed, n, t, 1]).uniform(0, 2 * np.pi, n_targets)
+            if direction is None:
+                phi = np.random.default_rng([seed, n, t, 1]).uniform(0, 2 * np.pi, n_targets)
+            else:
+                phi = np.full(n_targets, direction)
             u[a, t] = u_max * np.column_stack([np.cos(phi), np.sin(phi)])
     n_sensors = np.repeat(np.array(N_values, dtype=int), trials)
     out = _counts(v.reshape(-1, n_max, n_targets, 2), n_sensors,
                   np.zeros(n_sensors.size, dtype=bool), u.reshape(-1, n_targets, 2))
     return out.reshape(len(N_values), trials, n_targets)
+
+
+def fig9_measure_sweeps(N_min: int, N_max: int, trials: int, seed: int, n_targets: int = 5,
+                        eps: float = 1.0, side: float = 100.0,
+                        u_max: float = FIG9_U_MAX) -> dict:
+    """Fig. 9's sweep (``N = N_min..N_max``) with every measure the book compares, on the same
+    instances, computed once (cached on the arguments) for the chapters and the ledger.
+
+    Returns
+    -------
+    dict
+        Counts ``(len(N), trials, L)`` per measure: ``"prior"``, the book's
+        ``log det(O^T O + eps I)`` (:func:`obslib.studies.teams.fig9_sweep`); ``"code"``, the
+        authors' ``log det(O^T O)`` with undefined gains skipped (``nan="ignore"``, what their
+        code's arithmetic does) and ``"code-first"`` with the first undefined gain taken; and
+        ``"text"``: direction -> the text's measure with a control row of norm ``u_max`` in that
+        direction, for each of :data:`CONTROL_DIRECTIONS`.
+
+    Examples
+    --------
+    >>> from obslib.studies.fig9_measure import fig9_measure_sweeps
+    >>> s = fig9_measure_sweeps(8, 9, trials=2, seed=0)
+    >>> sorted(k for k in s if k != "text"), s["prior"].shape, len(s["text"])
+    (['code', 'code-first', 'prior'], (2, 2, 5), 5)
+    >>> fig9_measure_sweeps(8, 9, trials=2, seed=0) is s  # computed once
+    True
+    """
+    N_min, N_max = as_int(N_min, "N_min", 1), as_int(N_max, "N_max", 1)
+    if N_max < N_min:
+        raise ValueError(f"N_max must be at least N_min, got {N_min} and {N_max}")
+    return _fig9_measure_sweeps(N_min, N_max, as_int(trials, "trials", 1),
+                                as_int(seed, "seed", 0), as_int(n_targets, "n_targets", 1),
+                                as_positive(eps, "eps"), as_positive(side, "side"),
+                                as_positive(u_max, "u_max"))
+
+
+@lru_cache(maxsize=4)
+def _fig9_measure_sweeps(N_min, N_max, trials, seed, n_targets, eps, side, u_max) -> dict:
+    Ns = list(range(N_min, N_max + 1))
+    return {
+        "prior": ts.fig9_sweep(Ns, trials, seed, n_targets, "logdet", eps, side),
+        "code": literal_fig9_sweep(Ns, trials, seed, n_targets, side, nan="ignore"),
+        "code-first": literal_fig9_sweep(Ns, trials, seed, n_targets, side, nan="first"),
+        "text": {d: control_row_fig9_sweep(Ns, trials, seed, n_targets, side, u_max, d)
+                 for d in CONTROL_DIRECTIONS},
+    }

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import itertools
 import time
+from functools import lru_cache
 
 import numpy as np
 
@@ -128,7 +129,8 @@ def reduction_check(n_instances: int, seed: int = 0, q_values=(2, 3, 4)) -> dict
     Returns
     -------
     dict
-        ``n``, ``agree`` (instances where both sides agree), ``with_matching``.
+        ``n``, ``agree`` (instances where both sides agree), ``with_matching``. Computed once
+        per arguments (cached).
 
     Examples
     --------
@@ -140,6 +142,12 @@ def reduction_check(n_instances: int, seed: int = 0, q_values=(2, 3, 4)) -> dict
     if (isinstance(n_instances, bool) or not isinstance(n_instances, (int, np.integer))
             or n_instances < 1):
         raise ValueError(f"n_instances must be a positive integer, got {n_instances!r}")
+    q_values = tuple(as_ints(q_values, "q_values", 1))
+    return _reduction_check(int(n_instances), as_int(seed, "seed", 0), q_values)
+
+
+@lru_cache(maxsize=4)
+def _reduction_check(n_instances: int, seed: int, q_values: tuple) -> dict:
     rng = np.random.default_rng(seed)
     agree = with_m = 0
     for _ in range(int(n_instances)):
@@ -215,7 +223,8 @@ def exact_optimum_study(L_values, n_spread: int, time_budget: float, seed: int =
     dict
         ``reach`` (the rows of :func:`exact_solver_reach`), ``largest_solved`` (``L``, or
         ``None`` when no size was solved within ``time_budget``) and ``spread`` (the ratios,
-        empty when no size was solved).
+        empty when no size was solved). Computed once per arguments (cached), so that the
+        chapter and the ledger report the same solver run.
 
     Examples
     --------
@@ -225,7 +234,14 @@ def exact_optimum_study(L_values, n_spread: int, time_budget: float, seed: int =
     (3, (2,))
     """
     n_spread = as_int(n_spread, "n_spread", 1)
-    reach = exact_solver_reach(L_values, time_budget, seed, u_max)
+    L_values = tuple(as_ints(L_values, "L_values", 1))
+    return _exact_optimum_study(L_values, n_spread, _budget(time_budget), as_int(seed, "seed", 0),
+                                as_nonnegative(u_max, "u_max"))
+
+
+@lru_cache(maxsize=4)
+def _exact_optimum_study(L_values, n_spread, time_budget, seed, u_max) -> dict:
+    reach = exact_solver_reach(list(L_values), time_budget, seed, u_max)
     top = max((r["L"] for r in reach if r["solved"]), default=None)
     spread = (exact_ratio_spread(top, n_spread, time_budget, seed, u_max) if top is not None
               else np.array([]))

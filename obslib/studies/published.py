@@ -1,4 +1,15 @@
-"""The numbers the paper publishes, in one place, for the studies and the ledger to compare with."""
+"""The numbers the paper publishes, in one place, for the studies and the ledger to compare with,
+and the history of the repository that holds the code of its simulations."""
+
+from __future__ import annotations
+
+import csv
+from functools import lru_cache
+from importlib import resources
+
+__all__ = ["THEOREM7_PRINTED", "THEOREM7_PRINTED_WITNESS", "FIG8_PUBLISHED_L20",
+           "PUBLISHED_CIRCLE", "PUBLISHED_ADVERSARIAL", "CODE_URL_PRINTED", "CODE_REPOSITORY",
+           "CODE_ACCOUNT_PRINTED", "code_commits"]
 
 #: Values printed in the proof of Theorem 7 (0-based sensor indices).
 THEOREM7_PRINTED = {
@@ -32,3 +43,33 @@ PUBLISHED_ADVERSARIAL = {"mean_bound": 0.79, "switches": 306, "transitions": 314
 #: repository where that code and the saved runs of Figs. 4-7 are found today.
 CODE_URL_PRINTED = "https://github.com/lovetuliper/observability-based-sensor-assignment.git"
 CODE_REPOSITORY = "lfzhou917/observability-based-sensor-assignment"
+
+#: The GitHub account the printed address names.
+CODE_ACCOUNT_PRINTED = CODE_URL_PRINTED.split("github.com/", 1)[1].split("/", 1)[0]
+
+
+def code_commits() -> tuple:
+    """The commits of :data:`CODE_REPOSITORY`, newest first, as stored with the package
+    (``obslib/data/code_repository/commits.csv``, whose header says how they were read): one
+    ``(commit, author_date, author)`` per commit, the date in ISO 8601.
+
+    Examples
+    --------
+    >>> from obslib.studies.published import code_commits
+    >>> commits = code_commits()
+    >>> len(commits), commits[-1][1][:10], commits[0][1][:10]
+    (10, '2017-09-06', '2018-01-30')
+    >>> sorted({author for _, _, author in commits})
+    ['lovetuliper']
+    """
+    return _code_commits()
+
+
+@lru_cache(maxsize=1)
+def _code_commits() -> tuple:
+    path = resources.files("obslib").joinpath("data", "code_repository", "commits.csv")
+    lines = [ln for ln in path.read_text().splitlines() if ln and not ln.startswith("#")]
+    rows = list(csv.reader(lines))
+    if rows[0] != ["commit", "author_date", "author"] or any(len(r) != 3 for r in rows[1:]):
+        raise ValueError(f"{path}: not a commit list (commit, author_date, author)")
+    return tuple(tuple(r) for r in rows[1:])

@@ -11,6 +11,7 @@ the spread of the counts within a trial and compared with a uniformly random ass
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -215,6 +216,8 @@ def greedy_vs_optimal_teams(
     target (:func:`obslib.measures.measure_from_vectors`), the greedy's teams looked up in it and
     the optimum found over all ``L^N`` assignments, as :func:`obslib.optimal_team_assignment` does.
 
+    The ratios are computed once per arguments (cached) and returned as a fresh array.
+
     Examples
     --------
     >>> ratios = greedy_vs_optimal_teams(5, seed=0)
@@ -226,6 +229,14 @@ def greedy_vs_optimal_teams(
     n_instances, seed = as_int(n_instances, "n_instances", 1), as_int(seed, "seed", 0)
     sensors, targets = as_int_range(sensors, "sensors", 1), as_int_range(targets, "targets", 1)
     side = as_positive(side, "side")
+    return _greedy_vs_optimal_teams(n_instances, seed, tuple(sensors), tuple(targets), measure, e,
+                                    side).copy()
+
+
+@lru_cache(maxsize=4)
+def _greedy_vs_optimal_teams(n_instances, seed, sensors, targets, measure, e, side) -> np.ndarray:
+    """:func:`greedy_vs_optimal_teams` on validated arguments, computed once per arguments (the
+    chapter and the ledger share it; the public function returns a copy)."""
     rng = np.random.default_rng(seed)
     draws = []
     for _ in range(n_instances):

@@ -8,6 +8,8 @@ cannot drift apart.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 
 from .. import tracking as tr
@@ -21,12 +23,20 @@ from .._validate import (
     as_real,
 )
 from ..controls import disc_controls
+from ..published_runs import published_run
 from ..tracking import BatchResult, TrackingResult, TrackingSetup
+from .published import PUBLISHED_CIRCLE
 
 __all__ = [
     "K50_WINDOW",
     "FIGURE_TOLERANCE",
     "near_published",
+    "circle_runs",
+    "circle_speed",
+    "figure_numbers",
+    "fixed_pair_typicality",
+    "adversary_runs",
+    "strong_adversary_runs",
     "partner_arms",
     "partner_summary",
     "partner_study",
@@ -63,6 +73,181 @@ def near_published(ours, published, rtol: float = FIGURE_TOLERANCE):
     if published == 0:
         return ours == 0
     return np.abs(ours - published) <= rtol * abs(published)
+
+
+# --------------------------------------------------------------------------------------------
+# The runs of the two tracking chapters, computed once for the chapter and the ledger
+# --------------------------------------------------------------------------------------------
+
+
+def _runs_iv(setup, n_seeds, first_seed) -> tuple:
+    as_instance(setup, TrackingSetup, "setup")
+    return setup, as_int(n_seeds, "n_seeds", 1), as_int(first_seed, "first_seed", 0)
+
+
+def circle_runs(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> dict:
+    """Every Monte Carlo run of the circle experiment (Section V-A) in one batched pass.
+
+    The three strategies with ``setup``'s distance metric, the same with the other metric, and
+    strategy (3) with each partner of the anchor (:func:`partner_arms`), over the noise seeds
+    ``first_seed, ..., first_seed + n_seeds - 1`` (common to every arm). The result is cached on
+    the arguments, so a chapter and the claims ledger that ask for the same runs share one
+    computation.
+
+    Returns
+    -------
+    dict
+        ``mc`` (strategy -> :class:`~obslib.tracking.BatchResult`), ``other`` (the same with
+        the other metric), ``other_metric`` (its name) and ``partners`` (partner ``j``,
+        0-based -> the batch of strategy (3) with the pair ``(anchor, j)``).
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> from obslib.studies.tracking import circle_runs
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> runs = circle_runs(setup, n_seeds=2)
+    >>> list(runs["mc"]), runs["other_metric"], sorted(runs["partners"])
+    (['best-pair', 'best-partner', 'fixed-pair'], 'euclidean', [0, 2, 3, 4, 5])
+    >>> one = tracking.simulate_batch(setup, "fixed-pair", seeds=[0, 1])
+    >>> bool((runs["mc"]["fixed-pair"].error == one.error).all())
+    True
+    >>> circle_runs(setup, 2) is runs  # computed once
+    True
+    """
+    return _circle_runs(*_runs_iv(setup, n_seeds, first_seed))
+
+
+@lru_cache(maxsize=8)
+def _circle_runs(setup, n_seeds, first_seed) -> dict:
+    other = "euclidean" if setup.metric == "mahalanobis" else "mahalanobis"
+    setup_o = setup.replace(metric=other)
+    arms = {s: (setup, s) for s in tr.STRATEGIES}
+    arms.update({(other, s): (setup_o, s) for s in tr.STRATEGIES})
+    arms.update({("partner", j): arm for j, arm in partner_arms(setup).items()})
+    batch = tr.simulate_many(arms, seeds=range(first_seed, first_seed + n_seeds))
+    return {"mc": {s: batch[s] for s in tr.STRATEGIES},
+            "other": {s: batch[(other, s)] for s in tr.STRATEGIES},
+            "other_metric": other,
+            "partners": {j: batch[("partner", j)] for j in partner_arms(setup)}}
+
+
+def circle_speed(setup: TrackingSetup) -> float:
+    """The distance the target of the circle experiment travels in one step: the chord
+    :math:`2 r \\sin(\\omega / 2)` of a circle of radius :math:`r` at :math:`\\omega` rad per
+    step.
+
+    Examples
+    --------
+    >>> from obslib.tracking import PAPER_CIRCLE
+    >>> round(circle_speed(PAPER_CIRCLE), 6)  # radius 3, 0.02 rad per step
+    0.059999
+    """
+    as_instance(setup, TrackingSetup, "setup")
+    return float(2 * setup.radius * np.sin(setup.rate / 2))
+
+
+def figure_numbers(batch: BatchResult) -> dict:
+    """Per run, the four numbers the figure data print for a run: the pair changes and the means
+    of the bound, the error and :math:`\\operatorname{tr}\\Sigma` over all the run's steps,
+    step 1 (the prior) included, as the published figure data average them.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> from obslib.studies.tracking import figure_numbers
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> b = tracking.simulate_batch(setup, "best-pair", seeds=[0, 1])
+    >>> f = figure_numbers(b)
+    >>> sorted(f), bool(f["mean_error"][1] == b.run(1).summary()["mean_error"])
+    (['mean_bound', 'mean_error', 'mean_trace', 'switches'], True)
+    """
+    as_instance(batch, BatchResult, "batch")
+    return {"switches": batch.switches, "mean_bound": batch.bound.mean(axis=1),
+            "mean_error": batch.error.mean(axis=1), "mean_trace": batch.trace_cov.mean(axis=1)}
+
+
+def fixed_pair_typicality(batch: BatchResult, rtol: float = FIGURE_TOLERANCE) -> dict:
+    """How the published strategy-(3) run of Figs. 5-6, which cannot be replayed, sits among
+    runs of the model: ``batch`` holds strategy (3)'s runs over noise seeds.
+
+    Returns
+    -------
+    dict
+        ``share_like`` (the share of runs whose four :func:`figure_numbers` are all within
+        ``rtol`` of the printed ones), ``median`` (per number, the median over the runs) and
+        ``percentile`` (per mean, the percentage of runs below the published run's own value,
+        computed from its saved data).
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> from obslib.studies.tracking import fixed_pair_typicality
+    >>> setup = tracking.PAPER_CIRCLE
+    >>> b = tracking.simulate_batch(setup, "fixed-pair", seeds=range(4))
+    >>> t = fixed_pair_typicality(b)
+    >>> sorted(t["percentile"]), 0 <= t["share_like"] <= 1
+    (['mean_bound', 'mean_error', 'mean_trace'], True)
+    """
+    as_instance(batch, BatchResult, "batch")
+    rtol = as_nonnegative(rtol, "rtol")
+    runs = figure_numbers(batch)
+    printed = PUBLISHED_CIRCLE["fixed-pair"]
+    like = np.all([near_published(runs[k], v, rtol) for k, v in printed.items()], axis=0)
+    log = published_run("fixed-pair")
+    logged = {"mean_bound": log.bound.mean(), "mean_error": log.error.mean(),
+              "mean_trace": log.trace_cov.mean()}
+    return {"share_like": float(like.mean()),
+            "median": {k: float(np.median(v)) for k, v in runs.items()},
+            "percentile": {k: float(100 * np.mean(runs[k] < v)) for k, v in logged.items()}}
+
+
+def adversary_runs(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> dict:
+    """The three strategies against the adversarial target (Section V-B) over the noise seeds
+    ``first_seed, ...`` in one batched pass: strategy -> :class:`~obslib.tracking.BatchResult`
+    (cached on the arguments, shared by the chapter and the ledger).
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> from obslib.studies.tracking import adversary_runs
+    >>> runs = adversary_runs(tracking.PAPER_ADVERSARIAL.replace(steps=10), 2)
+    >>> list(runs), runs["best-pair"].n_runs
+    (['best-pair', 'best-partner', 'fixed-pair'], 2)
+    """
+    return _adversary_runs(*_runs_iv(setup, n_seeds, first_seed))
+
+
+@lru_cache(maxsize=8)
+def _adversary_runs(setup, n_seeds, first_seed) -> dict:
+    return tr.simulate_many({s: (setup, s) for s in tr.STRATEGIES},
+                            seeds=range(first_seed, first_seed + n_seeds))
+
+
+def strong_adversary_runs(setup: TrackingSetup, n_seeds: int, first_seed: int, n_radii: int,
+                          n_angles: int) -> dict:
+    """The best pair against each adversary of :func:`adversary_variants` (the paper's, and the
+    stronger ones), over ``n_seeds`` noise seeds in one batched pass: variant ->
+    :class:`~obslib.tracking.BatchResult` (cached on the arguments).
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> from obslib.studies.tracking import strong_adversary_runs
+    >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=10)
+    >>> list(strong_adversary_runs(setup, 2, 0, n_radii=2, n_angles=8))
+    ['paper', 'next-pair', 'disc', 'disc, next-pair']
+    """
+    setup, n_seeds, first_seed = _runs_iv(setup, n_seeds, first_seed)
+    return _strong_adversary_runs(setup, n_seeds, first_seed, as_int(n_radii, "n_radii", 1),
+                                  as_int(n_angles, "n_angles", 1))
+
+
+@lru_cache(maxsize=4)
+def _strong_adversary_runs(setup, n_seeds, first_seed, n_radii, n_angles) -> dict:
+    arms = {name: (v, "best-pair")
+            for name, v in adversary_variants(setup, n_radii, n_angles).items()}
+    return tr.simulate_many(arms, seeds=range(first_seed, first_seed + n_seeds))
 
 
 # --------------------------------------------------------------------------------------------

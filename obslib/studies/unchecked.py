@@ -12,10 +12,14 @@ teams:
   control, one sensor's :math:`C^{-1}(O(o, u_o))` is not 0;
 - :func:`team_constraint`: the introduction says that there is no restriction on the number of
   targets assigned to a sensor, while Problem 2 allows at most one. Without that constraint a
-  monotone measure would put every sensor on every target.
+  monotone measure would put every sensor on every target;
+- :func:`problem3_relaxations`: Fig. 8's relaxation with unordered pairs (Problem 3 as printed)
+  and with ordered pairs (the authors' code), on Fig. 8's instances.
 """
 
 from __future__ import annotations
+
+from functools import lru_cache
 
 import numpy as np
 
@@ -23,10 +27,11 @@ from .._validate import as_eps, as_float_array, as_int, as_ints, as_nonnegative,
 from ..bounds import relative_vectors
 from ..observability import inverse_condition_number
 from ..teams import greedy_team_assignment
+from .greedy_vs_relaxed import fig8_sweep
 from .teams import fig9_geometry
 
 __all__ = ["NOTEBOOK", "one_sensor_best", "one_sensor_conditioning",
-           "team_constraint"]
+           "team_constraint", "problem3_relaxations"]
 
 NOTEBOOK = "11_unchecked_statements"
 
@@ -69,7 +74,7 @@ def one_sensor_conditioning(n_scenes: int, seed: int = 0, u_max: float = 1.0,
     dict
         ``exact`` (per scene, with the drawn control), ``best`` (per scene, the largest value over
         the disc, :func:`one_sensor_best`), ``share_above_half`` (scenes whose exact value exceeds
-        1/2).
+        1/2). Computed once per arguments (cached).
 
     Examples
     --------
@@ -80,6 +85,12 @@ def one_sensor_conditioning(n_scenes: int, seed: int = 0, u_max: float = 1.0,
     """
     if isinstance(n_scenes, bool) or not isinstance(n_scenes, (int, np.integer)) or n_scenes < 1:
         raise ValueError(f"n_scenes must be a positive integer, got {n_scenes!r}")
+    return _one_sensor_conditioning(int(n_scenes), as_int(seed, "seed", 0),
+                                    as_nonnegative(u_max, "u_max"), as_positive(side, "side"))
+
+
+@lru_cache(maxsize=4)
+def _one_sensor_conditioning(n_scenes: int, seed: int, u_max: float, side: float) -> dict:
     rng = np.random.default_rng([int(seed), 11])
     exact = np.empty(int(n_scenes))
     dist = np.empty(int(n_scenes))
@@ -112,7 +123,8 @@ def team_constraint(N_values, trials: int, seed: int = 0, n_targets: int = 5, ep
     dict
         Per ``N`` (lists in the order of ``N_values``): ``targets_per_sensor`` (the largest
         number of targets any sensor serves), ``team_min`` and ``team_max`` (team sizes),
-        ``constrained`` and ``unconstrained`` (mean totals over the trials).
+        ``constrained`` and ``unconstrained`` (mean totals over the trials). Computed once per
+        arguments (cached).
 
     Examples
     --------
@@ -121,12 +133,17 @@ def team_constraint(N_values, trials: int, seed: int = 0, n_targets: int = 5, ep
     >>> r["targets_per_sensor"], r["constrained"][0] < r["unconstrained"][0]
     ([1], True)
     """
-    out = {k: [] for k in ("targets_per_sensor", "team_min", "team_max", "constrained",
-                           "unconstrained")}
     N_values = as_ints(N_values, "N_values", 0)
     trials, seed = as_int(trials, "trials", 1), as_int(seed, "seed", 0)
     n_targets, eps = as_int(n_targets, "n_targets", 1), as_eps(eps)
     side = as_positive(side, "side")
+    return _team_constraint(tuple(N_values), trials, seed, n_targets, eps, side)
+
+
+@lru_cache(maxsize=4)
+def _team_constraint(N_values, trials, seed, n_targets, eps, side) -> dict:
+    out = {k: [] for k in ("targets_per_sensor", "team_min", "team_max", "constrained",
+                           "unconstrained")}
     for n in N_values:
         per_sensor, lo, hi, con, unc = 0, n, 0, [], []
         for t in range(int(trials)):
@@ -145,3 +162,33 @@ def team_constraint(N_values, trials: int, seed: int = 0, n_targets: int = 5, ep
         out["constrained"].append(float(np.mean(con)))
         out["unconstrained"].append(float(np.mean(unc)))
     return out
+
+
+def problem3_relaxations(L_values, trials: int, seed: int = 0, u_max: float = 1.0) -> dict:
+    """The relaxed optimum of Fig. 8 with unordered pairs (Problem 3 as printed) and with ordered
+    pairs (the authors' code), on Fig. 8's instances (:func:`obslib.studies.greedy_vs_relaxed.
+    fig8_sweep`), computed once per arguments (cached) for the chapter and the ledger.
+
+    Returns
+    -------
+    dict
+        ``L`` and, shape ``(len(L_values), trials)``, ``relaxed`` (unordered), ``relaxed_ordered``
+        and ``excess`` (ordered over unordered, minus 1).
+
+    Examples
+    --------
+    >>> from obslib.studies.unchecked import problem3_relaxations
+    >>> r = problem3_relaxations([1, 2], trials=3)
+    >>> r["L"].tolist(), bool((r["excess"] >= -1e-12).all())
+    ([1, 2], True)
+    """
+    L_values = as_ints(L_values, "L_values", 1)
+    return _problem3_relaxations(tuple(L_values), as_int(trials, "trials", 1),
+                                 as_int(seed, "seed", 0), as_nonnegative(u_max, "u_max"))
+
+
+@lru_cache(maxsize=4)
+def _problem3_relaxations(L_values, trials, seed, u_max) -> dict:
+    s = fig8_sweep(list(L_values), trials, seed, u_max)
+    return {"L": s["L"], "relaxed": s["relaxed"], "relaxed_ordered": s["relaxed_ordered"],
+            "excess": s["relaxed_ordered"] / s["relaxed"] - 1}
