@@ -190,9 +190,16 @@ def _assignment(p: dict) -> Finding:
         return "; ".join(_against(name, L, by[(L, rule)],
                                   by[(L, "bound")]["lost"] > by[(L, rule)]["lost"]) for L in Ls)
 
-    summary = (f"Against random assignment, {part('random', 'random assignment')}; against the "
-               "greedy information-gain (D-optimal) assignment, "
-               f"{part('d-optimal', 'the D-optimal assignment')}.")
+    top = Ls[-1]
+    summary = ("Against random assignment "
+               + _against("random assignment", top, by[(top, "random")],
+                          by[(top, "bound")]["lost"] > by[(top, "random")]["lost"])
+               + "; against the greedy information-gain (D-optimal) assignment "
+               + _against("the D-optimal assignment", top, by[(top, "d-optimal")],
+                          by[(top, "bound")]["lost"] > by[(top, "d-optimal")]["lost"]) + ".")
+    ours = (f"Against random assignment, {part('random', 'random assignment')}; against the "
+            "greedy information-gain (D-optimal) assignment, "
+            f"{part('d-optimal', 'the D-optimal assignment')}.")
     table = []
     for L in Ls:
         for rule in ("bound", "d-optimal", "random"):
@@ -205,7 +212,7 @@ def _assignment(p: dict) -> Finding:
                 + f" ({_p(r)})")
             table.append((L, CRITERION_NAMES[rule], number(r["median_error"]),
                           number(r["mean_error"]), count(r["lost"]), test))
-    return Finding(status, summary=summary,
+    return Finding(status, summary=summary, ours=ours,
                    evidence={"alpha": ALPHA,
                              "verdicts": {f"L={L}, {rule}": v for (L, rule), v in sig.items()},
                              "runs_and_mean": {f"L={L}, {rule}": runs_and_mean(by[(L, rule)])

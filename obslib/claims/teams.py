@@ -132,8 +132,10 @@ def _fig9(p: dict) -> Finding:
                    "sensors more evenly than chance in every control direction tried (spread at "
                    f"most {number(worst)} of a random assignment's), "
                    + ("as with a prior" if prior_even else "unlike with a prior")
-                   + ", but the code's measure without the control row, which made the published "
-                   f"figure, puts {piles} on target 1.")
+                   + "; with the code's measure without the control row, which made the published "
+                   "figure, it does not: taken exactly, that measure is undefined for the first "
+                   f"sensors and puts {piles} on target 1, and the published figure shows the "
+                   "spread of chance.")
     elif status == "partly":
         summary = ("The greedy spreads the sensors more evenly than chance only "
                    + ("with a prior" if prior_even else "with the code's measure")
