@@ -144,6 +144,18 @@ def _theta_q_iv(theta, u_over_d):
     return broadcast({"theta": th, "u_over_d": q})
 
 
+def _alpha_theta_q_iv(alpha, theta, u_over_d) -> list:
+    """Finite ``alpha >= 0``, ``theta`` and ``u_over_d >= 0``, broadcast together."""
+    a = as_float_array(alpha, "alpha")
+    th = as_float_array(theta, "theta")
+    q = as_float_array(u_over_d, "u_over_d")
+    if not (np.isfinite(a).all() and np.isfinite(th).all() and np.isfinite(q).all()):
+        raise ValueError("alpha, theta and u_over_d must be finite")
+    if (a < 0).any() or (q < 0).any():
+        raise ValueError("alpha and u_over_d must be non-negative")
+    return broadcast({"alpha": a, "theta": th, "u_over_d": q})
+
+
 def stationarity_alpha(alpha, theta, u_over_d):
     r"""Eq. (34), the numerator of :math:`\partial \underline{C}^{-1} / \partial \alpha`, evaluated
     without cancellation.
@@ -170,15 +182,7 @@ def stationarity_alpha(alpha, theta, u_over_d):
     0.414214
     -2.876894
     """
-    a = as_float_array(alpha, "alpha")
-    th = as_float_array(theta, "theta")
-    q = as_float_array(u_over_d, "u_over_d")
-    if not (np.isfinite(a).all() and np.isfinite(th).all() and np.isfinite(q).all()):
-        raise ValueError("alpha, theta and u_over_d must be finite")
-    if (a < 0).any() or (q < 0).any():
-        raise ValueError("alpha and u_over_d must be non-negative")
-    broadcast({"alpha": a, "theta": th, "u_over_d": q})
-    return _stationarity(a, th, q)
+    return _stationarity(*_alpha_theta_q_iv(alpha, theta, u_over_d))
 
 
 def _stationarity(a: np.ndarray, th: np.ndarray, q: np.ndarray) -> np.ndarray:
@@ -232,14 +236,7 @@ def dbound_dalpha(alpha, theta, u_over_d):
     >>> print(np.round(dbound_dalpha([0.0, 2.0], np.pi / 4, 1.0), 6))
     [ 0.5      -0.080343]
     """
-    a = as_float_array(alpha, "alpha")
-    th = as_float_array(theta, "theta")
-    q = as_float_array(u_over_d, "u_over_d")
-    if not (np.isfinite(a).all() and np.isfinite(th).all() and np.isfinite(q).all()):
-        raise ValueError("alpha, theta and u_over_d must be finite")
-    if (a < 0).any() or (q < 0).any():
-        raise ValueError("alpha and u_over_d must be non-negative")
-    a, th, q = broadcast({"alpha": a, "theta": th, "u_over_d": q})
+    a, th, q = _alpha_theta_q_iv(alpha, theta, u_over_d)
     c = np.cos(2 * th)
     S = np.hypot(1.0 - a * a, 2.0 * a * np.cos(th))  # sqrt(1 + a^4 + 2 a^2 cos 2 theta)
     P = 1.0 + a * a + S

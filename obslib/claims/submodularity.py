@@ -311,14 +311,20 @@ def _selected(rows, name):
 
 
 def _config(text: str, p: dict) -> str:
-    """A configuration of the Theorem 8 audit in words."""
+    """A configuration of the Theorem 8 audit, or a matrix of
+    :data:`obslib.studies.submodularity.LOGDET_MATRICES`, in words."""
     eps, u = setting(float(p["eps"])), setting(float(p["u_max"]))
     return {
         "eps I, no u row": rf"prior $\varepsilon I$, $\varepsilon = {eps}$",
         "eps I, u row": rf"prior $\varepsilon I$, $\varepsilon = {eps}$, and a row for $u_o$ "
                         rf"of norm {u}",
         "eps = 0, no u row, |S| >= 2": r"no prior, sets of at least 2 sensors",
-        "eps = 0, u row, |S| >= 1": rf"no prior, a row for $u_o$ of norm {u}, non-empty sets",
+        "prior, no control row": rf"$O^T(o) O(o) + \varepsilon I$, $\varepsilon = {eps}$",
+        "prior and control row": rf"$\mathbb{{O}}(o, u_o) + \varepsilon I$, "
+                                 rf"$\lVert u_o\rVert = {u}$, $\varepsilon = {eps}$",
+        "control row, no prior": rf"$\mathbb{{O}}(o, u_o)$, $\lVert u_o\rVert = {u}$ "
+                                 "(Theorem 8's)",
+        "no control row, no prior": r"$\mathbb{O}(o, 0) = O^T(o) O(o)$ (the code's)",
     }.get(text, text)
 
 
@@ -449,7 +455,7 @@ def _thm8_logdet(p: dict) -> Finding:
                    "some addition of a sensor lowers it or breaks submodularity in random "
                    "instances.",
     }[status]
-    rows = [(_logdet_matrix(d.matrix, p), _infinite_for(d), d.audit.n_instances,
+    rows = [(_config(d.matrix, p), _infinite_for(d), d.audit.n_instances,
              count(d.audit.n_not_increasing), count(d.audit.n_not_submodular)) for d in domains]
     return Finding(
         status,
@@ -478,19 +484,6 @@ def _teams(d: sm.LogdetDomain) -> str:
     if d.finite_from <= 1:
         return "non-empty teams" if d.finite_from == 1 else "every team"
     return f"teams of at least {d.finite_from} sensors"
-
-
-def _logdet_matrix(name: str, p: dict) -> str:
-    """A matrix of :data:`obslib.studies.submodularity.LOGDET_MATRICES` in words."""
-    eps, u = setting(float(p["eps"])), setting(float(p["u_max"]))
-    return {
-        "prior, no control row": rf"$O^T(o) O(o) + \varepsilon I$, $\varepsilon = {eps}$",
-        "prior and control row": rf"$\mathbb{{O}}(o, u_o) + \varepsilon I$, "
-                                 rf"$\lVert u_o\rVert = {u}$, $\varepsilon = {eps}$",
-        "control row, no prior": rf"$\mathbb{{O}}(o, u_o)$, $\lVert u_o\rVert = {u}$ "
-                                 "(Theorem 8's)",
-        "no control row, no prior": r"$\mathbb{O}(o, 0) = O^T(o) O(o)$ (the code's)",
-    }[name]
 
 
 @claim(
