@@ -664,8 +664,8 @@ def _dalpha_min(p: dict) -> Finding:
         ours=(r"Read as printed, about the derivative, it fails: $\partial C/\partial\alpha$ is "
               r"largest at $\alpha = 0$, where it equals $\lvert\sin\theta_{ji}\rvert/"
               r"\sqrt{1 + q^2}$ ($q = u_{\max}/d_{io}$), falls through zero at the maximiser "
-              r"$\alpha^*$, is smallest beyond it, at between "
-              f"{number(a.beyond_alpha_star[0])} and {number(a.beyond_alpha_star[1])} times "
+              r"$\alpha^*$, is smallest beyond it, at "
+              f"{number(a.beyond_alpha_star[0])} to {number(a.beyond_alpha_star[1])} times "
               r"$\alpha^*$, and rises back to zero as $\alpha \to \infty$. What the proof needs, "
               r"and what holds, is that the bound $C$ is smallest, zero, at $\alpha = 0$ and "
               r"$\alpha \to \infty$." if refuted else ""),

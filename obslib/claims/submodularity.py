@@ -375,6 +375,8 @@ _JOURNAL = r"The abstract of the later journal version {cite}`zhou2019sensor` "
     journal=_JOURNAL + "lists the trace among the monotone submodular measures.",
 )
 def _thm8_trace(p: dict) -> Finding:
+    """reproduced: no instance of any configuration has an addition that lowers the trace or a
+    triple that breaks submodularity; partly: one of the two fails; refuted: both."""
     sel, _ = _selected(_thm8_rows(p), "trace")
     modular = all(r.n_not_supermodular == 0 for r in sel)
     return _simple_thm8("trace", p, r"The trace of $\mathbb{O}$",
@@ -394,6 +396,8 @@ def _thm8_trace(p: dict) -> Finding:
     journal=_JOURNAL + "lists the rank among the monotone submodular measures.",
 )
 def _thm8_rank(p: dict) -> Finding:
+    """reproduced: no instance of any configuration has an addition that lowers the rank or a
+    triple that breaks submodularity; partly: one of the two fails; refuted: both."""
     return _simple_thm8("rank", p, r"The rank of $\mathbb{O}$",
                         "it is the rank function of the linear matroid of the rows, which with "
                         "two columns takes only the values $0$, $1$ and $2$")
