@@ -189,6 +189,7 @@ def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float
 #: The sweeps computed so far, by their arguments (at most :data:`_MAX_SWEEPS`, oldest first).
 _SWEEPS: dict = {}
 _MAX_SWEEPS = 8
+fig8_sweep.cache_clear = _SWEEPS.clear  # as functools.lru_cache names it
 
 
 def _fig8_sweep(L_values, trials, seed, u_max, side, optimum_max_L, backend, n_jobs, scheduler,

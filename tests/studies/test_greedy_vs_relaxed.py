@@ -65,6 +65,7 @@ def test_fig8_sweep_equals_its_trials_bit_for_bit(monkeypatch):
     # exact solver (N > MAX_DP_SENSORS), L = 41 is the first above FIG8_DENSE_WEIGHTS
     assert gvr._is_dense(40) and not gvr._is_dense(41)
     monkeypatch.setattr(gvr, "_BLOCK_WEIGHTS", 3000)
+    gvr.fig8_sweep.cache_clear()  # the sweep is cached on its arguments: compute it afresh
     L_values, trials, seed = [1, 7, 9, 40, 41], 3, 11
     r = gvr.fig8_sweep(L_values, trials, seed, 1.5, 50.0, optimum_max_L=9)
     for a, L in enumerate(L_values):
@@ -73,6 +74,7 @@ def test_fig8_sweep_equals_its_trials_bit_for_bit(monkeypatch):
             for k in gvr.FIG8_KEYS:
                 assert np.array_equal(r[k][a, t], one[k], equal_nan=True), (L, t, k)
     assert np.isnan(r["optimum"][3:]).all() and not np.isnan(r["optimum"][:3]).any()
+    gvr.fig8_sweep.cache_clear()  # not kept: it was made with the patched block budget
 
 
 def test_fig8_sweep_is_cached_whatever_the_backend():
