@@ -196,8 +196,10 @@ def _thm6_charging(p: dict) -> Finding:
         table=Table(f"The charging argument on {_sizes(p, a.n_instances)}: the greedy's picks by "
                     "the number of optimal triples charged to them, and the steps of the proof "
                     "that fail.", ("quantity", "value"), [
-                        ("picks charged with 0, 1, 2, 3 optimal triples",
-                         ", ".join(number(c) for c in picks[:4])),
+                        *[(f"picks charged with {words} optimal {noun}", number(c))
+                          for words, noun, c in zip(("no", "one", "two", "three"),
+                                                    ("triple", "triple", "triples", "triples"),
+                                                    picks[:4])],
                         ("picks charged with more than three", count(a.n_over_three)),
                         ("instances where an optimal triple is charged other than once",
                          count(a.n_not_once)),

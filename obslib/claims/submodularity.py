@@ -474,10 +474,10 @@ def _thm8_logdet(p: dict) -> Finding:
               f"where it is finite: {_teams(theorem)} with the control row, {_teams(code)} "
               "without it." if status == "partly" else ""),
         evidence={"domains": [d.as_dict() for d in domains]},
-        table=Table(f"The log determinant on random instances of {p['n_sensors']} sensors "
-                    "(sensors in general position, and on lines through the target except "
-                    "without prior and control row): the teams where it is $-\\infty$, and every "
-                    "nested pair of the other teams compared.",
+        table=Table(f"The log determinant on random instances of {p['n_sensors']} sensors, in "
+                    "general position and (but for the code's matrix) on lines through the "
+                    "target: the teams where it is $-\\infty$, and every nested pair of the other "
+                    "teams compared.",
                     ("matrix", r"$-\infty$ for", "instances", "with a decrease",
                      "violating submodularity"), rows),
     )
@@ -556,6 +556,11 @@ THM8_ENTRIES = {"trace": "thm8-trace", "log determinant": "thm8-logdet", "rank":
                 "trace of the inverse": "thm8-trace-inverse"}
 
 
+def _link(text: str, cid: str) -> str:
+    """A MyST link to the report's entry ``cid``."""
+    return f"{{ref}}`{text} <claim-{cid}>`"
+
+
 def _thm8_findings(p: dict) -> dict:
     """The findings of the four Theorem 8 entries (the same cached audits)."""
     return {"trace": _thm8_trace(p), "log determinant": _thm8_logdet(p), "rank": _thm8_rank(p),
@@ -613,7 +618,7 @@ def _thm8_similar(p: dict) -> Finding:
         evidence={k: {"id": THM8_ENTRIES[k], "status": f.status} for k, f in found.items()},
         table=Table("The four measures of Theorem 8, each judged by its own entry.",
                     ("measure", "monotone and submodular"),
-                    [(k, f"{words[f.status]} ({THM8_ENTRIES[k]})") for k, f in found.items()]),
+                    [(_link(k, THM8_ENTRIES[k]), words[f.status]) for k, f in found.items()]),
     )
 
 
@@ -665,11 +670,13 @@ def _conclusion(p: dict) -> Finding:
     }[status]
     statuses = {"thm6": thm6.status, "thm6-any-omega": any_omega.status, "thm7": bound.status,
                 **{THM8_ENTRIES[k]: f.status for k, f in found.items()}}
-    rows = [("Problem 1, Algorithm 1, $1/3$", "thm6", "the pair bound (non-negative)"),
-            ("Problem 1, Algorithm 1, $1/3$", "thm6-any-omega", r"values of both signs"),
-            ("Problem 2, greedy, $1/2$", "thm7", "the pair bound (neither monotone nor "
-             "submodular)")]
-    rows += [("Problem 2, greedy, $1/2$", THM8_ENTRIES[k], k) for k in found]
+    rows = [("Problem 1, Algorithm 1, $1/3$", "thm6", "Theorem 6",
+             "the pair bound (non-negative)"),
+            ("Problem 1, Algorithm 1, $1/3$", "thm6-any-omega", "Theorem 6 for any value",
+             "values of both signs"),
+            ("Problem 2, greedy, $1/2$", "thm7", "Theorem 7",
+             "the pair bound (neither monotone nor submodular)")]
+    rows += [("Problem 2, greedy, $1/2$", THM8_ENTRIES[k], f"Theorem 8, {k}", k) for k in found]
     return Finding(
         status,
         summary=summary,
@@ -681,5 +688,5 @@ def _conclusion(p: dict) -> Finding:
         evidence={"statuses": statuses},
         table=Table("The guarantees of the Conclusion and the entries that decide them.",
                     ("problem, algorithm, factor", "entry", "value function", "verdict"),
-                    [(a, e, w, statuses[e]) for a, e, w in rows]),
+                    [(a, _link(name, e), w, statuses[e]) for a, e, name, w in rows]),
     )
