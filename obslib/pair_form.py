@@ -21,6 +21,7 @@ __all__ = [
     "GridMax",
     "grid_maximum",
     "stationarity_alpha",
+    "dbound_dalpha",
     "maximising_alpha",
     "maximising_alpha_closed",
     "random_symmetric_2x2",
@@ -143,6 +144,18 @@ def _theta_q_iv(theta, u_over_d):
     return broadcast({"theta": th, "u_over_d": q})
 
 
+def _alpha_theta_q_iv(alpha, theta, u_over_d) -> list:
+    """Finite ``alpha >= 0``, ``theta`` and ``u_over_d >= 0``, broadcast together."""
+    a = as_float_array(alpha, "alpha")
+    th = as_float_array(theta, "theta")
+    q = as_float_array(u_over_d, "u_over_d")
+    if not (np.isfinite(a).all() and np.isfinite(th).all() and np.isfinite(q).all()):
+        raise ValueError("alpha, theta and u_over_d must be finite")
+    if (a < 0).any() or (q < 0).any():
+        raise ValueError("alpha and u_over_d must be non-negative")
+    return broadcast({"alpha": a, "theta": th, "u_over_d": q})
+
+
 def stationarity_alpha(alpha, theta, u_over_d):
     r"""Eq. (34), the numerator of :math:`\partial \underline{C}^{-1} / \partial \alpha`, evaluated
     without cancellation.
@@ -169,15 +182,7 @@ def stationarity_alpha(alpha, theta, u_over_d):
     0.414214
     -2.876894
     """
-    a = as_float_array(alpha, "alpha")
-    th = as_float_array(theta, "theta")
-    q = as_float_array(u_over_d, "u_over_d")
-    if not (np.isfinite(a).all() and np.isfinite(th).all() and np.isfinite(q).all()):
-        raise ValueError("alpha, theta and u_over_d must be finite")
-    if (a < 0).any() or (q < 0).any():
-        raise ValueError("alpha and u_over_d must be non-negative")
-    broadcast({"alpha": a, "theta": th, "u_over_d": q})
-    return _stationarity(a, th, q)
+    return _stationarity(*_alpha_theta_q_iv(alpha, theta, u_over_d))
 
 
 def _stationarity(a: np.ndarray, th: np.ndarray, q: np.ndarray) -> np.ndarray:
@@ -190,6 +195,56 @@ def _stationarity(a: np.ndarray, th: np.ndarray, q: np.ndarray) -> np.ndarray:
         safe = np.where(plus > 0, plus, 1.0)
         gap = np.where(plus > 0, np.sin(2 * th) ** 2 / (s + safe), s - plus)
     return (1.0 - a2) * 2.0 * np.sin(th) ** 2 + q * q * gap
+
+
+def dbound_dalpha(alpha, theta, u_over_d):
+    r"""The derivative :math:`\partial \underline{C}^{-1} / \partial \alpha` of Theorem 4's
+    pair bound (Eq. (9)), evaluated without cancellation.
+
+    With :math:`s = \sin^2\theta`, :math:`S = \sqrt{1 + \alpha^4 + 2\alpha^2 \cos 2\theta}`,
+    :math:`P = 1 + \alpha^2 + S` and :math:`D = P + 2q^2`, :math:`q = u_{\max}/d_{io}`, the
+    numerator of Eq. (9) is :math:`1 + \alpha^2 - S = 4\alpha^2 s / P`, so the bound is
+    :math:`C = 2\alpha\sqrt{s} / \sqrt{P D}` and
+
+    .. math::
+
+       \frac{\partial C}{\partial \alpha} = \frac{2\sqrt{s}}{\sqrt{P D}}
+       \Bigl(1 - \frac{\alpha P' (P + D)}{2 P D}\Bigr), \qquad
+       P' = 2\alpha + \frac{2\alpha^3 + 2\alpha \cos 2\theta}{S}.
+
+    At :math:`\alpha = 0` it is :math:`\lvert\sin\theta\rvert / \sqrt{1 + q^2}`, the slope
+    from the right (the bound is :math:`0` there).
+
+    Parameters
+    ----------
+    alpha : array_like
+        Distance ratios :math:`d_{jo}/d_{io} \ge 0`.
+    theta : array_like
+        Angles :math:`\theta_{ji}`.
+    u_over_d : array_like
+        :math:`q = u_{\max}/d_{io} \ge 0`; the three broadcast together.
+
+    Returns
+    -------
+    ndarray
+
+    Examples
+    --------
+    The bound rises at :math:`\alpha = 0` and falls at :math:`\alpha = 2`
+    (:math:`\theta = \pi/4`, :math:`q = 1`):
+
+    >>> print(np.round(dbound_dalpha([0.0, 2.0], np.pi / 4, 1.0), 6))
+    [ 0.5      -0.080343]
+    """
+    a, th, q = _alpha_theta_q_iv(alpha, theta, u_over_d)
+    c = np.cos(2 * th)
+    S = np.hypot(1.0 - a * a, 2.0 * a * np.cos(th))  # sqrt(1 + a^4 + 2 a^2 cos 2 theta)
+    P = 1.0 + a * a + S
+    D = P + 2.0 * q * q
+    with np.errstate(divide="ignore", invalid="ignore"):  # S = 0 only at alpha = 1, cos = 0
+        dP = 2.0 * a + np.where(S > 0, (2.0 * a**3 + 2.0 * a * c) / np.where(S > 0, S, 1.0),
+                                np.nan)
+    return 2.0 * np.abs(np.sin(th)) / np.sqrt(P * D) * (1.0 - a * dP * (P + D) / (2.0 * P * D))
 
 
 def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):

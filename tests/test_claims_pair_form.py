@@ -6,7 +6,6 @@ obslib.symbolic: plain NumPy/SciPy on the paper's printed formulas and on O^T O.
 
 import json
 from dataclasses import asdict
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -14,34 +13,29 @@ from scipy.optimize import minimize, minimize_scalar
 
 import obslib as ob
 import obslib.claims.pair_form as cp
-from obslib.claims import Record, evaluate, registry
+from obslib.claims import evaluate, registry
+from obslib.claims.quotes import found
 
-NOTEBOOK = Path(__file__).resolve().parent.parent / "notebooks" / "02_pair_closed_form.ipynb"
 IDS = (
     "thm4", "fig2-max", "thm5", "thm5-alpha-not-1", "thm1-weyl-step",
     "thm1-proof-dual-weyl-range", "thm4-proof-matrix", "thm5-proof-dtheta",
-    "thm5-proof-dalpha-halfpi", "thm5-proof-dalpha",
+    "thm5-proof-dalpha-halfpi", "thm5-proof-dalpha", "thm5-proof-dalpha-min",
 )  # fmt: skip
 
 
 @pytest.fixture(scope="module")
 def findings():
-    reg = registry()
-    return {i: reg[i].check("quick") for i in IDS}
+    return {r.id: r for r in evaluate("quick", ids=IDS)}
 
 
 def test_records_are_registered_with_their_notebook(findings):
     reg = registry()
     for i in IDS:
-        assert reg[i].notebook == "02_pair_closed_form"
+        assert reg[i].notebook == "02_pair_closed_form" and reg[i].kind == "paper"
         assert reg[i].where and reg[i].statement and reg[i].paper
-        assert findings[i].ours
-    rec = [
-        Record(i, reg[i].where, reg[i].statement, reg[i].paper, f.ours, f.status,
-               reg[i].notebook, f.evidence)
-        for i, f in findings.items()
-    ]
-    json.dumps([asdict(r) for r in rec], default=float)  # the CLI's --json must work
+        assert found(reg[i].quote), f"{i}: the quote is not the paper's"
+        assert findings[i].ours and findings[i].summary
+    json.dumps([asdict(r) for r in findings.values()], default=float)  # the CLI's --json
 
 
 def test_params_come_from_the_profiles():
@@ -194,3 +188,26 @@ def test_erratum_thm5_dalpha_status(findings):
                            method="bounded", options={"xatol": 1e-12}).x
     assert abs(printed(star)) < 1e-7
     assert findings["thm5-proof-dalpha"].status == "partly"
+
+
+def test_dalpha_minimum_status(findings):
+    """The derivative of the bound in alpha, by central differences of the library's closed form
+    of Eq. (9) (not obslib.pair_form.dbound_dalpha): largest at alpha = 0, smallest and
+    negative at a finite alpha beyond the maximiser of the bound, and back near 0 at large
+    alpha."""
+    a = np.geomspace(1e-3, 1e3, 6001)
+    h = 1e-7 * np.maximum(a, 1.0)
+    for theta, q in ((0.3, 0.0), (1.0, 0.5), (2.2, 1.0), (0.7, 2.0)):
+        d = (ob.pair_bound_polar(a + h, theta, q) - ob.pair_bound_polar(a - h, theta, q)) / (2 * h)
+        k = int(np.argmin(d))
+        assert 0 < k < a.size - 1 and d[k] < -1e-3
+        assert d[k] < min(d[0], d[-1]) and abs(d[-1]) < 1e-5
+        assert d[0] == pytest.approx(abs(np.sin(theta)) / np.sqrt(1 + q * q), rel=1e-3)
+        assert d[0] >= d.max() - 1e-9  # largest at the left end
+        star = minimize_scalar(lambda x: -ob.pair_bound_polar(x, theta, q), bounds=(0, 20),
+                               method="bounded", options={"xatol": 1e-10}).x
+        assert a[k] > star  # the bound falls fastest beyond its maximum
+    rec = findings["thm5-proof-dalpha-min"]
+    ev = rec.evidence
+    assert ev["n_interior_minimum"] == ev["n_cases"] > 0
+    assert rec.status == "refuted"

@@ -153,3 +153,21 @@ def test_weyl_slacks_batch_and_validation():
         pf.weyl_2x2_slacks(np.eye(2), np.eye(3))
     with pytest.raises(ValueError, match="finite"):
         pf.weyl_2x2_slacks(np.full((2, 2), np.nan), np.eye(2))
+
+
+def test_dbound_dalpha_equals_differences_and_sympy():
+    exact = sy.lambdify_expr(sy.dbound_dalpha_closed(), sy.RATIO_ARGS)
+    rng = np.random.default_rng(2)
+    a, t, q = rng.uniform(0.05, 4, 200), rng.uniform(0.05, 3.1, 200), rng.uniform(0, 3, 200)
+    d = pf.dbound_dalpha(a, t, q)
+    h = 1e-6
+    fd = (ob.pair_bound_polar(a + h, t, q) - ob.pair_bound_polar(a - h, t, q)) / (2 * h)
+    np.testing.assert_allclose(d, fd, atol=1e-7)
+    np.testing.assert_allclose(d, exact(a, t, q), rtol=1e-9, atol=1e-12)
+    # at alpha = 0 the slope from the right, |sin theta| / sqrt(1 + q^2)
+    np.testing.assert_allclose(pf.dbound_dalpha(0.0, t, q), np.abs(np.sin(t)) / np.sqrt(1 + q * q),
+                               rtol=1e-14)
+    with pytest.raises(ValueError, match="non-negative"):
+        pf.dbound_dalpha(-1.0, 0.5, 1.0)
+    with pytest.raises(ValueError, match="finite"):
+        pf.dbound_dalpha(1.0, np.nan, 1.0)

@@ -35,12 +35,18 @@ from ..assignment import greedy_pairs_batch
 __all__ = [
     "pair_assignments",
     "optimal_values",
+    "optimal_assignments",
     "greedy_values",
     "batch_pair_bounds",
     "GreedyStudy",
+    "pair_instances",
     "greedy_vs_optimal",
     "worst_instance_search",
     "charging",
+    "ChargingAudit",
+    "charging_audit",
+    "SignedStudy",
+    "signed_weights_study",
     "tight_weights",
 ]
 
@@ -118,12 +124,13 @@ def optimal_values(W) -> np.ndarray:
 
     Dynamic programming over targets in order: after target ``l``, ``best[mask]`` is the largest
     total weight of giving targets ``0..l`` disjoint pairs that use exactly the sensors in the
-    bit set ``mask``; target ``l + 1`` extends each set by every pair disjoint from it. With
-    non-negative weights an optimum assigns every target (:math:`N \ge 2L`), so the optimum is the
-    largest entry after the last target. The sums are formed in target order, as a direct sum
-    over an assignment would be, and rounding is monotone, so the result equals the maximum over
-    :func:`pair_assignments` exactly (the tests compare them). Work grows like :math:`2^N N^2 L` per
-    instance; ``N`` is limited to :data:`MAX_DP_SENSORS`.
+    bit set ``mask``; target ``l + 1`` extends each set by every pair disjoint from it. Every
+    target gets a pair (as Algorithm 1 gives one), so the optimum is the largest entry after the
+    last target; with non-negative weights that is also the optimum when a target may be left
+    out. The sums are formed in target order, as a direct sum over an assignment would be, and
+    rounding is monotone, so the result equals the maximum over :func:`pair_assignments` exactly
+    (the tests compare them). Work grows like :math:`2^N N^2 L` per instance; ``N`` is limited to
+    :data:`MAX_DP_SENSORS`.
 
     Examples
     --------
@@ -132,16 +139,49 @@ def optimal_values(W) -> np.ndarray:
     >>> optimal_values(tight_weights(eps=1e-3)[None])
     array([3.])
     """
+    return _optimum(_as_dp_batch(W), False)[0]
+
+
+def optimal_assignments(W) -> tuple[np.ndarray, np.ndarray]:
+    """Problem 1's optimum and one optimal assignment, for a batch ``W`` ``(K, N, N, L)``.
+
+    The dynamic program of :func:`optimal_values` (the same values, bit for bit), which also
+    keeps, for every set of sensors it reaches, the first best way to reach it, and walks those
+    choices back from the best final set.
+
+    Returns
+    -------
+    values : ndarray, shape (K,)
+    triples : ndarray, shape (K, L, 3)
+        ``(i, j, l)`` with ``i < j`` for each target ``l`` in order.
+
+    Examples
+    --------
+    >>> values, triples = optimal_assignments(tight_weights(eps=1e-3)[None])
+    >>> values.tolist(), triples[0].tolist()
+    ([3.0], [[4, 5, 0], [0, 2, 1], [1, 3, 2]])
+    """
+    return _optimum(_as_dp_batch(W), True)
+
+
+def _as_dp_batch(W) -> np.ndarray:
     W = _as_batch(W)
-    k, n, _, n_targets = W.shape
-    if n > MAX_DP_SENSORS:
+    if W.shape[1] > MAX_DP_SENSORS:
         raise ValueError(
-            f"N = {n} sensors is too many for the exact optimum (at most {MAX_DP_SENSORS})"
+            f"N = {W.shape[1]} sensors is too many for the exact optimum (at most {MAX_DP_SENSORS})"
         )
+    return W
+
+
+def _optimum(W: np.ndarray, with_triples: bool):
+    """The dynamic program of :func:`optimal_values` on a validated batch; with
+    ``with_triples``, also one optimal assignment per instance (else ``None``)."""
+    k, n, _, n_targets = W.shape
     ii, jj = np.triu_indices(n, 1)
     pair_mask = (np.int64(1) << ii) | (np.int64(1) << jj)
     states = np.zeros(1, dtype=np.int64)  # sensor sets reachable after the targets so far
     best = np.zeros((k, 1))
+    layers = []  # per target: the previous state and the pair of each candidate, and the choice
     for l in range(n_targets):
         s, p = np.nonzero((states[:, None] & pair_mask[None, :]) == 0)  # set s extended by pair p
         new = states[s] | pair_mask[p]
@@ -150,8 +190,24 @@ def optimal_values(W) -> np.ndarray:
         starts = np.flatnonzero(np.r_[True, new[1:] != new[:-1]])
         vals = best[:, s[order]] + W[:, ii[p[order]], jj[p[order]], l]
         best = np.maximum.reduceat(vals, starts, axis=1)
+        if with_triples:  # the first candidate of each new set that reaches its best
+            sizes = np.diff(np.r_[starts, vals.shape[1]])
+            hit = vals == np.repeat(best, sizes, axis=1)
+            pos = np.where(hit, np.arange(vals.shape[1]), vals.shape[1])
+            layers.append((s[order], p[order], np.minimum.reduceat(pos, starts, axis=1)))
         states = new[starts]
-    return best.max(axis=1)
+    values = best.max(axis=1)
+    if not with_triples:
+        return values, None
+    rows = np.arange(k)
+    at = best.argmax(axis=1)  # index of the final set, per instance
+    triples = np.empty((k, n_targets, 3), dtype=np.int64)
+    for l in range(n_targets - 1, -1, -1):
+        prev, pair, choice = layers[l]
+        c = choice[rows, at]
+        triples[:, l] = np.column_stack([ii[pair[c]], jj[pair[c]], np.full(k, l)])
+        at = prev[c]
+    return values, triples
 
 
 def greedy_values(W) -> np.ndarray:
@@ -263,14 +319,23 @@ def _ratios(S, T, u_max) -> np.ndarray:
     return out
 
 
+def _frozen(*arrays):
+    """The arrays, made read-only: a cached result is shared by every caller."""
+    for arr in arrays:
+        arr.setflags(write=False)
+    return arrays if len(arrays) > 1 else arrays[0]
+
+
 def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2), u_max=1.0,
                       side=100.0) -> GreedyStudy:
     r"""Algorithm 1 against the exact optimum on random instances of the Fig. 8 kind.
 
     Each instance draws ``L`` uniformly from ``targets`` and :math:`N = 2L + e` with :math:`e` from
     ``extra`` (both inclusive), positions uniform in :math:`[0, \mathrm{side}]^2`, weights the pair
-    bounds with ``u_max`` (Euclidean). Instances are drawn one after the other from one generator,
-    then solved in batches per ``(N, L)`` (:func:`greedy_values`, :func:`optimal_values`).
+    bounds with ``u_max`` (Euclidean). Instances are drawn one after the other from one generator
+    (:func:`pair_instances`), then solved in batches per ``(N, L)`` (:func:`greedy_values`,
+    :func:`optimal_values`). The result is cached on the arguments (its arrays are read-only), so
+    a chapter and the ledger that ask for the same study share one computation.
 
     Examples
     --------
@@ -278,9 +343,38 @@ def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2),
     >>> study.ratio.shape, bool(study.ratio.min() >= 1 / 3)
     ((20,), True)
     """
-    n_instances, seed = as_int(n_instances, "n_instances", 1), as_int(seed, "seed", 0)
-    targets, extra = as_int_range(targets, "targets", 1), as_int_range(extra, "extra", 0)
-    u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
+    return _greedy_vs_optimal(*_instances_iv(n_instances, seed, targets, extra, side),
+                              float(as_nonnegative(u_max, "u_max")))
+
+
+def _instances_iv(n_instances, seed, targets, extra, side) -> tuple:
+    """The validated, hashable arguments of :func:`pair_instances`."""
+    return (as_int(n_instances, "n_instances", 1), as_int(seed, "seed", 0),
+            as_int_range(targets, "targets", 1), as_int_range(extra, "extra", 0),
+            float(as_positive(side, "side")))
+
+
+def pair_instances(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2),
+                     side=100.0) -> list:
+    """The random instances of :func:`greedy_vs_optimal`, grouped by size.
+
+    Returns
+    -------
+    list of (int, int, ndarray, ndarray, ndarray)
+        Per size ``(N, L)``, in increasing order: ``N``, ``L``, the indices of its instances in
+        draw order, their sensors ``(K, N, 2)`` and their targets ``(K, L, 2)`` (read-only).
+
+    Examples
+    --------
+    >>> groups = pair_instances(5, seed=0)
+    >>> sum(len(idx) for _, _, idx, _, _ in groups)
+    5
+    """
+    return _pair_instances(*_instances_iv(n_instances, seed, targets, extra, side))
+
+
+@lru_cache(maxsize=8)
+def _pair_instances(n_instances, seed, targets, extra, side):
     rng = np.random.default_rng(seed)
     sizes, geoms = [], []
     for _ in range(n_instances):
@@ -289,15 +383,41 @@ def greedy_vs_optimal(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2),
         sizes.append((n, L))
         geoms.append(_random_geometry(rng, n, L, side))
     sizes_arr = np.array(sizes).reshape(-1, 2)
-    greedy, optimum = np.zeros(n_instances), np.zeros(n_instances)
+    out = []
     for n, L in sorted(set(sizes)):
         idx = np.flatnonzero((sizes_arr[:, 0] == n) & (sizes_arr[:, 1] == L))
-        W, _ = batch_pair_bounds(
-            np.stack([geoms[i][0] for i in idx]), np.stack([geoms[i][1] for i in idx]), u_max
-        )
-        greedy[idx] = greedy_values(W)
-        optimum[idx] = optimal_values(W)
-    return GreedyStudy(sizes_arr[:, 0], sizes_arr[:, 1], greedy, optimum)
+        S = np.stack([geoms[i][0] for i in idx])
+        T = np.stack([geoms[i][1] for i in idx])
+        out.append((n, L, *_frozen(idx, S, T)))
+    return out
+
+
+@lru_cache(maxsize=8)
+def _solved(n_instances, seed, targets, extra, side, u_max):
+    """Per size of :func:`pair_instances`: ``N``, ``L``, the indices, the weights ``W``, the
+    greedy's picks and picked weights (:func:`obslib.assignment.greedy_pairs_batch`), and the
+    optimum with one optimal assignment (:func:`optimal_assignments`); arrays read-only."""
+    out = []
+    for n, L, idx, S, T in _pair_instances(n_instances, seed, targets, extra, side):
+        W, _ = batch_pair_bounds(S, T, u_max)
+        ii, jj = np.triu_indices(n, 1)
+        picks, weights = greedy_pairs_batch(W[:, ii, jj, :], n)
+        values, triples = _optimum(W, True)
+        out.append((n, L, idx, *_frozen(W, picks, weights, values, triples)))
+    return out
+
+
+@lru_cache(maxsize=8)
+def _greedy_vs_optimal(n_instances, seed, targets, extra, side, u_max):
+    greedy, optimum = np.zeros(n_instances), np.zeros(n_instances)
+    n_sensors = np.zeros(n_instances, dtype=np.int64)
+    n_targets = np.zeros(n_instances, dtype=np.int64)
+    for n, L, idx, _, _, weights, values, _ in _solved(n_instances, seed, targets, extra, side,
+                                                       u_max):
+        greedy[idx] = np.cumsum(weights, axis=1)[:, -1]  # summed in pick order, as greedy_values
+        optimum[idx] = values
+        n_sensors[idx], n_targets[idx] = n, L
+    return GreedyStudy(*_frozen(n_sensors, n_targets, greedy, optimum))
 
 
 def worst_instance_search(n_sensors: int, n_targets: int, seed: int, n_starts: int = 20,
@@ -307,7 +427,8 @@ def worst_instance_search(n_sensors: int, n_targets: int, seed: int, n_starts: i
     From ``n_starts`` random instances, repeatedly moves one random point (sensor or target) by a
     Gaussian step (shrinking over time) and keeps the move when the ratio does not increase.
     Each start's draws (its instance, then per step the point and the step) come from one
-    generator, start after start; the starts are then advanced together, as a batch.
+    generator, start after start; the starts are then advanced together, as a batch. Cached on
+    the arguments (the arrays returned are read-only).
 
     Returns
     -------
@@ -324,7 +445,13 @@ def worst_instance_search(n_sensors: int, n_targets: int, seed: int, n_starts: i
     n_sensors, n_targets = as_int(n_sensors, "n_sensors", 2), as_int(n_targets, "n_targets", 1)
     n_starts, n_steps = as_int(n_starts, "n_starts", 1), as_int(n_steps, "n_steps", 0)
     u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
-    rng = np.random.default_rng(as_int(seed, "seed", 0))
+    return _worst_instance_search(n_sensors, n_targets, as_int(seed, "seed", 0), n_starts,
+                                  n_steps, float(u_max), float(side))
+
+
+@lru_cache(maxsize=8)
+def _worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max, side):
+    rng = np.random.default_rng(seed)
     m = n_sensors + n_targets
     P = np.empty((n_starts, m, 2))  # sensors then targets, per start
     moved = np.empty((n_starts, n_steps), dtype=np.int64)
@@ -345,7 +472,7 @@ def worst_instance_search(n_sensors: int, n_targets: int, seed: int, n_starts: i
         keep = r2 <= r
         P[keep], r[keep] = P2[keep], r2[keep]
     c = int(np.argmin(r))
-    return float(r[c]), P[c, :n_sensors].copy(), P[c, n_sensors:].copy()
+    return (float(r[c]), *_frozen(P[c, :n_sensors].copy(), P[c, n_sensors:].copy()))
 
 
 def charging(W, greedy_triples, optimal_triples) -> list[dict]:
@@ -392,6 +519,175 @@ def charging(W, greedy_triples, optimal_triples) -> list[dict]:
             f"optimal triples never charged: {left} (greedy did not assign every target?)"
         )
     return rounds
+
+
+@dataclass(frozen=True)
+class ChargingAudit:
+    """The charging argument of Theorem 6's proof checked on the instances of
+    :func:`greedy_vs_optimal` (:func:`charging_audit`)."""
+
+    n_instances: int
+    n_picks: int
+    #: how many picks are charged with 0, 1, 2, 3 and more than 3 optimal triples
+    charges_per_pick: tuple
+    n_not_once: int  #: instances where an optimal triple is charged other than exactly once
+    n_heavier: int  #: charged optimal triples heavier than the pick they are charged to
+    n_over_three: int  #: picks charged with more than three triples
+    #: instances where OPT exceeds the sum over picks of (triples charged) x (pick's weight),
+    #: or that sum exceeds three times the greedy's total
+    n_chain_broken: int
+    largest_slack: float  #: largest (charged triple's weight - its pick's weight), at most 0
+    smallest_ratio: float  #: smallest greedy / optimum
+
+
+def charging_audit(n_instances: int, seed: int, targets=(2, 4), extra=(0, 2), u_max=1.0,
+                   side=100.0) -> ChargingAudit:
+    r"""Theorem 6's charging argument, checked step by step on random instances.
+
+    On each instance of :func:`greedy_vs_optimal` (the same draws and the same solutions), the
+    greedy's picks are charged in order with the optimal triples not charged before that share a
+    sensor or the target with them (:func:`charging`). The proof needs: every optimal triple
+    charged exactly once, to a pick at least as heavy, at most three per pick; then
+    :math:`\mathrm{OPT} \le \sum_k n_k w_k \le 3\,\omega(\mathrm{GREEDY})` for picks of
+    weight :math:`w_k \ge 0` charged with :math:`n_k` triples. Each step is counted where it
+    fails. Cached on the arguments.
+
+    Examples
+    --------
+    >>> a = charging_audit(50, seed=0)
+    >>> a.n_not_once, a.n_heavier, a.n_over_three, a.n_chain_broken
+    (0, 0, 0, 0)
+    """
+    return _charging_audit(*_instances_iv(n_instances, seed, targets, extra, side),
+                           float(as_nonnegative(u_max, "u_max")))
+
+
+@lru_cache(maxsize=8)
+def _charging_audit(n_instances, seed, targets, extra, side, u_max):
+    per_pick = np.zeros(5, dtype=np.int64)
+    not_once = heavier = over = broken = 0
+    slack, ratio = -np.inf, np.inf
+    for _, _, _, W, picks, weights, values, triples in _solved(n_instances, seed, targets, extra,
+                                                               side, u_max):
+        for k in range(W.shape[0]):
+            opt = [tuple(t) for t in triples[k].tolist()]
+            try:
+                rounds = charging(W[k], [tuple(t) for t in picks[k].tolist()], opt)
+            except ValueError:  # an optimal triple never charged
+                not_once += 1
+                continue
+            charged = [t for r in rounds for t in r["charged"]]
+            not_once += sorted(charged) != sorted(opt)
+            total = 0.0
+            for r in rounds:
+                n_k = len(r["charged"])
+                per_pick[min(n_k, 4)] += 1
+                over += n_k > 3
+                heavier += sum(w > r["w"] for w in r["charged_w"])
+                slack = max([slack] + [w - r["w"] for w in r["charged_w"]])
+                total += n_k * r["w"]
+            greedy = float(sum(weights[k].tolist()))
+            tol = 1e-12 * max(1.0, abs(values[k]))
+            broken += values[k] > total + tol or total > 3 * greedy + tol
+            if values[k] > 0:
+                ratio = min(ratio, greedy / values[k])
+    return ChargingAudit(n_instances, int(per_pick.sum()), tuple(int(c) for c in per_pick),
+                         int(not_once), int(heavier), int(over), int(broken), float(slack),
+                         float(ratio))
+
+
+@dataclass(frozen=True)
+class SignedStudy:
+    """Algorithm 1 against the optimum on random weights of both signs, and on the same weights
+    made non-negative (their absolute values): arrays, one entry per instance
+    (:func:`signed_weights_study`)."""
+
+    n_targets: np.ndarray
+    greedy: np.ndarray
+    optimum: np.ndarray
+    greedy_abs: np.ndarray
+    optimum_abs: np.ndarray
+    #: the instance where the greedy falls furthest below a third of the optimum: its weights
+    #: ``W`` (nested lists), the greedy's and an optimal assignment, their totals
+    witness: dict
+
+    @property
+    def below_third(self) -> np.ndarray:
+        """Instances where ``greedy < optimum / 3`` (beyond rounding)."""
+        return self.greedy < self.optimum / 3 - 1e-12
+
+    @property
+    def below_third_abs(self) -> np.ndarray:
+        """The same with the non-negative weights."""
+        return self.greedy_abs < self.optimum_abs / 3 - 1e-12
+
+
+def signed_weights_study(n_instances: int, seed: int, targets=(2, 4)) -> SignedStudy:
+    """Theorem 6 "for any omega": Algorithm 1 on random weights of both signs.
+
+    Each instance draws ``L`` uniformly from ``targets`` (inclusive), ``N = 2L`` sensors and
+    weights ``omega(s_i, s_j, t_l)`` uniform in ``[-1, 1]`` (symmetric in ``i, j``). The
+    optimum of Problem 1 (every target gets a pair, as Algorithm 1 gives one) is found by brute
+    force over all assignments (:func:`pair_assignments`); the same is done with the absolute
+    values of the weights. Cached on the arguments.
+
+    Examples
+    --------
+    >>> st = signed_weights_study(200, seed=0)
+    >>> bool(st.below_third.any()), bool(st.below_third_abs.any())
+    (True, False)
+    """
+    return _signed_weights_study(as_int(n_instances, "n_instances", 1), as_int(seed, "seed", 0),
+                                 as_int_range(targets, "targets", 1))
+
+
+def _brute_force(W: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Problem 1 by enumeration on a batch ``W`` ``(K, N, N, L)``: values and the index of the
+    first best assignment of :func:`pair_assignments`."""
+    _, n, _, n_targets = W.shape
+    P, Q = pair_assignments(n, n_targets)
+    totals = np.zeros((W.shape[0], P.shape[0]))
+    for l in range(n_targets):  # summed in target order
+        totals += W[:, P[:, l], Q[:, l], l]
+    best = totals.argmax(axis=1)
+    return totals[np.arange(W.shape[0]), best], best
+
+
+@lru_cache(maxsize=4)
+def _signed_weights_study(n_instances, seed, targets):
+    rng = np.random.default_rng(seed)
+    Ls = rng.integers(targets[0], targets[1] + 1, size=n_instances)
+    draws = []
+    for L in Ls.tolist():
+        n = 2 * L
+        ii, jj = np.triu_indices(n, 1)
+        w = np.zeros((n, n, L))
+        w[ii, jj] = rng.uniform(-1.0, 1.0, size=(ii.size, L))
+        draws.append(w + w.transpose(1, 0, 2))  # symmetric, 0 on the diagonal
+    out = {k: np.zeros(n_instances) for k in ("greedy", "optimum", "greedy_abs", "optimum_abs")}
+    worst, worst_gap = None, -np.inf
+    for L in sorted(set(Ls.tolist())):
+        idx = np.flatnonzero(Ls == L)
+        W = np.stack([draws[i] for i in idx])
+        for suffix, V in (("", W), ("_abs", np.abs(W))):
+            out["greedy" + suffix][idx] = greedy_values(V)
+            out["optimum" + suffix][idx], best = _brute_force(V)
+            if not suffix:
+                gap = out["optimum"][idx] / 3 - out["greedy"][idx]
+                k = int(np.argmax(gap))
+                if gap[k] > worst_gap:
+                    worst_gap, worst = gap[k], (idx[k], W[k], best[k])
+    i, W, best = worst
+    n, L = W.shape[0], W.shape[2]
+    P, Q = pair_assignments(n, L)
+    ii, jj = np.triu_indices(n, 1)
+    picks, _ = greedy_pairs_batch(W[None, ii, jj, :], n)
+    witness = {"instance": int(i), "W": W.tolist(), "greedy": float(out["greedy"][i]),
+               "optimum": float(out["optimum"][i]),
+               "greedy_triples": [tuple(t) for t in picks[0].tolist()],
+               "optimal_triples": [(int(P[best, l]), int(Q[best, l]), l) for l in range(L)]}
+    return SignedStudy(*_frozen(Ls, out["greedy"], out["optimum"], out["greedy_abs"],
+                                out["optimum_abs"]), witness)
 
 
 def tight_weights(eps: float = 1e-3) -> np.ndarray:

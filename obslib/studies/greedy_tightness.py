@@ -21,7 +21,8 @@ from ..bounds import pair_bounds
 from . import assignment as sa
 
 __all__ = ["tight_geometry", "TIGHT_SENSORS", "TIGHT_TARGETS", "TIGHT_U_MAX", "tight_witness",
-           "spread", "first_pick_margin", "jitter_ratios", "jitter_summary"]
+           "spread", "first_pick_margin", "jitter_ratios", "witness_jitter_ratios",
+           "jitter_summary"]
 
 #: The tightest geometry the local search of :func:`tight_geometry` found at the paper's sizes
 #: of notebook 03 (6 sensors, 3 targets, seed 0, 20 starts of 300 steps, ``u_max = 1``): there
@@ -52,11 +53,6 @@ def tight_witness():
     return np.array(TIGHT_SENSORS), np.array(TIGHT_TARGETS)
 
 
-@lru_cache(maxsize=4)
-def _search(n_sensors, n_targets, seed, n_starts, n_steps, u_max):
-    return sa.worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
-
-
 def tight_geometry(n_sensors: int = 6, n_targets: int = 3, seed: int = 0, n_starts: int = 20,
                    n_steps: int = 300, u_max: float = 1.0):
     """The worst geometry the local search of notebook 03 finds (Theorem 6, Sec. IV-A).
@@ -80,7 +76,7 @@ def tight_geometry(n_sensors: int = 6, n_targets: int = 3, seed: int = 0, n_star
     seed, u_max = as_int(seed, "seed", 0), as_nonnegative(u_max, "u_max")
     if n_sensors < 2 * n_targets:
         raise ValueError(f"need n_sensors >= 2 n_targets, got {n_sensors} and {n_targets}")
-    r, S, T = _search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
+    r, S, T = sa.worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
     return r, S.copy(), T.copy()
 
 
@@ -199,6 +195,30 @@ def jitter_ratios(sensors, targets, fractions, n_draws: int, seed: int = 0, u_ma
     for a, frac in enumerate(f):
         Q = P[None] + rng.normal(0.0, frac * sd, size=(int(n_draws), m, 2))
         out[a] = _ratio_batch(Q[:, :n], Q[:, n:], u_max)
+    return out
+
+
+def witness_jitter_ratios(fractions, n_draws: int, seed: int = 0) -> np.ndarray:
+    """:func:`jitter_ratios` of the stored witness (:func:`tight_witness`, ``u_max`` =
+    :data:`TIGHT_U_MAX`), cached on the arguments (the array returned is read-only), so that
+    the chapter and the ledger share one computation.
+
+    Examples
+    --------
+    >>> from obslib.studies.greedy_tightness import witness_jitter_ratios
+    >>> witness_jitter_ratios([1e-3], n_draws=4).shape
+    (1, 4)
+    """
+    f = tuple(float(x) for x in as_float_array(fractions, "fractions").reshape(-1))
+    if isinstance(n_draws, bool) or not isinstance(n_draws, (int, np.integer)) or n_draws < 1:
+        raise ValueError(f"n_draws must be a positive integer, got {n_draws!r}")
+    return _witness_jitter(f, int(n_draws), as_int(seed, "seed", 0))
+
+
+@lru_cache(maxsize=4)
+def _witness_jitter(fractions, n_draws, seed):
+    out = jitter_ratios(*tight_witness(), list(fractions), n_draws, seed, TIGHT_U_MAX)
+    out.setflags(write=False)
     return out
 
 

@@ -5,10 +5,19 @@ the number of targets grows (Section V-C; notebook 07, claims of
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
-from .._validate import as_bool, as_int, as_ints, as_mapping, as_nonnegative, as_positive
+from .._validate import (
+    as_bool,
+    as_int,
+    as_ints,
+    as_mapping,
+    as_nonnegative,
+    as_positive,
+    as_weights,
+)
 from ..assignment import (
     greedy_pair_assignment,
     optimal_pair_assignment,
@@ -27,6 +36,9 @@ __all__ = [
     "fig8_sweep",
     "Fig8Summary",
     "fig8_summary",
+    "Problem3Audit",
+    "problem3_milp",
+    "problem3_audit",
 ]
 
 #: The values each trial reports.
@@ -151,7 +163,9 @@ def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float
     L_values[a] <= optimum_max_L)``, bit for bit. Each task of the sweep solves a block of
     trials of one ``L`` together (one trial per task for the large instances);
     ``backend``, ``n_jobs``, ``scheduler`` and ``progress`` (a bar of the finished tasks on
-    standard error) go to :func:`obslib.sweep.run_sweep`; the numbers do not depend on them.
+    standard error) go to :func:`obslib.sweep.run_sweep`; the numbers do not depend on them, so
+    the result is cached on the other arguments (its arrays are read-only): a chapter and the
+    ledger asking for the same sweep share one computation.
 
     Examples
     --------
@@ -159,10 +173,27 @@ def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float
     >>> r["L"].tolist(), r["greedy"].shape
     ([1, 2], (2, 2))
     """
-    L_values = as_ints(L_values, "L_values", 1)
-    trials, seed = as_int(trials, "trials", 1), as_int(seed, "seed", 0)
-    u_max, side = as_nonnegative(u_max, "u_max"), as_positive(side, "side")
-    optimum_max_L = as_int(optimum_max_L, "optimum_max_L", 0)
+    key = (tuple(as_ints(L_values, "L_values", 1)), as_int(trials, "trials", 1),
+           as_int(seed, "seed", 0), float(as_nonnegative(u_max, "u_max")),
+           float(as_positive(side, "side")), as_int(optimum_max_L, "optimum_max_L", 0))
+    if key not in _SWEEPS:
+        out = _fig8_sweep(*key, backend, n_jobs, scheduler, progress)
+        for arr in out.values():
+            arr.setflags(write=False)
+        if len(_SWEEPS) >= _MAX_SWEEPS:  # forget the oldest
+            del _SWEEPS[next(iter(_SWEEPS))]
+        _SWEEPS[key] = out
+    return dict(_SWEEPS[key])
+
+
+#: The sweeps computed so far, by their arguments (at most :data:`_MAX_SWEEPS`, oldest first).
+_SWEEPS: dict = {}
+_MAX_SWEEPS = 8
+fig8_sweep.cache_clear = _SWEEPS.clear  # as functools.lru_cache names it
+
+
+def _fig8_sweep(L_values, trials, seed, u_max, side, optimum_max_L, backend, n_jobs, scheduler,
+                progress) -> dict:
     tasks, where = [], []
     for a, L in enumerate(L_values):
         n = 2 * L
@@ -178,6 +209,107 @@ def fig8_sweep(L_values, trials: int, seed: int, u_max: float = 1.0, side: float
         for k in FIG8_KEYS:
             out[k][a, cols] = r[k]
     out["L"] = np.array(L_values)
+    return out
+
+
+@dataclass(frozen=True)
+class Problem3Audit:
+    """Problem 3 (the relaxed matching) on Fig. 8's instances, against a 0-1 program and
+    against Problem 1's optimum (:func:`problem3_audit`); arrays ``(len(L), trials)``."""
+
+    L: np.ndarray  #: the numbers of targets (``N = 2L``)
+    matching: np.ndarray  #: the maximum weight matching of pairs to targets
+    milp: np.ndarray  #: Problem 3 solved as a 0-1 program
+    optimum: np.ndarray  #: Problem 1's optimum on the same instances
+
+    @property
+    def largest_difference(self) -> float:
+        """Largest ``|matching - milp|`` relative to the value (0 without instances)."""
+        if not self.milp.size:
+            return 0.0
+        return float(np.max(np.abs(self.matching - self.milp) / np.maximum(self.milp, 1e-300)))
+
+    @property
+    def below_optimum(self) -> np.ndarray:
+        """Instances where the relaxed value falls below Problem 1's optimum (beyond rounding)."""
+        return self.matching < self.optimum * (1 - 1e-12)
+
+
+def problem3_milp(W) -> float:
+    r"""Problem 3 (Sec. V-C) solved as a 0-1 program, independently of the matching.
+
+    Variables :math:`x_{pl} \in \{0, 1\}` for the unordered pairs :math:`p = (i, j)`,
+    :math:`i < j`, and targets :math:`l`: every target takes exactly one pair, every pair serves
+    at most one target (sensors may serve several), maximise :math:`\sum \omega_{pl} x_{pl}`
+    (``scipy.optimize.milp``, HiGHS).
+
+    Parameters
+    ----------
+    W : array_like, shape (N, N, L)
+        Pair weights, finite and symmetric in ``i, j``, ``N (N - 1) / 2 >= L``.
+
+    Examples
+    --------
+    Three sensors, two targets, the pair (0, 1) best for both; it can serve only one:
+
+    >>> W = np.zeros((3, 3, 2)); W[0, 1] = W[1, 0] = 1.0; W[0, 2] = W[2, 0] = 0.25
+    >>> problem3_milp(W)
+    1.25
+    """
+    from scipy.optimize import Bounds, LinearConstraint, milp
+    from scipy.sparse import coo_array
+
+    arr = as_weights(W)
+    n, _, n_targets = arr.shape
+    ii, jj = np.triu_indices(n, 1)
+    n_pairs = ii.size
+    if n_pairs < n_targets:
+        raise ValueError(f"{n_targets} targets need as many pairs, {n} sensors give {n_pairs}")
+    c = -arr[ii, jj, :].reshape(-1)  # variable p * L + l
+    var = np.arange(n_pairs * n_targets)
+    per_target = coo_array((np.ones(var.size), (var % n_targets, var)),
+                           shape=(n_targets, var.size))
+    per_pair = coo_array((np.ones(var.size), (var // n_targets, var)), shape=(n_pairs, var.size))
+    res = milp(c, integrality=np.ones(var.size), bounds=Bounds(0, 1),
+               constraints=[LinearConstraint(per_target, 1, 1),
+                            LinearConstraint(per_pair, 0, 1)],
+               options={"mip_rel_gap": 0.0})
+    if not res.success:
+        raise RuntimeError(f"the 0-1 program of Problem 3 failed: {res.message}")
+    x = np.round(res.x).astype(bool)
+    return float(arr[ii, jj, :].reshape(-1)[x].sum())
+
+
+def problem3_audit(L_max: int, trials: int, seed: int, u_max: float = 1.0, side: float = 100.0,
+                   optimum_max_L: int = 0) -> Problem3Audit:
+    """Problem 3 on the instances of the sweep :func:`fig8_sweep` ``(range(1, L_max + 1),
+    trials, seed, u_max, side, optimum_max_L)`` where that sweep solves Problem 1 exactly
+    (``L <= optimum_max_L``): the matching (:func:`obslib.relaxed_pair_assignment`, from the
+    sweep) against the 0-1 program :func:`problem3_milp`, and against Problem 1's optimum.
+    Cached on the arguments; the sweep is the chapter's, computed once.
+
+    Examples
+    --------
+    >>> a = problem3_audit(4, trials=2, seed=0, optimum_max_L=3)
+    >>> a.L.tolist(), a.largest_difference < 1e-12, bool(a.below_optimum.any())
+    ([1, 2, 3], True, False)
+    """
+    return _problem3_audit(as_int(L_max, "L_max", 1), as_int(trials, "trials", 1),
+                           as_int(seed, "seed", 0), float(as_nonnegative(u_max, "u_max")),
+                           float(as_positive(side, "side")),
+                           as_int(optimum_max_L, "optimum_max_L", 0))
+
+
+@lru_cache(maxsize=4)
+def _problem3_audit(L_max, trials, seed, u_max, side, optimum_max_L):
+    sweep = fig8_sweep(range(1, L_max + 1), trials, seed, u_max, side, optimum_max_L)
+    rows = np.flatnonzero(sweep["L"] <= optimum_max_L)
+    Ls = sweep["L"][rows]
+    milps = np.array([[problem3_milp(pair_bounds(*_draw(int(L), t, seed, side), u_max))
+                       for t in range(trials)] for L in Ls]).reshape(len(Ls), trials)
+    out = Problem3Audit(Ls, sweep["relaxed"][rows], milps, sweep["optimum"][rows])
+    for arr in (out.L, out.matching, out.milp, out.optimum):
+        arr.setflags(write=False)
     return out
 
 

@@ -47,10 +47,14 @@ __all__ = [
     "random_instances",
     "INSTANCE_KINDS",
     "CONFIGS",
+    "LOGDET_CONFIGS",
+    "LOGDET_MATRICES",
     "MeasureAudit",
     "measure_audit",
     "theorem8_audit",
     "theorem8_verdicts",
+    "LogdetDomain",
+    "logdet_domain_audit",
     "LowerBoundAudit",
     "lower_bound_audit",
 ]
@@ -114,7 +118,7 @@ def case_audit(case: str, min_sizes=(0, 2), u_max: float = FIG3_U_MAX, rtol: flo
     Case 1 claims :math:`\omega` is not monotone by :math:`\omega(A) > \omega(A + x)`; Case 2 claims
     it is not submodular by :math:`\omega(A + x) - \omega(A) < \omega(B + x) - \omega(B)`.
     Each claim is re-decided from our values; the whole geometry is also searched for the
-    smallest witnesses at each ``min_size`` in ``min_sizes``.
+    smallest witnesses at each ``min_size`` in ``min_sizes``. Cached on the arguments.
 
     Examples
     --------
@@ -129,9 +133,14 @@ def case_audit(case: str, min_sizes=(0, 2), u_max: float = FIG3_U_MAX, rtol: flo
     """
     if as_str(case, "case") not in FIG3_CASES:
         raise ValueError(f"unknown case {case!r}; known: {list(FIG3_CASES)}")
-    min_sizes = as_ints(min_sizes, "min_sizes", 0)
-    u_max = as_nonnegative(u_max, "u_max")
-    rtol, atol = as_nonnegative(rtol, "rtol"), as_nonnegative(atol, "atol")
+    min_sizes = tuple(sorted(set(as_ints(min_sizes, "min_sizes", 0))))
+    u_max = float(as_nonnegative(u_max, "u_max"))
+    rtol, atol = float(as_nonnegative(rtol, "rtol")), float(as_nonnegative(atol, "atol"))
+    return _case_audit(case, min_sizes, u_max, rtol, atol)
+
+
+@lru_cache(maxsize=16)
+def _case_audit(case, min_sizes, u_max, rtol, atol):
     sensors = FIG3_CASES[case]
     n = sensors.shape[0]
     omega = lower_bound_set_function(sensors, FIG3_TARGET, u_max)
@@ -212,6 +221,12 @@ CONFIGS = (
 )
 
 
+#: The matrix of Theorem 8 itself, with the control row and no prior: its log determinant is
+#: finite on every non-empty team (for a control not parallel to a sensor's row), so the audit
+#: compares teams of at least one sensor (:func:`logdet_domain_audit`).
+LOGDET_CONFIGS = (("eps = 0, u row, |S| >= 1", False, True, 1, INSTANCE_KINDS),)
+
+
 @dataclass(frozen=True)
 class MeasureAudit:
     """Counts of instances violating each property, for one measure and configuration."""
@@ -261,17 +276,11 @@ def _smallest(values, sizes, attr, n, m, sensors, targets, us):
     return d
 
 
-def _measure_audits(names, n_instances: int, n_sensors: int, seed: int, eps: float,
-                    u_max: float, config: str) -> dict:
-    """:func:`measure_audit` for several measures of one configuration, instances drawn once."""
-    for name in names:
-        if name not in MEASURES:
-            raise ValueError(f"unknown measure {name!r}; known: {MEASURES}")
-    cfg = {c[0]: c for c in CONFIGS}
-    if config not in cfg:
-        raise ValueError(f"unknown config {config!r}; known: {list(cfg)}")
-    _, use_eps, use_u, min_size, kinds = cfg[config]
-    e = float(eps) if use_eps else 0.0
+def _config_tables(names, n_instances, n_sensors, seed, eps, u_max, use_u, kinds):
+    """The instances of a configuration and the tables of the measures ``names`` on them:
+    sensors ``(I, N, 2)``, targets ``(I, 2)``, controls ``(I, 2)`` or ``None``, and
+    ``{name: (I, 2**N)}``; ``n_instances`` drawn of each instance kind in ``kinds``, each
+    control of norm ``u_max`` in a random direction."""
     masks = subset_masks(n_sensors)
     all_s, all_t, all_u = [], [], []
     tables = {name: [] for name in names}
@@ -282,15 +291,31 @@ def _measure_audits(names, n_instances: int, n_sensors: int, seed: int, eps: flo
             phi = np.random.default_rng(seed + 104729 + k).uniform(0, 2 * np.pi, n_instances)
             us = u_max * np.column_stack([np.cos(phi), np.sin(phi)])
             all_u.append(us)
-        for name, vals in measures_from_vectors(t[:, None, :] - s, masks, names, e, us).items():
+        for name, vals in measures_from_vectors(t[:, None, :] - s, masks, names, eps,
+                                                us).items():
             tables[name].append(vals)
         all_s.append(s)
         all_t.append(t)
-    s, t = np.concatenate(all_s), np.concatenate(all_t)
     us = np.concatenate(all_u) if use_u else None
+    return (np.concatenate(all_s), np.concatenate(all_t), us,
+            {name: np.concatenate(v) for name, v in tables.items()})
+
+
+def _measure_audits(names, n_instances: int, n_sensors: int, seed: int, eps: float,
+                    u_max: float, config: str) -> dict:
+    """:func:`measure_audit` for several measures of one configuration, instances drawn once."""
+    for name in names:
+        if name not in MEASURES:
+            raise ValueError(f"unknown measure {name!r}; known: {MEASURES}")
+    cfg = {c[0]: c for c in CONFIGS + LOGDET_CONFIGS}
+    if config not in cfg:
+        raise ValueError(f"unknown config {config!r}; known: {list(cfg)}")
+    _, use_eps, use_u, min_size, kinds = cfg[config]
+    e = float(eps) if use_eps else 0.0
+    s, t, us, tables = _config_tables(names, n_instances, n_sensors, seed, e, u_max, use_u, kinds)
     out = {}
     for name in names:
-        vals = np.concatenate(tables[name])
+        vals = tables[name]
         fl = audit_flags(vals, n_sensors, min_size)
         out[name] = MeasureAudit(
             measure=name, config=config, eps=e, min_size=min_size, n_instances=vals.shape[0],
@@ -399,6 +424,102 @@ def theorem8_verdicts(rows) -> dict:
     out["trace_inverse"] = ("reproduced" if inc and sub else
                             ("partly" if ninc and nsub else "refuted"))
     return out
+
+
+#: The four matrices whose log determinant :func:`logdet_domain_audit` examines: name ->
+#: (prior ``eps I``, control row, smallest team compared, instance kinds).
+LOGDET_MATRICES = {
+    "prior, no control row": (True, False, 0, INSTANCE_KINDS),
+    "prior and control row": (True, True, 0, INSTANCE_KINDS),
+    "control row, no prior": (False, True, 1, INSTANCE_KINDS),
+    "no control row, no prior": (False, False, 2, ("generic",)),
+}
+
+
+@dataclass(frozen=True)
+class LogdetDomain:
+    """Where the log determinant of one matrix of :data:`LOGDET_MATRICES` is finite, and how it
+    behaves on the teams where it is (:func:`logdet_domain_audit`)."""
+
+    matrix: str  #: a key of :data:`LOGDET_MATRICES`
+    eps: float
+    control_row: bool
+    n_instances: int
+    n_sensors: int
+    #: per team size ``k = 0 .. N``, the share of teams of that size (over all instances) whose
+    #: log determinant is ``-inf``
+    infinite_share: tuple
+    #: the smallest size from which every team of every instance is finite (``N + 1`` if none)
+    finite_from: int
+    audit: MeasureAudit  #: monotone / submodular over the teams of at least ``finite_from``
+
+    def as_dict(self) -> dict:
+        d = asdict(self)
+        d["audit"] = self.audit.as_dict()
+        return d
+
+
+def logdet_domain_audit(n_instances: int, n_sensors: int, seed: int, eps: float,
+                        u_max: float) -> tuple[LogdetDomain, ...]:
+    r"""Theorem 8's log determinant on the four matrices of :data:`LOGDET_MATRICES`.
+
+    Theorem 8 is stated for :math:`\mathbb{O}(o, u_o) = O^T(o, u_o) O(o, u_o)`, with the control
+    row; the authors' code uses :math:`u_o = 0`. Without a prior :math:`\varepsilon I` the log
+    determinant is :math:`-\infty` where the matrix is singular: with the control row only for
+    the empty team (and a team whose one sensor's row is parallel to :math:`u_o`), without it for
+    every team of fewer than two sensors (and every team on one line through the target), where
+    the differences that define monotone and submodular are undefined. For each matrix, on the
+    instances of the Theorem 8 audit (:func:`theorem8_audit`: the same draws, the same
+    controls), this counts the teams of each size where it is :math:`-\infty` and audits the
+    teams of the sizes where it is always finite. Cached on the arguments.
+
+    Examples
+    --------
+    >>> for r in logdet_domain_audit(20, 4, 0, 1.0, 1.0):
+    ...     print(f"{r.matrix}: finite from {r.finite_from} sensors, "
+    ...           f"submodular {r.audit.submodular}")
+    prior, no control row: finite from 0 sensors, submodular True
+    prior and control row: finite from 0 sensors, submodular True
+    control row, no prior: finite from 1 sensors, submodular True
+    no control row, no prior: finite from 2 sensors, submodular True
+    """
+    return _logdet_domain_audit(
+        as_int(n_instances, "n_instances", 1), as_int(n_sensors, "n_sensors", 1),
+        as_int(seed, "seed", 0), as_eps(eps), float(as_nonnegative(u_max, "u_max")))
+
+
+@lru_cache(maxsize=4)
+def _logdet_domain_audit(n_instances, n_sensors, seed, eps, u_max):
+    sizes = subset_masks(n_sensors).sum(axis=1)
+    out = []
+    for matrix, (use_eps, use_u, min_size, kinds) in LOGDET_MATRICES.items():
+        e = eps if use_eps else 0.0
+        s, t, us, tables = _config_tables(("logdet",), n_instances, n_sensors, seed, e, u_max,
+                                          use_u, kinds)
+        neginf = np.isneginf(tables["logdet"])
+        share = tuple(float(neginf[:, sizes == k].mean()) for k in range(n_sensors + 1))
+        bad = [k for k in range(n_sensors + 1) if share[k] > 0]
+        finite_from = max(bad) + 1 if bad else 0
+        m = max(min_size, finite_from)
+        vals = tables["logdet"]
+        fl = audit_flags(vals, n_sensors, m) if m <= n_sensors else None
+        config = next((c[0] for c in CONFIGS + LOGDET_CONFIGS
+                       if c[1:] == (use_eps, use_u, m, kinds)), matrix)
+        audit = MeasureAudit(
+            measure="logdet", config=config, eps=e, min_size=m, n_instances=vals.shape[0],
+            n_sensors=n_sensors,
+            n_not_increasing=int(fl.decreases.sum()) if fl else 0,
+            n_not_decreasing=int(fl.increases.sum()) if fl else 0,
+            n_not_submodular=int(fl.not_submodular.sum()) if fl else 0,
+            n_not_supermodular=int(fl.not_supermodular.sum()) if fl else 0,
+            witness=_smallest(vals, fl.submodular_witness_size, "submodular_witness",
+                              n_sensors, m, s, t, us) if fl else None,
+            monotone_witness=_smallest(vals, fl.monotone_witness_size, "monotone_witness",
+                                       n_sensors, m, s, t, us) if fl else None,
+        )
+        out.append(LogdetDomain(matrix, e, use_u, vals.shape[0], n_sensors, share, finite_from,
+                                audit))
+    return tuple(out)
 
 
 @dataclass(frozen=True)

@@ -158,3 +158,38 @@ def test_search_equals_the_sequential_local_search():
     assert r == best[0]
     np.testing.assert_array_equal(S, best[1])
     np.testing.assert_array_equal(T, best[2])
+
+
+def test_optimal_assignments_are_optimal_and_equal_the_values():
+    rng = np.random.default_rng(6)
+    for n, L in [(2, 1), (5, 2), (6, 3), (8, 4), (9, 3)]:
+        W = rng.uniform(-1, 1, (15, n, n, L))
+        W = W + W.transpose(0, 2, 1, 3)  # symmetric, both signs
+        values, triples = sa.optimal_assignments(W)
+        np.testing.assert_array_equal(values, sa.optimal_values(W))
+        P, Q = sa.pair_assignments(n, L)
+        np.testing.assert_array_equal(values, W[:, P, Q, np.arange(L)].sum(axis=2).max(axis=1))
+        for k in range(15):
+            i, j, l = triples[k].T
+            assert (i < j).all() and l.tolist() == list(range(L))
+            assert len(set(i) | set(j)) == 2 * L  # disjoint pairs
+            assert W[k, i, j, l].sum() == pytest.approx(values[k], abs=1e-12)
+
+
+def test_studies_are_cached_and_read_only():
+    a = sa.greedy_vs_optimal(30, seed=2)
+    b = sa.greedy_vs_optimal(30, 2, (2, 4), (0, 2), 1.0, 100.0)
+    assert a is b  # one computation for the chapter and the ledger
+    with pytest.raises(ValueError, match="read-only"):
+        a.greedy[0] = 0.0
+    r, S, _ = sa.worst_instance_search(4, 2, seed=0, n_starts=2, n_steps=5)
+    assert sa.worst_instance_search(4, 2, 0, 2, 5, 1.0, 100.0)[1] is S
+    with pytest.raises(ValueError, match="read-only"):
+        S[0, 0] = 1.0
+
+
+def test_signed_and_charging_studies_reject_bad_input():
+    with pytest.raises(ValueError, match="n_instances"):
+        sa.signed_weights_study(0, seed=0)
+    with pytest.raises(ValueError, match="targets"):
+        sa.charging_audit(5, seed=0, targets=(3, 2))

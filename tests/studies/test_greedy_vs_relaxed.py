@@ -65,6 +65,7 @@ def test_fig8_sweep_equals_its_trials_bit_for_bit(monkeypatch):
     # exact solver (N > MAX_DP_SENSORS), L = 41 is the first above FIG8_DENSE_WEIGHTS
     assert gvr._is_dense(40) and not gvr._is_dense(41)
     monkeypatch.setattr(gvr, "_BLOCK_WEIGHTS", 3000)
+    gvr.fig8_sweep.cache_clear()  # the sweep is cached on its arguments: compute it afresh
     L_values, trials, seed = [1, 7, 9, 40, 41], 3, 11
     r = gvr.fig8_sweep(L_values, trials, seed, 1.5, 50.0, optimum_max_L=9)
     for a, L in enumerate(L_values):
@@ -73,3 +74,22 @@ def test_fig8_sweep_equals_its_trials_bit_for_bit(monkeypatch):
             for k in gvr.FIG8_KEYS:
                 assert np.array_equal(r[k][a, t], one[k], equal_nan=True), (L, t, k)
     assert np.isnan(r["optimum"][3:]).all() and not np.isnan(r["optimum"][:3]).any()
+    gvr.fig8_sweep.cache_clear()  # not kept: it was made with the patched block budget
+
+
+def test_fig8_sweep_is_cached_whatever_the_backend():
+    a = gvr.fig8_sweep([1, 2], trials=3, seed=11)
+    b = gvr.fig8_sweep(range(1, 3), 3, 11, 1.0, 100.0, 0, backend="serial", progress=False)
+    assert a is not b and all(a[k] is b[k] for k in a)  # the same arrays, computed once
+    with pytest.raises(ValueError, match="read-only"):
+        a["greedy"][0, 0] = 0.0
+
+
+def test_problem3_milp_rejects_bad_input_and_audit_reads_the_sweep():
+    with pytest.raises(ValueError, match="targets need as many pairs"):
+        gvr.problem3_milp(np.zeros((2, 2, 2)))
+    a = gvr.problem3_audit(3, trials=2, seed=4, optimum_max_L=2)
+    r = gvr.fig8_sweep([1, 2, 3], 2, 4, optimum_max_L=2)
+    np.testing.assert_array_equal(a.matching, r["relaxed"][:2])
+    np.testing.assert_array_equal(a.optimum, r["optimum"][:2])
+    assert a.L.tolist() == [1, 2] and not a.below_optimum.any()

@@ -215,3 +215,14 @@ def test_neg_trace_inverse_witnesses_rederived():
         assert gB > gA + 1e-9
         found += 1
     assert found == 3  # in every configuration
+
+
+def test_logdet_domains_share_the_theorem8_draws():
+    """The three matrices the Theorem 8 audit also checks give its logdet rows exactly."""
+    rows = {r.config: r for r in sm.theorem8_audit(30, 4, 5, 1.0, 1.0) if r.measure == "logdet"}
+    for d in sm.logdet_domain_audit(30, 4, 5, 1.0, 1.0):
+        if d.audit.config in rows:
+            assert d.audit == rows[d.audit.config]
+        assert d.finite_from == {"prior, no control row": 0, "prior and control row": 0,
+                                 "control row, no prior": 1, "no control row, no prior": 2}[
+                                     d.matrix]
