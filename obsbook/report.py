@@ -347,8 +347,8 @@ _LATEX_TEXT = [
 
 
 def quote_myst(quote: str) -> str:
-    """The paper's words (LaTeX as printed) as MyST: math kept, ``\\emph``, quotes, ties,
-    dashes and citations of the text converted, ``\\ref`` replaced by the number the paper
+    r"""The paper's words (LaTeX as printed) as MyST: math kept, ``\emph``, quotes, ties,
+    dashes and citations of the text converted, ``\ref`` replaced by the number the paper
     prints (:data:`PAPER_LABELS`).
 
     Examples
@@ -390,9 +390,9 @@ def verdict_line(r) -> str:
     --------
     >>> from obslib.claims import Record
     >>> r = Record("x", "", "", "", "", "partly", "", {}, caveat="Partly at the paper's values; "
-    ...            "refuted with twice $u_{\\max}$.")
-    >>> verdict_line(r)
-    "**partly** (partly at the paper's values; refuted with twice $u_{\\max}$)"
+    ...            "refuted with half the noise seeds.")
+    >>> print(verdict_line(r))
+    **partly** (partly at the paper's values; refuted with half the noise seeds)
     """
     if not r.caveat:
         return _verdict(r.status)

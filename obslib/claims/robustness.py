@@ -31,7 +31,8 @@ from .._validate import as_mapping, as_names, as_path, as_sequence, as_str
 from ..profiles import RANGES, profile_names
 from ._ledger import _record, evaluate, registry, resolve
 
-__all__ = ["DATA", "caveat", "caveats", "DIMENSIONS", "SIZE_KEYS", "TRACKING_NOTEBOOKS", "FIXED_BY_PUBLISHED_RUN", "HEADERS",
+__all__ = ["DATA", "caveat", "caveats",
+           "DIMENSIONS", "SIZE_KEYS", "TRACKING_NOTEBOOKS", "FIXED_BY_PUBLISHED_RUN", "HEADERS",
            "default_ids", "verdict_robustness", "describe", "robustness_table", "to_json",
            "write_json", "read_json"]
 

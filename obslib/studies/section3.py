@@ -3,18 +3,18 @@
 
 Each audit draws seeded random scenes (:mod:`obslib.scenes`), computes the quantity a claim
 is about in two independent ways, and returns the counts and extremes that decide it. The
-claims ledger (:mod:`obslib.claims`) and notebook 01 both call these functions, which are
-cached on their arguments (:func:`obslib._memo.memoized`), so the report and the notebook show
-the numbers of one computation.
+claims ledger (:mod:`obslib.claims`) and notebook 01 both call these functions, which validate
+their arguments and then call a worker cached on them, so the report and the notebook show the
+numbers of one computation.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 
-from .._memo import memoized
 from .._validate import as_float_array, as_int, broadcast, check_scene_batch
 from ..bounds import lower_bounds, worst_case_controls
 from ..observability import inverse_condition_numbers, inverse_condition_numbers_polar
@@ -52,7 +52,6 @@ class Theorem1Audit:
     min_slack_by_kind: dict = field(default_factory=dict)
 
 
-@memoized()
 def theorem1_audit(n_scenes: int, n_controls: int, seed: int) -> Theorem1Audit:
     r"""Check Theorem 1, :math:`\underline{C}^{-1} \le C^{-1}(O(o, u))`, for random :math:`\|u\| \le
     u_{\max}`.
@@ -72,6 +71,15 @@ def theorem1_audit(n_scenes: int, n_controls: int, seed: int) -> Theorem1Audit:
     >>> a.n_evaluations, a.n_violations
     (450, 0)
     """
+    return _theorem1_audit(
+        as_int(n_scenes, "n_scenes", 1),
+        as_int(n_controls, "n_controls", 1),
+        as_int(seed, "seed", 0),
+    )
+
+
+@lru_cache(maxsize=8)
+def _theorem1_audit(n_scenes, n_controls, seed) -> Theorem1Audit:
     batch = random_scene_batch(n_scenes, seed)
     rows, u_max = batch.rows, batch.u_max
     rng = np.random.default_rng(seed + 1)
@@ -107,7 +115,6 @@ class Theorem2Audit:
     exact_range: tuple  #: (min, max) of the exact one-sensor ``C^{-1}`` over random controls
 
 
-@memoized()
 def theorem2_audit(n_scenes: int, seed: int) -> Theorem2Audit:
     r"""Check Theorem 2: with one sensor the bound is 0 wherever the sensor is.
 
@@ -122,6 +129,14 @@ def theorem2_audit(n_scenes: int, seed: int) -> Theorem2Audit:
     >>> a.max_bound < 1e-7, a.max_relative_lambda_min < 1e-14
     (True, True)
     """
+    return _theorem2_audit(
+        as_int(n_scenes, "n_scenes", 1),
+        as_int(seed, "seed", 0),
+    )
+
+
+@lru_cache(maxsize=8)
+def _theorem2_audit(n_scenes, seed) -> Theorem2Audit:
     batch = random_scene_batch(n_scenes, seed, n_sensors=(1, 1), kinds=("generic", "spread"))
     rows = batch.rows  # (S, 1, 2)
     lam = np.linalg.eigvalsh(np.swapaxes(rows, 1, 2) @ rows)
@@ -178,7 +193,6 @@ class Theorem3Audit:
     remark2_necessary_violations: int
 
 
-@memoized()
 def theorem3_audit(n_trials: int, seed: int) -> Theorem3Audit:
     r"""Check Theorem 3 and the condition printed in its proof on random configurations.
 
@@ -199,8 +213,16 @@ def theorem3_audit(n_trials: int, seed: int) -> Theorem3Audit:
     ...  a.remark2_necessary_violations)
     ((168, 0), True, 0)
     """
-    rng = np.random.default_rng(as_int(seed, "seed", 0))
-    T = as_int(n_trials, "n_trials", 1)
+    return _theorem3_audit(
+        as_int(n_trials, "n_trials", 1),
+        as_int(seed, "seed", 0),
+    )
+
+
+@lru_cache(maxsize=8)
+def _theorem3_audit(n_trials, seed) -> Theorem3Audit:
+    rng = np.random.default_rng(seed)
+    T = n_trials
     counts_n = rng.integers(2, 5, size=(T, 2))  # sensors before / after
     scale = 10.0 ** rng.uniform(-1, 1, size=(T, 2))
     sensors = rng.uniform(-1, 1, size=(T, 2, 4, 2)) * scale[..., None, None]
@@ -260,7 +282,6 @@ class Remark1Audit:
     min_over_disc_gap: float
 
 
-@memoized()
 def remark1_audit(n_scenes: int, seed: int, n_radii: int = 8, n_angles: int = 64) -> Remark1Audit:
     r"""Check Remark 1 (the bound is exact for :math:`u_o = 0`) and its moving-target counterpart.
 
@@ -280,6 +301,16 @@ def remark1_audit(n_scenes: int, seed: int, n_radii: int = 8, n_angles: int = 64
     ...  a.min_over_disc_gap >= -1e-12)
     (True, True, True)
     """
+    return _remark1_audit(
+        as_int(n_scenes, "n_scenes", 1),
+        as_int(seed, "seed", 0),
+        as_int(n_radii, "n_radii", 1),
+        as_int(n_angles, "n_angles", 1),
+    )
+
+
+@lru_cache(maxsize=8)
+def _remark1_audit(n_scenes, seed, n_radii, n_angles) -> Remark1Audit:
     batch = random_scene_batch(n_scenes, seed, kinds=("generic", "spread"))
     rows, u_max = batch.rows, batch.u_max
     lam = np.linalg.eigvalsh(np.swapaxes(rows, 1, 2) @ rows)
@@ -322,7 +353,6 @@ def _outputs(sensors: np.ndarray, o: np.ndarray, u: np.ndarray) -> np.ndarray:
     return np.concatenate([0.5 * (d**2).sum(-1), d @ u], axis=-1)
 
 
-@memoized()
 def rank_observability_audit(n_scenes: int, seed: int, n_directions: int = 72) -> RankAudit:
     r"""Check the rank test of Sec. III: full column rank of :math:`O(o, u_o)` and local
     observability.
@@ -344,9 +374,15 @@ def rank_observability_audit(n_scenes: int, seed: int, n_directions: int = 72) -
     >>> a.min_ratio > 0.99, a.max_twin_gap < 1e-12, a.max_deficient_icn < 1e-7
     (True, True, True)
     """
-    n_scenes = as_int(n_scenes, "n_scenes", 4)
-    seed = as_int(seed, "seed", 0)
-    n_directions = as_int(n_directions, "n_directions", 8)
+    return _rank_observability_audit(
+        as_int(n_scenes, "n_scenes", 4),
+        as_int(seed, "seed", 0),
+        as_int(n_directions, "n_directions", 8),
+    )
+
+
+@lru_cache(maxsize=8)
+def _rank_observability_audit(n_scenes, seed, n_directions) -> RankAudit:
     rng = np.random.default_rng(seed)
     phi = 2 * np.pi * np.arange(n_directions) / n_directions
     dirs = np.column_stack([np.cos(phi), np.sin(phi)])
@@ -397,7 +433,6 @@ class SquaredRangeAudit:
     icn_ratio: tuple  #: (min, max) over scenes of the best pair's C^-1, range over squared range
 
 
-@memoized()
 def squared_range_audit(n_scenes: int, seed: int, n_sensors: int = 6) -> SquaredRangeAudit:
     r"""What the square in :math:`z_i = \tfrac12\lVert p_i - o\rVert^2` changes.
 
@@ -415,9 +450,15 @@ def squared_range_audit(n_scenes: int, seed: int, n_sensors: int = 6) -> Squared
     >>> a.same_rank == a.n_scenes, 0 < a.pair_differs < 1
     (True, True)
     """
-    n_scenes = as_int(n_scenes, "n_scenes", 1)
-    seed = as_int(seed, "seed", 0)
-    n_sensors = as_int(n_sensors, "n_sensors", 3)
+    return _squared_range_audit(
+        as_int(n_scenes, "n_scenes", 1),
+        as_int(seed, "seed", 0),
+        as_int(n_sensors, "n_sensors", 3),
+    )
+
+
+@lru_cache(maxsize=8)
+def _squared_range_audit(n_scenes, seed, n_sensors) -> SquaredRangeAudit:
     rng = np.random.default_rng(seed)
     targets = rng.uniform(0, 100, size=(n_scenes, 2))
     sensors = rng.uniform(0, 100, size=(n_scenes, n_sensors, 2))
