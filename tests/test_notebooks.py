@@ -99,38 +99,6 @@ def test_toc_lists_every_notebook_and_every_entry_exists():
     assert NOTEBOOK_DIR.exists()
 
 
-def report_statuses():
-    """Statuses in the committed report page, by claim id (each entry's anchor ``(claim-<id>)=``
-    is followed by a line naming its verdict or status in bold)."""
-    import re
-
-    text = (ROOT / "book" / "report.md").read_text()
-    return dict(re.findall(r"^\(claim-([a-z0-9-]+)\)=\n(?:.*\n)*?.*?\*(?:Verdict|Status):\* "
-                           r"\*\*([a-z]+)\*\*", text, re.M))
-
-
-@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
-def test_summary_verdicts_typed_in_prose_match_the_ledger(path):
-    """A summary row '... (`id`) | verdict | ...' in a notebook must agree with the report."""
-    import re
-
-    statuses = report_statuses()
-    for cell in json.loads(path.read_text())["cells"]:
-        if cell["cell_type"] != "markdown":
-            continue
-        for line in "".join(cell["source"]).splitlines():
-            m = re.match(
-                r"\|.*\(`([a-z0-9-]+)`\) \| "
-                r"(reproduced|partly|refuted|untestable|answered|open) \|",
-                line,
-            )
-            if m:
-                assert m.group(1) in statuses, f"{path.name}: {m.group(1)} is not in the report"
-                assert statuses[m.group(1)] == m.group(2), (
-                    f"{path.name}: {m.group(1)} typed as {m.group(2)}"
-                )
-
-
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_papermill_sees_every_parameter(path):
     """papermill cannot parse a parameter line whose comment holds '=' or quotes; -p would then
@@ -140,45 +108,50 @@ def test_papermill_sees_every_parameter(path):
     assert set(pm.inspect_notebook(str(path))) == set(params(path.stem, "paper"))
 
 
-VERDICT_BOX = re.compile(
-    r"```\{admonition\} Verdict: (?P<title>[a-z]+)\n:class: verdict verdict-(?P<cls>[a-z]+)\n"
-    r"(?P<body>.*?)```", re.S)
-
-
-def verdict_boxes():
-    """Every verdict box of the notebooks: (notebook, title status, class status, claim ids)."""
+def glued_verdicts():
+    """Every verdict box the notebooks glue: (notebook, claim id, its MyST text)."""
     out = []
     for path in NOTEBOOKS:
         for cell in json.loads(path.read_text())["cells"]:
-            if cell["cell_type"] != "markdown":
-                continue
-            for m in VERDICT_BOX.finditer("".join(cell["source"])):
-                ids = re.findall(r"<claim-([a-z0-9-]+)>`", m.group("body"))
-                out.append((path.stem, m.group("title"), m.group("cls"), ids))
+            for o in cell.get("outputs", []):
+                name = o.get("metadata", {}).get("scrapbook", {}).get("name", "")
+                if name.startswith("verdict_"):
+                    text = o["data"]["application/papermill.record/text/markdown"]
+                    m = re.search(r"\(#claim-([a-z0-9-]+)\)\n```$", text)
+                    out.append((path.stem, m.group(1) if m else name, text))
     return out
 
 
-def test_every_claim_has_a_verdict_box_that_agrees_with_the_ledger():
-    """Each chapter ends a check with a verdict box: its title and colour say the ledger's status
-    of the claim it links to, and every claim of the ledger has such a box."""
-    statuses = report_statuses()
-    boxes = verdict_boxes()
-    wrong = []
-    for nb, title, cls, ids in boxes:
-        if title != cls or len(ids) != 1:
-            wrong.append(f"{nb}: box '{title}' (class {cls}) links to {ids or 'no claim'}")
-        elif statuses.get(ids[0]) != title:
-            actual = statuses.get(ids[0], "not a claim")
-            wrong.append(f"{nb}: {ids[0]} is {actual}, its box says {title}")
+@pytest.fixture(scope="module")
+def paper_ledger():
+    from obslib.claims import evaluate
+    from obslib.claims import robustness as rb
+
+    return {r.id: r for r in evaluate("paper", caveats=rb.caveats())}
+
+
+def test_every_verdict_box_is_the_ledger_s_statement(paper_ledger):
+    """A chapter never types a verdict: each box is glued from the ledger, and at the paper's
+    parameters it is the very text the report states (status, one sentence, caveat)."""
+    from obsbook.verdicts import box
+
+    wrong = [f"{nb}: the box of {cid} differs from the ledger's" for nb, cid, text
+             in glued_verdicts() if cid not in paper_ledger or text != box(paper_ledger[cid])]
     assert not wrong, "\n".join(wrong)
-    boxed = {i for _, _, _, ids in boxes for i in ids}
-    missing = sorted(set(statuses) - boxed)
-    assert not missing, f"claims without a verdict box: {missing}"
 
 
-def test_verdict_box_pattern_reads_a_box():
-    cell = ("```{admonition} Verdict: partly\n:class: verdict verdict-partly\n\nHolds in part. "
-            "{ref}`The claim in words <claim-thm3>`\n```")
-    m = VERDICT_BOX.search(cell)
-    assert m and m.group("title") == "partly"
-    assert re.findall(r"<claim-([a-z0-9-]+)>`", m.group("body")) == ["thm3"]
+def test_every_entry_has_a_box_in_its_chapter_and_no_box_is_typed(paper_ledger):
+    boxed = {(nb, cid) for nb, cid, _ in glued_verdicts()}
+    missing = [f"{r.id} in {r.notebook}" for r in paper_ledger.values()
+               if (r.notebook, r.id) not in boxed]
+    assert not missing, "entries without a verdict box in their chapter: " + ", ".join(missing)
+    for path in NOTEBOOKS:
+        glued = {f"verdict_{cid.replace('-', '_')}" for nb, cid, _ in glued_verdicts()
+                 if nb == path.stem}
+        for cell in json.loads(path.read_text())["cells"]:
+            if cell["cell_type"] != "markdown":
+                continue
+            src = "".join(cell["source"])
+            assert "{admonition} Verdict" not in src, f"{path.name}: a typed verdict box"
+            for key in re.findall(r"\{glue:md\} (verdict_\w+)", src):
+                assert key in glued, f"{path.name}: shows {key}, which it does not glue"
