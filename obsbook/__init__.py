@@ -13,8 +13,9 @@ layout (:mod:`obsbook.figures`). Tables are numbered, caption above (:func:`numb
 from obslib._format import count, listing, number, percent, setting, small, span
 
 from .figures import setup
-from .glue import glue_number, glue_text
-from .tables import formatted_table, markdown_table, numbered_table
+from .glue import glue_number, glue_text, glue_texts
+from .tables import formatted_table, markdown_table, numbered_table, rows_table
 
 __all__ = ["number", "count", "small", "percent", "span", "setting", "listing", "setup",
-           "glue_number", "glue_text", "formatted_table", "markdown_table", "numbered_table"]
+           "glue_number", "glue_text", "glue_texts", "formatted_table", "markdown_table",
+           "numbered_table", "rows_table"]

@@ -33,8 +33,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
+from .._validate import as_float_array, as_int
+
 __all__ = ["OKABE_ITO", "GREY", "SEQUENTIAL", "Look", "LOOKS", "look", "PUBLISHED_STYLE",
-           "REPLAY_STYLE", "as_axes", "as_figsize"]
+           "REPLAY_STYLE", "sensor_label", "target_label", "as_axes", "as_figsize"]
 
 #: Okabe and Ito's colours (https://jfly.uni-koeln.de/color/), by their names.
 OKABE_ITO = {
@@ -143,6 +147,34 @@ PUBLISHED_STYLE = {"lw": 4.0, "alpha": 0.3, "solid_capstyle": "round"}
 REPLAY_STYLE = {"lw": 1.0}
 
 
+_SUBSCRIPT = str.maketrans("0123456789", "".join(chr(0x2080 + d) for d in range(10)))
+
+
+def sensor_label(i: int) -> str:
+    """``"s"`` with the 1-based index of sensor ``i`` (0-based) as Unicode subscript digits:
+    the figures' sensor names, plain text (no mathtext to parse).
+
+    Examples
+    --------
+    >>> from obslib.viz.style import sensor_label
+    >>> sensor_label(0), sensor_label(11)
+    ('s₁', 's₁₂')
+    """
+    return "s" + str(as_int(i, "i", 0) + 1).translate(_SUBSCRIPT)
+
+
+def target_label(l: int) -> str:
+    """``"t"`` with the 1-based index of target ``l`` (0-based) as Unicode subscript digits, as
+    :func:`sensor_label` names sensors.
+
+    Examples
+    --------
+    >>> target_label(0)
+    't₁'
+    """
+    return "t" + str(as_int(l, "l", 0) + 1).translate(_SUBSCRIPT)
+
+
 def as_axes(ax, name: str = "ax"):
     """``ax`` if it is a matplotlib ``Axes``, else a ValueError naming ``name``.
 
@@ -158,6 +190,28 @@ def as_axes(ax, name: str = "ax"):
     if not isinstance(ax, Axes):
         raise ValueError(f"{name} must be a matplotlib Axes, got {type(ax).__name__}")
     return ax
+
+
+def _as_series(x, name: str, length: int | None = None, *, finite: bool = True) -> np.ndarray:
+    """``x`` as a one-dimensional float array (of ``length`` values if given), finite unless
+    ``finite`` is False (NaN then marks a missing value), else a ValueError naming ``name``.
+
+    Examples
+    --------
+    >>> _as_series([1, 2], "error")
+    array([1., 2.])
+    >>> _as_series([1, 2], "error", 3)
+    Traceback (most recent call last):
+    ...
+    ValueError: error must have 3 values, got shape (2,)
+    """
+    arr = as_float_array(x, name)
+    if arr.ndim != 1 or (length is not None and arr.shape[0] != length):
+        n = "one or more" if length is None else str(length)
+        raise ValueError(f"{name} must have {n} values, got shape {arr.shape}")
+    if finite and not np.isfinite(arr).all():
+        raise ValueError(f"{name} must be finite")
+    return arr
 
 
 def as_figsize(figsize) -> tuple:

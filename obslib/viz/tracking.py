@@ -22,12 +22,19 @@ from .._validate import (
     as_str,
 )
 from ..tracking import TrackingResult
-from .style import LOOKS, PUBLISHED_STYLE, REPLAY_STYLE, as_axes, as_figsize, look
+from .style import (
+    LOOKS,
+    PUBLISHED_STYLE,
+    REPLAY_STYLE,
+    as_axes,
+    as_figsize,
+    look,
+    sensor_label,
+)
 
 __all__ = [
     "CHI2_2DOF_9973",
     "cov_ellipse",
-    "sensor_label",
     "draw_sensors",
     "draw_snapshot",
     "RunAnimation",
@@ -72,25 +79,10 @@ def cov_ellipse(mean, cov, chi2: float = CHI2_2DOF_9973, n: int = 100) -> np.nda
     return mean + (circle * np.sqrt(chi2 * np.clip(w, 0, None))) @ v.T
 
 
-_SUBSCRIPT = str.maketrans("0123456789", "".join(chr(0x2080 + d) for d in range(10)))
-
-
-def sensor_label(i: int) -> str:
-    """``"s"`` with the 1-based index of sensor ``i`` (0-based) as Unicode subscript digits:
-    the figures' sensor names, plain text (no mathtext to parse).
-
-    Examples
-    --------
-    >>> from obslib.viz.tracking import sensor_label
-    >>> sensor_label(0), sensor_label(11)
-    ('s₁', 's₁₂')
-    """
-    return "s" + str(as_int(i, "i", 0) + 1).translate(_SUBSCRIPT)
-
-
 def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
     """Sensors as triangles (the look ``sensor`` of :mod:`obslib.viz.style`) named
-    ``s1..sN`` (:func:`sensor_label`) on ``ax``; ``label`` is their legend entry (none if None).
+    ``s1..sN`` (:func:`~obslib.viz.style.sensor_label`) on ``ax``; ``label`` is their legend
+    entry (none if None).
 
     The names stand above and right of the triangles, so the axes keep at least 12 % of their
     data height free above the highest point (``ax.set_ymargin``): the top sensor's name stays
