@@ -199,7 +199,8 @@ def plot_tightness(sensors, target, u_max: float):
     --------
     >>> import matplotlib
     >>> matplotlib.use("Agg")  # no window
-    >>> fig = plot_tightness([[-3.0, 2.0], [0.0, 0.0], [4.0, 0.0]], [2.0, 3.0], 1.0)
+    >>> S = [[-3.0, 2.0], [0.0, 0.0], [4.0, 0.0]]
+    >>> fig = plot_tightness(S, [2.0, 3.0], 1.0)
     >>> len(fig.axes[0].get_legend().get_texts())
     3
     """
