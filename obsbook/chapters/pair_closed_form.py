@@ -264,7 +264,7 @@ def glue_weyl(audit) -> None:
 
     Parameters
     ----------
-    audit : obslib.studies.pair_form.WeylAudit
+    audit : obslib.studies.weyl.WeylAudit
         The audit's result.
     """
     rows = [(WEYL_TEX[k], "yes" if audit.symbolic_triangle_equal[k] else "no",
