@@ -67,6 +67,7 @@ def plot_greedy_and_optimum(sensors, targets, greedy, optimum, W=None, figsize=(
     --------
     >>> import matplotlib
     >>> matplotlib.use("Agg")  # no window
+    >>> import matplotlib.pyplot as plt
     >>> import obslib as ob
     >>> S = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0], [4.0, 4.0]]
     >>> T = [[2.0, 1.0], [2.0, 3.0]]
@@ -75,6 +76,7 @@ def plot_greedy_and_optimum(sensors, targets, greedy, optimum, W=None, figsize=(
     >>> fig = plot_greedy_and_optimum(S, T, g, o, W)
     >>> [ax.get_title().split(":")[0] for ax in fig.axes]
     ['greedy', 'optimum']
+    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -104,9 +106,11 @@ def plot_ratio_histogram(ratio):
     --------
     >>> import matplotlib
     >>> matplotlib.use("Agg")  # no window
+    >>> import matplotlib.pyplot as plt
     >>> fig = plot_ratio_histogram([1.0, 0.9, 0.95])
     >>> fig.axes[0].get_xlabel()
     'greedy / optimum (ratio of the totals)'
+    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 

@@ -62,9 +62,11 @@ def plot_reading_rings(error: float = 0.3):
     --------
     >>> import matplotlib
     >>> matplotlib.use("Agg")  # no window
+    >>> import matplotlib.pyplot as plt
     >>> fig = plot_reading_rings()
-    >>> [ax.get_title().split("\\n")[0] for ax in fig.axes]
+    >>> [ax.get_title().splitlines()[0] for ax in fig.axes]
     ['a cross', 'nearly parallel', 'one sensor']
+    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
     from matplotlib.patches import Wedge
@@ -110,10 +112,12 @@ def plot_theorem1_scene(sensors, target, u_max: float, n_radii: int, n_angles: i
     --------
     >>> import matplotlib
     >>> matplotlib.use("Agg")  # no window
+    >>> import matplotlib.pyplot as plt
     >>> S = [[-3.0, 2.0], [0.0, 0.0], [4.0, 0.0]]
     >>> fig = plot_theorem1_scene(S, [2.0, 3.0], 1.0, 4, 36)
     >>> fig.axes[0].get_title()
     'scene'
+    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -171,9 +175,11 @@ def plot_one_sensor(sensor, target, u_max: float, n_radii: int, n_angles: int):
     --------
     >>> import matplotlib
     >>> matplotlib.use("Agg")  # no window
+    >>> import matplotlib.pyplot as plt
     >>> fig = plot_one_sensor([0.0, 0.0], [2.0, 3.0], 1.0, 4, 36)
     >>> fig.axes[0].get_xlabel()
     '$u_x$ (m/s)'
+    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -199,10 +205,12 @@ def plot_tightness(sensors, target, u_max: float):
     --------
     >>> import matplotlib
     >>> matplotlib.use("Agg")  # no window
+    >>> import matplotlib.pyplot as plt
     >>> S = [[-3.0, 2.0], [0.0, 0.0], [4.0, 0.0]]
     >>> fig = plot_tightness(S, [2.0, 3.0], 1.0)
     >>> len(fig.axes[0].get_legend().get_texts())
     3
+    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 

@@ -33,6 +33,7 @@ from .style import (
 )
 
 __all__ = [
+    "STRATEGY_LABELS",
     "CHI2_2DOF_9973",
     "cov_ellipse",
     "draw_sensors",
@@ -46,6 +47,13 @@ __all__ = [
     "draw_pair_overlay",
     "draw_switch_overlay",
 ]
+
+#: How the figures and tables of Section V name the paper's three strategies.
+STRATEGY_LABELS = {
+    "best-pair": "(1) best pair",
+    "best-partner": "(2) best partner of s₂",
+    "fixed-pair": "(3) fixed pair (s₂, s₁)",
+}
 
 #: Chi-square quantile, 2 degrees of freedom, 99.73 % (the "3 sigma" ellipse of Fig. 4).
 CHI2_2DOF_9973 = 11.82
