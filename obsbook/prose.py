@@ -10,7 +10,13 @@ from __future__ import annotations
 
 from obslib._format import number, percent, setting
 
-__all__ = ["sensor_math", "pair_math", "triple_math", "set_math", "point", "share"]
+__all__ = ["PUBLISHED_RUNS", "sensor_math", "pair_math", "triple_math", "set_math", "point",
+           "share"]
+
+#: How the prose names the published runs the authors saved (the names of
+#: :data:`obslib.published_runs.RUN_NAMES` it refers to).
+PUBLISHED_RUNS = {"best-pair": "strategy (1), Figs. 4-6",
+                  "adversarial": "the adversarial run, Fig. 7"}
 
 
 def sensor_math(i: int) -> str:
