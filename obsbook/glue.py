@@ -86,8 +86,9 @@ def glue_texts(**texts: str) -> dict:
 
 
 def glue_number(name: str, x, sig: int = 3) -> Formatted:
-    """Glue the number ``x`` as the book prints it (:func:`obslib._format.number` with ``sig``
-    significant digits): MyST for ``{glue:md}``, plain for ``{glue:text}``.
+    """Glue the number ``x`` under ``name`` as the book prints it
+    (:func:`obslib._format.number` with ``sig`` significant digits): MyST for ``{glue:md}``,
+    plain for ``{glue:text}``.
 
     Examples
     --------

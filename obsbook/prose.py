@@ -64,7 +64,7 @@ def triple_math(triple) -> str:
 
 
 def set_math(idx) -> str:
-    """A set of sensors (0-based indices) as the paper writes it.
+    """The set of sensors ``idx`` (0-based indices) as the paper writes it.
 
     Examples
     --------

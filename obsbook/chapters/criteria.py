@@ -41,7 +41,7 @@ def p_text(p: float) -> str:
 
 
 def key(*parts) -> str:
-    """A glue name from strategy and setting names.
+    """A glue name from ``parts``, strategy and setting names.
 
     Examples
     --------

@@ -25,7 +25,8 @@ __all__ = ["join_gains", "glue_intuition", "glue_fig9", "glue_priors", "glue_mea
 def join_gains(seed: int, side: float, eps_values, eps: float, n_join: int = 10,
                n_draws: int = 2000) -> tuple:
     r"""The median gain in :math:`\log\det(O^T O + \varepsilon I)` of each of ``n_join`` sensors
-    joining a team in turn, over ``n_draws`` random teams in Fig. 9's square of side ``side``.
+    joining a team in turn, over ``n_draws`` random teams in Fig. 9's square of side ``side``
+    (drawn from ``numpy.random.default_rng(seed)``).
 
     Returns
     -------

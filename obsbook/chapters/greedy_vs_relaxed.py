@@ -32,9 +32,9 @@ __all__ = ["example", "glue_parameters", "glue_example", "glue_fig8", "glue_opti
 
 
 def example(seed: int, side: float, u_max: float, n_trials: int = 30) -> tuple:
-    """Of Fig. 8's first ``n_trials`` trials with two targets, the one where the greedy, the
-    optimum and the relaxed value lie farthest apart (the largest of the smaller of the two
-    gaps).
+    """Of Fig. 8's first ``n_trials`` trials with two targets (seed ``seed``, square of side
+    ``side``, pair bounds for ``u_max``), the one where the greedy, the optimum and the relaxed
+    value lie farthest apart (the largest of the smaller of the two gaps).
 
     Returns
     -------
