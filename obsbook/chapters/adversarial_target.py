@@ -251,9 +251,10 @@ def glue_mechanism(mech: dict, n_seeds: int) -> None:
     Parameters
     ----------
     mech : dict
-        :func:`obslib.studies.tracking.pooled_switch_mechanism`.
+        The mechanism's shares and mean gain, pooled over the runs
+        (:func:`obslib.studies.tracking.pooled_switch_mechanism`).
     n_seeds : int
-        The runs pooled.
+        How many runs were pooled.
     """
     sw_closer, raised, gain = mech["switch_if_closer"], mech["raised"], mech["mean_gain"]
     rows = [("transitions where the target moves closer to a sensor of the pair",

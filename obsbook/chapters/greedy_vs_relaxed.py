@@ -174,9 +174,9 @@ def glue_ordered(summary, sweep: dict, trials: int) -> None:
     Parameters
     ----------
     summary : obslib.studies.greedy_vs_relaxed.Fig8Summary
-        The sweep's summary.
+        The means of both relaxations, ``relaxed`` and ``relaxed_ordered``.
     sweep : dict
-        :func:`obslib.studies.greedy_vs_relaxed.fig8_sweep`.
+        Both relaxations' values trial by trial, one row per number of targets.
     trials : int
         The trials per size.
     """

@@ -113,7 +113,7 @@ def glue_theorem2(audit) -> None:
     Parameters
     ----------
     audit : obslib.studies.section3.Theorem2Audit
-        The audit's result.
+        Theorem 2's audit (:func:`obslib.studies.section3.theorem2_audit`).
     """
     glue_texts(
         thm2_scenes=count(audit.n_scenes, of=audit.n_scenes),
@@ -166,7 +166,7 @@ def glue_remark1(audit) -> None:
     Parameters
     ----------
     audit : obslib.studies.section3.Remark1Audit
-        The audit's result.
+        The audit of the bound at a stationary and at a moving target, scene by scene.
     """
     glue_texts(
         r1_scenes=count(audit.n_scenes, of=audit.n_scenes),

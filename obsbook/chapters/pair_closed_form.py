@@ -323,9 +323,10 @@ def glue_dtheta(audit, n_rational_points: int) -> None:
     Parameters
     ----------
     audit : obslib.studies.pair_form.ThetaDerivativeAudit
-        The audit's result.
+        The audit of :math:`\partial C/\partial\theta`
+        (:func:`obslib.studies.pair_form.theta_derivative_audit`).
     n_rational_points : int
-        The points sampled.
+        The rational points :math:`(\alpha, q)` it samples.
     """
     left, right = audit.corner_halfpi_slopes
     rows = [
@@ -388,9 +389,9 @@ def glue_dalpha(audit, n_rational_points: int) -> None:
     Parameters
     ----------
     audit : obslib.studies.pair_form.AlphaDerivativeAudit
-        The audit's result.
+        The audit of the derivatives in :math:`\alpha`.
     n_rational_points : int
-        The points sampled.
+        How many points :math:`(\alpha, \theta, q)` it compares the two at.
     """
     lo, hi = audit.printed_ratio_spread
     rows = [

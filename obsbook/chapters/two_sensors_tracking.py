@@ -209,9 +209,9 @@ def glue_vs_paper(runs: dict, seed: int) -> None:
     Parameters
     ----------
     runs : dict
-        Strategy -> one run.
+        The three strategies' runs (:class:`obslib.tracking.TrackingResult`), by strategy.
     seed : int
-        The runs' noise seed.
+        Their noise seed, named in the caption.
     """
     summ = {s: run.summary() for s, run in runs.items()}
     steps = runs["best-pair"].steps
@@ -476,11 +476,12 @@ def glue_partners(ps: dict, best: dict, best_bound: int, n_seeds: int) -> None:
     measure = {"mean_trace": "mean trace", "mean_error": "mean error",
                "median_error": "median error", "lost": "share of lost runs"}
     s1_best = [measure[key] for key, j in best.items() if j == 0]
+    caption = (f"Strategy (3) with each partner of $s_2$, over {number(n_seeds)} noise seeds."
+               " Mean error: the mean over the runs of the run-mean error; median: that of the"
+               " median run; lost: the share of runs that end at the mirror image.")
     glue_texts(
         tab_partner=rows_table(
-            rows, f"Strategy (3) with each partner of $s_2$, over {number(n_seeds)} noise seeds."
-            " Mean error: the mean over the runs of the run-mean error; median: that of the"
-            " median run; lost: the share of runs that end at the mirror image.", "tab-05-partner",
+            rows, caption, "tab-05-partner",
             headers=("partner of s₂", "mean bound", "mean trace Σ (length unit²)",
                      "mean error ε (length unit)", "median error (length unit)", "runs lost")),
         s1_best_by=listing(s1_best) if s1_best else "no measure",

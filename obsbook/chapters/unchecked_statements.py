@@ -68,7 +68,7 @@ def glue_one_sensor(one: dict, n_geometries: int) -> None:
     one : dict
         :func:`obslib.studies.unchecked.one_sensor_conditioning`.
     n_geometries : int
-        The scenes drawn.
+        The random scenes, each with a control drawn in the disc.
     """
     glue_texts(
         one_n=number(n_geometries),
@@ -245,11 +245,11 @@ def glue_replays(comparison: dict, checks: dict) -> None:
                                                 f"{number(checks[name]['read_noise'])}"),
         "largest difference": small(c.largest, 1e-10),
     } for name, c in comparison.items()]
+    caption = ("What the replay of each published run checks beyond the noise it was given: the "
+               "logged numbers compared, the noise entries recovered from another run's log, and "
+               "the largest difference from the log.")
     glue_texts(
-        tab_replay=numbered_table(
-            pd.DataFrame(rows), "What the replay of each published run checks beyond the noise "
-            "it was given: the logged numbers compared, the noise entries recovered from "
-            "another run's log, and the largest difference from the log.", "tab-replay"),
+        tab_replay=numbered_table(pd.DataFrame(rows), caption, "tab-replay"),
         replay_fixed_steps=number(replay.compare_replay("fixed-pair").steps),
         replay_largest=small(max(c.largest for c in comparison.values()), 1e-10),
     )
@@ -326,7 +326,7 @@ def glue_reach(exact: dict, time_budget: float) -> None:
     exact : dict
         :func:`obslib.studies.hardness.exact_optimum_study`.
     time_budget : float
-        Seconds per instance.
+        The seconds the solver may take on one instance.
     """
     reach, spread, top = exact["reach"], exact["spread"], exact["largest_solved"]
     rows = [{

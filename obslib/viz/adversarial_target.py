@@ -59,15 +59,11 @@ def plot_landscapes(setup, landscapes: dict):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_ADVERSARIAL
     >>> fig = plot_landscapes(setup, bound_landscapes(setup, n=20))
     >>> fig.axes[1].get_title()
     '(b) the best of the 15 pairs'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -118,15 +114,11 @@ def plot_fig7(run):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=5)
     >>> fig = plot_fig7(tracking.simulate(setup, "best-pair", seed=0))
     >>> fig.axes[1].get_title()
     '(b) observability over time'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -148,10 +140,8 @@ def plot_fig7(run):
     ax1.plot(k[1:], adv.true_icn[1:], lw=1, label="exact C⁻¹(Oᵢⱼ(oₖ, uₖ₋₁))")
     sw = np.flatnonzero(adv.switched) + 2
     ax1.plot(sw, np.full(sw.size, -0.03), "|", color="k", ms=4, label="pair switch")
-    ax1.set_ylim(-0.06, 1.0)
-    ax1.set_xlabel("step k")
-    ax1.set_ylabel("inverse condition number")
-    ax1.set_title("(b) observability over time")
+    ax1.set(ylim=(-0.06, 1.0), xlabel="step k", ylabel="inverse condition number",
+            title="(b) observability over time")
     _legend_below(fig, ax0, ax1, 4)
     return fig
 
@@ -162,16 +152,12 @@ def plot_fig7_replayed(published, replay):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib.published_runs import published_run
     >>> from obslib.studies.replay import replay
     >>> pub, rep = published_run("adversarial"), replay("adversarial")
     >>> fig = plot_fig7_replayed(pub, rep)
     >>> fig.axes[0].get_title()
     '(a) trajectories'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -208,16 +194,13 @@ def plot_against_strategies(runs):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=5)
-    >>> runs = {s: tracking.simulate(setup, s, seed=0)
-    ...         for s in tracking.STRATEGIES}
-    >>> plot_against_strategies(runs).axes[0].get_title()
+    >>> arms = {s: (setup, s) for s in tracking.STRATEGIES}
+    >>> batches = tracking.simulate_many(arms, seeds=[0])
+    >>> fig = plot_against_strategies({s: b.run(0) for s, b in batches.items()})
+    >>> fig.axes[0].get_title()
     "the target's paths"
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -257,16 +240,12 @@ def plot_run_means(batch, bound_means):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=5)
     >>> batch = tracking.simulate_batch(setup, "best-pair", seeds=range(3))
     >>> fig = plot_run_means(batch, batch.bound.mean(axis=1))
     >>> fig.axes[0].get_xlabel()
     'mean bound of a run'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -299,15 +278,11 @@ def plot_adversaries(batches):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=5)
     >>> batch = tracking.simulate_batch(setup, "best-pair", seeds=range(2))
     >>> plot_adversaries({"paper": batch}).axes[0].get_ylabel()
     'exact C⁻¹'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 

@@ -22,13 +22,9 @@ def plot_join_gains(gains: dict):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> fig = plot_join_gains({1.0: [2.0, 1.0, 0.5], 100.0: [1.0, 0.8, 0.4]})
     >>> fig.axes[0].get_legend().get_texts()[1].get_text()
     '$\\varepsilon$ = 100'
-    >>> plt.close("all")
     """
     import matplotlib as mpl
     import matplotlib.pyplot as plt
@@ -75,14 +71,10 @@ def plot_fig9(counts, N_values):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib.studies.teams import fig9_sweep
     >>> counts = fig9_sweep([4, 6], trials=2, seed=0, n_targets=2)
     >>> plot_fig9(counts, [4, 6]).axes[0].get_xlabel()
     '$N/L$ (sensors per target)'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -112,15 +104,11 @@ def plot_evenness(even, N_values, n_targets: int):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib.studies.teams import evenness, fig9_sweep
     >>> counts = fig9_sweep([4, 6], trials=2, seed=0, n_targets=2)
     >>> fig = plot_evenness(evenness(counts, [4, 6], 2), [4, 6], 2)
     >>> fig.axes[0].get_ylabel()
     'spread of the counts in a trial'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -143,12 +131,8 @@ def plot_optimum_ratio(ratio):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> plot_optimum_ratio([1.0, 0.9]).axes[0].get_xlabel()
     'greedy total over the optimum (log det sums)'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 

@@ -65,9 +65,6 @@ def plot_greedy_and_optimum(sensors, targets, greedy, optimum, W=None, figsize=(
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> import obslib as ob
     >>> S = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0], [4.0, 4.0]]
     >>> T = [[2.0, 1.0], [2.0, 3.0]]
@@ -76,7 +73,6 @@ def plot_greedy_and_optimum(sensors, targets, greedy, optimum, W=None, figsize=(
     >>> fig = plot_greedy_and_optimum(S, T, g, o, W)
     >>> [ax.get_title().split(":")[0] for ax in fig.axes]
     ['greedy', 'optimum']
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -104,13 +100,9 @@ def plot_ratio_histogram(ratio):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> fig = plot_ratio_histogram([1.0, 0.9, 0.95])
     >>> fig.axes[0].get_xlabel()
     'greedy / optimum (ratio of the totals)'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 

@@ -25,12 +25,9 @@ def plot_three_assignments(sensors, targets, assignments: dict, side: float):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> import obslib as ob
-    >>> S = [[0.0, 0.0], [40.0, 0.0], [0.0, 40.0], [40.0, 40.0]]
-    >>> T = [[20.0, 10.0], [20.0, 30.0]]
+    >>> from obslib.studies.greedy_vs_relaxed import fig8_instance
+    >>> S, T = fig8_instance(n_targets=2, trial=0, seed=0, side=40.0)
     >>> W = ob.pair_bounds(S, T, 1.0)
     >>> res = {"greedy": ob.greedy_pair_assignment(W),
     ...        "optimal": ob.optimal_pair_assignment(W),
@@ -38,7 +35,6 @@ def plot_three_assignments(sensors, targets, assignments: dict, side: float):
     >>> fig = plot_three_assignments(S, T, res, side=40.0)
     >>> [ax.get_title().splitlines()[0] for ax in fig.axes]
     ['greedy', 'exact optimum', 'relaxed matching']
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -87,16 +83,12 @@ def plot_fig8(summary, optimum_max_L: int):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib.studies.greedy_vs_relaxed import fig8_summary, fig8_sweep
     >>> sweep = fig8_sweep([1, 2], trials=3, seed=0, optimum_max_L=2)
     >>> summary = fig8_summary(sweep)
     >>> fig = plot_fig8(summary, optimum_max_L=2)
     >>> fig.axes[0].get_legend().get_texts()[0].get_text()
     'relaxed matching (Problem 3)'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 

@@ -35,14 +35,11 @@ def draw_rows(ax, sensors, target) -> None:
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
-    >>> fig, ax = plt.subplots()
+    >>> from matplotlib.figure import Figure
+    >>> ax = Figure().add_subplot()
     >>> draw_rows(ax, [[3.0, 0.0], [0.0, 3.0]], [0.0, 0.0])
     >>> len(ax.texts), len(ax.lines)
     (2, 2)
-    >>> plt.close(fig)
     """
     as_axes(ax)
     sensors, o = as_points(sensors, "sensors"), as_point(target, "target")
@@ -60,13 +57,9 @@ def plot_reading_rings(error: float = 0.3):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> fig = plot_reading_rings()
     >>> [ax.get_title().splitlines()[0] for ax in fig.axes]
     ['a cross', 'nearly parallel', 'one sensor']
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
     from matplotlib.patches import Wedge
@@ -83,10 +76,7 @@ def plot_reading_rings(error: float = 0.3):
         draw_rows(ax, sensors, o)
         c_inv = inverse_condition_number(sensors, o)
         ax.set_title(f"{name}\n$C^{{-1}}(O(o))$ = {number(c_inv, 2)}")
-        ax.set_xlim(-1.5, 3.8)
-        ax.set_ylim(-1.5, 3.8)
-        ax.set_aspect("equal")
-        ax.set_xlabel("x (m)")
+        ax.set(xlim=(-1.5, 3.8), ylim=(-1.5, 3.8), aspect="equal", xlabel="x (m)")
     axes[0].set_ylabel("y (m)")
     return fig
 
@@ -110,14 +100,10 @@ def plot_theorem1_scene(sensors, target, u_max: float, n_radii: int, n_angles: i
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> S = [[-3.0, 2.0], [0.0, 0.0], [4.0, 0.0]]
     >>> fig = plot_theorem1_scene(S, [2.0, 3.0], 1.0, 4, 36)
     >>> fig.axes[0].get_title()
     'scene'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -173,13 +159,9 @@ def plot_one_sensor(sensor, target, u_max: float, n_radii: int, n_angles: int):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> fig = plot_one_sensor([0.0, 0.0], [2.0, 3.0], 1.0, 4, 36)
     >>> fig.axes[0].get_xlabel()
     '$u_x$ (m/s)'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -188,10 +170,8 @@ def plot_one_sensor(sensor, target, u_max: float, n_radii: int, n_angles: int):
     vals = inverse_condition_number(one, target, controls)
     fig, ax = plt.subplots(figsize=(4.8, 3.9))
     filled = ax.contourf(*disc_mesh(controls, vals, int(n_radii), int(n_angles)), levels=20)
-    ax.set_aspect("equal")
-    ax.set_xlabel("$u_x$ (m/s)")
-    ax.set_ylabel("$u_y$ (m/s)")
-    ax.set_title("one sensor: exact $C^{-1}$ over the disc")
+    ax.set(aspect="equal", xlabel="$u_x$ (m/s)", ylabel="$u_y$ (m/s)",
+           title="one sensor: exact $C^{-1}$ over the disc")
     fig.colorbar(filled, ax=ax, label="$C^{-1}$")
     return fig
 
@@ -203,14 +183,10 @@ def plot_tightness(sensors, target, u_max: float):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> S = [[-3.0, 2.0], [0.0, 0.0], [4.0, 0.0]]
     >>> fig = plot_tightness(S, [2.0, 3.0], 1.0)
     >>> len(fig.axes[0].get_legend().get_texts())
     3
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 

@@ -35,13 +35,9 @@ def plot_pair_intuition(d_io: float = 1.0, u_max: float = 1.0):
     and, with the eigenvalues :math:`1 \pm \cos\theta` of the third pair,
     :math:`\sqrt{(1 - \cos\theta)/(2 + \cos\theta)}` at :math:`\theta = \pi/8`:
 
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> fig = plot_pair_intuition(d_io=1.0, u_max=1.0)
     >>> [ax.texts[-1].get_text() for ax in fig.axes]
     ['bound 0.71', 'bound 0.45', 'bound 0.16']
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -81,11 +77,9 @@ def plot_fig1(
     --------
     >>> import matplotlib
     >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> ax = plot_fig1(d_io=1.0, d_jo=1.5, theta_i=0.35, theta_j=2.0)
     >>> ax.get_aspect()
     1.0
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -241,7 +235,6 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     --------
     >>> import matplotlib
     >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib.pair_form import bound_surface, fine_grid, grid_maximum
     >>> alpha, theta = fine_grid(alpha_max=5.0, alpha_per_unit=10, theta_quarter=8)
     >>> Z = bound_surface(alpha, theta, u_max=1.0, d_io=1.0)
@@ -250,7 +243,6 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
     ...                 panels="contour")
     >>> [ax.get_title() for ax in fig.axes]
     ['(b) contour', '(d) contour']
-    >>> plt.close("all")
     """
     import matplotlib as mpl
     import matplotlib.pyplot as plt
@@ -335,13 +327,9 @@ def plot_maximising_alpha(n_theta: int, u_over_d):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> fig = plot_maximising_alpha(23, [0.5, 1.0])
     >>> len(fig.axes[0].get_legend().get_texts())
     3
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -369,13 +357,9 @@ def plot_halfpi_derivative(alpha_max: float = 4.0, n: int = 801):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> fig = plot_halfpi_derivative(n=41)
     >>> fig.axes[1].get_legend().get_texts()[1].get_text()
     'printed expression'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
     import sympy as sp

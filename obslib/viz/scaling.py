@@ -28,13 +28,9 @@ def plot_pair_ceiling(ratio, bound, tenth: float):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> fig = plot_pair_ceiling([0.2, 0.9], [0.1, 0.8], tenth=0.5)
     >>> fig.axes[0].get_ylabel()
     'bound $\\omega(s_i, s_j, t)$'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -77,15 +73,11 @@ def plot_work(counts: dict):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> names = ("literal Algorithm 1", "one pass", "relaxed matching",
     ...          "greedy (geometry)")
     >>> counts = {k: ([10, 20], [100, 1000]) for k in names}
     >>> plot_work(counts).axes[0].get_ylabel()
     'pair bounds evaluated'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -115,13 +107,9 @@ def plot_wall_time(times: dict):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> times = {"greedy (geometry)": {"N": [10, 100], "seconds": [0.01, 0.2]}}
     >>> plot_wall_time(times).axes[0].get_ylabel()
     'wall time (s), best of repeats'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 

@@ -35,14 +35,10 @@ def plot_diminishing_returns(sensors, target, eps: float):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> P = [[0.0, 3.0], [3.0, 0.0], [5.0, 0.0]]
     >>> fig = plot_diminishing_returns(P, [0.0, 0.0], eps=1.0)
     >>> fig.axes[0].get_title().split(":")[0]
     '{s₁, s₂}'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -78,12 +74,8 @@ def plot_fig3():
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> [ax.get_title() for ax in plot_fig3().axes]
     ['(a) Case 1', '(b) Case 2']
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 

@@ -84,13 +84,9 @@ def plot_ring_overlap(noise_std: float, u_max: float = 1.0):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> fig = plot_ring_overlap(noise_std=0.5)
     >>> fig.axes[0].get_title().splitlines()[0]
     '(a) directions at a right angle'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -138,16 +134,12 @@ def plot_snapshots(run, steps):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=5)
     >>> run = tracking.simulate(setup, "best-pair", seed=0)
     >>> fig = plot_snapshots(run, [1, 5])
     >>> sum(ax.axison for ax in fig.axes)
     2
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -194,9 +186,6 @@ def plot_replayed_paths(published, replays):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib.published_runs import published_run
     >>> from obslib.studies.replay import replay
     >>> names = ("best-pair", "best-partner")
@@ -204,7 +193,6 @@ def plot_replayed_paths(published, replays):
     >>> fig = plot_replayed_paths(pub, {s: replay(s) for s in names})
     >>> [ax.get_title() for ax in fig.axes]
     ['(1) best pair', '(2) best partner of s₂']
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -242,16 +230,12 @@ def plot_fig5(best_pair, best_partner):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=5)
     >>> r1 = tracking.simulate(setup, "best-pair", seed=0)
     >>> r2 = tracking.simulate(setup, "best-partner", seed=0)
     >>> [ax.get_ylabel() for ax in plot_fig5(r1, r2).axes]
     ['chosen pair', 'partner of s₂']
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -282,17 +266,13 @@ def plot_fig5_replayed(published, replays):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
-    >>> from obslib.published_runs import published_run
-    >>> from obslib.studies.replay import replay
+    >>> from obslib import published_runs
+    >>> from obslib.studies import replay
     >>> names = ("best-pair", "best-partner")
-    >>> pub = {s: published_run(s) for s in names}
-    >>> fig = plot_fig5_replayed(pub, {s: replay(s) for s in names})
+    >>> logs = {s: published_runs.published_run(s) for s in names}
+    >>> fig = plot_fig5_replayed(logs, {s: replay.replay(s) for s in names})
     >>> fig.axes[0].get_title()
     '(a) strategy 1: best pair'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -322,22 +302,29 @@ def plot_fig5_replayed(published, replays):
     return fig
 
 
+def _fig6_axes(fig, axes, strategies, ncol: int) -> None:
+    """Fig. 6's panels: one strategy each (its name above), steps along, values from 0 to 1.05,
+    and one legend below."""
+    for ax, s in zip(axes, strategies):
+        ax.set_title(STRATEGY_LABELS[s])
+        ax.set_xlabel("step k")
+        ax.set_ylim(0, 1.05)
+    axes[0].set_ylabel("value")
+    fig.legend(*axes[0].get_legend_handles_labels(), loc="outside lower center", ncol=ncol)
+
+
 def plot_fig6(runs):
     """Fig. 6: the bound, the error and the trace of the covariance over time, one panel per
     strategy of ``runs`` (strategy -> one run).
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=5)
     >>> runs = {s: tracking.simulate(setup, s, seed=0)
     ...         for s in tracking.STRATEGIES}
     >>> [ax.get_title() for ax in plot_fig6(runs).axes][:1]
     ['(1) best pair']
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -345,15 +332,11 @@ def plot_fig6(runs):
     for run in runs.values():
         _run_iv(run, "runs")
     fig, axes = plt.subplots(1, 3, figsize=(7.5, 3.4), sharey=True)
-    for ax, (s, run) in zip(axes, runs.items()):
+    for ax, run in zip(axes, runs.values()):
         k = np.arange(1, run.steps + 1)
         for f, name in _QUANTITIES.items():
             ax.plot(k, getattr(run, f), label=name)
-        ax.set_title(STRATEGY_LABELS[s])
-        ax.set_xlabel("step k")
-        ax.set_ylim(0, 1.05)
-    axes[0].set_ylabel("value")
-    fig.legend(*axes[0].get_legend_handles_labels(), loc="outside lower center", ncol=3)
+    _fig6_axes(fig, axes, runs, ncol=3)
     return fig
 
 
@@ -366,9 +349,6 @@ def plot_fig6_replayed(published, replays):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> from obslib.published_runs import published_run
     >>> from obslib.studies.replay import replay
@@ -376,7 +356,6 @@ def plot_fig6_replayed(published, replays):
     >>> fig = plot_fig6_replayed(pub, {"best-pair": replay("best-pair")})
     >>> fig.axes[2].get_title()
     '(3) fixed pair (s₂, s₁)'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -388,11 +367,7 @@ def plot_fig6_replayed(published, replays):
         for (f, name), c in zip(_QUANTITIES.items(), colors):
             ours = getattr(rep[s], f) if s in rep else None  # strategy 3: log only
             draw_published_overlay(ax, getattr(pub[s], f), ours, x=kp, color=c, label=name)
-        ax.set_title(STRATEGY_LABELS[s])
-        ax.set_xlabel("step k")
-        ax.set_ylim(0, 1.05)
-    axes[0].set_ylabel("value")
-    fig.legend(*axes[0].get_legend_handles_labels(), loc="outside lower center", ncol=2)
+    _fig6_axes(fig, axes, STRATEGIES, ncol=2)
     return fig
 
 
@@ -406,16 +381,12 @@ def plot_monte_carlo(stats, steps: int):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=5)
     >>> mc = tracking.monte_carlo(setup, n_seeds=3)
     >>> stats = tracking.compare_strategies(mc)["strategies"]
     >>> [ax.get_ylabel() for ax in plot_monte_carlo(stats, 5).axes][:1]
     ['lower bound on C⁻¹']
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -460,16 +431,12 @@ def plot_lost_run(batch, lost):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=5)
     >>> batch = tracking.simulate_batch(setup, "fixed-pair", seeds=range(3))
     >>> fig = plot_lost_run(batch, [False, True, False])
     >>> fig.axes[1].get_legend_handles_labels()[1][1]
     'estimate (seed 1)'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -510,16 +477,12 @@ def plot_switch_rate(batch, run, window):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
     >>> batch = tracking.simulate_batch(setup, "best-pair", seeds=range(3))
     >>> fig = plot_switch_rate(batch, batch.run(0), (5, 10))
     >>> fig.axes[0].get_xlabel()
     'transition k → k+1'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 

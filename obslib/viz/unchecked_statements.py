@@ -22,13 +22,8 @@ def plot_eq4_ratios(lam_max, ratio, u_max: float):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
-    >>> fig = plot_eq4_ratios([1.0, 10.0], [0.8, 0.95], u_max=1.0)
-    >>> fig.axes[0].get_xscale()
+    >>> plot_eq4_ratios([1.0, 10.0], [0.8, 0.95], u_max=1.0).axes[0].get_xscale()
     'log'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -54,13 +49,9 @@ def plot_jitter(ratios, fractions):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> fig = plot_jitter([[0.4, 0.5], [0.6, 0.9]], [0.001, 0.1])
     >>> fig.axes[0].get_ylabel()
     'greedy / optimum'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
@@ -93,16 +84,12 @@ def plot_typicality(published, replay, typical: dict):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
     >>> from obslib.published_runs import published_run
     >>> from obslib.studies.replay import replay
     >>> pub, rep = published_run("adversarial"), replay("adversarial")
     >>> typical = {"per_run": [0.5, 0.6, 0.7], "published": 0.79}
     >>> plot_typicality(pub, rep, typical).axes[1].get_xlabel()
     'mean bound of a run'
-    >>> plt.close("all")
     """
     import matplotlib.pyplot as plt
 
