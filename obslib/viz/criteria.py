@@ -40,8 +40,6 @@ def plot_criteria_intuition(pairs, prior, after):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> import matplotlib.pyplot as plt
     >>> pairs = {"A": [[-2.0, 0.0], [0.0, -2.0]], "B": [[-1.0, -1.9], [1.0, -1.9]]}
     >>> after = {"A": 0.1 * np.eye(2), "B": 0.2 * np.eye(2)}
@@ -141,8 +139,6 @@ def plot_run_errors(study: dict, metric: str = "mahalanobis", figsize=(7.5, 6.0)
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> from obslib.viz.criteria import plot_run_errors

@@ -75,8 +75,6 @@ def plot_fig1(
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> ax = plot_fig1(d_io=1.0, d_jo=1.5, theta_i=0.35, theta_j=2.0)
     >>> ax.get_aspect()
     1.0
@@ -233,8 +231,6 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> from obslib.pair_form import bound_surface, fine_grid, grid_maximum
     >>> alpha, theta = fine_grid(alpha_max=5.0, alpha_per_unit=10, theta_quarter=8)
     >>> Z = bound_surface(alpha, theta, u_max=1.0, d_io=1.0)

@@ -98,8 +98,6 @@ def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> import matplotlib.pyplot as plt
     >>> from obslib.viz.tracking import draw_sensors
     >>> fig, ax = plt.subplots()
@@ -129,18 +127,13 @@ def draw_snapshot(ax, result, k: int, *, legend: bool = True, ellipse_scale=1.0)
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
+    >>> from matplotlib.figure import Figure
     >>> from obslib import tracking
-    >>> from obslib.viz.tracking import draw_snapshot
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=5)
-    >>> r = tracking.simulate(setup, "best-pair", seed=0)
-    >>> fig, ax = plt.subplots()
-    >>> _ = draw_snapshot(ax, r, 3)
+    >>> ax = Figure().add_subplot()
+    >>> _ = draw_snapshot(ax, tracking.simulate(setup, "best-pair", seed=0), 3)
     >>> ax.get_title().startswith("k = 3"), len(ax.texts)
     (True, 6)
-    >>> plt.close(fig)
     """
     as_axes(ax)
     as_instance(result, TrackingResult, "result")
@@ -282,8 +275,6 @@ def animate(result, every: int = 3, dpi: int = 100, figsize=(7.5, 3.6), interval
     --------
     Every second step and the last:
 
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> from obslib import tracking
     >>> from obslib.viz.tracking import animate
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=6)
@@ -361,8 +352,6 @@ def animation_html(anim, uid: str = "anim") -> str:
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> from obslib import tracking
     >>> from obslib.viz.tracking import animate, animation_html
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=3)
