@@ -61,6 +61,8 @@ def test_parameters_are_folded_after_a_sentence_saying_where_to_change_them(path
     cells = cells_of(path)
     k = next(i for i, c in enumerate(cells) if "parameters" in c["metadata"].get("tags", []))
     assert "hide-input" in cells[k]["metadata"]["tags"], f"{path.name}: parameters not folded"
+    prompt = cells[k]["metadata"].get("mystnb", {}).get("code_prompt_show", "")
+    assert "parameters" in prompt, f"{path.name}: the fold's button does not name the parameters"
     before = cells[k - 1]
     assert before["cell_type"] == "markdown" and WHERE_TO_CHANGE in "".join(before["source"]), (
         f"{path.name}: no sentence before the parameters cell says where to change them")
