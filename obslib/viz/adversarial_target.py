@@ -11,7 +11,8 @@ from .._validate import as_instance, as_int, as_mapping
 from ..bounds import pair_bounds
 from ..published_runs import PublishedRun
 from ..tracking import STRATEGIES, BatchResult, TrackingResult, TrackingSetup
-from .style import _as_series, look
+from ._checks import as_series
+from .style import look
 from .tracking import (
     STRATEGY_LABELS,
     draw_published_overlay,
@@ -252,7 +253,7 @@ def plot_run_means(batch, bound_means):
     from ..studies.published import PUBLISHED_ADVERSARIAL
 
     mcb = as_instance(batch, BatchResult, "batch")
-    per_run = _as_series(bound_means, "bound_means", mcb.n_runs)
+    per_run = as_series(bound_means, "bound_means", mcb.n_runs)
     ends = mcb.truth[:, -1]
     published = PUBLISHED_ADVERSARIAL["mean_bound"]
     fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(7.5, 3.8))

@@ -10,7 +10,8 @@ import numpy as np
 from .._format import setting
 from .._validate import as_float_array, as_instance, as_int, as_mapping
 from ..studies.teams import Evenness
-from .style import SEQUENTIAL, _as_series, look
+from ._checks import as_series
+from .style import SEQUENTIAL, look
 
 __all__ = ["plot_join_gains", "plot_fig9", "plot_evenness", "plot_optimum_ratio"]
 
@@ -34,7 +35,7 @@ def plot_join_gains(gains: dict):
         raise ValueError(f"gains must hold one to five priors, got {len(gains)}")
     curves = {}
     for e, g in gains.items():
-        curves[float(as_float_array(e, "gains"))] = _as_series(g, "gains")
+        curves[float(as_float_array(e, "gains"))] = as_series(g, "gains")
     n_join = len(next(iter(curves.values())))
     if any(len(g) != n_join for g in curves.values()) or (
             min(g.min() for g in curves.values()) <= 0):
@@ -55,7 +56,7 @@ def plot_join_gains(gains: dict):
 
 def _counts_iv(counts, N_values):
     counts = as_float_array(counts, "counts")
-    N = _as_series(N_values, "N_values")
+    N = as_series(N_values, "N_values")
     if counts.ndim != 3 or counts.shape[0] != N.size or counts.shape[1] < 2:
         raise ValueError(f"counts must have shape (len(N_values), trials >= 2, L), "
                          f"got {counts.shape}")
@@ -113,7 +114,7 @@ def plot_evenness(even, N_values, n_targets: int):
     import matplotlib.pyplot as plt
 
     even = as_instance(even, Evenness, "even")
-    N = _as_series(N_values, "N_values", len(even.within))
+    N = as_series(N_values, "N_values", len(even.within))
     fair = N / as_int(n_targets, "n_targets", 1)
     fig, ax = plt.subplots(figsize=(7.5, 3.6))
     ax.plot(fair, even.within, **look("logdet").kw(ms=4, label="greedy, log det with prior"))
@@ -136,7 +137,7 @@ def plot_optimum_ratio(ratio):
     """
     import matplotlib.pyplot as plt
 
-    r = _as_series(ratio, "ratio")
+    r = as_series(ratio, "ratio")
     fig, ax = plt.subplots(figsize=(7.5, 3.2))
     ax.hist(r, bins=np.linspace(0.5, 1.0, 51), color=look("logdet").color, label="instances")
     ax.axvline(0.5, color="k", ls="--", label="guarantee, 1/2")

@@ -9,7 +9,8 @@ import numpy as np
 from .._format import number
 from .._validate import as_float_array, as_instance, as_points
 from ..assignment import PairAssignment
-from .style import _as_series, as_figsize, look, sensor_label, target_label
+from ._checks import as_series
+from .style import as_figsize, look, sensor_label, target_label
 
 __all__ = ["plot_greedy_and_optimum", "plot_ratio_histogram"]
 
@@ -106,7 +107,7 @@ def plot_ratio_histogram(ratio):
     """
     import matplotlib.pyplot as plt
 
-    ratio = _as_series(ratio, "ratio")
+    ratio = as_series(ratio, "ratio")
     fig, ax = plt.subplots(figsize=(7.5, 3.4))
     ax.hist(ratio, bins=np.linspace(0.3, 1.0, 71), color=look("greedy").color)
     ax.axvline(1 / 3, color="k", ls="--", label="Theorem 6: 1/3")

@@ -5,7 +5,8 @@ each algorithm evaluates, and the measured wall times.
 from __future__ import annotations
 
 from .._validate import as_mapping, as_real
-from .style import GREY, _as_series, look
+from ._checks import as_series
+from .style import GREY, look
 
 __all__ = ["ALGORITHM_STYLES", "plot_pair_ceiling", "plot_work", "plot_wall_time"]
 
@@ -34,8 +35,8 @@ def plot_pair_ceiling(ratio, bound, tenth: float):
     """
     import matplotlib.pyplot as plt
 
-    ratio = _as_series(ratio, "ratio")
-    bound = _as_series(bound, "bound", ratio.size)
+    ratio = as_series(ratio, "ratio")
+    bound = as_series(bound, "bound", ratio.size)
     tenth = as_real(tenth, "tenth")
     fig, ax = plt.subplots(figsize=(7.5, 3.8))
     ax.axvspan(0, tenth, color=GREY, alpha=0.15, lw=0, label="cannot be among the ten best")
@@ -61,8 +62,8 @@ def _series_by_name(data, name: str, x: str, y: str, known_only: bool = True) ->
         pair = (value[x], value[y]) if isinstance(value, dict) else value
         if not isinstance(pair, (tuple, list)) or len(pair) != 2:
             raise ValueError(f"{name}[{key!r}] must be ({x}, {y})")
-        xs = _as_series(pair[0], name)
-        out[key] = (xs, _as_series(pair[1], name, xs.size))
+        xs = as_series(pair[0], name)
+        out[key] = (xs, as_series(pair[1], name, xs.size))
     return out
 
 

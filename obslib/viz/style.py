@@ -33,9 +33,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
-from .._validate import as_float_array, as_int
+from .._validate import as_int
 
 __all__ = ["OKABE_ITO", "GREY", "SEQUENTIAL", "Look", "LOOKS", "look", "PUBLISHED_STYLE",
            "REPLAY_STYLE", "sensor_label", "target_label", "as_axes", "as_figsize"]
@@ -190,28 +188,6 @@ def as_axes(ax, name: str = "ax"):
     if not isinstance(ax, Axes):
         raise ValueError(f"{name} must be a matplotlib Axes, got {type(ax).__name__}")
     return ax
-
-
-def _as_series(x, name: str, length: int | None = None, *, finite: bool = True) -> np.ndarray:
-    """``x`` as a one-dimensional float array (of ``length`` values if given), finite unless
-    ``finite`` is False (NaN then marks a missing value), else a ValueError naming ``name``.
-
-    Examples
-    --------
-    >>> _as_series([1, 2], "error")
-    array([1., 2.])
-    >>> _as_series([1, 2], "error", 3)
-    Traceback (most recent call last):
-    ...
-    ValueError: error must have 3 values, got shape (2,)
-    """
-    arr = as_float_array(x, name)
-    if arr.ndim != 1 or (length is not None and arr.shape[0] != length):
-        n = "one or more" if length is None else str(length)
-        raise ValueError(f"{name} must have {n} values, got shape {arr.shape}")
-    if finite and not np.isfinite(arr).all():
-        raise ValueError(f"{name} must be finite")
-    return arr
 
 
 def as_figsize(figsize) -> tuple:

@@ -16,7 +16,8 @@ from .._validate import as_instance, as_int, as_int_range, as_ints, as_mapping, 
 from ..bounds import lower_bound
 from ..published_runs import PublishedRun
 from ..tracking import STRATEGIES, BatchResult, TrackingResult, mirror_point, switch_rate
-from .style import _as_series, look, sensor_label
+from ._checks import as_series
+from .style import look, sensor_label
 from .tracking import (
     STRATEGY_LABELS,
     cov_ellipse,
@@ -402,7 +403,7 @@ def plot_monte_carlo(stats, steps: int):
                 name = f"step_{stat}_{key}"
                 if name not in d:
                     raise ValueError(f"stats of {s!r} have no {name!r}")
-                series[s, stat, key] = _as_series(d[name], "stats", steps)
+                series[s, stat, key] = as_series(d[name], "stats", steps)
     k = np.arange(1, steps + 1)
     fig, axes = plt.subplots(1, 3, figsize=(7.5, 3.4))
     for s in (s for s in STRATEGIES if s in stats):

@@ -10,7 +10,8 @@ import numpy as np
 from .._validate import as_instance, as_mapping, as_positive, as_real
 from ..published_runs import PublishedRun
 from ..tracking import BatchResult, TrackingResult
-from .style import GREY, PUBLISHED_STYLE, REPLAY_STYLE, _as_series, look
+from ._checks import as_series
+from .style import GREY, PUBLISHED_STYLE, REPLAY_STYLE, look
 
 __all__ = ["plot_eq4_ratios", "plot_jitter", "plot_typicality"]
 
@@ -27,8 +28,8 @@ def plot_eq4_ratios(lam_max, ratio, u_max: float):
     """
     import matplotlib.pyplot as plt
 
-    lam_max = _as_series(lam_max, "lam_max")
-    ratio = _as_series(ratio, "ratio", lam_max.size)
+    lam_max = as_series(lam_max, "lam_max")
+    ratio = as_series(ratio, "ratio", lam_max.size)
     u_max = as_positive(u_max, "u_max")
     fig, ax = plt.subplots(figsize=(7.5, 3.6))
     t = np.logspace(-2, 3, 200)  # lambda_max / u_max^2
@@ -57,7 +58,7 @@ def plot_jitter(ratios, fractions):
 
     from .._validate import as_float_array
 
-    fractions = _as_series(fractions, "fractions")
+    fractions = as_series(fractions, "fractions")
     R = as_float_array(ratios, "ratios")
     if R.ndim != 2 or R.shape[0] != fractions.size or not np.isfinite(R).all():
         raise ValueError(f"ratios must be finite, one row per fraction ({fractions.size}), "
@@ -100,7 +101,7 @@ def plot_typicality(published, replay, typical: dict):
     typical = as_mapping(typical, "typical")
     if not {"per_run", "published"} <= set(typical):
         raise ValueError("typical must hold per_run and published")
-    per_run = _as_series(typical["per_run"], "typical")
+    per_run = as_series(typical["per_run"], "typical")
     at = as_real(typical["published"], "typical")
     fig, (a0, a1) = plt.subplots(1, 2, figsize=(7.5, 3.4))
     k = np.arange(1, published.steps + 1)
