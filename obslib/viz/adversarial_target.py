@@ -10,8 +10,8 @@ import numpy as np
 from .._validate import as_instance, as_int, as_mapping
 from ..bounds import pair_bounds
 from ..published_runs import PublishedRun
-from ..tracking import STRATEGIES, BatchResult, TrackingResult, TrackingSetup
-from ._checks import as_series
+from ..tracking import BatchResult, TrackingSetup
+from ._checks import as_run, as_runs, as_series
 from .style import look
 from .tracking import (
     STRATEGY_LABELS,
@@ -95,13 +95,6 @@ def plot_landscapes(setup, landscapes: dict):
     return fig
 
 
-def _one_run(run, name: str) -> TrackingResult:
-    as_instance(run, TrackingResult, name)
-    if isinstance(run, BatchResult):
-        raise ValueError(f"{name} must be one run, not a batch of runs")
-    return run
-
-
 def _legend_below(fig, ax0, ax1, ncol: int) -> None:
     """One legend below the figure with the entries of both axes."""
     h0, l0 = ax0.get_legend_handles_labels()
@@ -123,7 +116,7 @@ def plot_fig7(run):
     """
     import matplotlib.pyplot as plt
 
-    adv = _one_run(run, "run")
+    adv = as_run(run, "run")
     k = np.arange(1, adv.steps + 1)
     fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(7.5, 4.0),
                                    gridspec_kw={"width_ratios": [1, 1.5]})
@@ -163,7 +156,7 @@ def plot_fig7_replayed(published, replay):
     import matplotlib.pyplot as plt
 
     pub = as_instance(published, PublishedRun, "published")
-    rep = _one_run(replay, "replay")
+    rep = as_run(replay, "replay")
     if rep.steps != pub.steps:
         raise ValueError(f"replay has {rep.steps} steps, the published run {pub.steps}")
     pub_switched = (pub.pairs[1:] != pub.pairs[:-1]).any(axis=1)
@@ -205,11 +198,9 @@ def plot_against_strategies(runs):
     """
     import matplotlib.pyplot as plt
 
-    runs = as_mapping(runs, "runs")
-    for s, run in runs.items():
-        if s not in STRATEGIES:
-            raise ValueError(f"runs: unknown strategy {s!r}; known: {STRATEGIES}")
-        _one_run(run, "runs")
+    runs = as_runs(runs, "runs")
+    for run in runs.values():
+        as_run(run, "runs")
     if not runs:
         raise ValueError("runs must hold at least one strategy")
     first = next(iter(runs.values()))

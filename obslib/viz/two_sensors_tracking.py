@@ -16,7 +16,7 @@ from .._validate import as_instance, as_int, as_int_range, as_ints, as_mapping, 
 from ..bounds import lower_bound
 from ..published_runs import PublishedRun
 from ..tracking import STRATEGIES, BatchResult, TrackingResult, mirror_point, switch_rate
-from ._checks import as_series
+from ._checks import as_run, as_runs, as_series
 from .style import look, sensor_label
 from .tracking import (
     STRATEGY_LABELS,
@@ -38,26 +38,6 @@ RING_SCENES = {"(a) directions at a right angle": [[-3.0, 0.0], [0.0, -3.0]],
 
 _QUANTITIES = {"bound": "lower bound on C⁻¹", "error": "error ε (length unit)",
                "trace_cov": "trace Σ (length unit²)"}
-
-
-def _run_iv(run, name: str) -> TrackingResult:
-    """One run (not a batch)."""
-    as_instance(run, TrackingResult, name)
-    if isinstance(run, BatchResult):
-        raise ValueError(f"{name} must be one run, not a batch of runs")
-    return run
-
-
-def _by_strategy(runs, name: str, cls=TrackingResult, n: int | None = None) -> dict:
-    """A mapping strategy -> run (of ``cls``) over the paper's strategies, in their order."""
-    runs = as_mapping(runs, name)
-    for s, r in runs.items():
-        if s not in STRATEGIES:
-            raise ValueError(f"{name}: unknown strategy {s!r}; known: {STRATEGIES}")
-        as_instance(r, cls, name)
-    if n is not None and len(runs) != n:
-        raise ValueError(f"{name} must hold {n} strategies, got {len(runs)}")
-    return runs
 
 
 def _pair_index(pairs, n: int) -> np.ndarray:
@@ -144,7 +124,7 @@ def plot_snapshots(run, steps):
     """
     import matplotlib.pyplot as plt
 
-    r1 = _run_iv(run, "run")
+    r1 = as_run(run, "run")
     steps = as_ints(steps, "steps", 1)
     if len(steps) > 6 or max(steps) > r1.steps:
         raise ValueError(f"steps must be at most six steps of the run's {r1.steps}, got {steps}")
@@ -169,8 +149,8 @@ def plot_snapshots(run, steps):
 
 
 def _published_iv(published, replays, n_published: int | None = None):
-    published = _by_strategy(published, "published", PublishedRun, n_published)
-    replays = _by_strategy(replays, "replays", TrackingResult)
+    published = as_runs(published, "published", PublishedRun, n_published)
+    replays = as_runs(replays, "replays", TrackingResult)
     missing = set(replays) - set(published)
     if missing:
         raise ValueError(f"replays has strategies the published runs do not: {sorted(missing)}")
@@ -240,7 +220,7 @@ def plot_fig5(best_pair, best_partner):
     """
     import matplotlib.pyplot as plt
 
-    r1, r2 = _run_iv(best_pair, "best_pair"), _run_iv(best_partner, "best_partner")
+    r1, r2 = as_run(best_pair, "best_pair"), as_run(best_partner, "best_partner")
     k = np.arange(1, r1.steps + 1)
     idx = _pair_index(r1.pairs, r1.setup.n_sensors)
     used = sorted(set(idx))
@@ -329,9 +309,9 @@ def plot_fig6(runs):
     """
     import matplotlib.pyplot as plt
 
-    runs = _by_strategy(runs, "runs", n=3)
+    runs = as_runs(runs, "runs", n=3)
     for run in runs.values():
-        _run_iv(run, "runs")
+        as_run(run, "runs")
     fig, axes = plt.subplots(1, 3, figsize=(7.5, 3.4), sharey=True)
     for ax, run in zip(axes, runs.values()):
         k = np.arange(1, run.steps + 1)
@@ -488,7 +468,7 @@ def plot_switch_rate(batch, run, window):
     import matplotlib.pyplot as plt
 
     mc = as_instance(batch, BatchResult, "batch")
-    r1 = _run_iv(run, "run")
+    r1 = as_run(run, "run")
     lo_k, hi_k = as_int_range(window, "window", 1)
     if r1.steps != mc.steps:
         raise ValueError(f"run has {r1.steps} steps, batch {mc.steps}")
