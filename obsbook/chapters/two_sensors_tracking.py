@@ -16,7 +16,7 @@ from obslib._format import count, fixed, listing, number, percent, setting, smal
 from obslib.claims.tracking import PRINTED_DECIMALS
 from obslib.studies import tracking as study
 from obslib.studies.published import PUBLISHED_CIRCLE
-from obslib.viz.style import sensor_label
+from obslib.viz.style import pair_label
 from obslib.viz.tracking import STRATEGY_LABELS as LABEL
 
 from ..glue import glue_texts
@@ -43,11 +43,6 @@ def printed(key: str, v: float) -> str:
         Its value.
     """
     return fixed(v, PRINTED_DECIMALS[key])
-
-
-def _pair_name(p) -> str:
-    """A pair of 0-based sensor indices as the figures name it: (s₁, s₂)."""
-    return f"({sensor_label(p[0])}, {sensor_label(p[1])})"
 
 
 def glue_settings(setup) -> None:
@@ -110,7 +105,7 @@ def glue_first_steps(runs: dict, seed: int) -> None:
     """
     r1 = runs["best-pair"]
     first = [k for k in (1, 2, 50) if k <= r1.steps]
-    rows = [{"k": number(k), "strategy": LABEL[s], "pair": _pair_name(run.pairs[k - 1]),
+    rows = [{"k": number(k), "strategy": LABEL[s], "pair": pair_label(*run.pairs[k - 1]),
              "bound": number(run.bound[k - 1]), "error": number(run.error[k - 1]),
              "trace": number(run.trace_cov[k - 1])}
             for k in first for s, run in runs.items()]

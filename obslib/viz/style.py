@@ -36,7 +36,7 @@ from dataclasses import dataclass
 from .._validate import as_int
 
 __all__ = ["OKABE_ITO", "GREY", "SEQUENTIAL", "Look", "LOOKS", "look", "PUBLISHED_STYLE",
-           "REPLAY_STYLE", "sensor_label", "target_label", "as_axes", "as_figsize"]
+           "REPLAY_STYLE", "sensor_label", "pair_label", "target_label", "as_axes", "as_figsize"]
 
 #: Okabe and Ito's colours (https://jfly.uni-koeln.de/color/), by their names.
 OKABE_ITO = {
@@ -159,6 +159,18 @@ def sensor_label(i: int) -> str:
     ('s₁', 's₁₂')
     """
     return "s" + str(as_int(i, "i", 0) + 1).translate(_SUBSCRIPT)
+
+
+def pair_label(i: int, j: int) -> str:
+    """The pair of sensors ``i``, ``j`` (0-based) as the figures and tables name it, in plain
+    text with the names of :func:`sensor_label`.
+
+    Examples
+    --------
+    >>> pair_label(1, 0), pair_label(0, 11)
+    ('(s₂, s₁)', '(s₁, s₁₂)')
+    """
+    return f"({sensor_label(i)}, {sensor_label(j)})"
 
 
 def target_label(l: int) -> str:

@@ -17,7 +17,7 @@ from ..bounds import lower_bound
 from ..published_runs import PublishedRun
 from ..tracking import STRATEGIES, BatchResult, TrackingResult, mirror_point, switch_rate
 from ._checks import as_run, as_runs, as_series
-from .style import look, sensor_label
+from .style import look, pair_label, sensor_label
 from .tracking import (
     STRATEGY_LABELS,
     cov_ellipse,
@@ -45,10 +45,6 @@ def _pair_index(pairs, n: int) -> np.ndarray:
     (the y value of Fig. 5(a))."""
     all_pairs = [(i, j) for i in range(n) for j in range(i + 1, n)]
     return np.array([all_pairs.index(tuple(p)) for p in pairs])
-
-
-def _pair_label(i: int, j: int) -> str:
-    return f"({sensor_label(i)}, {sensor_label(j)})"
 
 
 def _partner(pairs, anchor: int) -> np.ndarray:
@@ -229,7 +225,7 @@ def plot_fig5(best_pair, best_partner):
                  for j in range(i + 1, r1.setup.n_sensors)]
     fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(7.5, 3.8))
     ax0.plot(k, idx, ".", ms=3)
-    ax0.set_yticks(used, [_pair_label(*all_pairs[u]) for u in used])
+    ax0.set_yticks(used, [pair_label(*all_pairs[u]) for u in used])
     ax0.set_xlabel("step k")
     ax0.set_ylabel("chosen pair")
     ax0.set_title("(a) strategy 1: best pair")
@@ -268,7 +264,7 @@ def plot_fig5_replayed(published, replays):
     draw_pair_overlay(ax0, _pair_index(pub[s1].pairs, n), _pair_index(rep[s1].pairs, n),
                       color=look(s1).color, label="(a) pair")
     used = sorted(set(_pair_index(pub[s1].pairs, n)))
-    ax0.set_yticks(used, [_pair_label(*all_pairs[u]) for u in used])
+    ax0.set_yticks(used, [pair_label(*all_pairs[u]) for u in used])
     ax0.set_xlabel("step k")
     ax0.set_ylabel("chosen pair")
     ax0.set_title("(a) strategy 1: best pair")
