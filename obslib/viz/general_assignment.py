@@ -5,6 +5,8 @@ greedy against the optimum.
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 
 from .._format import setting
@@ -31,19 +33,18 @@ def plot_join_gains(gains: dict):
     import matplotlib.pyplot as plt
 
     gains = as_mapping(gains, "gains")
-    if not 1 <= len(gains) <= 5:
-        raise ValueError(f"gains must hold one to five priors, got {len(gains)}")
+    if not gains:
+        raise ValueError("gains must hold at least one prior")
     curves = {}
     for e, g in gains.items():
         curves[float(as_float_array(e, "gains"))] = as_series(g, "gains")
     n_join = len(next(iter(curves.values())))
-    if any(len(g) != n_join for g in curves.values()) or (
-            min(g.min() for g in curves.values()) <= 0):
-        raise ValueError("gains must be positive, the same number for each prior")
+    if any(len(g) != n_join for g in curves.values()):
+        raise ValueError("gains must hold the same number of gains for each prior")
     fig, ax = plt.subplots(figsize=(7.5, 3.6))
     k = np.arange(1, n_join + 1)
     colours = mpl.colormaps[SEQUENTIAL](np.linspace(0, 0.85, len(curves)))
-    for (e, g), colour, marker in zip(curves.items(), colours, "osD^v"):
+    for (e, g), colour, marker in zip(curves.items(), colours, itertools.cycle("osD^v")):
         ax.plot(k, g, color=colour, marker=marker,
                 label=rf"$\varepsilon$ = {setting(e, math=False)}")
     ax.set_yscale("log")

@@ -12,7 +12,15 @@ from __future__ import annotations
 import numpy as np
 
 from .._format import number
-from .._validate import as_instance, as_int, as_int_range, as_ints, as_mapping, as_positive
+from .._validate import (
+    as_instance,
+    as_int,
+    as_int_range,
+    as_ints,
+    as_mapping,
+    as_nonnegative,
+    as_positive,
+)
 from ..bounds import lower_bound
 from ..published_runs import PublishedRun
 from ..tracking import STRATEGIES, BatchResult, TrackingResult, mirror_point, switch_rate
@@ -67,7 +75,7 @@ def plot_ring_overlap(noise_std: float, u_max: float = 1.0):
     """
     import matplotlib.pyplot as plt
 
-    noise = as_positive(noise_std, "noise_std")
+    noise = as_nonnegative(noise_std, "noise_std")
     u_max = as_positive(u_max, "u_max")
     o = np.zeros(2)
     grid = np.linspace(-4.5, 4.5, 601)
