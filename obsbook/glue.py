@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from obslib._format import number
 
-__all__ = ["Formatted", "glue_text", "glue_number"]
+__all__ = ["Formatted", "glue_text", "glue_texts", "glue_number"]
 
 
 class Formatted:
@@ -62,9 +62,33 @@ def glue_text(name: str, text: str, plain: str | None = None) -> Formatted:
     return value
 
 
+def glue_texts(**texts: str) -> dict:
+    """Glue each formatted text under its name (:func:`glue_text`), in the order given.
+
+    Parameters
+    ----------
+    **texts : str
+        Name -> text, already formatted (``number(x)``, ``count(n)``, a sentence, a table).
+
+    Returns
+    -------
+    dict
+        Name -> the glued :class:`Formatted` object.
+
+    Examples
+    --------
+    >>> from obsbook import count, number
+    >>> glued = glue_texts(n_runs=count(200), ratio=number(0.48488))
+    >>> list(glued), glued["ratio"]
+    (['n_runs', 'ratio'], 0.485)
+    """
+    return {name: glue_text(name, text) for name, text in texts.items()}
+
+
 def glue_number(name: str, x, sig: int = 3) -> Formatted:
-    """Glue the number ``x`` as the book prints it (:func:`obslib._format.number` with ``sig``
-    significant digits): MyST for ``{glue:md}``, plain for ``{glue:text}``.
+    """Glue the number ``x`` under ``name`` as the book prints it
+    (:func:`obslib._format.number` with ``sig`` significant digits): MyST for ``{glue:md}``,
+    plain for ``{glue:text}``.
 
     Examples
     --------

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["formatted_table", "markdown_table", "numbered_table"]
+__all__ = ["formatted_table", "markdown_table", "numbered_table", "rows_table"]
 
 
 def formatted_table(table, fmt: str = "{:.3f}", formats=None, na: str = "\u2013"):
@@ -142,3 +142,38 @@ def numbered_table(table, caption: str, name: str, *, columns: dict | None = Non
         lines += [("* - " if k == 0 else "  - ") + " ".join(str(c).split()) for k, c in
                   enumerate(row)]
     return "\n".join(lines + ["```"])
+
+
+def rows_table(rows, caption: str, name: str, headers=("quantity", "value")) -> str:
+    """A numbered MyST table (:func:`numbered_table`) of ``rows``, tuples of cells already
+    formatted as text, one cell per header.
+
+    Parameters
+    ----------
+    rows : list of tuple of str
+        The rows, each with one cell per header.
+    caption, name : str
+        As in :func:`numbered_table`.
+    headers : tuple of str
+        The column headers; by default a two-column table of quantities and their values.
+
+    Examples
+    --------
+    >>> print(rows_table([("largest error", "0.12")], "Errors.", "tab-err"))
+    ```{list-table} Errors.
+    :header-rows: 1
+    :name: tab-err
+    :widths: auto
+    <BLANKLINE>
+    * - quantity
+      - value
+    * - largest error
+      - 0.12
+    ```
+    """
+    keys = [f"c{k}" for k in range(len(headers))]
+    for row in rows:
+        if len(row) != len(headers):
+            raise ValueError(f"a row has {len(row)} cells, the headers {len(headers)}")
+    return numbered_table([dict(zip(keys, row)) for row in rows], caption, name,
+                          columns={h: (k, "s") for h, k in zip(headers, keys)})

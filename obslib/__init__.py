@@ -44,14 +44,17 @@ studies
     ``studies.assignment``, ``studies.submodularity``, ``studies.greedy_vs_relaxed``,
     ``studies.teams``, ...) and the published numbers (``studies.published``).
 viz
-    Every matplotlib figure (``viz.pair_form``, ...).
+    Every matplotlib figure, one module per chapter of the book (``viz.model_and_bound``,
+    ``viz.pair_form``, ``viz.two_sensors_tracking``, ...) and the drawings they share
+    (``viz.style``, ``viz.tracking``).
 claims
     The claims ledger: one record per claim of the paper, re-checked with ``studies``.
 
 The experiments' parameters: ``profiles`` (named parameter sets of the notebooks and the ledger).
 Repository tooling: ``tools`` (the papermill runner behind ``make book`` and the benchmarks, with
-the command lines ``python -m obslib.run`` and ``python -m obslib.bench``) and ``notebook``
-(figure and table settings every notebook applies).
+the command lines ``python -m obslib.run`` and ``python -m obslib.bench``). What only the book
+needs (the figure and table settings every notebook applies, each chapter's glue and tables) is
+kept beside it in the package ``obsbook``, which this library never imports.
 """
 
 from . import tracking  # (ob.tracking.simulate, PAPER_CIRCLE, PAPER_ADVERSARIAL)

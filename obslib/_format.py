@@ -25,10 +25,7 @@ import math
 import math as _math
 import numbers
 
-from ._validate import as_positive, as_real, as_str
-
-__all__ = ["number", "count", "small", "percent", "span", "setting", "listing", "fixed",
-           "format_small"]
+__all__ = ["number", "count", "small", "percent", "span", "setting", "listing", "fixed"]
 
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
@@ -216,17 +213,3 @@ def listing(items, conjunction: str = "and") -> str:
     if not words:
         raise ValueError("nothing to list")
     return words[0] if len(words) == 1 else ", ".join(words[:-1]) + f" {conjunction} " + words[-1]
-
-
-def format_small(x: float, floor: float = 1e-12, fmt: str = ".3g") -> str:
-    """``x`` formatted with ``fmt``, or ``"< floor"`` when ``|x| < floor`` (plain text).
-
-    Kept for printed outputs that are not prose; prose uses :func:`small`.
-    """
-    x, floor = as_real(x, "x"), as_positive(floor, "floor")
-    as_str(fmt, "fmt")
-    try:
-        shown = format(x, fmt)
-    except ValueError:
-        raise ValueError(f"fmt {fmt!r} is not a format of a number") from None
-    return f"< {floor:.0e}" if abs(x) < floor else shown

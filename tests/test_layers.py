@@ -17,7 +17,7 @@ import ast
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-SOURCES = sorted([*(ROOT / "obslib").rglob("*.py"), *(ROOT / "obsbook").glob("*.py")])
+SOURCES = sorted([*(ROOT / "obslib").rglob("*.py"), *(ROOT / "obsbook").rglob("*.py")])
 
 #: The layers from the bottom; a module belongs to the first prefix it matches. ``obslib`` (the
 #: package's namespace) offers the core and ``obslib.tracking`` at the top level.

@@ -1,4 +1,7 @@
-"""Notebook conventions: a tagged parameters cell first, executed, in the toc."""
+"""Notebook conventions: a tagged parameters cell first, folded after the chapter's opening; no
+code shown before the first section; hidden cells that only call the chapter's modules (no
+function defined in a notebook, at most :data:`MAX_HIDDEN_LINES` lines of hidden code in all);
+executed, in the toc."""
 
 import ast
 import json
@@ -39,6 +42,97 @@ def test_first_code_cell_is_the_parameters_cell_of_literals(path):
     assert literal_assignments("".join(first["source"])) == params(path.stem, "paper")
 
 
+def cells_of(path):
+    return json.loads(path.read_text())["cells"]
+
+
+def is_hidden(cell) -> bool:
+    """Whether a code cell's code is kept off the page (folded or removed)."""
+    return bool(HIDDEN & set(cell["metadata"].get("tags", [])))
+
+
+#: Where to change the values, said in the sentence before the folded parameters cell.
+WHERE_TO_CHANGE = "set in the folded cell below: change them there, or rerun the chapter"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_parameters_are_folded_after_a_sentence_saying_where_to_change_them(path):
+    # the chapter opens with its question, not with code: the parameters are folded away
+    cells = cells_of(path)
+    k = next(i for i, c in enumerate(cells) if "parameters" in c["metadata"].get("tags", []))
+    assert "hide-input" in cells[k]["metadata"]["tags"], f"{path.name}: parameters not folded"
+    prompt = cells[k]["metadata"].get("mystnb", {}).get("code_prompt_show", "")
+    assert "parameters" in prompt, f"{path.name}: the fold's button does not name the parameters"
+    before = cells[k - 1]
+    assert before["cell_type"] == "markdown" and WHERE_TO_CHANGE in "".join(before["source"]), (
+        f"{path.name}: no sentence before the parameters cell says where to change them")
+    assert cells[0]["cell_type"] == "markdown" and "".join(cells[0]["source"]).startswith("# ")
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_no_code_is_shown_before_the_first_section(path):
+    # the title, the opening paragraph and (where the chapter has one) the intuition come first
+    shown = []
+    for i, cell in enumerate(cells_of(path)):
+        if cell["cell_type"] == "markdown" and re.search(r"^## ", "".join(cell["source"]), re.M):
+            break
+        if cell["cell_type"] == "code" and not is_hidden(cell):
+            shown.append(i)
+    else:
+        pytest.fail(f"{path.name} has no section")
+    assert not shown, f"{path.name}: cells {shown} show code before the first section"
+
+
+#: The most lines of hidden code (not blank) all notebooks together may hold: hidden cells are
+#: calls into the chapters' modules (obsbook.chapters, obslib.viz), imports and the parameters.
+MAX_HIDDEN_LINES = 800
+
+
+def hidden_lines(cells) -> int:
+    """The lines of code, not blank, in the cells ``cells`` whose code is hidden."""
+    return sum(1 for c in cells if c["cell_type"] == "code" and is_hidden(c)
+               for line in "".join(c["source"]).splitlines() if line.strip())
+
+
+def test_hidden_lines_are_counted():
+    cells = [{"cell_type": "code", "metadata": {"tags": ["remove-input"]}, "source": "a = 1\n\nb"},
+             {"cell_type": "code", "metadata": {"tags": ["hide-input"]}, "source": ["c = 2\n"]},
+             {"cell_type": "code", "metadata": {}, "source": "d = 3"},
+             {"cell_type": "markdown", "metadata": {"tags": ["remove-cell"]}, "source": "text"}]
+    assert hidden_lines(cells) == 3
+
+
+def test_hidden_code_stays_small():
+    counts = {p.stem: hidden_lines(cells_of(p)) for p in NOTEBOOKS}
+    assert sum(counts.values()) <= MAX_HIDDEN_LINES, (
+        f"{sum(counts.values())} lines of hidden code (at most {MAX_HIDDEN_LINES}): {counts}")
+
+
+def definitions(source: str) -> list:
+    """The functions, lambdas and classes a cell's code defines, as ``(kind, line)``."""
+    kinds = {ast.FunctionDef: "def", ast.AsyncFunctionDef: "def", ast.Lambda: "lambda",
+             ast.ClassDef: "class"}
+    return sorted((kinds[type(n)], n.lineno) for n in ast.walk(ast.parse(source))
+                  if type(n) in kinds)
+
+
+def test_definitions_are_found():
+    assert definitions("f = lambda x: x\nclass A:\n    def g(self):\n        pass\n") == [
+        ("class", 2), ("def", 3), ("lambda", 1)]
+    assert definitions("y = sorted(x, key=abs)") == []
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_no_function_or_class_is_defined_in_a_notebook(path):
+    # a chapter's helpers live in obsbook.chapters and its drawings in obslib.viz, linted and
+    # documented: a hidden cell only calls them (not even a lambda), and a visible cell, which
+    # teaches, defines no helper for hidden cells to call (a key function is teaching code)
+    found = [(i, kind, line) for i, c in enumerate(code_cells(path))
+             for kind, line in definitions("".join(c["source"]))
+             if is_hidden(c) or kind != "lambda"]
+    assert not found, f"{path.name}: (code cell, kind, line) of definitions: {found}"
+
+
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_figures_set_up_before_the_first_figure(path):
     # obsbook.setup in the import cell (the one after the parameters), so every figure is drawn
@@ -70,8 +164,9 @@ HIDDEN = {"remove-input", "hide-input", "remove-cell"}
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_visible_code_fits_the_column(path):
+    # shown or folded (a reader may unfold a cell tagged hide-input)
     wide = [(i, len(line)) for i, c in enumerate(code_cells(path))
-            if not HIDDEN & set(c["metadata"].get("tags", []))
+            if not {"remove-input", "remove-cell"} & set(c["metadata"].get("tags", []))
             for line in "".join(c["source"]).splitlines() if len(line) > VISIBLE_WIDTH]
     assert not wide, f"{path.name}: (code cell, characters) of lines over {VISIBLE_WIDTH}: {wide}"
 

@@ -74,8 +74,8 @@ NOTEBOOK = "10_criteria"
 
 #: The classical criteria and the floor, as named in :mod:`obslib.tracking`.
 CRITERIA = ("d-optimal", "a-optimal", "e-optimal", "exact-icn", "random")
-#: The paper's strategies (Section V-A).
-PAPER_STRATEGIES = ("best-pair", "best-partner", "fixed-pair")
+#: The paper's strategies (Section V-A): :data:`obslib.tracking.STRATEGIES`.
+PAPER_STRATEGIES = tr.STRATEGIES
 #: The bound's choice, the reference of every paired test.
 REFERENCE = "best-pair"
 #: The scores :func:`criterion_scores` computes (``"bound"`` is ``best-pair``'s).

@@ -23,8 +23,6 @@ def plot_assignment_errors(runs: dict, figsize=(7.5, 3.6)):
     --------
     Any object with ``run_mean_error()`` and ``setup.n_sensors`` stands for a rule's runs:
 
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> import matplotlib.pyplot as plt
     >>> from types import SimpleNamespace
     >>> import numpy as np

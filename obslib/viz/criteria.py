@@ -1,13 +1,15 @@
-"""Figures of notebook 10: the bound against the classical criteria in the tracking runs."""
+"""Figures of the chapter on the criteria: what the filter already knows (two pairs and the
+ellipses they leave), and the bound against the classical criteria in the tracking runs."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from .._validate import as_float_array, as_mapping, as_names, as_sequence, as_str
-from .style import GREY, LOOKS, as_axes, as_figsize
+from .style import GREY, LOOKS, as_axes, as_figsize, look
+from .tracking import cov_ellipse
 
-__all__ = ["LABELS", "draw_boxes", "plot_run_errors"]
+__all__ = ["LABELS", "plot_criteria_intuition", "draw_boxes", "plot_run_errors"]
 
 #: Axis labels of the strategies.
 LABELS = {
@@ -20,6 +22,67 @@ LABELS = {
     "exact-icn": "exact\nC$^{-1}$",
     "random": "random",
 }
+
+
+def _matrix(m, name: str) -> np.ndarray:
+    """A finite 2 x 2 matrix."""
+    m = as_float_array(m, name)
+    if m.shape != (2, 2) or not np.isfinite(m).all():
+        raise ValueError(f"{name} must be a finite 2 x 2 matrix, got shape {m.shape}")
+    return m
+
+
+def plot_criteria_intuition(pairs, prior, after):
+    """What the filter already knows: the two candidate pairs ``A`` and ``B`` seen from the
+    estimate at the origin (``pairs``: name -> the pair's two sensors), and the filter's
+    covariance ellipse (:math:`\\chi^2 = 1`) before the update (``prior``) and after the update
+    with each pair (``after``: name -> covariance).
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> pairs = {"A": [[-2.0, 0.0], [0.0, -2.0]], "B": [[-1.0, -1.9], [1.0, -1.9]]}
+    >>> after = {"A": 0.1 * np.eye(2), "B": 0.2 * np.eye(2)}
+    >>> fig = plot_criteria_intuition(pairs, np.diag([0.1, 2.0]), after)
+    >>> [ax.get_title() for ax in fig.axes]
+    ['the two pairs', "the filter's ellipse"]
+    >>> plt.close("all")
+    """
+    import matplotlib.pyplot as plt
+
+    pairs = {k: as_float_array(v, "pairs") for k, v in as_mapping(pairs, "pairs").items()}
+    if set(pairs) != {"A", "B"} or any(v.shape != (2, 2) or not np.isfinite(v).all()
+                                       for v in pairs.values()):
+        raise ValueError("pairs must map A and B to two finite sensor positions each")
+    prior = _matrix(prior, "prior")
+    after = {k: _matrix(v, "after") for k, v in as_mapping(after, "after").items()}
+    if set(after) != set(pairs):
+        raise ValueError("after must hold a covariance for A and for B")
+    fig, (geo, ell) = plt.subplots(1, 2, figsize=(7.5, 3.6))
+    colour = {"A": look("best-pair").color, "B": look("d-optimal").color}
+    name = {"A": "pair A (the bound's choice)", "B": "pair B (D, A and E's choice)"}
+    for k, P in pairs.items():
+        for p in P:
+            geo.plot([0, p[0]], [0, p[1]], color=colour[k], lw=1)
+        geo.plot(P[:, 0], P[:, 1], "^", color=colour[k], ms=9, label=name[k])
+    geo.plot(0, 0, **look("target").kw(ms=12, label="estimate"))
+    geo.set_xlim(-2.6, 1.2)
+    geo.set_ylim(-2.4, 1.0)
+    geo.legend(loc="upper left")
+    geo.set_title("the two pairs")
+    ell.plot(*cov_ellipse([0, 0], prior, chi2=1.0).T, color=GREY, ls="--", label="before")
+    for k in pairs:
+        ell.plot(*cov_ellipse([0, 0], after[k], chi2=1.0).T, color=colour[k],
+                 label=f"after pair {k}")
+    ell.set_xlim(-2.0, 2.0)
+    ell.set_ylim(-1.6, 1.6)
+    ell.legend(loc="lower right")
+    ell.set_title("the filter's ellipse")
+    for ax in (geo, ell):
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (length units)")
+    geo.set_ylabel("y (length units)")
+    return fig
 
 
 def draw_boxes(ax, data, names, labels=None, looks=None):
@@ -76,8 +139,6 @@ def plot_run_errors(study: dict, metric: str = "mahalanobis", figsize=(7.5, 6.0)
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> import matplotlib.pyplot as plt
     >>> from obslib import tracking
     >>> from obslib.viz.criteria import plot_run_errors

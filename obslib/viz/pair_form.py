@@ -1,13 +1,67 @@
-"""Figures of the pair closed form: the geometry of Fig. 1 and the four panels of Fig. 2."""
+"""Figures of the pair closed form (Theorems 4 and 5): two sensors seen from the target, the
+geometry of Fig. 1, the four panels of Fig. 2, the maximising distance ratio, and the printed
+derivative at :math:`\\theta_{ji} = \\pi/2`."""
 
 from __future__ import annotations
 
 import numpy as np
 
-from .._validate import as_float_array, as_positive, as_real, as_str
+from .._validate import as_float_array, as_int, as_nonnegative, as_positive, as_real, as_str
+from ..bounds import pair_bound_polar
+from ..pair_form import maximising_alpha, maximising_alpha_closed
+from .model_and_bound import draw_rows
 from .style import OKABE_ITO, SEQUENTIAL, as_axes, look
 
-__all__ = ["plot_fig1", "plot_fig2"]
+__all__ = ["INTUITION_PAIRS", "plot_pair_intuition", "plot_fig1", "plot_fig2",
+           "plot_maximising_alpha", "plot_halfpi_derivative"]
+
+#: The three pairs of the intuition: ``(alpha, theta_ji, theta_ji in TeX)``, by name.
+INTUITION_PAIRS = {
+    "a perfect cross": (1.0, np.pi / 2, r"\pi/2"),
+    "unequal distances": (2.0, np.pi / 2, r"\pi/2"),
+    "nearly collinear": (1.0, np.pi / 8, r"\pi/8"),
+}
+
+
+def plot_pair_intuition(d_io: float = 1.0, u_max: float = 1.0):
+    r"""Two sensors seen from the target, for each pair of :data:`INTUITION_PAIRS` (sensor
+    :math:`i` at distance ``d_io`` and angle 0, sensor :math:`j` at :math:`\alpha d_{io}`):
+    their rows :math:`o - p_i` as arrows, and the ellipse whose half-axes are the singular values
+    of :math:`O(o)` (scaled by one half); each panel gives the pair's bound for ``u_max``.
+
+    Examples
+    --------
+    With :math:`q = u_{\max}/d_{io} = 1` the bounds are :math:`1/\sqrt 2`, :math:`1/\sqrt 5`
+    and, with the eigenvalues :math:`1 \pm \cos\theta` of the third pair,
+    :math:`\sqrt{(1 - \cos\theta)/(2 + \cos\theta)}` at :math:`\theta = \pi/8`:
+
+    >>> fig = plot_pair_intuition(d_io=1.0, u_max=1.0)
+    >>> [ax.texts[-1].get_text() for ax in fig.axes]
+    ['bound 0.71', 'bound 0.45', 'bound 0.16']
+    """
+    import matplotlib.pyplot as plt
+
+    d_io = as_positive(d_io, "d_io")
+    q = as_nonnegative(u_max, "u_max") / d_io
+    phi = np.linspace(0, 2 * np.pi, 200)
+    circle = np.array([np.cos(phi), np.sin(phi)])
+    o = np.zeros(2)
+    fig, axes = plt.subplots(1, 3, figsize=(7.5, 3.4))
+    for ax, (name, (alpha, theta, label)) in zip(axes, INTUITION_PAIRS.items()):
+        sensors = d_io * np.array([[1, 0], [alpha * np.cos(theta), alpha * np.sin(theta)]])
+        lam, vec = np.linalg.eigh((sensors - o).T @ (sensors - o))
+        gains = vec @ (np.sqrt(lam)[:, None] * (vec.T @ circle))  # half-axes sigma
+        ax.fill(*(0.5 * gains), color=OKABE_ITO["orange"], alpha=0.4, lw=0)
+        draw_rows(ax, sensors, o)
+        ax.set_title(f"{name}\n$\\alpha = {alpha:g}$, $\\theta_{{ji}} = {label}$")
+        bound = pair_bound_polar(alpha, theta, q)
+        ax.text(0.96, 0.04, f"bound {bound:.2f}", transform=ax.transAxes, ha="right")
+        ax.set_xlim(-1.3, 2.3)
+        ax.set_ylim(-1.3, 2.3)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (m)")
+    axes[0].set_ylabel("y (m)")
+    return fig
 
 
 def plot_fig1(
@@ -21,8 +75,6 @@ def plot_fig1(
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> ax = plot_fig1(d_io=1.0, d_jo=1.5, theta_i=0.35, theta_j=2.0)
     >>> ax.get_aspect()
     1.0
@@ -179,8 +231,6 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> from obslib.pair_form import bound_surface, fine_grid, grid_maximum
     >>> alpha, theta = fine_grid(alpha_max=5.0, alpha_per_unit=10, theta_quarter=8)
     >>> Z = bound_surface(alpha, theta, u_max=1.0, d_io=1.0)
@@ -262,4 +312,72 @@ def plot_fig2(alpha, theta, Z, levels, title: str = "", mark=None, panels: str =
             ax2.plot(pts[:, 0] * np.cos(pts[:, 1]), pts[:, 0] * np.sin(pts[:, 1]), **star)
     if title:
         fig.suptitle(title)
+    return fig
+
+
+def plot_maximising_alpha(n_theta: int, u_over_d):
+    r"""The distance ratio :math:`\alpha^*` that maximises the bound for a fixed angle
+    :math:`\theta_{ji}`, for a stationary target and for each speed :math:`q = u_{\max}/d_{io}`
+    of ``u_over_d``: the numerical root of Eq. (34) as lines, the closed form as dots, on the
+    ``n_theta`` angles of :func:`obslib.studies.pair_form.alpha_star_thetas`.
+
+    Examples
+    --------
+    >>> fig = plot_maximising_alpha(23, [0.5, 1.0])
+    >>> len(fig.axes[0].get_legend().get_texts())
+    3
+    """
+    import matplotlib.pyplot as plt
+
+    from ..studies.pair_form import alpha_star_thetas
+
+    theta_c = alpha_star_thetas(n_theta)  # the angles of the audit
+    curves = as_float_array(u_over_d, "u_over_d")
+    if curves.ndim != 1 or not np.isfinite(curves).all() or (curves < 0).any():
+        raise ValueError("u_over_d must be a list of finite non-negative speeds")
+    fig, ax = plt.subplots(figsize=(7.5, 4))
+    for q in (0.0, *curves.tolist()):
+        label = f"$u_{{max}}/d_{{io}} = {q:g}$"
+        ax.plot(theta_c, maximising_alpha(theta_c, q), label=label)
+        ax.plot(theta_c[::12], maximising_alpha_closed(theta_c[::12], q), "k.", ms=4)
+    ax.set_xlabel(r"$\theta_{ji}$ (rad)")
+    ax.set_ylabel(r"maximising $\alpha^* = d_{jo}/d_{io}$")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    return fig
+
+
+def plot_halfpi_derivative(alpha_max: float = 4.0, n: int = 801):
+    r"""The bound at :math:`\theta_{ji} = \pi/2`, :math:`q = 1`, over :math:`\alpha` from 0 to
+    ``alpha_max`` (``n`` points; a corner at :math:`\alpha = 1`), and its derivative in
+    :math:`\alpha` against the expression the proof prints.
+
+    Examples
+    --------
+    >>> fig = plot_halfpi_derivative(n=41)
+    >>> fig.axes[1].get_legend().get_texts()[1].get_text()
+    'printed expression'
+    """
+    import matplotlib.pyplot as plt
+    import sympy as sp
+
+    from .. import symbolic as sy
+
+    alpha_line = np.linspace(0, as_positive(alpha_max, "alpha_max"), as_int(n, "n", 2))
+    dC = sp.diff(sy.bound_halfpi_piecewise(), sy.ALPHA).subs(sy.Q, 1)
+    true_d = sy.lambdify_expr(dC, (sy.ALPHA,))(alpha_line)
+    printed = sy.printed_dbound_dalpha_halfpi().subs(sy.Q, 1)
+    printed_d = sy.lambdify_expr(printed, (sy.ALPHA,))(alpha_line)
+    fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(7.5, 3.6))
+    ax0.plot(alpha_line, pair_bound_polar(alpha_line, np.pi / 2, 1.0))
+    ax0.axvline(1, color="0.6", ls=":")
+    ax0.set_xlabel(r"$\alpha = d_{jo}/d_{io}$")
+    ax0.set_ylabel(r"$C(\alpha, \pi/2)$")
+    ax0.set_title(r"$C(\alpha, \pi/2)$, $q = 1$: a corner at $\alpha = 1$")
+    ax1.plot(alpha_line, true_d, label=r"true $\partial C/\partial\alpha$")
+    ax1.plot(alpha_line, printed_d, "--", label="printed expression")
+    ax1.axhline(0, color="0.6", lw=0.8)
+    ax1.set_xlabel(r"$\alpha = d_{jo}/d_{io}$")
+    ax1.set_ylabel(r"$\partial C/\partial\alpha$")
+    ax1.legend(loc="lower right")
+    ax1.set_title(r"derivative at $\theta = \pi/2$, $q = 1$")
     return fig

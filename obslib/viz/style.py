@@ -33,8 +33,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .._validate import as_int
+
 __all__ = ["OKABE_ITO", "GREY", "SEQUENTIAL", "Look", "LOOKS", "look", "PUBLISHED_STYLE",
-           "REPLAY_STYLE", "as_axes", "as_figsize"]
+           "REPLAY_STYLE", "sensor_label", "pair_label", "target_label", "as_axes", "as_figsize"]
 
 #: Okabe and Ito's colours (https://jfly.uni-koeln.de/color/), by their names.
 OKABE_ITO = {
@@ -141,6 +143,46 @@ def look(name: str) -> Look:
 PUBLISHED_STYLE = {"lw": 4.0, "alpha": 0.3, "solid_capstyle": "round"}
 #: The replay with the published noise: a thin line (or small dots) of the same colour on top.
 REPLAY_STYLE = {"lw": 1.0}
+
+
+_SUBSCRIPT = str.maketrans("0123456789", "".join(chr(0x2080 + d) for d in range(10)))
+
+
+def sensor_label(i: int) -> str:
+    """``"s"`` with the 1-based index of sensor ``i`` (0-based) as Unicode subscript digits:
+    the figures' sensor names, plain text (no mathtext to parse).
+
+    Examples
+    --------
+    >>> from obslib.viz.style import sensor_label
+    >>> sensor_label(0), sensor_label(11)
+    ('s₁', 's₁₂')
+    """
+    return "s" + str(as_int(i, "i", 0) + 1).translate(_SUBSCRIPT)
+
+
+def pair_label(i: int, j: int) -> str:
+    """The pair of sensors ``i``, ``j`` (0-based) as the figures and tables name it, in plain
+    text with the names of :func:`sensor_label`.
+
+    Examples
+    --------
+    >>> pair_label(1, 0), pair_label(0, 11)
+    ('(s₂, s₁)', '(s₁, s₁₂)')
+    """
+    return f"({sensor_label(i)}, {sensor_label(j)})"
+
+
+def target_label(l: int) -> str:
+    """``"t"`` with the 1-based index of target ``l`` (0-based) as Unicode subscript digits, as
+    :func:`sensor_label` names sensors.
+
+    Examples
+    --------
+    >>> target_label(0)
+    't₁'
+    """
+    return "t" + str(as_int(l, "l", 0) + 1).translate(_SUBSCRIPT)
 
 
 def as_axes(ax, name: str = "ax"):

@@ -22,12 +22,20 @@ from .._validate import (
     as_str,
 )
 from ..tracking import TrackingResult
-from .style import LOOKS, PUBLISHED_STYLE, REPLAY_STYLE, as_axes, as_figsize, look
+from .style import (
+    LOOKS,
+    PUBLISHED_STYLE,
+    REPLAY_STYLE,
+    as_axes,
+    as_figsize,
+    look,
+    sensor_label,
+)
 
 __all__ = [
+    "STRATEGY_LABELS",
     "CHI2_2DOF_9973",
     "cov_ellipse",
-    "sensor_label",
     "draw_sensors",
     "draw_snapshot",
     "RunAnimation",
@@ -39,6 +47,13 @@ __all__ = [
     "draw_pair_overlay",
     "draw_switch_overlay",
 ]
+
+#: How the figures and tables of Section V name the paper's three strategies.
+STRATEGY_LABELS = {
+    "best-pair": "(1) best pair",
+    "best-partner": "(2) best partner of s₂",
+    "fixed-pair": "(3) fixed pair (s₂, s₁)",
+}
 
 #: Chi-square quantile, 2 degrees of freedom, 99.73 % (the "3 sigma" ellipse of Fig. 4).
 CHI2_2DOF_9973 = 11.82
@@ -72,25 +87,10 @@ def cov_ellipse(mean, cov, chi2: float = CHI2_2DOF_9973, n: int = 100) -> np.nda
     return mean + (circle * np.sqrt(chi2 * np.clip(w, 0, None))) @ v.T
 
 
-_SUBSCRIPT = str.maketrans("0123456789", "".join(chr(0x2080 + d) for d in range(10)))
-
-
-def sensor_label(i: int) -> str:
-    """``"s"`` with the 1-based index of sensor ``i`` (0-based) as Unicode subscript digits:
-    the figures' sensor names, plain text (no mathtext to parse).
-
-    Examples
-    --------
-    >>> from obslib.viz.tracking import sensor_label
-    >>> sensor_label(0), sensor_label(11)
-    ('s₁', 's₁₂')
-    """
-    return "s" + str(as_int(i, "i", 0) + 1).translate(_SUBSCRIPT)
-
-
 def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
     """Sensors as triangles (the look ``sensor`` of :mod:`obslib.viz.style`) named
-    ``s1..sN`` (:func:`sensor_label`) on ``ax``; ``label`` is their legend entry (none if None).
+    ``s1..sN`` (:func:`~obslib.viz.style.sensor_label`) on ``ax``; ``label`` is their legend
+    entry (none if None).
 
     The names stand above and right of the triangles, so the axes keep at least 12 % of their
     data height free above the highest point (``ax.set_ymargin``): the top sensor's name stays
@@ -98,8 +98,6 @@ def draw_sensors(ax, sensors, *, ms: float = 8, label: str | None = None):
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> import matplotlib.pyplot as plt
     >>> from obslib.viz.tracking import draw_sensors
     >>> fig, ax = plt.subplots()
@@ -129,18 +127,13 @@ def draw_snapshot(ax, result, k: int, *, legend: bool = True, ellipse_scale=1.0)
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
-    >>> import matplotlib.pyplot as plt
+    >>> from matplotlib.figure import Figure
     >>> from obslib import tracking
-    >>> from obslib.viz.tracking import draw_snapshot
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=5)
-    >>> r = tracking.simulate(setup, "best-pair", seed=0)
-    >>> fig, ax = plt.subplots()
-    >>> _ = draw_snapshot(ax, r, 3)
+    >>> ax = Figure().add_subplot()
+    >>> _ = draw_snapshot(ax, tracking.simulate(setup, "best-pair", seed=0), 3)
     >>> ax.get_title().startswith("k = 3"), len(ax.texts)
     (True, 6)
-    >>> plt.close(fig)
     """
     as_axes(ax)
     as_instance(result, TrackingResult, "result")
@@ -282,8 +275,6 @@ def animate(result, every: int = 3, dpi: int = 100, figsize=(7.5, 3.6), interval
     --------
     Every second step and the last:
 
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> from obslib import tracking
     >>> from obslib.viz.tracking import animate
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=6)
@@ -361,8 +352,6 @@ def animation_html(anim, uid: str = "anim") -> str:
 
     Examples
     --------
-    >>> import matplotlib
-    >>> matplotlib.use("Agg")  # no window
     >>> from obslib import tracking
     >>> from obslib.viz.tracking import animate, animation_html
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=3)

@@ -1,0 +1,200 @@
+r"""The intuition's gains, numbers and tables of the chapter on general assignment by greedy teams
+(Section V-D, Fig. 9).
+
+:func:`join_gains` computes what the intuition draws; each ``glue_*`` function formats one result
+of :mod:`obslib.studies.teams` and glues it under the names the chapter's prose uses.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from obslib._format import count, fixed, listing, number, percent, setting, span
+from obslib.claims.teams import FIG9_PUBLISHED_STD
+from obslib.measures import measure_from_vectors
+from obslib.studies import teams
+
+from ..glue import glue_texts
+from ..tables import numbered_table, rows_table
+
+__all__ = ["join_gains", "glue_intuition", "glue_fig9", "glue_priors", "glue_measures",
+           "glue_optimum"]
+
+
+def join_gains(seed: int, side: float, eps_values, eps: float, n_join: int = 10,
+               n_draws: int = 2000) -> tuple:
+    r"""The median gain in :math:`\log\det(O^T O + \varepsilon I)` of each of ``n_join`` sensors
+    joining a team in turn, over ``n_draws`` random teams in Fig. 9's square of side ``side``
+    (drawn from ``numpy.random.default_rng(seed)``).
+
+    Returns
+    -------
+    tuple
+        ``(gains, base)``: the gains by prior of ``eps_values``, and the gains for ``eps``.
+    """
+    rng = np.random.default_rng(seed)
+    rows = rng.uniform(0, side, (n_draws, 1, 2)) - rng.uniform(0, side, (n_draws, n_join, 2))
+    first_k = np.tri(n_join + 1, n_join, -1, dtype=bool)  # row k: the first k sensors
+
+    def median_gains(e):
+        return np.median(np.diff(measure_from_vectors(rows, first_k, "logdet", e), axis=1),
+                         axis=0)
+
+    gains = {e: median_gains(e) for e in eps_values}
+    return gains, gains[eps] if eps in gains else median_gains(eps)
+
+
+def glue_intuition(base, eps: float, eps_values) -> None:
+    """The gains of the first, second, third and last sensor to join a team, at the prior
+    ``eps``, and the largest prior compared.
+
+    Parameters
+    ----------
+    base : ndarray
+        The gains at ``eps`` (:func:`join_gains`).
+    eps : float
+        The chapter's prior.
+    eps_values : list of float
+        The priors compared.
+    """
+    glue_texts(
+        p_eps=setting(eps),
+        gain_1=number(float(base[0])),
+        gain_2=number(float(base[1])),
+        gain_3=number(float(base[2])),
+        gain_10=number(float(base[-1])),
+        eps_big=setting(max(eps_values)),
+    )
+
+
+def glue_fig9(counts, N, even, eps: float, trials: int) -> None:
+    """Greedy teams on Fig. 9's instances (``tab-08-fig9``): target 1's mean and spread, the
+    evenness of every target's counts, and the sizes of the sweep.
+
+    Parameters
+    ----------
+    counts : ndarray, shape (len(N), trials, L)
+        :func:`obslib.studies.teams.fig9_sweep`.
+    N : ndarray
+        The numbers of sensors.
+    even : obslib.studies.teams.Evenness
+        :func:`obslib.studies.teams.evenness` of ``counts``.
+    eps : float
+        The prior.
+    trials : int
+        The trials per number of sensors.
+    """
+    n_targets = counts.shape[2]
+    fair = N / n_targets
+    c1 = counts[:, :, 0]
+    sd1 = c1.std(axis=1, ddof=1)
+    rows = [
+        ("target 1: largest distance of its mean from $N/L$",
+         number(float(np.abs(c1.mean(axis=1) - fair).max()))),
+        ("target 1: standard deviation over trials", span(sd1.min(), sd1.max())),
+        ("any target: largest distance of its mean from $N/L$",
+         number(float(even.mean_deviation))),
+        ("the same, in standard errors of the mean", number(float(even.z.max()))),
+        ("spread within a trial, over a random assignment's",
+         span(even.relative.min(), even.relative.max())),
+        ("smallest and largest team in any trial",
+         f"{number(int(counts.min()))} and {number(int(counts.max()))}"),
+    ]
+    glue_texts(
+        tab_fig9=rows_table(
+            rows, f"Greedy teams on Fig. 9's instances, $\\varepsilon =$ {setting(eps)}, "
+            f"{count(trials)} trials for each $N$ from {number(int(N[0]))} to "
+            f"{number(int(N[-1]))}.", "tab-08-fig9"),
+        rel_span=span(even.relative.min(), even.relative.max()),
+        cmin=number(int(counts.min())),
+        cmax=number(int(counts.max())),
+        sd1_span=span(sd1.min(), sd1.max()),
+        base_span=span(even.baseline.min(), even.baseline.max()),
+        pub_sd=f"{fixed(FIG9_PUBLISHED_STD[0], 1)} to {fixed(FIG9_PUBLISHED_STD[1], 1)}",
+        p_L=number(n_targets),
+        p_Nmin=number(int(N[0])),
+        p_Nmax=number(int(N[-1])),
+        p_trials=number(trials),
+    )
+
+
+def glue_priors(within_eps: dict, compare_N, n_targets: int, compare_trials: int) -> None:
+    """The spread of the counts within a trial for each prior and for a uniformly random
+    assignment (``tab-08-prior``).
+
+    Parameters
+    ----------
+    within_eps : dict
+        Prior -> the mean spread within a trial, one per number of sensors.
+    compare_N : list of int
+        The numbers of sensors compared.
+    n_targets, compare_trials : int
+        The targets, and the trials per number of sensors.
+    """
+    eps_values = list(within_eps)
+    spread = pd.DataFrame(
+        {f"$N = {n}$": [number(float(within_eps[e][a])) for e in eps_values]
+         + [number(teams.random_spread(int(n), n_targets))]
+         for a, n in enumerate(compare_N)},
+        index=pd.Index([f"$\\varepsilon =$ {setting(e)}" for e in eps_values]
+                       + ["uniformly random"], name="prior"),
+    )
+    glue_texts(
+        tab_eps=numbered_table(
+            spread, "Spread of the counts within a trial (mean over "
+            f"{count(compare_trials)} trials) for three priors, and for a uniformly random "
+            "assignment.", "tab-08-prior"),
+        eps_small=setting(min(eps_values)),
+    )
+
+
+def glue_measures(within_m: dict, example: dict, compare_N, eps: float,
+                  compare_trials: int) -> None:
+    """The spread of the counts within a trial for each measure, and the targets' counts in one
+    trial (``tab-08-measures``).
+
+    Parameters
+    ----------
+    within_m : dict
+        Measure -> the mean spread within a trial, one per number of sensors.
+    example : dict
+        Measure -> the targets' counts in one trial at the largest number of sensors.
+    compare_N : list of int
+        The numbers of sensors compared.
+    eps : float
+        The prior of the measures that take one.
+    compare_trials : int
+        The trials per number of sensors.
+    """
+    names = {
+        "logdet": f"$\\log\\det G$, $\\varepsilon =$ {setting(eps)}",
+        "neg_trace_inverse": f"$-\\operatorname{{tr}}(G^{{-1}})$, $\\varepsilon =$ {setting(eps)}",
+        "trace": "$\\operatorname{tr}(O^T O)$",
+        "rank": "$\\operatorname{rank}(O^T O)$",
+    }
+    table = pd.DataFrame(
+        {f"$N = {n}$": {names[name]: number(float(w[a])) for name, w in within_m.items()}
+         for a, n in enumerate(compare_N)}
+        | {f"one trial at $N = {compare_N[-1]}$": {names[k]: listing([int(c) for c in v])
+                                                   for k, v in example.items()}}
+    ).rename_axis("measure")
+    glue_texts(tab_measures=numbered_table(
+        table, f"Spread of the counts within a trial (mean over {count(compare_trials)} trials) "
+        "for each measure, and the five targets' counts in one trial.", "tab-08-measures"))
+
+
+def glue_optimum(ratio) -> None:
+    """The greedy team assignment against the optimum on tiny instances.
+
+    Parameters
+    ----------
+    ratio : ndarray
+        Greedy over optimum, one per instance.
+    """
+    glue_texts(
+        n_inst=number(int(ratio.size)),
+        r_min=number(float(ratio.min())),
+        r_med=number(float(np.median(ratio))),
+        r_opt=percent(float(np.mean(ratio >= 1 - 1e-12))),
+    )
