@@ -177,7 +177,7 @@ def test_one_sensor_rank_condition_numerically():
     for _ in range(200):
         o, p, u = rng.normal(size=2), rng.normal(size=2), rng.normal(size=2)
         if _ % 5 == 0:
-            u = 0.7 * (o - p)  # a control along the sensor's row: rank one
+            u = 2.0 * (o - p)  # a control along the sensor's row (an exact multiple): rank one
         cond = (o[0] - p[0]) * u[1] != (o[1] - p[1]) * u[0]
         rank = np.linalg.matrix_rank(np.vstack([o - p, u]), tol=1e-12)
         assert (rank == 2) == cond
@@ -442,9 +442,10 @@ from obsbook import report  # noqa: E402
 
 @pytest.fixture(scope="module")
 def stored_robustness():
+    from obslib.claims import robustness as rb
     from obslib.claims.robustness import read_json
 
-    return read_json(ROOT / "book" / "data" / "robustness.json")
+    return read_json(rb.DATA)
 
 
 def test_committed_report_is_the_ledger_at_the_paper_profile(paper_records, stored_robustness):

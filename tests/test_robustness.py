@@ -137,7 +137,7 @@ def test_report_section_from_the_stored_data(stored):
     # only the claims of the report that the data covers, each linking to its entry
     assert len(rows) == 1 and "(#claim-fig7-switch-mechanism)" in rows[0]
     assert "  - refuted at Euclidean" in sec.splitlines() or stored["base"] == "paper"
-    assert "How robust" not in report.render_report(recs, "quick", targets={})
+    assert "## How robust" not in report.render_report(recs, "quick", targets={})
 
 
 def test_beyond_entries_are_not_varied():

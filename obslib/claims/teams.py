@@ -128,14 +128,12 @@ def _fig9(p: dict) -> Finding:
                    f"spread is at most {number(max(worst, float(code.max())))} of a random "
                    "assignment's.")
     elif status == "partly" and text_even:
-        summary = (f"With the measure the text names, {text_name}, the greedy spreads the "
-                   "sensors more evenly than chance in every control direction tried (spread at "
-                   f"most {number(worst)} of a random assignment's), "
-                   + ("as with a prior" if prior_even else "unlike with a prior")
-                   + "; with the code's measure without the control row, which made the published "
-                   "figure, it does not: taken exactly, that measure is undefined for the first "
-                   f"sensors and puts {piles} on target 1, and the published figure shows the "
-                   "spread of chance.")
+        summary = (f"With the measure the text names, {text_name}, "
+                   + ("or with a prior, " if prior_even else "")
+                   + "the greedy spreads the sensors more evenly than chance in every control "
+                   f"direction tried (spread at most {number(worst)} of a random assignment's), "
+                   "but not with the code's measure that made the published figure, which "
+                   f"taken exactly puts {piles} on target 1.")
     elif status == "partly":
         summary = ("The greedy spreads the sensors more evenly than chance only "
                    + ("with a prior" if prior_even else "with the code's measure")
