@@ -51,8 +51,8 @@ def book_bibtex(title: str, author: str, version: edition.Version) -> str:
     >>> print(book_bibtex("A book", "The authors", v))
     @misc{obslib2026audited,
       author       = {{The authors}},
-      title        = {A book: an executable companion to the paper of
-                      {Zhou} and {Tokekar}},
+      title        = {A book: an executable companion
+                      to the paper of {Zhou} and {Tokekar}},
       year         = {2026},
       howpublished = {Executable book},
       note         = {Version: commit 0123456789ab of 2026-11-28}
@@ -62,8 +62,8 @@ def book_bibtex(title: str, author: str, version: edition.Version) -> str:
     return "\n".join([
         f"@misc{{obslib{year}audited,",
         f"  author       = {{{{{author}}}}},",
-        f"  title        = {{{title}: an executable companion to the paper of",
-        "                  {Zhou} and {Tokekar}},",
+        f"  title        = {{{title}: an executable companion",
+        "                  to the paper of {Zhou} and {Tokekar}},",
         f"  year         = {{{year}}},",
         "  howpublished = {Executable book},",
         f"  note         = {{Version: {version.describe()}}}",
