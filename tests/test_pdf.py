@@ -91,6 +91,46 @@ def _api_start(pages: list[str]) -> int:
     return starts[0]
 
 
+# ------------------------------------------------------------------------- make pdf itself
+
+def test_make_pdf_names_the_packages_when_tex_is_missing(monkeypatch, capsys):
+    from obsbook import pdf as build
+
+    monkeypatch.setattr(build.shutil, "which", lambda name: None)
+    assert {package for _, package in build.missing()} >= {"texlive-xetex", "latexmk", "xindy"}
+    assert build.main([]) == 1
+    err = capsys.readouterr().err
+    assert "missing: xelatex, latexmk, xindy" in err
+    assert all(package in err for package in TEX_PACKAGES)
+
+
+def test_make_pdf_refuses_unknown_arguments(capsys):
+    from obsbook import pdf as build
+
+    with pytest.raises(SystemExit) as exc:
+        build.main(["--fast"])
+    assert exc.value.code == 2 and "--fast" in capsys.readouterr().err
+
+
+def test_the_pdf_is_copied_beside_the_pages_whole_and_readable(tmp_path):
+    from obsbook import pdf as build
+
+    latex, html = tmp_path / "latex", tmp_path / "html"
+    latex.mkdir()
+    assert build.copy_to_html(latex, html) is None  # nothing built
+    (latex / edition.pdf_name()).write_bytes(b"%PDF-1.5 a book")
+    assert build.copy_to_html(latex, html) is None  # no pages to put it beside
+    html.mkdir()
+    umask = os.umask(0o022)
+    try:
+        copy = build.copy_to_html(latex, html)
+    finally:
+        os.umask(umask)
+    assert copy == html / edition.pdf_name() and copy.read_bytes() == b"%PDF-1.5 a book"
+    assert copy.stat().st_mode & 0o777 == 0o644  # as any file written under that umask
+    assert [p.name for p in html.iterdir()] == [copy.name]  # no temporary file left
+
+
 # ------------------------------------------------------------------------------------- contents
 
 def _title(source) -> str:
@@ -132,7 +172,8 @@ def test_the_title_page_gives_the_version(pages):
 
 #: Text that only the machinery writes, anywhere in the PDF.
 MACHINERY = {
-    "a display object's repr": r"<IPython\.[\w.]+ object>|<Figure size \d+x\d+|object at 0x[0-9a-f]+",
+    "a display object's repr": (r"<IPython\.[\w.]+ object>|<Figure size \d+x\d+"
+                                r"|object at 0x[0-9a-f]+"),
     "MyST left raw": r"\{(?:glue|glue:\w+|prf:\w+|numref|doc|ref|cite|only|figure)\}|```|^:::",
     "an unresolved reference": r"\?\?|\[\?\]",
     "a notebook's cell tags or buttons": r"remove-input|hide-input|print-only|Show code cell",
