@@ -1,7 +1,8 @@
 # make book : execute every notebook at the paper's parameters, render the book into _build/html
 # make test : pytest over tests/ and nbval over notebooks/
 # make pdf  : the PDF edition, from the stored notebooks, into _build/latex (Debian's TeX Live)
-# Each creates .venv from requirements.txt when it is missing; they need only python3 and make.
+# Each creates .venv from requirements.txt when it is missing; they need only python3 and make
+# (make pdf also Debian's TeX Live, which it names when missing).
 
 PYTHON ?= python3
 VENV   := .venv

@@ -15,7 +15,13 @@ and on a 390 px screen: no page wider than the screen, every control of the anim
 the screen, and every figure linked to its image file (shown full size in an overlay). The prose
 reads as written for a person: no Python reprs, True/False or e-notation, every table numbered
 with its caption above, visible code free of imports, helpers and glue, and no words about how
-the book was made; the front page opens with its written summary.
+the book was made; the front page opens with its written summary. Every figure has at least two
+image pixels per pixel shown (sharp on HiDPI screens), and on a phone each figure of each
+chapter, tapped open, shows its smallest text at 10 pt of its own size.
+
+The explorer's section is in its chapter's contents under the label ``explorer``; the index of
+theorems, algorithms and remarks names them as their boxes do; the site search lists the
+chapters before the API reference; "How to cite" names the commit the book was built from.
 
 The bound explorer on the pair closed-form page is driven through its contract
 (``window.boundExplorer.set``, ``.bound-value``, ``.exact-value``, the ``data-`` state) at random
