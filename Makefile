@@ -1,13 +1,15 @@
 # make book : execute every notebook at the paper's parameters, render the book into _build/html
 # make test : pytest over tests/ and nbval over notebooks/
-# Both create .venv from requirements.txt when it is missing; they need only python3 and make.
+# make pdf  : the PDF edition, from the stored notebooks, into _build/latex (Debian's TeX Live)
+# Each creates .venv from requirements.txt when it is missing; they need only python3 and make
+# (make pdf also Debian's TeX Live, which it names when missing).
 
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: book test run clean
+.PHONY: book test pdf run clean
 
 $(STAMP): requirements.txt pyproject.toml
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -23,6 +25,11 @@ book: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest
+
+# The notebooks as stored (no re-execution) through Jupyter Book's LaTeX builder and XeLaTeX;
+# says which Debian packages to install when TeX is missing (obsbook/pdf.py).
+pdf: $(STAMP)
+	$(BIN)/python -m obsbook.pdf
 
 # Rerun notebooks with other parameters into _build/runs/, e.g.
 #   make run ARGS="--profile quick"      or      make run ARGS="-p n_scenes 500 01"

@@ -3,12 +3,17 @@ as a PNG that carries the positions and sizes of its texts, and the checks on th
 
 The rule, for anyone drawing a figure: **at most 7.5 in wide, text at least 10 pt**. The book's
 column shows images up to :data:`COLUMN_PX` = 756 px wide (measured in Chromium at a 1400 px
-window), and figures are stored at :data:`DPI` = 100, so a figure of 7.5 in (750 px) is shown
-at its natural size and its 10 pt text stays 10 pt; a wider figure is scaled down, and its text
-with it (an 8.9 in figure is shown at 85 %, so its 10 pt text reads as 8.5 pt). :func:`setup`
-makes both the default: figures 7.5 in wide, tick labels and legends 10 pt, axis labels and
-titles 11 pt, and the layout found by matplotlib's constrained layout, so that no figure sets
-its margins by hand.
+window), and a figure is shown at :data:`DPI` = 100 px per inch, so a figure of 7.5 in (750 px)
+is shown at its natural size and its 10 pt text stays 10 pt; a wider figure is scaled down, and
+its text with it (an 8.9 in figure is shown at 85 %, so its 10 pt text reads as 8.5 pt).
+:func:`setup` makes both the default: figures 7.5 in wide, tick labels and legends 10 pt, axis
+labels and titles 11 pt, and the layout found by matplotlib's constrained layout, so that no
+figure sets its margins by hand.
+
+Each PNG holds :data:`DENSITY` = 2 image pixels per pixel shown (200 per inch), and says so to
+the page (its output's ``width`` is the shown width, as Jupyter's own "retina" figures do): the
+figure is sharp on a screen with two or more device pixels per CSS pixel (phones, most laptops),
+when a reader zooms in, and in print.
 """
 
 from __future__ import annotations
@@ -18,14 +23,16 @@ import math
 from contextlib import contextmanager
 from io import BytesIO
 
-__all__ = ["COLUMN_PX", "DPI", "MIN_PT", "MAX_WIDTH_IN", "RC", "METADATA_KEY", "setup",
+__all__ = ["COLUMN_PX", "DPI", "DENSITY", "MIN_PT", "MAX_WIDTH_IN", "RC", "METADATA_KEY", "setup",
            "render", "pack", "unpack", "png_with_texts", "overlaps", "displayed_scale",
            "small_texts", "outside_texts", "problems"]
 
 #: Widest image the book's column shows unscaled (px), measured in Chromium at 1400 px.
 COLUMN_PX = 756
-#: Resolution of the stored figures (px per inch).
+#: Size at which the page shows a figure (px per inch): 7.5 in are 750 px.
 DPI = 100
+#: Image pixels per pixel shown: the PNG is drawn at ``DENSITY * DPI`` = 200 per inch.
+DENSITY = 2
 #: Smallest text size a reader sees (pt, at the displayed size).
 MIN_PT = 10.0
 #: Widest figure whose text is shown at its own size (in): ``COLUMN_PX / DPI`` rounded down.
@@ -112,10 +119,11 @@ def setup() -> None:
 
 
 @contextmanager
-def _recording_texts(found: dict):
+def _recording_texts(found: dict, density: float = 1.0):
     """While active, every text drawn is recorded in ``found`` (``id -> entry``, see
-    :func:`render`) with its extent as drawn: tick labels outside the view, which matplotlib
-    keeps but does not draw, are not, and 3-D labels are taken where they are projected."""
+    :func:`render`) with its extent as drawn, in pixels shown (the image's pixels over
+    ``density``): tick labels outside the view, which matplotlib keeps but does not draw, are
+    not, and 3-D labels are taken where they are projected."""
     from matplotlib.text import Text
 
     original = Text.draw
@@ -123,7 +131,7 @@ def _recording_texts(found: dict):
     def draw(self, renderer):
         original(self, renderer)
         if self.get_visible() and self.get_text().strip():
-            found[id(self)] = _entry(self, renderer)
+            found[id(self)] = _entry(self, renderer, density)
 
     Text.draw = draw
     try:
@@ -132,8 +140,9 @@ def _recording_texts(found: dict):
         Text.draw = original
 
 
-def _entry(text, renderer) -> dict:
-    """Text, size (pt), rotation and extent (px, y downwards) of a text being drawn."""
+def _entry(text, renderer, density: float = 1.0) -> dict:
+    """Text, size (pt), rotation and extent (px shown, y downwards) of a text being drawn by
+    ``renderer``, which draws ``density`` image pixels per pixel shown."""
     from matplotlib.text import Text
     from matplotlib.transforms import IdentityTransform
 
@@ -143,7 +152,8 @@ def _entry(text, renderer) -> dict:
         "text": text.get_text()[:80],
         "pt": round(float(text.get_fontsize()), 2),
         "angle": round(float(text.get_rotation()) % 360, 1),
-        "box": [round(v, 1) for v in (box.x0, height - box.y1, box.x1, height - box.y0)],
+        "box": [round(v / density, 1)
+                for v in (box.x0, height - box.y1, box.x1, height - box.y0)],
     }
     if abs(math.remainder(out["angle"], 90.0)) > 0.5:
         # the extent is the upright box around the turned text: keep the turned box itself,
@@ -158,23 +168,26 @@ def _entry(text, renderer) -> dict:
         c, s = math.cos(t), math.sin(t)
         cx, cy = (box.x0 + box.x1) / 2, (box.y0 + box.y1) / 2
         w, h = ub.width / 2, ub.height / 2
-        out["quad"] = [[round(cx + c * dx - s * dy, 1), round(height - (cy + s * dx + c * dy), 1)]
+        out["quad"] = [[round((cx + c * dx - s * dy) / density, 1),
+                        round((height - (cy + s * dx + c * dy)) / density, 1)]
                        for dx, dy in ((-w, -h), (w, -h), (w, h), (-w, h))]
     return out
 
 
-def render(fig) -> tuple[bytes, dict]:
-    """``fig`` drawn once as PNG at its own dpi, and its description: ``size`` (px), ``dpi``
+def render(fig, density: float = DENSITY) -> tuple[bytes, dict]:
+    """``fig`` drawn once as PNG with ``density`` image pixels per pixel of its size, and its
+    description: ``size`` (px shown: the figure's inches times its dpi), ``dpi``, ``density``
     and ``texts``, one entry per visible non-empty text drawn: ``text``, ``pt`` (font size),
-    ``angle`` (degrees), ``box`` (its extent ``[left, top, right, bottom]`` in px of the
-    image, y downwards) and, for text turned by other than a right angle, ``quad`` (the four
-    corners of the turned box).
+    ``angle`` (degrees), ``box`` (its extent ``[left, top, right, bottom]`` in px shown, y
+    downwards; the image's pixels over ``density``) and, for text turned by other than a right
+    angle, ``quad`` (the four corners of the turned box).
 
     The Agg canvas prints the PNG itself, so the layout engine runs inside the figure's one
     draw. ``savefig`` (and the inline backend's formatter, even without ``"tight"``) draws a
     figure with a layout engine twice, the first time with drawing switched off only to run
     the engine; the image is the same byte for byte. On the book's 47 figures this takes
-    drawing from 13.9 s to 12.8 s.
+    drawing from 13.9 s to 12.8 s. The figure draws at ``density`` times its dpi as ``savefig``
+    does with ``dpi=``, and keeps its own dpi afterwards.
 
     Examples
     --------
@@ -183,18 +196,28 @@ def render(fig) -> tuple[bytes, dict]:
     >>> ax = fig.add_subplot()
     >>> _ = ax.set_xlabel("x")
     >>> png, d = render(fig)
-    >>> png[:4], d["size"], "x" in [t["text"] for t in d["texts"]]
-    (b'\\x89PNG', [300, 200], True)
+    >>> png[:4], d["size"], d["density"], "x" in [t["text"] for t in d["texts"]]
+    (b'\\x89PNG', [300, 200], 2, True)
+    >>> fig.dpi == 100
+    True
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
+    if isinstance(density, bool) or not isinstance(density, (int, float)) or not density > 0:
+        raise ValueError(f"density must be a positive number, got {density!r}")
     found: dict = {}
     buf = BytesIO()
     canvas = fig.canvas if isinstance(fig.canvas, FigureCanvasAgg) else FigureCanvasAgg(fig)
-    with _recording_texts(found):
-        canvas.print_png(buf)
+    dpi = fig.dpi
     size = [int(round(fig.bbox.width)), int(round(fig.bbox.height))]
-    return buf.getvalue(), {"size": size, "dpi": float(fig.dpi), "texts": list(found.values())}
+    fig.dpi = dpi * density
+    try:
+        with _recording_texts(found, density):
+            canvas.print_png(buf)
+    finally:
+        fig.dpi = dpi
+    return buf.getvalue(), {"size": size, "dpi": float(dpi), "density": density,
+                            "texts": list(found.values())}
 
 
 def pack(description: dict) -> dict:
@@ -232,13 +255,17 @@ def unpack(packed: dict) -> dict:
 
 
 def png_with_texts(fig):
-    """IPython's PNG formatter of a figure: the base64 PNG and, as its output metadata, the
-    description of :func:`render` (:func:`pack`-ed) under :data:`METADATA_KEY`; None for a
-    figure without axes (as IPython's own formatter)."""
+    """IPython's PNG formatter of a figure: the base64 PNG of :func:`render` and its output
+    metadata: the width at which to show it (px; the image has :data:`DENSITY` times as many
+    pixels) and the description of :func:`render` (:func:`pack`-ed) under
+    :data:`METADATA_KEY`; None for a figure without axes (as IPython's own formatter).
+
+    Only the width is given: a page that narrows the image keeps its proportions."""
     if not fig.axes and not fig.lines:
         return None
     png, description = render(fig)
-    return base64.b64encode(png).decode("ascii"), {METADATA_KEY: pack(description)}
+    return base64.b64encode(png).decode("ascii"), {"width": description["size"][0],
+                                                   METADATA_KEY: pack(description)}
 
 
 # ------------------------------------------------------------------------------------- checks

@@ -15,7 +15,13 @@ and on a 390 px screen: no page wider than the screen, every control of the anim
 the screen, and every figure linked to its image file (shown full size in an overlay). The prose
 reads as written for a person: no Python reprs, True/False or e-notation, every table numbered
 with its caption above, visible code free of imports, helpers and glue, and no words about how
-the book was made; the front page opens with its written summary.
+the book was made; the front page opens with its written summary. Every figure has at least two
+image pixels per pixel shown (sharp on HiDPI screens), and on a phone each figure of each
+chapter, tapped open, shows its smallest text at 10 pt of its own size.
+
+The explorer's section is in its chapter's contents under the label ``explorer``; the index of
+theorems, algorithms and remarks names them as their boxes do; the site search lists the
+chapters before the API reference; "How to cite" names the commit the book was built from.
 
 The bound explorer on the pair closed-form page is driven through its contract
 (``window.boundExplorer.set``, ``.bound-value``, ``.exact-value``, the ``data-`` state) at random
@@ -39,6 +45,7 @@ from pathlib import Path
 import pytest
 import yaml
 
+from obsbook import edition
 from obslib.tools import run
 from obslib.tools.run import ROOT
 
@@ -313,11 +320,21 @@ def _ids(path: Path) -> frozenset:
     return frozenset(_ID.findall(path.read_text(errors="replace")))
 
 
+def pdf_not_built(book: Path) -> bool:
+    """Whether the PDF edition, which the pages link, is missing from the build where it may be:
+    ``make pdf`` has not run on this machine (it needs TeX), and this is not CI, which builds
+    it (tests/test_pdf.py then skips with the reason)."""
+    return not (book / edition.pdf_name()).exists() and not os.environ.get("CI")
+
+
 def dead_links(book: Path, rel: str) -> list[str]:
-    """Internal links of a page whose file or anchor does not exist in the build."""
+    """Internal links of a page whose file or anchor does not exist in the build (the PDF
+    edition aside where :func:`pdf_not_built`)."""
     page = book / rel
     dead = []
     for href in _HREF.findall(page.read_text(errors="replace")):
+        if href.endswith(edition.pdf_name()) and pdf_not_built(book):
+            continue
         if re.match(r"^https?://[^/]+\.(md|py|ipynb|txt|json|yml|cfg|toml)/?$", href, re.I):
             dead.append(href)  # a file name that linkify turned into a web address
             continue
@@ -347,6 +364,8 @@ CHECKS = {
     "unnumbered_tables": "tables without a numbered caption above them",
     "bookkeeping_code": "visible code cells with import, def or glue lines",
     "process_words": "words about how the book was made",
+    "blurry_figures": "figures with fewer than two image pixels per pixel shown (blurred on "
+                      "HiDPI screens and when zoomed)",
 }
 
 def _param(check: str, rel: str):
@@ -355,11 +374,12 @@ def _param(check: str, rel: str):
 
 
 #: Pages a check does not apply to: the API reference documents the code (its module names,
-#: tables of signatures) and the execution statistics list the notebooks by file.
+#: tables of signatures), the execution statistics list the notebooks by file, and "How to
+#: cite" gives the commit the book was built from.
 EXEMPT = {
     "machine_notation": ("book/api",),
     "unnumbered_tables": ("book/api", "book/execution"),
-    "process_words": ("book/api", "book/execution"),
+    "process_words": ("book/api", "book/execution", "book/cite"),
 }
 
 
@@ -381,6 +401,7 @@ def test_what_a_reader_sees(check, rel, book, seen):
         "unnumbered_tables": result["bad_tables"],
         "bookkeeping_code": result["bookkeeping"],
         "process_words": result["process"],
+        "blurry_figures": result["blurry"],
     }[check]
     assert not found, f"{rel}: {CHECKS[check]}:\n" + "\n".join(map(str, found))
 
@@ -555,8 +576,9 @@ def test_the_generated_pages_fit_a_phone(seen_narrow):
 
 
 def test_a_figure_opens_full_size_on_a_phone(server, browser):
-    """A tap on a figure shows its image at its own size in an overlay that scrolls, and the
-    page behind does not widen; Escape closes it."""
+    """A tap on a figure shows it at its own size (the width its page gives it, not narrowed to
+    the screen) in an overlay that scrolls, and the page behind does not widen; Escape closes
+    it."""
     from selenium.webdriver.common.by import By
     from selenium.webdriver.common.keys import Keys
     from selenium.webdriver.support.ui import WebDriverWait
@@ -574,6 +596,7 @@ def test_a_figure_opens_full_size_on_a_phone(server, browser):
             """
             const box = document.querySelector('.bk-lightbox'), img = box.querySelector('img');
             return {shown: img.getBoundingClientRect().width, natural: img.naturalWidth,
+                    own: parseFloat(arguments[0].querySelector('img').style.width),
                     href: arguments[0].getAttribute('href'), src: img.getAttribute('src'),
                     box_scrolls: box.scrollWidth > box.clientWidth,
                     page: document.documentElement.scrollWidth,
@@ -582,8 +605,8 @@ def test_a_figure_opens_full_size_on_a_phone(server, browser):
             link,
         )
         assert r["src"] == r["href"] and r["href"].endswith(".png"), r
-        assert abs(r["shown"] - r["natural"]) <= 1, r  # full size, not shrunk to the screen
-        assert r["natural"] > NARROW and r["box_scrolls"], r  # wider than the phone: it scrolls
+        assert r["own"] > 0 and abs(r["shown"] - r["own"]) <= 1, r  # its own size
+        assert r["shown"] > NARROW and r["box_scrolls"], r  # wider than the phone: it scrolls
         assert r["page"] <= r["screen"], r
         browser.switch_to.active_element.send_keys(Keys.ESCAPE)
         assert browser.execute_script("return document.querySelector('.bk-lightbox').hidden")
@@ -601,6 +624,67 @@ def test_a_figure_opens_full_size_on_a_phone(server, browser):
         browser.switch_to.active_element.send_keys(Keys.ESCAPE)
     finally:
         browser.set_window_size(WIDTH, 1600)
+
+
+ZOOM_CHECK = DONE + script("zoom_check.js")
+
+
+@functools.cache
+def stored_figures() -> dict:
+    """The description of every figure the notebooks store (obsbook.figures), by the name the
+    build gives its image: the SHA-256 of the PNG (myst-nb's name for an output's file)."""
+    import base64
+    import hashlib
+
+    from obsbook import figures
+
+    out = {}
+    for path in run.notebooks():
+        for cell in json.loads(path.read_text())["cells"]:
+            for o in cell.get("outputs", []):
+                png = o.get("data", {}).get("image/png")
+                meta = o.get("metadata", {}).get("image/png", {}).get(figures.METADATA_KEY)
+                if png and meta:
+                    digest = hashlib.sha256(base64.b64decode(png)).hexdigest()
+                    out[digest] = figures.unpack(meta)
+    return out
+
+
+def test_enlarged_figures_are_legible_and_sharp_on_a_phone(book, server, browser):
+    """On a 390 px screen, each figure of each chapter, tapped, shows its smallest text at
+    least as large as 10 pt at its own size (10 pt at 100 px per inch: 13.9 px), with at least
+    two image pixels per pixel shown, so that it stays sharp on the phone's screen and when
+    pinched. The text sizes are those the notebooks store with each figure."""
+    from obsbook import figures
+
+    descriptions = stored_figures()
+    browser.set_window_size(NARROW, 844)
+    bad, n = [], 0
+    try:
+        for rel in toc_pages():
+            if not rel.startswith("notebooks/"):
+                continue
+            browser.get(f"{server}/{rel}")
+            for r in browser.execute_async_script(ZOOM_CHECK):
+                n += 1
+                d = descriptions.get(Path(r["href"]).stem)
+                if d is None:
+                    bad.append(f"{rel}: {r['href']}: no stored description of its text")
+                    continue
+                smallest = min(t["pt"] for t in d["texts"])
+                px = smallest * figures.DPI / 72 * r["shown"] / d["size"][0]
+                if px < figures.MIN_PT * figures.DPI / 72 - 0.05:
+                    bad.append(f"{rel}: {r['id']}: smallest text {px:.1f} px enlarged, "
+                               f"{r['shown']:.0f} px of {d['size'][0]} px wide")
+                if r["natural"] < 2 * r["shown"] - 1:
+                    bad.append(f"{rel}: {r['id']}: {r['natural']} image pixels shown "
+                               f"{r['shown']:.0f} px wide")
+                if r["screen"] > NARROW:
+                    bad.append(f"{rel}: the enlarged view widened the page to {r['screen']} px")
+    finally:
+        browser.set_window_size(WIDTH, 1600)
+    assert n > 40, n
+    assert not bad, "\n".join(bad[:20])
 
 
 # ------------------------------------------------------------------------- the bound explorer
@@ -941,3 +1025,122 @@ def test_api_pages_contents_do_not_clip(server, browser):
         )
         clipped += [f"{rel}: {c}" for c in browser.execute_script(CONTENTS_CHECK)]
     assert not clipped, "\n".join(clipped[:20])
+
+
+# ---------------------------------------------------------------- contents, indices and search
+
+
+def test_the_explorer_is_in_the_contents_of_its_chapter(book, server, browser):
+    """The explorer's section is an entry of the chapter's contents (the right-hand column at
+    1400 px), and has the stable label ``explorer``, which any page can link by name
+    (``{ref}`the bound explorer <explorer>```): its anchor is at the section's heading, and the
+    section holds the explorer."""
+    from selenium.webdriver.support.ui import WebDriverWait
+    from sphinx.util.inventory import InventoryFile
+
+    with open(book / "objects.inv", "rb") as fh:
+        labels = InventoryFile.load(fh, "", lambda base, uri: uri)["std:label"]
+    assert labels["explorer"][2] == f"{EXPLORER_PAGE}#explorer", labels["explorer"]
+    assert labels["explorer"][3] == "Explore the bound"
+    browser.set_window_size(WIDTH, 1600)
+    browser.get(f"{server}/{EXPLORER_PAGE}")
+    WebDriverWait(browser, 20).until(lambda d: d.execute_script(
+        "return !!document.querySelector('.bd-sidebar-secondary')"))
+    r = browser.execute_script("""
+        const a = document.querySelector('.bd-sidebar-secondary a[href="#explore-the-bound"]');
+        const label = document.getElementById('explorer');
+        const section = label && label.closest('section');
+        return {entry: a ? a.textContent.trim() : null, shown: !!a && a.offsetParent !== null,
+                section: section ? section.id : null,
+                heading: !!label && label.nextElementSibling.tagName,
+                holds: !!section && !!section.querySelector('#bound-explorer')};
+    """)
+    assert r == {"entry": "Explore the bound", "shown": True, "section": "explore-the-bound",
+                 "heading": "H2", "holds": True}, r
+
+
+def test_print_only_cells_stay_out_of_the_pages(book):
+    """The explorer's still, which stands for it in print, is not on the web page, nor is the
+    sentence that introduces it; the explorer is."""
+    html = (book / EXPLORER_PAGE).read_text()
+    assert 'id="bound-explorer"' in html and "In the web edition" not in html
+    nb = json.loads((ROOT / "notebooks" / "02_pair_closed_form.ipynb").read_text())
+    stills = [c for c in nb["cells"] if "print-only" in c.get("metadata", {}).get("tags", [])]
+    assert len(stills) == 1 and stills[0]["outputs"], "the still of the explorer is not stored"
+    import base64
+    import hashlib
+
+    (png,) = [o["data"]["image/png"] for o in stills[0]["outputs"] if "image/png" in o["data"]]
+    assert hashlib.sha256(base64.b64decode(png)).hexdigest() not in html
+
+
+def test_the_statement_index_names_statements_as_the_pages_do(book):
+    """The index of theorems, algorithms and remarks shows no internal label (``thm-...``,
+    ``stmt-...``) and no file name; each entry is named as its box is ("Theorem 4") and links
+    to it."""
+    labels = set()
+    for path in run.notebooks():
+        text = "".join("".join(c["source"]) + "\n" for c in json.loads(path.read_text())["cells"])
+        labels |= set(re.findall(r"^```\{prf:\w+\}.*\n:label: ([\w-]+)", text, re.M))
+    assert {"thm-lower-bound", "stmt-intro-vs-problem2"} <= labels
+    html = (book / "prf-prf.html").read_text()
+    body = html[html.index("<article"):html.index("</article>")]
+    visible = re.sub(r"<[^>]+>", " ", body)
+    shown = sorted(lab for lab in labels if re.search(rf"(?<![\w-]){re.escape(lab)}(?![\w-])",
+                                                      visible))
+    assert not shown, shown
+    assert not re.search(r"notebooks/|\.ipynb|\d\d_[a-z_]+", visible)
+    entries = re.findall(r'<a href="([^"#]+)#([^"]+)"><code class="xref">([^<]+)</code>', body)
+    assert len(entries) == len(labels), (len(entries), len(labels))
+    for href, anchor, name in entries:
+        assert re.fullmatch(r"[A-Z][a-z]+ \d+", name), name
+        page = (book / href).read_text()
+        # the box the entry links to carries the same name
+        box = page[page.index(f'id="{anchor}"'):][:600]
+        assert f'<span class="caption-number">{name} </span>' in box, (name, href, anchor)
+
+
+def _search(server, browser, query: str) -> list[str]:
+    """The pages the site search lists for ``query``, in its order."""
+    from urllib.parse import quote
+
+    from selenium.webdriver.support.ui import WebDriverWait
+
+    browser.get(f"{server}/search.html?q={quote(query)}")
+    WebDriverWait(browser, 30).until(lambda d: d.execute_script(
+        "const s = document.querySelector('#search-results .search-summary');"
+        "return !!s && /Search finished/.test(s.textContent);"))  # every result listed
+    return browser.execute_script(
+        "return Array.from(document.querySelectorAll('#search-results ul.search li > a'))"
+        ".map(a => new URL(a.getAttribute('href'), location.href).pathname.slice(1));")
+
+
+@pytest.mark.parametrize("query", ["greedy", "Mahalanobis", "lower bound"])
+def test_the_search_lists_chapters_before_the_api(server, browser, query):
+    """Every page of the book that the search finds comes before every page of the API
+    reference, and the search finds both (so that the order is checked)."""
+    browser.set_window_size(WIDTH, 1600)
+    found = _search(server, browser, query)
+    api = [k for k, p in enumerate(found) if p.startswith("book/api")]
+    chapters = [k for k, p in enumerate(found) if p.startswith("notebooks/")]
+    assert api and chapters, found
+    assert max(k for k, p in enumerate(found) if not p.startswith("book/api")) < min(api), found
+
+
+def test_how_to_cite_gives_the_version_the_book_was_built_from(book):
+    """The "How to cite" page names a commit of this repository and its date, in its text and
+    in the book's BibTeX entry, and shows the paper's entry of the bibliography."""
+    import html as html_module
+
+    page = html_module.unescape(re.sub(r"<[^>]+>", "", (book / "book" / "cite.html").read_text()))
+    m = re.search(r"built from commit ([0-9a-f]{12}) of (\d{4}-\d{2}-\d{2})", page)
+    if shutil.which("git") is None or not (ROOT / ".git").exists():
+        assert "a copy without its version history" in page
+        return
+    assert m, "no version on the page"
+    commit, date = m.groups()
+    proc = subprocess.run(["git", "-C", str(ROOT), "log", "-1", "--format=%cs", commit],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0 and proc.stdout.strip() == date, (commit, date, proc.stderr)
+    assert f"note         = {{Version: commit {commit} of {date}" in page
+    assert "@misc{zhou2017lower," in page and "eprint        = {1706.00871}" in page

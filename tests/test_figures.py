@@ -37,16 +37,20 @@ def _texts(d: dict) -> list[str]:
 
 # ------------------------------------------------------------------- what is recorded is true
 
-def test_recorded_extent_holds_the_pixels_of_the_text():
-    # one dark text on white: every inked pixel lies in its recorded box, which it fills
+@pytest.mark.parametrize("density", [1, 2])
+def test_recorded_extent_holds_the_pixels_of_the_text(density):
+    # one dark text on white: every inked pixel lies in its recorded box, which it fills; the
+    # box is in pixels shown, the image has density times as many
     fig = Figure(figsize=(3, 2), dpi=100)
     fig.text(0.3, 0.4, "Hxg", fontsize=20)
-    png, d = figures.render(fig)
+    png, d = figures.render(fig, density=density)
     from PIL import Image
 
     img = np.asarray(Image.open(BytesIO(png)).convert("L"))
-    assert [img.shape[1], img.shape[0]] == d["size"] == [300, 200]
+    assert [img.shape[1], img.shape[0]] == [300 * density, 200 * density]
+    assert d["size"] == [300, 200] and d["density"] == density
     ys, xs = np.nonzero(img < 128)
+    xs, ys = xs / density, ys / density
     (t,) = d["texts"]
     x0, y0, x1, y1 = t["box"]
     assert x0 - 1 <= xs.min() and xs.max() <= x1 + 1 and y0 - 1 <= ys.min() and ys.max() <= y1 + 1
@@ -55,15 +59,40 @@ def test_recorded_extent_holds_the_pixels_of_the_text():
     assert t["pt"] == 20.0 and t["text"] == "Hxg"
 
 
-def test_png_size_in_the_metadata_is_the_png_size():
+def test_the_png_has_twice_the_pixels_of_the_size_it_is_shown_at():
     fig = Figure(figsize=(4.1, 2.3), dpi=100)
     fig.add_subplot().plot([0, 1])
     data, meta = figures.png_with_texts(fig)
     import base64
 
+    from PIL import Image
+
     png = base64.b64decode(data)
     width, height = struct.unpack(">II", png[16:24])  # the IHDR chunk
-    assert [width, height] == meta[figures.METADATA_KEY]["size"] == [410, 230]
+    assert [width, height] == [820, 460]
+    assert meta[figures.METADATA_KEY]["size"] == [410, 230] and meta["width"] == 410
+    # the PNG says 200 pixels per inch, so print and LaTeX give it its 4.1 in
+    assert Image.open(BytesIO(png)).info["dpi"] == pytest.approx((200, 200), abs=0.01)
+    assert fig.dpi == 100  # the figure keeps its own dpi
+
+
+def test_the_text_record_does_not_depend_on_the_density():
+    # the same figure drawn with 1 and 2 image pixels per pixel shown: the same texts, centred
+    # at the same places in pixels shown to a pixel, and as large to 5 % (glyphs are fitted to
+    # the pixel grid at each size: a 12 pt title is 3 px wider at 1 than at 2)
+    fig = _two_panels()
+    one, two = (figures.render(fig, density=k)[1] for k in (1, 2))
+    assert one["size"] == two["size"] and _texts(one) == _texts(two)
+    for a, b in zip(one["texts"], two["texts"]):
+        a, b = np.array(a["box"]), np.array(b["box"])
+        assert np.allclose((a[:2] + a[2:]) / 2, (b[:2] + b[2:]) / 2, atol=1.0), (a, b)
+        assert np.allclose(a[2:] - a[:2], b[2:] - b[:2], rtol=0.05, atol=0.5), (a, b)
+
+
+@pytest.mark.parametrize("density", [0, -1, "2", True, float("nan")])
+def test_a_bad_density_is_refused(density):
+    with pytest.raises(ValueError, match="density"):
+        figures.render(Figure(), density=density)
 
 
 def test_only_drawn_tick_labels_are_recorded():
@@ -93,7 +122,7 @@ def test_a_laid_out_figure_is_drawn_once_into_the_image_savefig_makes(monkeypatc
     # savefig first draws a figure with drawing switched off to run its layout engine, then
     # again for the image; render lays it out inside its one draw: the same bytes
     buf = BytesIO()
-    _two_panels().savefig(buf, format="png")
+    _two_panels().savefig(buf, format="png", dpi=2 * 100)
     fig = _two_panels()
     draws = []
     original = Figure.draw
@@ -121,9 +150,9 @@ def test_the_formatter_output_reaches_ipython_as_metadata():
     assert data["image/png"] and "t" in _texts(
         figures.unpack(meta["image/png"][figures.METADATA_KEY])
     )
-    assert set(meta["image/png"]) == {
-        figures.METADATA_KEY
-    }  # no width/height: the image keeps its size
+    # the width it is shown at, and no height: a page that narrows it keeps its proportions
+    assert set(meta["image/png"]) == {figures.METADATA_KEY, "width"}
+    assert meta["image/png"]["width"] == 200
 
 
 def test_turned_text_gets_its_turned_box():

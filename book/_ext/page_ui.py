@@ -33,6 +33,8 @@ EXPLORER_ID = 'id="bound-explorer"'
 
 
 def _link_figure_images(app, doctree, docname):
+    if app.builder.format != "html":
+        return  # in print a figure is a figure
     images = app.env.images
     target = relative_uri(app.builder.get_target_uri(docname), "_images")
     for fig in doctree.findall(nodes.figure):

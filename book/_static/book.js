@@ -1,8 +1,9 @@
 /* Small helps for reading the book on any screen.
  *
  * 1. Figures open full size: a click on a figure's image (a link to the image file, class
- *    bk-zoom) shows the image at its own size in an overlay that scrolls both ways; Escape, the
- *    close button or a click outside the image closes it. Without this script the link opens the
+ *    bk-zoom) shows the figure at its own size (the width its page gives it, at which its text
+ *    is at least 10 pt; not narrowed to the screen) in an overlay that scrolls both ways; Escape,
+ *    the close button or a click outside the image closes it. Without this script the link opens the
  *    file itself. The frame an animation player shows opens the same way (class bk-zoom-frame).
  * 2. A display formula wider than its box scrolls sideways inside it; a shadow on the side where
  *    more of it is hidden says so (classes bk-more-left, bk-more-right).
@@ -43,6 +44,10 @@
     opener = from;
     const source = from.tagName === "IMG" ? from : from.querySelector("img");
     img.src = src || from.getAttribute("href");
+    // the figure's own size, which its page gives as a width (the image has twice as many
+    // pixels, for sharp screens); an image without one is shown at its pixel size
+    const width = source ? parseFloat(source.style.width) : NaN;
+    img.style.width = width > 0 ? width + "px" : "";
     img.alt = source ? source.alt : "";
     const cap = from.closest("figure") && from.closest("figure").querySelector("figcaption");
     caption.textContent = "";

@@ -157,6 +157,12 @@ ready.then(() => new Promise(r => setTimeout(r, 300))).then(() => {
 
   const images = Array.from(document.images);
   const broken = images.filter(i => !i.complete || i.naturalWidth === 0).map(i => (i.src || '').slice(0, 80));
+  // figures sharp on screens with two device pixels per CSS pixel: an image of a figure has
+  // at least twice as many pixels as it is shown wide (a player's frames aside)
+  const blurry = Array.from(art.querySelectorAll('figure img'))
+    .filter(i => !i.closest('.animation') && i.naturalWidth > 0)
+    .filter(i => i.naturalWidth < 2 * i.getBoundingClientRect().width - 1)
+    .map(i => `${(i.closest('figure[id]') || {id: '?'}).id}: ${i.naturalWidth} px shown ${Math.round(i.getBoundingClientRect().width)} px wide`);
   const anims = Array.from(document.querySelectorAll('.animation')).map(a => {
     const img = a.querySelector('img');
     const slider = a.querySelector('input[type=range]');
@@ -165,7 +171,7 @@ ready.then(() => new Promise(r => setTimeout(r, 300))).then(() => {
   done({quoted: quoted, raw: raw, wide: wide.slice(0, 12), n_wide: wide.length, uncaptioned: uncaptioned,
         machine: machine, bad_tables: badTables, bookkeeping: bookkeeping, process: process,
         summary_top: summaryTop, max_rows: maxRows, typeset: typeset,
-        low_contrast: lowContrast,
+        low_contrast: lowContrast, blurry: blurry,
         external: external, broken: broken, anims: anims,
         math: document.querySelectorAll('mjx-container').length, images: images.length,
         height: Math.min(document.documentElement.scrollHeight, 12000)});

@@ -52,13 +52,14 @@ def test_fig2_text_is_clear_of_other_text_and_of_the_maxima(panels):
     assert figures.problems(d) == [] and d["size"][0] <= 750
     # no contour label within 4 px of a star (12 pt across: 8.3 px from its centre to its tips)
     height = d["size"][1]
+    renderer = fig.canvas.get_renderer()  # at the figure's dpi: the image was drawn at twice it
     for ax in fig.axes:
         if ax.name != "rectilinear":
             continue
         star = ax.get_lines()[-1]
         centres = ax.transData.transform(star.get_xydata())
         for text in ax.texts:
-            b = text.get_window_extent()
+            b = text.get_window_extent(renderer)
             for x, y in centres:
                 dx = max(b.x0 - x, 0, x - b.x1)
                 dy = max(b.y0 - y, 0, y - b.y1)
