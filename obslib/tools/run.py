@@ -26,16 +26,29 @@ temporary folder, so they neither warn about unencrypted TCP nor race for TCP po
 After execution the runner strips what changes from run to run or machine to machine
 (papermill's timestamps, the Python patch version), so that re-running an unchanged notebook
 leaves ``git status`` clean.
+
+Nothing is lost, whatever happens. Papermill writes each executed notebook to a temporary file
+beside its destination; the cleaned notebook then replaces the destination in one rename
+(:func:`obslib._io.write_output`), so a stop at any moment leaves every notebook as it was or
+as it was executed, never truncated. A notebook whose cell raises is saved with the error, as
+papermill saves it. SIGINT, SIGTERM and SIGHUP stop the command cleanly: notebooks not started
+are not started, running kernels are killed and their notebooks left as they were, what
+finished is recorded, one line says what was stopped, and the exit status is ``128 +`` the
+signal's number. ``_build/runs/index.json`` is updated under a file lock, so concurrent reruns
+never lose each other's entries.
 """
 
 from __future__ import annotations
 
 import argparse
 import ast
+import contextlib
 import datetime
+import functools
 import hashlib
 import json
 import os
+import signal
 import sys
 import tempfile
 import threading
@@ -51,6 +64,7 @@ __all__ = [
     "default_jobs", "execution_page", "main",
 ]
 
+from .._io import Stopped, command, locked, uninterrupted, write_output
 from .._validate import (
     ArgumentTypeError,
     as_argv,
@@ -244,8 +258,9 @@ def _merge_streams(outputs: list) -> list:
     return merged
 
 
-def _clean(path: Path) -> None:
-    """Drop run-specific metadata and chunking so that identical results give identical files."""
+def _cleaned(path: Path) -> str:
+    """The notebook at ``path`` without run-specific metadata and chunking, as the text
+    ``nbformat.write`` would store: identical results give identical files."""
     import nbformat
 
     nb = nbformat.read(path, as_version=4)
@@ -259,7 +274,85 @@ def _clean(path: Path) -> None:
         tags = [t for t in cell.metadata.pop("tags", []) if t != "papermill-error-cell-tag"]
         if tags:
             cell.metadata["tags"] = tags
-    nbformat.write(nb, path)
+    text = nbformat.writes(nb)
+    return text if text.endswith("\n") else text + "\n"
+
+
+class _Kernels:
+    """The kernels this process's notebooks run in, so that a stop can kill them.
+
+    Kernels start in sessions of their own (jupyter_client), so a Ctrl-C on the terminal never
+    reaches them, and a runner that exits leaves them running until they notice (a second).
+    Each is registered, with the thread that runs its notebook, as soon as it has started;
+    :meth:`kill` kills the process groups of those still running (the kernel and whatever it
+    started). A kernel that finishes starting after a :meth:`kill` of every kernel is killed at
+    once.
+    """
+
+    def __init__(self):
+        self._lock = threading.Lock()
+        self._kernels: list = []  # (jupyter_client provisioner, thread)
+        self.stopping = False
+
+    def started(self, provisioner) -> None:
+        with self._lock:
+            self._kernels.append((provisioner, threading.get_ident()))
+            if self.stopping:
+                _kill_kernel(provisioner)
+
+    def forget(self, thread: int) -> None:
+        """Forget the kernels of ``thread`` (its notebook is done: they are shut down)."""
+        with self._lock:
+            self._kernels = [(p, t) for p, t in self._kernels if t != thread]
+
+    def kill(self, thread: int | None = None) -> None:
+        """Kill the kernels of ``thread``, or every kernel (and any that starts until
+        :meth:`reset`)."""
+        with self._lock:
+            if thread is None:
+                self.stopping = True
+            for p, t in self._kernels:
+                if thread is None or t == thread:
+                    _kill_kernel(p)
+
+    def reset(self) -> None:
+        """The stop is over: kernels started from now on live."""
+        with self._lock:
+            self.stopping = False
+
+
+def _kill_kernel(provisioner) -> None:
+    """SIGKILL to a running kernel's process group (its own session: the kernel and what it
+    started), or to the kernel alone if it shares this process's group. A kernel already ended
+    (and reaped, so its number may belong to another process by now) is left alone."""
+    process = getattr(provisioner, "process", None)
+    if process is None or process.poll() is not None:
+        return
+    group = getattr(provisioner, "pgid", None)
+    try:
+        if group is not None and group != os.getpgid(0):
+            os.killpg(group, signal.SIGKILL)
+        else:
+            process.kill()
+    except (ProcessLookupError, PermissionError):
+        pass  # ended meanwhile
+
+
+_KERNELS = _Kernels()
+
+
+@functools.cache
+def _kernel_manager_class():
+    """jupyter_client's asynchronous kernel manager (nbclient's default), registering each
+    kernel it starts in :data:`_KERNELS`."""
+    from jupyter_client import AsyncKernelManager
+
+    class TrackedKernelManager(AsyncKernelManager):
+        async def start_kernel(self, **kw):
+            await super().start_kernel(**kw)
+            _KERNELS.started(self.provisioner)
+
+    return TrackedKernelManager
 
 
 def precompile() -> None:
@@ -290,22 +383,9 @@ def _kernel_config(folder: str):
     return Config({"KernelManager": {"transport": "ipc", "ip": os.path.join(folder, "kernel")}})
 
 
-def execute(src: Path, dst: Path, parameters: dict | None = None, progress=False) -> float:
-    """Execute ``src`` into ``dst`` with papermill; return the wall time in seconds.
-
-    ``parameters`` override the notebook's ``parameters`` cell; every name must exist there.
-    ``progress``: papermill's per-cell progress bar (``True``, or a dict of tqdm options).
-
-    Examples
-    --------
-    Executing a notebook starts a kernel (seconds), so the example is not run:
-
-    >>> out = RUNS_DIR / "quick" / "01.ipynb"
-    >>> execute(resolve(["01"])[0], out, {"n_scenes": 10})  # doctest: +SKIP
-    3.2
-    """
-    import papermill as pm
-
+def _execute_iv(src, dst, parameters, progress) -> tuple:
+    """:func:`execute`'s arguments: an existing notebook, a path, its declared parameters, and
+    ``True``, ``False`` or a dict of tqdm options."""
     src, dst = as_path(src, "src", exists=True), as_path(dst, "dst")
     if src.suffix != ".ipynb":
         raise ValueError(f"src {src}: not a notebook (.ipynb)")
@@ -320,9 +400,35 @@ def execute(src: Path, dst: Path, parameters: dict | None = None, progress=False
             raise ValueError(
                 f"{src.name} has no parameter(s) {unknown}; its parameters: {sorted(declared)}"
             )
+    return src, dst, parameters, progress
+
+
+def execute(src: Path, dst: Path, parameters: dict | None = None, progress=False) -> float:
+    """Execute ``src`` into ``dst`` with papermill; return the wall time in seconds.
+
+    ``parameters`` override the notebook's ``parameters`` cell; every name must exist there.
+    ``progress``: papermill's per-cell progress bar (``True``, or a dict of tqdm options).
+
+    ``dst`` is replaced in one rename once the notebook has run (see the module docstring), and
+    left untouched when its text is unchanged. If a cell raises, ``dst`` gets the notebook as far
+    as it ran, with the error, and papermill's error is raised. If the kernel dies or the call is
+    stopped (an exception in this thread, or :class:`_Kernels` killing every kernel), ``dst`` is
+    left as it was and the kernel is killed.
+
+    Examples
+    --------
+    Executing a notebook starts a kernel (seconds), so the example is not run:
+
+    >>> out = RUNS_DIR / "quick" / "01.ipynb"
+    >>> execute(resolve(["01"])[0], out, {"n_scenes": 10})  # doctest: +SKIP
+    3.2
+    """
+    src, dst, parameters, progress = _execute_iv(src, dst, parameters, progress)
+    import papermill as pm
+    from papermill.exceptions import PapermillExecutionError
+
     dst.parent.mkdir(parents=True, exist_ok=True)
     os.environ.setdefault("PYTHONHASHSEED", "0")
-    t0 = time.perf_counter()
     options = dict(
         parameters=parameters,
         kernel_name=KERNEL,
@@ -336,19 +442,40 @@ def execute(src: Path, dst: Path, parameters: dict | None = None, progress=False
         # every output has arrived when the last cell is done; a graceful shutdown only runs the
         # kernel's exit hooks, and ipykernel sometimes takes seconds to honour it
         shutdown_kernel="immediate",
+        kernel_manager_class=_kernel_manager_class(),
     )
-    for attempt in range(1, KERNEL_STARTS + 1):
-        try:
-            with tempfile.TemporaryDirectory(prefix="obslib-kernel-") as sockets:
-                pm.execute_notebook(str(src), str(dst), config=_kernel_config(sockets), **options)
-            break
-        except RuntimeError as exc:  # not a cell's error: those are PapermillExecutionError
-            if attempt == KERNEL_STARTS or not str(exc).startswith(_KERNEL_START_FAILURES):
+    # papermill writes here (it truncates, then writes); dst is replaced only by a whole notebook
+    fd, scratch = tempfile.mkstemp(prefix=f".{dst.stem}.running-", suffix=".ipynb",
+                                   dir=dst.parent)
+    os.close(fd)
+    t0 = time.perf_counter()
+    try:
+        for attempt in range(1, KERNEL_STARTS + 1):
+            if _KERNELS.stopping:
+                raise RuntimeError(f"{src.name}: not started, the run is stopping")
+            try:
+                with tempfile.TemporaryDirectory(prefix="obslib-kernel-") as sockets:
+                    pm.execute_notebook(str(src), scratch, config=_kernel_config(sockets),
+                                        **options)
+                break
+            except PapermillExecutionError:  # a cell raised: saved with its error, as papermill
+                write_output(dst, _cleaned(Path(scratch)))
                 raise
-            print(f"{src.name}: the kernel did not start ({exc}); starting another",
-                  file=sys.stderr, flush=True)
-    elapsed = time.perf_counter() - t0
-    _clean(dst)
+            except RuntimeError as exc:
+                if (attempt == KERNEL_STARTS or _KERNELS.stopping
+                        or not str(exc).startswith(_KERNEL_START_FAILURES)):
+                    raise
+                print(f"{src.name}: the kernel did not start ({exc}); starting another",
+                      file=sys.stderr, flush=True)
+        elapsed = time.perf_counter() - t0
+        write_output(dst, _cleaned(Path(scratch)))
+    except BaseException:
+        _KERNELS.kill(threading.get_ident())  # a stop in this thread: its kernel must not linger
+        raise
+    finally:
+        _KERNELS.forget(threading.get_ident())
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(scratch)
     return elapsed
 
 
@@ -373,6 +500,7 @@ class RunFailed(RuntimeError):
         super().__init__(f"{notebook.name} failed: {type(error).__name__}")
         self.notebook = notebook
         self.error = error
+        self.times: dict = {}  # the notebooks that finished, set by execute_all
 
 
 def _runs_iv(runs) -> list:
@@ -410,13 +538,19 @@ def execute_all(runs, jobs: int = 1, progress: bool | None = None, on_done=None,
     Each notebook runs in its own kernel, as serially: the outputs are the same whatever
     ``jobs``. The longest notebooks start first, by ``expected`` (see :func:`longest_first`;
     default: their last in-place times). ``on_done(run, seconds)`` is called in this thread as
-    each finishes. ``progress``: bars on standard error (``None``: when it is a terminal).
+    each finishes, uninterrupted by a stop (:func:`obslib._io.uninterrupted`). ``progress``:
+    bars on standard error (``None``: when it is a terminal).
 
     Raises
     ------
     RunFailed
-        At the first notebook that fails; notebooks not yet started are not started, those
-        running are finished.
+        After the first notebook that fails: notebooks not yet started are not started, those
+        running are finished (and passed to ``on_done``). Its ``times`` holds the finished ones.
+    obslib._io.Stopped
+        When a stop signal arrives (under :func:`obslib._io.command`): notebooks not yet started
+        are not started, the running ones' kernels are killed (their ``dst`` left as it was),
+        every notebook that finished is passed to ``on_done``; its ``times`` holds them and its
+        ``detail`` says what was stopped.
 
     Examples
     --------
@@ -449,36 +583,78 @@ def execute_all(runs, jobs: int = 1, progress: bool | None = None, on_done=None,
                 slots.append(slot)
 
     times: dict = {}
+    failures: list = []
     overall = tqdm(total=len(runs), desc="notebooks", unit="nb", position=0, file=sys.stderr,
                    disable=disable, dynamic_ncols=True)
+
+    def finish(fut, r: Run) -> bool:
+        """Record a finished notebook; False if it failed or never ran."""
+        if fut.cancelled():
+            return False
+        error = fut.exception()
+        if error is not None:
+            failures.append(RunFailed(r.notebook, error))
+            return False
+        with uninterrupted():
+            times[r.notebook.name] = fut.result()
+            overall.update(1)
+            if on_done is not None:
+                with tqdm.external_write_mode(file=sys.stdout):
+                    on_done(r, times[r.notebook.name])
+        return True
+
     pool = ThreadPoolExecutor(max_workers=max(1, min(jobs, len(runs))))
+    pending: dict = {}
     try:
-        pending = {pool.submit(work, r): r for r in runs}
+        for r in runs:
+            pending[pool.submit(work, r)] = r
         while pending:
-            done, _ = wait(pending, return_when=FIRST_COMPLETED)
+            # a timed wait: a signal delivered to another thread does not interrupt this one's
+            # wait, and its handler runs when this thread next runs Python code
+            done, _ = wait(pending, timeout=_POLL, return_when=FIRST_COMPLETED)
             for fut in done:
-                r = pending.pop(fut)
-                try:
-                    dt = fut.result()
-                except Exception as exc:  # papermill's PapermillExecutionError, with the traceback
-                    for other in pending:
-                        other.cancel()
-                    raise RunFailed(r.notebook, exc) from exc
-                times[r.notebook.name] = dt
-                overall.update(1)
-                if on_done is not None:
-                    with tqdm.external_write_mode(file=sys.stdout):
-                        on_done(r, dt)
+                finish(fut, pending.pop(fut))
+            if failures:  # the first failure: start nothing more, finish what runs
+                for other in pending:
+                    other.cancel()
+    except Stopped as stop:
+        _KERNELS.kill()  # every running kernel, and any still starting
+        for other in pending:
+            other.cancel()
+        wait(pending, timeout=_STOP_WAIT)
+        stopped = [r.notebook.stem for f, r in pending.items()
+                   if not f.cancelled() and not finish(f, r)]
+        not_started = sum(f.cancelled() for f in pending)
+        stop.detail = (f"{len(times)} notebook(s) finished and recorded, {len(stopped)} stopped"
+                       + (f" ({', '.join(stopped)})" if stopped else "")
+                       + f", {not_started} not started")
+        stop.times = times
+        raise
     finally:
         pool.shutdown(wait=True, cancel_futures=True)
+        _KERNELS.reset()
         overall.close()
+    if failures:
+        failures[0].times = times
+        raise failures[0] from failures[0].error
     return times
 
 
-def _record(run: Run, seconds: float) -> None:
-    """Write the rerun's parameters beside it; list it in ``index.json`` of its folder's parent."""
-    from .._io import write_output
+#: Seconds between two looks of :func:`execute_all` at the running notebooks (and signals).
+_POLL = 0.2
 
+#: Seconds a stop waits for the notebooks whose kernels it killed (nbclient notices a dead kernel
+#: within a second).
+_STOP_WAIT = 30
+
+
+def _record(run: Run, seconds: float) -> None:
+    """Write the rerun's parameters beside it; list it in ``index.json`` of its folder's parent.
+
+    The index is read, changed and written under a lock (:func:`obslib._io.locked`, on
+    ``.index.lock`` beside it), so reruns finishing at the same moment in other processes never
+    lose each other's entries.
+    """
     entry = {
         "notebook": run.notebook.stem,
         "output": run.dst.relative_to(run.dst.parents[1]).as_posix(),
@@ -492,13 +668,14 @@ def _record(run: Run, seconds: float) -> None:
     run.dst.parent.mkdir(parents=True, exist_ok=True)  # the runner's own folder under _build/
     write_output(run.dst.with_suffix(".json"), json.dumps(entry, indent=1) + "\n")
     index_file = run.dst.parents[1] / "index.json"
-    try:
-        index = json.loads(index_file.read_text())["runs"]
-    except (OSError, ValueError, KeyError, TypeError):
-        index = []
-    index = [e for e in index if e.get("output") != entry["output"]] + [entry]
-    index.sort(key=lambda e: e["output"])
-    write_output(index_file, json.dumps({"runs": index}, indent=1) + "\n")
+    with locked(index_file.with_name(".index.lock")):
+        try:
+            index = json.loads(index_file.read_text())["runs"]
+        except (OSError, ValueError, KeyError, TypeError):
+            index = []
+        index = [e for e in index if e.get("output") != entry["output"]] + [entry]
+        index.sort(key=lambda e: e["output"])
+        write_output(index_file, json.dumps({"runs": index}, indent=1) + "\n")
 
 
 def execution_page(times: dict, jobs: int = 1, wall: float | None = None) -> str:
@@ -605,6 +782,27 @@ def _shown(path: Path) -> str:
         return str(path)
 
 
+def _record_times(times: dict, jobs: int, wall: float) -> bool:
+    """Merge the in-place run times into ``_build/execution_times.json`` (under a lock) and write
+    the execution statistics page; False, after a one-line error, if a write fails."""
+    try:
+        TIMES_FILE.parent.mkdir(parents=True, exist_ok=True)  # _build/, the runner's own
+        with locked(TIMES_FILE.with_name(".execution_times.lock")):
+            try:
+                old = json.loads(TIMES_FILE.read_text()) if TIMES_FILE.exists() else {}
+            except ValueError:
+                old = {}
+            old.update({k: round(v, 2) for k, v in times.items()})
+            write_output(TIMES_FILE, json.dumps(old, indent=1, sort_keys=True) + "\n")
+            write_output(EXECUTION_PAGE, execution_page(old, jobs, wall))
+    except OSError as exc:
+        print(f"python -m obslib.run: error: cannot write {exc.filename}: {exc.strerror}",
+              file=sys.stderr)
+        return False
+    return True
+
+
+@command("python -m obslib.run")
 def main(argv=None) -> int:
     """Command line entry point (see the module docstring); returns the exit status.
 
@@ -612,8 +810,6 @@ def main(argv=None) -> int:
     --------
     >>> main(["-p", "n_seeds", "-5", "05"])  # doctest: +SKIP
     """
-    from .._io import write_output
-
     args = parse_args(argv)
 
     def done(r: Run, dt: float) -> None:
@@ -629,27 +825,22 @@ def main(argv=None) -> int:
     except RunFailed as exc:
         print(f"{exc.notebook.name:40s} FAILED", flush=True)
         print(exc.error, file=sys.stderr)
+        if args.in_place and exc.times:
+            _record_times(exc.times, args.jobs, time.perf_counter() - t0)
         print(f"python -m obslib.run: error: notebook {exc.notebook.stem} failed (above)",
               file=sys.stderr)
         return 1
+    except Stopped as exc:
+        if args.in_place and getattr(exc, "times", None):
+            _record_times(exc.times, args.jobs, time.perf_counter() - t0)
+        raise
     except OSError as exc:
         print(f"python -m obslib.run: error: {exc}", file=sys.stderr)
         return 1
     if args.in_place:
-        times = {k: round(v, 2) for k, v in times.items()}
-        try:
-            old = json.loads(TIMES_FILE.read_text()) if TIMES_FILE.exists() else {}
-        except ValueError:
-            old = {}
-        old.update(times)
-        try:
-            TIMES_FILE.parent.mkdir(parents=True, exist_ok=True)  # _build/, the runner's own
-            write_output(TIMES_FILE, json.dumps(old, indent=1, sort_keys=True) + "\n")
-            write_output(EXECUTION_PAGE, execution_page(old, args.jobs, time.perf_counter() - t0))
-        except OSError as exc:
-            print(f"python -m obslib.run: error: cannot write {exc.filename}: {exc.strerror}",
-                  file=sys.stderr)
-            return 1
+        with uninterrupted():
+            if not _record_times(times, args.jobs, time.perf_counter() - t0):
+                return 1
     elif args.runs:
         print(f"parameters and times of every rerun: {_shown(RUNS_DIR / 'index.json')}", flush=True)
     return 0
