@@ -22,6 +22,7 @@ from collections import Counter
 from pathlib import Path
 
 from obslib._format import count, number
+from obslib._io import command
 from obslib.claims import REQUIRED_IDS, STATUSES
 
 __all__ = ["ROOT", "MARKERS", "render_report", "notebook_targets", "typeset", "list_table",
@@ -425,11 +426,12 @@ def render_report(records, profile: str = "paper", targets=None, robustness=None
     return "\n".join(lines).rstrip() + "\n"
 
 
+@command("python -m obsbook.report")
 def main(argv=None) -> int:
     """``python -m obsbook.report [--profile P] [--write FILE] [--robustness FILE]
     [--notebooks DIR]``: render the report, print it or store it (exit status 2 for a bad
-    profile or path)."""
-    from obslib._io import OutputPathError, as_output_path, write_output
+    profile or path, or a missing robustness file; 1, after one line, if the write fails)."""
+    from obslib._io import OutputPathError, as_input_file, as_output_path, write_or_report
     from obslib.claims import evaluate
     from obslib.claims.robustness import read_json
     from obslib.profiles import profile_names
@@ -450,18 +452,17 @@ def main(argv=None) -> int:
             ap.error(f"--write {exc}")
     if not Path(args.notebooks).is_dir():
         ap.error(f"--notebooks {args.notebooks}: not a directory")
-    robustness = None
-    if Path(args.robustness).exists():
-        try:
-            robustness = read_json(args.robustness)
-        except ValueError as exc:
-            ap.error(f"--robustness {exc}")
+    try:
+        robustness = read_json(as_input_file(args.robustness))
+    except ValueError as exc:  # missing, not a regular file, or not robustness data
+        ap.error(f"--robustness {exc}")
     records = evaluate(args.profile)
     text = render_report(records, args.profile, notebook_targets(args.notebooks), robustness)
     if args.write is None:
         print(text, end="")
+    elif not write_or_report("python -m obsbook.report", args.write, text):
+        return 1
     else:
-        write_output(args.write, text)
         print(f"{args.write}: {len(records)} entries")
     return 0
 

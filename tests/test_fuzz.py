@@ -359,13 +359,16 @@ def _cli_mains():
     from obslib.tools import bench, run
 
     stubs = [mock.patch.object(_io, "write_output", lambda *a, **k: True),
+             mock.patch.object(_io, "write_or_report", lambda *a, **k: True),
+             mock.patch.object(bench, "write_or_report", lambda *a, **k: True),
+             mock.patch.object(run, "write_output", lambda *a, **k: True),
              mock.patch.object(run, "execute_all", lambda *a, **k: {}),
              mock.patch.object(run, "precompile", lambda: None),
              mock.patch.object(run, "TIMES_FILE", TMP / "fuzz_times.json"),
              mock.patch.object(run, "EXECUTION_PAGE", TMP / "fuzz_execution.md"),
              mock.patch.object(run, "RUNS_DIR", TMP / "fuzz_runs"),
              mock.patch.object(claims_cli, "evaluate", lambda *a, **k: []),
-             mock.patch.object(claims_cli, "write_output", lambda *a, **k: True),
+             mock.patch.object(claims_cli, "write_or_report", lambda *a, **k: True),
              mock.patch.object(robustness, "verdict_robustness", lambda *a, **k: []),
              mock.patch.object(robustness, "write_json", lambda *a, **k: True),
              mock.patch.object(claims, "evaluate", lambda *a, **k: []),
