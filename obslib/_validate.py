@@ -43,13 +43,36 @@ class ArgumentTypeError(TypeError, ValueError):
 def as_float_array(x, name: str) -> np.ndarray:
     """``x`` as a float array; booleans, complex numbers, strings and ``None`` are refused.
 
-    NumPy would silently turn ``True`` into 1.0 and drop the imaginary part of a complex number;
-    here both are a :class:`TypeError` naming ``name``.
+    NumPy would silently turn ``True`` into 1.0 (also inside a list of numbers, ``[0.5, True]``),
+    drop the imaginary part of a complex number, read the text ``"1.5"`` of an object array as a
+    number, and read the masked entries of a masked array as numbers; here each is an error
+    naming ``name`` (a :class:`TypeError` too, but for the mask).
+
+    Examples
+    --------
+    >>> as_float_array([[0.5, 1.0], [True, 2.0]], "sensors")
+    Traceback (most recent call last):
+    ...
+    obslib._validate.ArgumentTypeError: sensors must be numeric, got a bool: [[0.5, 1.0], ...
+    >>> as_float_array(np.ma.masked_array([1.0, 2.0], mask=[False, True]), "u")
+    Traceback (most recent call last):
+    ...
+    ValueError: u is a masked array with masked entries, which NumPy would read as numbers; ...
     """
     if x is None:
         raise ArgumentTypeError(f"{name} must be numeric, got None")
+    if isinstance(x, np.ma.MaskedArray) and np.ma.is_masked(x):
+        raise ValueError(f"{name} is a masked array with masked entries, which NumPy would read "
+                         "as numbers; fill them (x.filled(value)) or leave them out")
+    if isinstance(x, (list, tuple)):  # NumPy would turn a bool among numbers into 0 or 1
+        got = _bad_kind(x)
+        if got:
+            raise ArgumentTypeError(f"{name} must be numeric, got {got}: {_shown(x)}")
     arr = np.asarray(x)
     if arr.dtype.kind == "O":
+        got = _bad_kind(arr)
+        if got:  # float() would read "1.5" and True
+            raise ArgumentTypeError(f"{name} must be numeric, got {got}: {_shown(x)}")
         try:
             arr = np.asarray(x, dtype=float)
         except OverflowError:
@@ -199,6 +222,12 @@ def check_differences(diff: np.ndarray, what: str = "target") -> None:
             f"sensor {i} and {what} {l} are too far apart: their difference overflows "
             "(coordinates out of the float range; use a larger unit of length)"
         )
+
+
+def _shown(value, limit: int = 80) -> str:
+    """``repr(value)``, cut to ``limit`` characters."""
+    text = repr(value)
+    return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
 def _bad_kind(value) -> str | None:
@@ -623,7 +652,7 @@ def check_geometry_memory(n: int, n_targets: int, what: str, solver: str) -> Non
     >>> check_geometry_memory(1_000_000, 1_000, "greedy", "greedy_pair_assignment")
     Traceback (most recent call last):
     ...
-    ValueError: greedy_pair_assignment from geometry needs about 15.5 GiB for N = 1,000,000 ...
+    ValueError: greedy_pair_assignment from geometry needs about 15.9 GiB for N = 1,000,000 ...
     """
     need = geometry_bytes(n, n_targets, what)
     limit = MAX_GEOMETRY_BYTES
