@@ -515,9 +515,10 @@ def parse_args(argv=None) -> argparse.Namespace:
     --------
     >>> parse_args(["book", "--profile", "quick"]).profile
     'quick'
-    >>> parse_args(["criteria", "--write", "book/data/criteria_times.json"])  # doctest: +SKIP
+    >>> data = "book/data/criteria_times.json"
+    >>> parse_args(["criteria", "--write", data])  # doctest: +SKIP
     usage: ...
-    python -m obslib.bench: error: --write book/data/criteria_times.json: the book's data ...
+    python -m obslib.bench: error: --write book/data/criteria_times.json: ...
     """
     from .._io import OutputPathError, as_output_path
     from ..profiles import profile_names
