@@ -64,7 +64,7 @@ __all__ = [
     "default_jobs", "execution_page", "main",
 ]
 
-from .._io import Stopped, command, locked, uninterrupted, write_output
+from .._io import Stopped, as_input_file, command, locked, uninterrupted, write_output
 from .._validate import (
     ArgumentTypeError,
     as_argv,
@@ -118,8 +118,8 @@ def resolve(names) -> list[Path]:
     found = []
     for name in as_names(names, "names"):
         p = Path(name)
-        if p.suffix == ".ipynb" and p.exists():
-            found.append(p.resolve())
+        if p.suffix == ".ipynb" and (p.exists() or p.is_symlink()):
+            found.append(as_input_file(p).resolve())  # a FIFO or device: refused, never read
             continue
         hits = [nb for nb in notebooks() if nb.stem == name or nb.stem.startswith(f"{name}_")]
         if len(hits) != 1:

@@ -128,3 +128,15 @@ def test_the_claims_command_writes_what_it_prints(tmp_path, capsys):
     printed = json.loads(capsys.readouterr().out)
     assert main(["--id", "thm2", "--profile", "quick", "--write", str(path)]) == 0
     assert json.loads(path.read_text()) == printed
+
+
+def test_the_runner_refuses_a_fifo_for_a_notebook_before_any_work(tmp_path, capsys):
+    from obslib.tools import run
+
+    fifo = tmp_path / "01_x.ipynb"
+    os.mkfifo(fifo)  # papermill would wait on it forever
+    with pytest.raises(SystemExit) as exc:
+        run.main(["--in-place", str(fifo)])
+    err = capsys.readouterr().err
+    assert exc.value.code == 2 and "is a FIFO" in err
+    assert err.splitlines()[-1].startswith("python -m obslib.run: error: ")
