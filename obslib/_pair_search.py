@@ -1,5 +1,6 @@
 """Each target's heaviest sensor pairs from geometry, found without evaluating most pairs: the
-search behind the greedy and the relaxed matching of :mod:`obslib.assignment`.
+search behind the greedy and the relaxed matching of :mod:`obslib.assignment` (and, for weights
+given, the greedy's heads from them, :class:`WeightHeads`).
 
 A pair's weight (Theorem 4's bound, :func:`obslib._kernels.pair_kernel`) is at most the inverse
 condition number of its two rows :math:`a, b` (:math:`\\sqrt{\\lambda_{\\min}/\\lambda_{\\max}}` of
@@ -37,7 +38,7 @@ from ._kernels import mahalanobis_rescale, normalise_rows, pair_kernel
 from ._validate import as_cov, as_points, as_u_max, check_distinct, vectors_between
 
 __all__ = ["Geometry", "geometry_iv", "rows_of", "target_rows", "PairSearch", "GeometryHeads",
-           "keep_top"]
+           "WeightHeads", "keep_top"]
 
 #: Margin (relative) added to every pruning test, so that rounding in the angles, squared lengths
 #: and the kernel never drops a pair the kernel would weigh at or above the threshold.
@@ -339,3 +340,33 @@ class GeometryHeads:
             pos = 0
         self.pos[l] = pos
         return -np.inf, 0, 0
+
+
+class WeightHeads:
+    """The heads Algorithm 1's kernel (:func:`obslib.assignment.greedy_pairs_batch`) asks for,
+    from weights ``w`` ``(B, P, L)`` of the pairs ``(ii, jj)``, ``ii < jj`` in
+    ``numpy.triu_indices`` order: a masked ``argmax`` over the pairs (the first maximum is the
+    smallest ``(i, j)``)."""
+
+    def __init__(self, w, ii, jj):
+        self.w, self.ii, self.jj = w, ii, jj
+
+    @classmethod
+    def of(cls, arr):
+        """The heads of one instance's validated weights ``arr`` ``(N, N, L)``."""
+        ii, jj = np.triu_indices(arr.shape[0], 1)
+        return cls(arr[ii, jj][None], ii, jj)
+
+    def heads(self, b, l, free):
+        P = self.ii.size
+        out_w = np.empty(b.size)
+        out_i, out_j = np.empty(b.size, np.int64), np.empty(b.size, np.int64)
+        step = max(1, (1 << 22) // max(P, 1))  # rows per block: about 4M weights
+        for s in range(0, b.size, step):
+            bs, ls = b[s:s + step], l[s:s + step]
+            fb = free[bs]
+            rows = np.where(fb[:, self.ii] & fb[:, self.jj], self.w[bs, :, ls], -np.inf)
+            p = rows.argmax(axis=1)
+            out_w[s:s + step] = rows[np.arange(bs.size), p]
+            out_i[s:s + step], out_j[s:s + step] = self.ii[p], self.jj[p]
+        return out_w, out_i, out_j

@@ -23,10 +23,9 @@ __all__ = ["ArgumentTypeError", "MissingFileError", "as_float_array", "as_points
            "as_sequence", "as_ints", "as_triples", "as_int_range", "broadcast", "as_rank_rtol",
            "as_measure_name", "as_weights", "as_real_array", "as_covariances", "as_noise_table",
            "as_instance", "as_choice", "check_spd_any_scale", "check_spd2", "check_distinct",
-           "check_not_on_targets", "check_differences", "check_weight_memory", "check_pair_sizes",
+           "check_not_on_targets", "check_differences", "check_pair_sizes",
            "check_maximisable", "check_scene_batch", "as_stack", "as_u_max_stack",
-           "validated_vectors", "vectors_between", "MAX_WEIGHT_BYTES", "MAX_GEOMETRY_BYTES",
-           "GEOMETRY_BYTES", "geometry_bytes", "check_geometry_memory"]
+           "validated_vectors", "vectors_between"]
 
 
 class MissingFileError(FileNotFoundError, ValueError):
@@ -54,10 +53,6 @@ def as_float_array(x, name: str) -> np.ndarray:
     Traceback (most recent call last):
     ...
     obslib._validate.ArgumentTypeError: sensors must be numeric, got a bool: ...
-    >>> as_float_array(np.ma.masked_array([1.0, 2.0], mask=[False, True]), "u")
-    Traceback (most recent call last):
-    ...
-    ValueError: u is a masked array with masked entries, which NumPy would ...
     """
     if x is None:
         raise ArgumentTypeError(f"{name} must be numeric, got None")
@@ -67,12 +62,12 @@ def as_float_array(x, name: str) -> np.ndarray:
     if isinstance(x, (list, tuple)):  # NumPy would turn a bool among numbers into 0 or 1
         got = _bad_kind(x)
         if got:
-            raise ArgumentTypeError(f"{name} must be numeric, got {got}: {_shown(x)}")
+            raise ArgumentTypeError(f"{name} must be numeric, got {got}: {x!r:.80}")
     arr = np.asarray(x)
     if arr.dtype.kind == "O":
         got = _bad_kind(arr)
         if got:  # float() would read "1.5" and True
-            raise ArgumentTypeError(f"{name} must be numeric, got {got}: {_shown(x)}")
+            raise ArgumentTypeError(f"{name} must be numeric, got {got}: {x!r:.80}")
         try:
             arr = np.asarray(x, dtype=float)
         except OverflowError:
@@ -222,12 +217,6 @@ def check_differences(diff: np.ndarray, what: str = "target") -> None:
             f"sensor {i} and {what} {l} are too far apart: their difference overflows "
             "(coordinates out of the float range; use a larger unit of length)"
         )
-
-
-def _shown(value, limit: int = 80) -> str:
-    """``repr(value)``, cut to ``limit`` characters."""
-    text = repr(value)
-    return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
 def _bad_kind(value) -> str | None:
@@ -596,87 +585,6 @@ def as_weights(W) -> np.ndarray:
         raise ValueError(f"W must be symmetric in its first two indices (pair weights): "
                          f"W[{i}, {j}, {l}] != W[{j}, {i}, {l}]")
     return arr
-
-
-#: Largest weight tensor ``(N, N, L)`` of float64 the library materialises: 1 GiB. Computing it
-#: takes about five arrays of that size at the peak, so about 5 GiB of memory.
-MAX_WEIGHT_BYTES = 1 << 30
-
-
-def check_weight_memory(n: int, n_targets: int) -> None:
-    """Refuse, before allocating, a weight tensor ``(N, N, L)`` over :data:`MAX_WEIGHT_BYTES`."""
-    need = 8 * n * n * n_targets
-    if need > MAX_WEIGHT_BYTES:
-        raise ValueError(
-            f"the (N, N, L) = ({n}, {n}, {n_targets}) weight tensor needs {need / 2**30:.1f} GiB "
-            f"(about {5 * need / 2**30:.0f} GiB to compute), over the limit of "
-            f"{MAX_WEIGHT_BYTES / 2**30:.0f} GiB; use the geometry-based path, e.g. "
-            "greedy_pair_assignment(sensors=..., targets=..., u_max=...) or "
-            "relaxed_pair_assignment(sensors=..., targets=..., u_max=...), which never builds it"
-        )
-
-
-#: Largest memory the geometry-based pair solvers may take, estimated before they allocate
-#: anything of size ``N x L``: 4 GiB.
-MAX_GEOMETRY_BYTES = 4 << 30
-
-#: Bytes of a geometry-based solver's memory: per sensor and target (the normalised rows
-#: ``x, y``), per sensor (one target's search: angles, order, bins, candidate buffers), per
-#: target squared (each target's candidate pairs, at least ``L`` of them for the relaxed matching
-#: and twice as many edges for both of its variants, or the greedy's lists) and a fixed part.
-#: Measured peaks (tracemalloc) at ``N`` from 50 to 100,000 and ``L`` from 2 to 2,500 lie
-#: between 0.4 and 0.95 of these estimates.
-GEOMETRY_BYTES = {"row": 16, "sensor": 1024, "fixed": 1 << 20, "greedy": 16, "relaxed": 160,
-                  "relaxed, both": 288}
-
-
-def geometry_bytes(n: int, n_targets: int, what: str) -> int:
-    """Estimated peak memory of a geometry-based solver ``what`` (a key of
-    :data:`GEOMETRY_BYTES`: ``"greedy"``, ``"relaxed"``, ``"relaxed, both"``) at ``N, L``.
-
-    Examples
-    --------
-    >>> round(geometry_bytes(10_000, 5_000, "greedy") / 2**30, 2)  # GiB
-    1.13
-    """
-    b = GEOMETRY_BYTES
-    return b["row"] * n * n_targets + b["sensor"] * n + b[what] * n_targets**2 + b["fixed"]
-
-
-def check_geometry_memory(n: int, n_targets: int, what: str, solver: str) -> None:
-    """Refuse, before allocating, a geometry-based solve whose memory (:func:`geometry_bytes`)
-    exceeds :data:`MAX_GEOMETRY_BYTES`, saying how much it needs and what fits instead.
-
-    Examples
-    --------
-    >>> check_geometry_memory(1_000_000, 1_000, "greedy", "greedy_pair_assignment")
-    Traceback (most recent call last):
-    ...
-    ValueError: greedy_pair_assignment from geometry needs about 15.9 GiB for ...
-    """
-    need = geometry_bytes(n, n_targets, what)
-    limit = MAX_GEOMETRY_BYTES
-    if need <= limit:
-        return
-    b = GEOMETRY_BYTES
-    n_fit = (limit - b["fixed"] - b[what] * n_targets**2) // (b["row"] * n_targets + b["sensor"])
-    # the largest L with b[what] L^2 + b["row"] N L + b["sensor"] N + b["fixed"] <= limit
-    c, lin, const = b[what], b["row"] * n, b["sensor"] * n + b["fixed"] - limit
-    l_fit = int((-lin + np.sqrt(float(lin) ** 2 - 4.0 * c * const)) / (2 * c)) if const < 0 else 0
-    fits = []
-    if n_fit >= 2 * n_targets:
-        fits.append(f"N = {n_fit:,} sensors with these {n_targets:,} targets")
-    if l_fit >= 1:
-        fits.append(f"L = {l_fit:,} targets with these {n:,} sensors")
-    fit = (f"; at most {' or '.join(fits)} fit" if fits else
-           "; no scene of this many sensors or targets fits")
-    raise ValueError(
-        f"{solver} from geometry needs about {need / 2**30:.1f} GiB for N = {n:,} sensors and "
-        f"L = {n_targets:,} targets ({b['row']} bytes per sensor and target for the normalised "
-        f"rows, {b[what]} per target squared for the candidate pairs), over the limit of "
-        f"{limit / 2**30:.0f} GiB (obslib._validate.MAX_GEOMETRY_BYTES){fit}; beyond that, split "
-        "the scene into regions solved apart (an approximation of the whole problem)"
-    )
 
 
 def as_stack(x, name: str, min_ndim: int) -> np.ndarray:

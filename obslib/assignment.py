@@ -13,7 +13,7 @@ Weights are ``W[i, j, l]`` = the pair bound of sensors ``i, j`` for target ``l``
     tests and benchmarks.
 ``relaxed_pair_assignment``
     Problem 3 (each unordered pair serves at most one target, sensors may be reused), solved
-    exactly as a bipartite matching between pairs and targets; an upper bound on Problem 1.
+    exactly as a bipartite matching (:mod:`obslib._relaxed_pairs`); an upper bound on Problem 1.
 ``optimal_pair_assignment``
     Problem 1 solved exactly: branch and bound on its LP relaxation (HiGHS), within a time and
     a memory limit (:class:`OptimumNotProven`).
@@ -33,10 +33,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _exact_pairs as exact_pairs
+from . import _relaxed_pairs as relaxed_pairs
 from ._kernels import pair_kernel
-from ._pair_search import GeometryHeads, PairSearch, geometry_iv, keep_top, rows_of
+from ._memory import check_geometry_memory, check_upper_weights_memory, check_weight_memory
+from ._pair_search import GeometryHeads, PairSearch, WeightHeads, geometry_iv, rows_of
 from ._validate import (
-    MAX_WEIGHT_BYTES,
     ArgumentTypeError,
     as_bool,
     as_float_array,
@@ -44,9 +45,7 @@ from ._validate import (
     as_positive,
     as_triples,
     as_weights,
-    check_geometry_memory,
     check_pair_sizes,
-    check_weight_memory,
 )
 
 __all__ = ["PairAssignment", "greedy_pair_assignment", "greedy_pair_assignment_literal",
@@ -142,35 +141,6 @@ def _rounds(source, free, n_targets: int, bar=None):
     return picks, weights
 
 
-class _WeightHeads:
-    """Heads of :func:`_rounds` from weights ``w`` ``(B, P, L)`` of the pairs ``(ii, jj)``,
-    ``ii < jj`` in ``numpy.triu_indices`` order: a masked ``argmax`` over the pairs (the first
-    maximum is the smallest ``(i, j)``)."""
-
-    def __init__(self, w, ii, jj):
-        self.w, self.ii, self.jj = w, ii, jj
-
-    @classmethod
-    def of(cls, arr):
-        """The heads of one instance's validated weights ``arr`` ``(N, N, L)``."""
-        ii, jj = np.triu_indices(arr.shape[0], 1)
-        return cls(arr[ii, jj][None], ii, jj)
-
-    def heads(self, b, l, free):
-        P = self.ii.size
-        out_w = np.empty(b.size)
-        out_i, out_j = np.empty(b.size, np.int64), np.empty(b.size, np.int64)
-        step = max(1, (1 << 22) // max(P, 1))  # rows per block: about 4M weights
-        for s in range(0, b.size, step):
-            bs, ls = b[s:s + step], l[s:s + step]
-            fb = free[bs]
-            rows = np.where(fb[:, self.ii] & fb[:, self.jj], self.w[bs, :, ls], -np.inf)
-            p = rows.argmax(axis=1)
-            out_w[s:s + step] = rows[np.arange(bs.size), p]
-            out_i[s:s + step], out_j[s:s + step] = self.ii[p], self.jj[p]
-        return out_w, out_i, out_j
-
-
 def _progress(progress: bool, total, what):
     """A tqdm bar on stderr over ``total`` steps when ``progress`` (validated) is true, else
     None."""
@@ -220,7 +190,7 @@ def greedy_pairs_batch(w, n_sensors: int, progress=False):
     free = np.ones((w.shape[0], n), dtype=bool)
     bar = _progress(progress, w.shape[2], "Algorithm 1")
     try:
-        return _rounds(_WeightHeads(w, ii, jj), free, w.shape[2], bar)
+        return _rounds(WeightHeads(w, ii, jj), free, w.shape[2], bar)
     finally:
         if bar is not None:
             bar.close()
@@ -290,9 +260,9 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
         Mahalanobis with ``cov``), computed on demand so the ``(N, N, L)`` array is never
         materialised. Memory: the normalised rows, 16 bytes per sensor and target (0.8 GB at
         ``N = 10,000``, ``L = 5,000``), one target's search and the candidate lists
-        (:func:`obslib._validate.geometry_bytes`); it is estimated before anything of size
+        (:func:`obslib._memory.geometry_bytes`); it is estimated before anything of size
         ``N x L`` is allocated, and a scene over
-        :data:`obslib._validate.MAX_GEOMETRY_BYTES` (4 GiB) is refused with the size and what
+        :data:`obslib._memory.MAX_GEOMETRY_BYTES` (4 GiB) is refused with the size and what
         fits.
     k : int, optional
         From geometry, the least number of pairs a target's list holds after a fill (default
@@ -324,7 +294,7 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     bar = _progress(progress, n_targets * (1 if arr is not None else 2), "greedy")
     try:
         if arr is not None:
-            source = _WeightHeads.of(arr)
+            source = WeightHeads.of(arr)
         else:
             search = PairSearch(*rows_of(geometry))
             source = GeometryHeads(search, n_targets, k, bar)
@@ -468,7 +438,7 @@ def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
     ``C[l, p]`` is ``pair_bounds(...)[ii[p], jj[p], l]`` (one shared elementwise kernel on the same
     rows, so equal) with pairs in ``numpy.triu_indices(N, 1)`` order; shape ``(L, P)``, filled from
     :func:`upper_pair_weight_blocks`. An array ``C`` over
-    :data:`obslib._validate.MAX_WEIGHT_BYTES` is refused before anything is allocated.
+    :data:`obslib._memory.MAX_WEIGHT_BYTES` is refused before anything is allocated.
 
     Examples
     --------
@@ -487,15 +457,10 @@ def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
 
 
 def _upper_pair_weights_iv(sensors, targets, u_max, cov, chunk) -> tuple:
-    """:func:`_blocks_iv`, and the ``(L, P)`` array within :data:`MAX_WEIGHT_BYTES`."""
+    """:func:`_blocks_iv`, and the ``(L, P)`` array within
+    :data:`obslib._memory.MAX_WEIGHT_BYTES`."""
     geometry, chunk = _blocks_iv(sensors, targets, u_max, cov, chunk)
-    n, n_targets = geometry.sizes
-    need = 8 * n_targets * (n * (n - 1) // 2)
-    if need > MAX_WEIGHT_BYTES:
-        raise ValueError(
-            f"the (L, P) = ({n_targets}, {n * (n - 1) // 2}) array of pair weights needs "
-            f"{need / 2**30:.1f} GiB, over the limit of {MAX_WEIGHT_BYTES / 2**30:.0f} GiB; "
-            "upper_pair_weight_blocks(sensors, targets, u_max) yields it a block at a time")
+    check_upper_weights_memory(*geometry.sizes)
     return geometry, chunk
 
 
@@ -506,9 +471,7 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
     Each unordered pair serves at most one target and each target gets at most one pair, but a
     sensor may belong to several chosen pairs. Its value is an upper bound on Problem 1's
     optimum (Sec. V-C). Solved exactly as a sparse bipartite matching between targets and each
-    target's ``L`` heaviest pairs (:func:`_relaxed`, the one solver of Problem 3): a target
-    matched to a pair outside its ``L`` heaviest could move to one of them, since the other
-    ``L - 1`` targets hold at most ``L - 1`` pairs, and would not lose weight.
+    target's ``L`` heaviest pairs (:mod:`obslib._relaxed_pairs`, the one solver of Problem 3).
 
     Parameters
     ----------
@@ -517,10 +480,9 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
         Match *ordered* pairs ``(i, j)``, ``i != j``, instead: the original code's relaxation, in
         which one unordered pair can serve two targets (as ``(i, j)`` and ``(j, i)``).
     sensors, targets, u_max, cov : optional
-        Instead of ``W``: the geometry. Each target's heaviest pairs are found with the greedy's
-        exact pruning (:mod:`obslib._pair_search`), without computing most weights. Memory is
-        estimated first and a scene over
-        :data:`obslib._validate.MAX_GEOMETRY_BYTES` refused, saying what fits.
+        Instead of ``W``: the geometry, most of whose weights are never computed. Memory is
+        estimated first and a scene over :data:`obslib._memory.MAX_GEOMETRY_BYTES` refused,
+        saying what fits.
     progress : bool
         Show a progress bar (tqdm, on stderr): from geometry over the targets' candidate
         searches, from ``W`` over the one matching.
@@ -578,81 +540,24 @@ def _relaxed_iv(W, sensors, targets, u_max, cov, orders, progress, name="orders"
 
 
 def _relaxed(arr, geometry, orders, progress) -> list:
-    """Problem 3, the one solver: each target's ``L`` heaviest pairs (and their ties), from the
-    weights ``arr`` or searched from the geometry, then a maximum-weight matching of targets to
-    those pairs (``scipy.sparse.csgraph.min_weight_full_bipartite_matching``) for each flag of
-    ``orders``; one :class:`PairAssignment` per flag, triples sorted by target, the value summed
-    in target order."""
+    """Problem 3, the one solver (:mod:`obslib._relaxed_pairs`): each target's ``L`` heaviest
+    pairs, from the weights ``arr`` or searched from the geometry, then a maximum-weight matching
+    for each flag of ``orders``; one :class:`PairAssignment` per flag."""
     n, n_targets = _sizes(arr, geometry)
     if arr is not None:
-        rows, ids, ws, counted = _candidates_from_weights(arr, n, n_targets)
+        candidates = relaxed_pairs.candidates_from_weights(arr)
         bar = _progress(progress, 1, "matching")
     else:
         bar = _progress(progress, n_targets, "candidate pairs")
-        rows, ids, ws, counted = _candidates_from_geometry(geometry, n, n_targets, bar)
+        candidates = relaxed_pairs.candidates_from_geometry(rows_of(geometry), bar)
     try:
-        return [_matching(rows, ids, ws, n, n_targets, ordered, counted) for ordered in orders]
+        return [PairAssignment(*relaxed_pairs.matching(*candidates[:3], n, n_targets, ordered),
+                               n_evaluations=candidates[3]) for ordered in orders]
     finally:
         if bar is not None:
             if arr is not None:
                 bar.update()
             bar.close()
-
-
-def _candidates_from_weights(arr, n: int, n_targets: int) -> tuple:
-    """Each target's ``L`` heaviest pairs ``i < j`` of the weights ``arr`` and their ties, as
-    ``(target, i * N + j, weight)`` arrays (``n_evaluations`` is ``None``: nothing computed)."""
-    ii, jj = np.triu_indices(n, 1)
-    cost = np.ascontiguousarray(arr[ii, jj, :].T)  # (L, P), each row contiguous
-    keep = min(n_targets, ii.size)
-    kth = np.partition(cost, ii.size - keep, axis=1)[:, ii.size - keep]
-    rows, col = np.nonzero(cost >= kth[:, None])
-    return rows, ii[col] * n + jj[col], cost[rows, col], None
-
-
-def _candidates_from_geometry(geometry, n: int, n_targets: int, bar) -> tuple:
-    """Each target's ``L`` heaviest pairs and their ties, found with the greedy's exact pruning
-    (:class:`obslib._pair_search.PairSearch`), as ``(target, i * N + j, weight)`` arrays and the
-    number of weights computed."""
-    source = PairSearch(*rows_of(geometry))
-    every = np.arange(n)
-    rows, ids, ws = [], [], []
-    for l in range(n_targets):
-        a, b, w, _ = source.best(l, every, n_targets)
-        a, b, w = keep_top(a, b, w, n_targets)
-        rows.append(np.full(w.size, l))
-        ids.append(np.minimum(a, b) * n + np.maximum(a, b))
-        ws.append(w)
-        if bar is not None:
-            bar.update()
-    return np.concatenate(rows), np.concatenate(ids), np.concatenate(ws), source.n_evaluations
-
-
-def _matching(rows, ids, ws, n, n_targets, ordered, counted) -> PairAssignment:
-    """The maximum-weight matching of targets to the candidate pairs ``ids`` (``i * N + j``) with
-    weights ``ws``; with ``ordered``, each pair also as ``(j, i)``, a second column of its own."""
-    from scipy.sparse import csr_array
-    from scipy.sparse.csgraph import min_weight_full_bipartite_matching
-
-    pairs, col = np.unique(ids, return_inverse=True)
-    ii, jj = pairs // n, pairs % n
-    r, c, w, m = rows, col, ws, pairs.size
-    if ordered:  # the second copy of pair p is column m + p
-        r, c = np.r_[rows, rows], np.r_[col, col + pairs.size]
-        w, m = np.r_[ws, ws], 2 * pairs.size
-    # every full matching has min(L, m) edges, so the offset (edges must be nonzero) changes no
-    # choice; weights are non-negative, so a heaviest matching may as well be a largest one
-    graph = csr_array((w + 1.0, (r, c)), shape=(n_targets, m))
-    mr, mc = min_weight_full_bipartite_matching(graph, maximize=True)
-    mr, mc = np.asarray(mr, dtype=np.int64), np.asarray(mc, dtype=np.int64)
-    by_target = np.argsort(mr)
-    mr, mc = mr[by_target], mc[by_target]
-    key = r.astype(np.int64) * m + c  # each (target, column) edge once
-    order = np.argsort(key)
-    value = w[order[np.searchsorted(key[order], mr * m + mc)]]
-    p = mc % pairs.size
-    triples = list(zip(ii[p].tolist(), jj[p].tolist(), mr.tolist()))
-    return PairAssignment(triples=triples, value=float(value.sum()), n_evaluations=counted)
 
 
 class OptimumNotProven(RuntimeError):
@@ -760,7 +665,7 @@ def optimal_pair_assignment(W, time_limit: float | None = None, progress=False) 
     bar = _progress(progress, None, "exact optimum")
     try:
         # Algorithm 1 (one of the search's incumbents) on the weights validated above
-        picks, _ = _rounds(_WeightHeads.of(arr), np.ones((1, n), dtype=bool), n_targets)
+        picks, _ = _rounds(WeightHeads.of(arr), np.ones((1, n), dtype=bool), n_targets)
         start = [tuple(t) for t in picks[0].tolist()]
         triples = exact_pairs.solve(arr, deadline, start, bar)
     except exact_pairs.Stopped as e:

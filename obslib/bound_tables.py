@@ -8,9 +8,10 @@ from collections.abc import Callable
 import numpy as np
 
 from ._kernels import pow2_scale, rescale, tr_det
-from ._validate import as_point, as_points, as_stack, as_u_max_stack
-from .bounds import _lower_bound_iv, lower_bound
+from ._validate import as_point, as_points, as_stack, as_u_max, as_u_max_stack
+from .bounds import lower_bound
 from .measures import subset_masks
+from .observability import relative_rows
 
 __all__ = ["lower_bound_table", "lower_bound_tables", "lower_bound_set_function"]
 
@@ -83,8 +84,14 @@ def lower_bound_table(sensors, target, u_max) -> np.ndarray:
     >>> lower_bound_table(sensors, [1.0, 1.0], u_max=1.0).round(4)
     array([0.    , 0.    , 0.    , 0.8165, 0.    , 0.8165, 0.    , 0.6325])
     """
-    rows, u = _lower_bound_iv(sensors, target, u_max)
+    rows, u = _lower_bound_table_iv(sensors, target, u_max)
     return _lower_bound_tables(rows[None], u[None])[0]
+
+
+def _lower_bound_table_iv(sensors, target, u_max) -> tuple:
+    """The rows ``o - p_i`` of the scene (:func:`obslib.observability.relative_rows`) and a
+    finite non-negative ``u_max``."""
+    return relative_rows(sensors, target), as_u_max(u_max)
 
 
 def lower_bound_set_function(sensors, target, u_max) -> Callable[[tuple], float]:
@@ -110,5 +117,5 @@ def _lower_bound_set_function_iv(sensors, target, u_max) -> tuple:
     """The sensors ``(N, 2)``, the target ``(2,)`` and ``u_max`` of a valid scene (checked as
     :func:`obslib.lower_bound` checks it)."""
     s = as_points(sensors, "sensors")
-    _, u = _lower_bound_iv(s, target, u_max)
+    _, u = _lower_bound_table_iv(s, target, u_max)
     return s, as_point(target, "target"), float(u)

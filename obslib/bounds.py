@@ -20,6 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from ._kernels import normalise, pair_kernel, pow2_scale, rescale
+from ._memory import check_weight_memory
 from ._validate import (
     as_float_array,
     as_points,
@@ -27,11 +28,10 @@ from ._validate import (
     as_u_max,
     as_u_max_stack,
     broadcast,
-    check_weight_memory,
     validated_vectors,
     vectors_between,
 )
-from .observability import _relative_rows_iv
+from .observability import relative_rows
 
 __all__ = [
     "lower_bound",
@@ -82,7 +82,7 @@ def _lower_bound_iv(sensors, target, u_max) -> tuple:
     """The rows ``o - p_i`` of the scene (:func:`obslib.observability.relative_rows`) and a
     finite non-negative ``u_max``: the arguments of :func:`lower_bound` and
     :func:`worst_case_control`."""
-    return _relative_rows_iv(sensors, target), as_u_max(u_max)
+    return relative_rows(sensors, target), as_u_max(u_max)
 
 
 def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
@@ -148,7 +148,7 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
     ------
     ValueError
         For bad input (naming the sensor, target or argument), and, before allocating, when the
-        ``(N, N, L)`` array would exceed :data:`obslib._validate.MAX_WEIGHT_BYTES` (1 GiB): the
+        ``(N, N, L)`` array would exceed :data:`obslib._memory.MAX_WEIGHT_BYTES` (1 GiB): the
         message suggests ``greedy_pair_assignment(sensors=..., targets=..., u_max=...)``, which
         computes weights on demand.
 
@@ -170,7 +170,7 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
 
 def _pair_bounds_iv(sensors, targets, u_max, cov) -> tuple:
     """The validated vectors ``(N, L, 2)`` (the ``(N, N, L)`` result within
-    :data:`~obslib._validate.MAX_WEIGHT_BYTES`) and the speed bounds ``(L,)`` in their unit."""
+    :data:`~obslib._memory.MAX_WEIGHT_BYTES`) and the speed bounds ``(L,)`` in their unit."""
     s = as_points(sensors, "sensors")
     t = as_points(targets, "targets")
     check_weight_memory(s.shape[0], t.shape[0])

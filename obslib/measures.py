@@ -63,7 +63,7 @@ from ._validate import (
     as_point,
     as_rank_rtol,
 )
-from .observability import _observability_matrix_iv, _relative_rows_iv
+from .observability import relative_rows
 
 __all__ = [
     "MEASURES",
@@ -166,8 +166,8 @@ def _symmetric_observability_matrix_iv(sensors, target, u, eps) -> tuple:
     """``eps >= 0`` (checked first), the rows ``o - p_i`` (no sensor allowed) and the control
     ``(2,)`` or ``None``: ``(rows, u, eps)``."""
     e = as_eps(eps)
-    rows, uu = _observability_matrix_iv(_sensors_or_empty(sensors), target, u)
-    return rows, uu, e
+    rows = relative_rows(_sensors_or_empty(sensors), target)
+    return rows, None if u is None else as_point(u, "u"), e
 
 
 def measure_from_vectors(vectors, masks, name: str, eps: float = 0.0, u=None,
@@ -337,7 +337,7 @@ def _measure_table_iv(sensors, target, name, eps, u, masks, rank_rtol) -> tuple:
     """The arguments of :func:`_measures` for :func:`measure_table`: the rows ``o - p_i``, the
     masks (all subsets by default), ``(name,)``, ``eps``, ``rank_rtol``, the control or
     ``None``."""
-    rows = _relative_rows_iv(sensors, target)
+    rows = relative_rows(sensors, target)
     if masks is None:
         masks = subset_masks(rows.shape[0])
     uu = None if u is None else as_point(u, "u")
@@ -388,7 +388,7 @@ def _measure_iv(sensors, target, name, eps, u, rank_rtol) -> tuple:
     """The arguments of :func:`_measures` for :func:`measure`: the rows ``o - p_i`` (no sensor
     allowed), one mask of them all, ``(name,)``, ``eps``, ``rank_rtol``, the control or
     ``None``."""
-    rows = _relative_rows_iv(_sensors_or_empty(sensors), target)
+    rows = relative_rows(_sensors_or_empty(sensors), target)
     uu = None if u is None else as_point(u, "u")
     as_measure_name(name, MEASURES)
     e, r = as_eps(eps), as_rank_rtol(rank_rtol)

@@ -493,7 +493,7 @@ def test_geometry_solvers_refuse_what_does_not_fit_before_allocating():
     # fits, having allocated little more than the input (measured: tracemalloc's peak)
     import tracemalloc
 
-    from obslib._validate import MAX_GEOMETRY_BYTES, geometry_bytes
+    from obslib._memory import MAX_GEOMETRY_BYTES, geometry_bytes
 
     rng = np.random.default_rng(0)
     S, T = rng.uniform(0, 1e6, (1_000_000, 2)), rng.uniform(0, 1e6, (1_000, 2))
@@ -532,7 +532,7 @@ def test_the_geometry_memory_estimate_bounds_the_measured_peak():
     # the estimate is an upper bound of what the solvers take (tracemalloc counts NumPy's arrays)
     import tracemalloc
 
-    from obslib._validate import geometry_bytes
+    from obslib._memory import geometry_bytes
 
     rng = np.random.default_rng(1)
     for n, L in ((1000, 500), (20_000, 10)):

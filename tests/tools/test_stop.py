@@ -31,7 +31,7 @@ from .test_run import write_notebook
 RUNNER = """\
 import os, signal, sys
 from pathlib import Path
-from obslib.tools import run
+from obslib.tools import _papermill, run
 tmp = Path(sys.argv[1])
 run.RUNS_DIR, run.TIMES_FILE = tmp / "runs", tmp / "times.json"
 run.EXECUTION_PAGE = tmp / "execution.md"
@@ -41,12 +41,12 @@ def stop():
 if moment == "precompile":
     run.precompile = stop
 elif moment == "kernel":
-    started = run._KERNELS.started
+    started = _papermill.KERNELS.started
     def hook(provisioner):
         started(provisioner)
         (tmp / "kernel.pid").write_text(str(provisioner.pid))
         stop()
-    run._KERNELS.started = hook
+    _papermill.KERNELS.started = hook
 elif moment == "rename":
     rename = os.replace
     def replace(src, dst):
