@@ -3,7 +3,10 @@
 Each call either returns a finite, valid result or raises ValueError/TypeError whose message
 names the argument at fault; nothing hangs (a deadline per example) and nothing returns NaN.
 Hypothesis draws random shapes, dtypes, NaN/inf, scales from 1e-300 to 1e300 and degenerate
-geometry (coincident and collinear points). The whole file runs in well under a minute.
+geometry (coincident and collinear points), and arrays NumPy would misread without a word (a
+masked entry, a bool among numbers, numbers as text). The arguments handed on to joblib and Dask
+are refused by name before any worker starts or any connection is tried. The whole file runs in
+well under a minute.
 """
 
 from __future__ import annotations

@@ -221,7 +221,7 @@ def test_concurrent_reruns_never_lose_an_index_entry(folder):
 def test_a_failing_notebook_lets_the_running_ones_finish_and_records_them(folder, capfd):
     bad = write_notebook(folder / "nbs" / "bad.ipynb", "n = 1", ["raise RuntimeError('boom')"])
     slow = write_notebook(folder / "nbs" / "slow.ipynb", "n = 1",
-                          ["import time; time.sleep(3); print(n)"])
+                          ["import time; time.sleep(2); print(n)"])  # runs on as bad fails
     runs = run.plan([slow, bad], "quick", {}, False, folder / "runs")
     seen = []
     with pytest.raises(run.RunFailed, match="bad") as exc:
