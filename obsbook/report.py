@@ -25,6 +25,7 @@ from collections import Counter
 from pathlib import Path
 
 from obslib._format import count, number
+from obslib._io import command
 from obslib.claims import REQUIRED_IDS, STATUSES
 
 __all__ = ["ROOT", "MARKERS", "SECTIONS", "PAPER_LABELS", "render_report", "notebook_targets",
@@ -558,12 +559,13 @@ def render_report(records, profile: str = "paper", targets=None, robustness=None
     return "\n".join(lines).rstrip() + "\n"
 
 
+@command("python -m obsbook.report")
 def main(argv=None) -> int:
     """``python -m obsbook.report [--profile P] [--write FILE] [--front FILE]
     [--robustness FILE] [--notebooks DIR]``: render the report (and with ``--front`` the front
     page's generated parts, :mod:`obsbook.front`), print it or store it (exit status 2 for a bad
-    profile or path)."""
-    from obslib._io import OutputPathError, as_output_path, write_output
+    profile or path, or a missing robustness file; 1, after one line, if a write fails)."""
+    from obslib._io import OutputPathError, as_input_file, as_output_path, write_or_report
     from obslib.claims import evaluate
     from obslib.claims import robustness as rb
     from obslib.profiles import profile_names
@@ -588,22 +590,22 @@ def main(argv=None) -> int:
                 ap.error(f"--{name} {exc}")
     if not Path(args.notebooks).is_dir():
         ap.error(f"--notebooks {args.notebooks}: not a directory")
-    robustness = None
-    if Path(args.robustness).exists():
-        try:
-            robustness = rb.read_json(args.robustness)
-        except ValueError as exc:
-            ap.error(f"--robustness {exc}")
-    caveats = rb.caveats(robustness) if robustness and args.profile == "paper" else {}
+    try:
+        robustness = rb.read_json(as_input_file(args.robustness))
+    except ValueError as exc:  # missing, not a regular file, or not robustness data
+        ap.error(f"--robustness {exc}")
+    caveats = rb.caveats(robustness) if args.profile == "paper" else {}
     records = evaluate(args.profile, caveats=caveats)
     text = render_report(records, args.profile, notebook_targets(args.notebooks), robustness)
     if args.write is None:
         print(text, end="")
+    elif not write_or_report("python -m obsbook.report", args.write, text):
+        return 1
     else:
-        write_output(args.write, text)
         print(f"{args.write}: {len(records)} entries")
     if args.front is not None:
-        write_output(args.front, render_front(records))
+        if not write_or_report("python -m obsbook.report", args.front, render_front(records)):
+            return 1
         print(f"{args.front}: the front page's findings")
     return 0
 

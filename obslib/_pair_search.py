@@ -1,5 +1,6 @@
 """Each target's heaviest sensor pairs from geometry, found without evaluating most pairs: the
-search behind the greedy and the relaxed matching of :mod:`obslib.assignment`.
+search behind the greedy and the relaxed matching of :mod:`obslib.assignment` (and, for weights
+given, the greedy's heads from them, :class:`WeightHeads`).
 
 A pair's weight (Theorem 4's bound, :func:`obslib._kernels.pair_kernel`) is at most the inverse
 condition number of its two rows :math:`a, b` (:math:`\\sqrt{\\lambda_{\\min}/\\lambda_{\\max}}` of
@@ -29,12 +30,15 @@ rounding, so no pair the kernel weighs at or above :math:`\\tau` is missed.
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
 from ._kernels import mahalanobis_rescale, normalise_rows, pair_kernel
 from ._validate import as_cov, as_points, as_u_max, check_distinct, vectors_between
 
-__all__ = ["target_rows", "PairSearch", "GeometryHeads", "keep_top"]
+__all__ = ["Geometry", "geometry_iv", "rows_of", "target_rows", "PairSearch", "GeometryHeads",
+           "WeightHeads", "keep_top"]
 
 #: Margin (relative) added to every pruning test, so that rounding in the angles, squared lengths
 #: and the kernel never drops a pair the kernel would weigh at or above the threshold.
@@ -220,19 +224,27 @@ class PairSearch:
         return a, b, w, (-np.inf if w.size == m * (m - 1) // 2 else float(w.min()))
 
 
-def target_rows(sensors, targets, u_max, cov):
-    """Validated rows ``o_l - p_i`` of every target, normalised per target as
-    :func:`obslib.pair_bounds` normalises them: ``x, y`` ``(L, N)`` and ``u_max^2`` ``(L,)`` in
-    the same unit, the input of :func:`obslib._kernels.pair_kernel`.
+class Geometry(NamedTuple):
+    """A validated scene (:func:`geometry_iv`): sensors ``s`` ``(N, 2)``, targets ``t``
+    ``(L, 2)``, speed bounds ``u`` ``(L,)`` and covariances ``cov`` ``(L, 2, 2)`` or ``None``."""
 
-    Computed a block of targets at a time, so that the memory is that of ``x, y`` (the
-    ``(N, L, 2)`` array of differences and its temporaries never exist at once: at ``N = 10,000``,
-    ``L = 5,000`` they took 2.4 GB). The scene is checked as
-    :func:`obslib._validate.vectors_between` checks it, and by it where a difference may overflow or
-    a sensor sits on a target, so errors name the same sensor and target.
-    """
+    s: np.ndarray
+    t: np.ndarray
+    u: np.ndarray
+    cov: np.ndarray | None
+
+    @property
+    def sizes(self) -> tuple:
+        """``(N, L)``."""
+        return self.s.shape[0], self.t.shape[0]
+
+
+def geometry_iv(sensors, targets, u_max, cov) -> Geometry:
+    """The scene checked as :func:`obslib._validate.vectors_between` checks it, and by it where a
+    difference may overflow or a sensor sits on a target, so errors name the same sensor and
+    target; nothing of size ``N x L`` is allocated."""
     s, t = as_points(sensors, "sensors"), as_points(targets, "targets")
-    n, n_targets = s.shape[0], t.shape[0]
+    n_targets = t.shape[0]
     check_distinct(s)
     with np.errstate(over="ignore"):
         reach = np.abs(s).max(initial=0.0) + np.abs(t).max(initial=0.0)
@@ -242,6 +254,20 @@ def target_rows(sensors, targets, u_max, cov):
     if cov is not None:
         cov = as_cov(cov, n_targets)
     u = np.broadcast_to(as_u_max(u_max, n_targets), (n_targets,))
+    return Geometry(s, t, u, cov)
+
+
+def rows_of(g: Geometry):
+    """The rows ``o_l - p_i`` of every target of the validated scene ``g``, normalised per target
+    as :func:`obslib.pair_bounds` normalises them: ``x, y`` ``(L, N)`` and ``u_max^2`` ``(L,)`` in
+    the same unit, the input of :func:`obslib._kernels.pair_kernel`.
+
+    Computed a block of targets at a time, so that the memory is that of ``x, y`` (the
+    ``(N, L, 2)`` array of differences and its temporaries never exist at once: at ``N = 10,000``,
+    ``L = 5,000`` they took 2.4 GB).
+    """
+    s, t, u, cov = g
+    n, n_targets = g.sizes
     x, y, u2 = np.empty((n_targets, n)), np.empty((n_targets, n)), np.empty(n_targets)
     # blocks of 256 KB stay in cache: 0.3 s at N = 10,000, L = 5,000, against 0.8 s for 8 MB
     step = max(1, (1 << 15) // max(n, 1))
@@ -256,6 +282,11 @@ def target_rows(sensors, targets, u_max, cov):
                 dx, dy = v[..., 0].T, v[..., 1].T
             _, _, u2[blk] = normalise_rows(dx, dy, u[blk] / unit, out=(x[blk], y[blk]))
     return x, y, u2
+
+
+def target_rows(sensors, targets, u_max, cov):
+    """:func:`rows_of` the scene, validated by :func:`geometry_iv`."""
+    return rows_of(geometry_iv(sensors, targets, u_max, cov))
 
 
 class GeometryHeads:
@@ -309,3 +340,33 @@ class GeometryHeads:
             pos = 0
         self.pos[l] = pos
         return -np.inf, 0, 0
+
+
+class WeightHeads:
+    """The heads Algorithm 1's kernel (:func:`obslib.assignment.greedy_pairs_batch`) asks for,
+    from weights ``w`` ``(B, P, L)`` of the pairs ``(ii, jj)``, ``ii < jj`` in
+    ``numpy.triu_indices`` order: a masked ``argmax`` over the pairs (the first maximum is the
+    smallest ``(i, j)``)."""
+
+    def __init__(self, w, ii, jj):
+        self.w, self.ii, self.jj = w, ii, jj
+
+    @classmethod
+    def of(cls, arr):
+        """The heads of one instance's validated weights ``arr`` ``(N, N, L)``."""
+        ii, jj = np.triu_indices(arr.shape[0], 1)
+        return cls(arr[ii, jj][None], ii, jj)
+
+    def heads(self, b, l, free):
+        P = self.ii.size
+        out_w = np.empty(b.size)
+        out_i, out_j = np.empty(b.size, np.int64), np.empty(b.size, np.int64)
+        step = max(1, (1 << 22) // max(P, 1))  # rows per block: about 4M weights
+        for s in range(0, b.size, step):
+            bs, ls = b[s:s + step], l[s:s + step]
+            fb = free[bs]
+            rows = np.where(fb[:, self.ii] & fb[:, self.jj], self.w[bs, :, ls], -np.inf)
+            p = rows.argmax(axis=1)
+            out_w[s:s + step] = rows[np.arange(bs.size), p]
+            out_i[s:s + step], out_j[s:s + step] = self.ii[p], self.jj[p]
+        return out_w, out_i, out_j

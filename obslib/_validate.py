@@ -23,9 +23,9 @@ __all__ = ["ArgumentTypeError", "MissingFileError", "as_float_array", "as_points
            "as_sequence", "as_ints", "as_triples", "as_int_range", "broadcast", "as_rank_rtol",
            "as_measure_name", "as_weights", "as_real_array", "as_covariances", "as_noise_table",
            "as_instance", "as_choice", "check_spd_any_scale", "check_spd2", "check_distinct",
-           "check_not_on_targets", "check_differences", "check_weight_memory", "check_pair_sizes",
+           "check_not_on_targets", "check_differences", "check_pair_sizes",
            "check_maximisable", "check_scene_batch", "as_stack", "as_u_max_stack",
-           "validated_vectors", "vectors_between", "MAX_WEIGHT_BYTES"]
+           "validated_vectors", "vectors_between"]
 
 
 class MissingFileError(FileNotFoundError, ValueError):
@@ -42,13 +42,32 @@ class ArgumentTypeError(TypeError, ValueError):
 def as_float_array(x, name: str) -> np.ndarray:
     """``x`` as a float array; booleans, complex numbers, strings and ``None`` are refused.
 
-    NumPy would silently turn ``True`` into 1.0 and drop the imaginary part of a complex number;
-    here both are a :class:`TypeError` naming ``name``.
+    NumPy would silently turn ``True`` into 1.0 (also inside a list of numbers, ``[0.5, True]``),
+    drop the imaginary part of a complex number, read the text ``"1.5"`` of an object array as a
+    number, and read the masked entries of a masked array as numbers; here each is an error
+    naming ``name`` (a :class:`TypeError` too, but for the mask).
+
+    Examples
+    --------
+    >>> as_float_array([[0.5, 1.0], [True, 2.0]], "sensors")
+    Traceback (most recent call last):
+    ...
+    obslib._validate.ArgumentTypeError: sensors must be numeric, got a bool: ...
     """
     if x is None:
         raise ArgumentTypeError(f"{name} must be numeric, got None")
+    if isinstance(x, np.ma.MaskedArray) and np.ma.is_masked(x):
+        raise ValueError(f"{name} is a masked array with masked entries, which NumPy would read "
+                         "as numbers; fill them (x.filled(value)) or leave them out")
+    if isinstance(x, (list, tuple)):  # NumPy would turn a bool among numbers into 0 or 1
+        got = _bad_kind(x)
+        if got:
+            raise ArgumentTypeError(f"{name} must be numeric, got {got}: {x!r:.80}")
     arr = np.asarray(x)
     if arr.dtype.kind == "O":
+        got = _bad_kind(arr)
+        if got:  # float() would read "1.5" and True
+            raise ArgumentTypeError(f"{name} must be numeric, got {got}: {x!r:.80}")
         try:
             arr = np.asarray(x, dtype=float)
         except OverflowError:
@@ -566,24 +585,6 @@ def as_weights(W) -> np.ndarray:
         raise ValueError(f"W must be symmetric in its first two indices (pair weights): "
                          f"W[{i}, {j}, {l}] != W[{j}, {i}, {l}]")
     return arr
-
-
-#: Largest weight tensor ``(N, N, L)`` of float64 the library materialises: 1 GiB. Computing it
-#: takes about five arrays of that size at the peak, so about 5 GiB of memory.
-MAX_WEIGHT_BYTES = 1 << 30
-
-
-def check_weight_memory(n: int, n_targets: int) -> None:
-    """Refuse, before allocating, a weight tensor ``(N, N, L)`` over :data:`MAX_WEIGHT_BYTES`."""
-    need = 8 * n * n * n_targets
-    if need > MAX_WEIGHT_BYTES:
-        raise ValueError(
-            f"the (N, N, L) = ({n}, {n}, {n_targets}) weight tensor needs {need / 2**30:.1f} GiB "
-            f"(about {5 * need / 2**30:.0f} GiB to compute), over the limit of "
-            f"{MAX_WEIGHT_BYTES / 2**30:.0f} GiB; use the geometry-based path, e.g. "
-            "greedy_pair_assignment(sensors=..., targets=..., u_max=...) or "
-            "relaxed_pair_assignment(sensors=..., targets=..., u_max=...), which never builds it"
-        )
 
 
 def as_stack(x, name: str, min_ndim: int) -> np.ndarray:

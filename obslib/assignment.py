@@ -13,7 +13,7 @@ Weights are ``W[i, j, l]`` = the pair bound of sensors ``i, j`` for target ``l``
     tests and benchmarks.
 ``relaxed_pair_assignment``
     Problem 3 (each unordered pair serves at most one target, sensors may be reused), solved
-    exactly as a bipartite matching between pairs and targets; an upper bound on Problem 1.
+    exactly as a bipartite matching (:mod:`obslib._relaxed_pairs`); an upper bound on Problem 1.
 ``optimal_pair_assignment``
     Problem 1 solved exactly: branch and bound on its LP relaxation (HiGHS), within a time and
     a memory limit (:class:`OptimumNotProven`).
@@ -33,18 +33,19 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _exact_pairs as exact_pairs
+from . import _relaxed_pairs as relaxed_pairs
 from ._kernels import pair_kernel
-from ._pair_search import GeometryHeads, PairSearch, keep_top, target_rows
+from ._memory import check_geometry_memory, check_upper_weights_memory, check_weight_memory
+from ._pair_search import GeometryHeads, PairSearch, WeightHeads, geometry_iv, rows_of
 from ._validate import (
+    ArgumentTypeError,
     as_bool,
     as_float_array,
     as_int,
-    as_points,
     as_positive,
     as_triples,
     as_weights,
     check_pair_sizes,
-    check_weight_memory,
 )
 
 __all__ = ["PairAssignment", "greedy_pair_assignment", "greedy_pair_assignment_literal",
@@ -82,8 +83,14 @@ def assignment_value(W, triples) -> float:
     >>> assignment_value(W, [(0, 1, 0)])
     0.25
     """
+    W, triples = _assignment_value_iv(W, triples)
+    return float(sum(W[i, j, l] for i, j, l in triples))
+
+
+def _assignment_value_iv(W, triples) -> tuple:
+    """Weights as a float array ``(N, N, L)`` and triples that index it."""
     W = as_float_array(W, "W")
-    return float(sum(W[i, j, l] for i, j, l in as_triples(triples, W)))
+    return W, as_triples(triples, W)
 
 
 # --------------------------------------------------------------------------------------------
@@ -134,38 +141,10 @@ def _rounds(source, free, n_targets: int, bar=None):
     return picks, weights
 
 
-class _WeightHeads:
-    """Heads of :func:`_rounds` from weights ``w`` ``(B, P, L)`` of the pairs ``(ii, jj)``,
-    ``ii < jj`` in ``numpy.triu_indices`` order: a masked ``argmax`` over the pairs (the first
-    maximum is the smallest ``(i, j)``)."""
-
-    def __init__(self, w, ii, jj):
-        self.w, self.ii, self.jj = w, ii, jj
-
-    @classmethod
-    def of(cls, arr):
-        """The heads of one instance's validated weights ``arr`` ``(N, N, L)``."""
-        ii, jj = np.triu_indices(arr.shape[0], 1)
-        return cls(arr[ii, jj][None], ii, jj)
-
-    def heads(self, b, l, free):
-        P = self.ii.size
-        out_w = np.empty(b.size)
-        out_i, out_j = np.empty(b.size, np.int64), np.empty(b.size, np.int64)
-        step = max(1, (1 << 22) // max(P, 1))  # rows per block: about 4M weights
-        for s in range(0, b.size, step):
-            bs, ls = b[s:s + step], l[s:s + step]
-            fb = free[bs]
-            rows = np.where(fb[:, self.ii] & fb[:, self.jj], self.w[bs, :, ls], -np.inf)
-            p = rows.argmax(axis=1)
-            out_w[s:s + step] = rows[np.arange(bs.size), p]
-            out_i[s:s + step], out_j[s:s + step] = self.ii[p], self.jj[p]
-        return out_w, out_i, out_j
-
-
-def _progress(progress, total, what):
-    """A tqdm bar on stderr over ``total`` steps when ``progress`` is true, else None."""
-    if not as_bool(progress, "progress"):
+def _progress(progress: bool, total, what):
+    """A tqdm bar on stderr over ``total`` steps when ``progress`` (validated) is true, else
+    None."""
+    if not progress:
         return None
     from tqdm import tqdm
 
@@ -206,22 +185,29 @@ def greedy_pairs_batch(w, n_sensors: int, progress=False):
     >>> picks[0].tolist(), weights[0].tolist()
     ([[0, 1, 0], [2, 3, 1]], [2.0, 1.0])
     """
+    w, n, progress = _greedy_pairs_batch_iv(w, n_sensors, progress)
+    ii, jj = np.triu_indices(n, 1)
+    free = np.ones((w.shape[0], n), dtype=bool)
+    bar = _progress(progress, w.shape[2], "Algorithm 1")
+    try:
+        return _rounds(WeightHeads(w, ii, jj), free, w.shape[2], bar)
+    finally:
+        if bar is not None:
+            bar.close()
+
+
+def _greedy_pairs_batch_iv(w, n_sensors, progress) -> tuple:
+    """Finite weights ``(B, N (N - 1) / 2, L)`` with ``N >= 2L``, ``N``, the progress flag."""
     n = as_int(n_sensors, "n_sensors", 2)
     w = as_float_array(w, "w")
-    ii, jj = np.triu_indices(n, 1)
-    if w.ndim != 3 or w.shape[1] != ii.size:
-        raise ValueError(f"w must have shape (B, N (N - 1) / 2, L) = (B, {ii.size}, L), "
+    pairs = n * (n - 1) // 2
+    if w.ndim != 3 or w.shape[1] != pairs:
+        raise ValueError(f"w must have shape (B, N (N - 1) / 2, L) = (B, {pairs}, L), "
                          f"got {w.shape}")
     check_pair_sizes(n, w.shape[2])
     if not np.isfinite(w).all():
         raise ValueError("w must be finite")
-    free = np.ones((w.shape[0], n), dtype=bool)
-    bar = _progress(progress, w.shape[2], "Algorithm 1")
-    try:
-        return _rounds(_WeightHeads(w, ii, jj), free, w.shape[2], bar)
-    finally:
-        if bar is not None:
-            bar.close()
+    return w, n, as_bool(progress, "progress")
 
 
 def _assignment(picks, weights, n_evaluations=None) -> PairAssignment:
@@ -230,18 +216,24 @@ def _assignment(picks, weights, n_evaluations=None) -> PairAssignment:
                           value=float(sum(weights.tolist())), n_evaluations=n_evaluations)
 
 
-def _source_iv(W, sensors, targets, u_max, cov):
-    """True for weights ``W``, False for geometry (``sensors, targets, u_max``, ``cov``): never
-    both, never part of the geometry."""
+def _pairs_iv(W, sensors, targets, u_max, cov):
+    """Validated weights ``W`` ``(N, N, L)`` or the validated geometry
+    (:class:`obslib._pair_search.Geometry`), the other ``None``: never both, never part of the
+    geometry."""
     geometry = (sensors, targets, u_max)
     if W is not None:
         if any(g is not None for g in (*geometry, cov)):
             raise ValueError("give either W or sensors/targets, not both")
-        return True
+        return as_weights(W), None
     if any(g is None for g in geometry):
         raise ValueError("give W, or sensors=, targets= and u_max=" +
                          (" (cov= goes with them)" if cov is not None else ""))
-    return False
+    return None, geometry_iv(sensors, targets, u_max, cov)
+
+
+def _sizes(arr, geometry) -> tuple:
+    """``(N, L)`` of validated weights or geometry."""
+    return (arr.shape[0], arr.shape[2]) if arr is not None else geometry.sizes
 
 
 def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, cov=None, k=None,
@@ -267,7 +259,11 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
         Instead of ``W``: the geometry, weighted as :func:`obslib.pair_bounds` does (Theorem 4,
         Mahalanobis with ``cov``), computed on demand so the ``(N, N, L)`` array is never
         materialised. Memory: the normalised rows, 16 bytes per sensor and target (0.8 GB at
-        ``N = 10,000``, ``L = 5,000``), and the candidate lists.
+        ``N = 10,000``, ``L = 5,000``), one target's search and the candidate lists
+        (:func:`obslib._memory.geometry_bytes`); it is estimated before anything of size
+        ``N x L`` is allocated, and a scene over
+        :data:`obslib._memory.MAX_GEOMETRY_BYTES` (4 GiB) is refused with the size and what
+        fits.
     k : int, optional
         From geometry, the least number of pairs a target's list holds after a fill (default
         16); affects speed only.
@@ -292,29 +288,35 @@ def greedy_pair_assignment(W=None, *, sensors=None, targets=None, u_max=None, co
     >>> greedy_pair_assignment(pair_bounds(S, T, 1.0)).triples  # from weights
     [(2, 3, 1), (0, 1, 0)]
     """
-    k = 16 if k is None else as_int(k, "k", 1)
-    as_bool(progress, "progress")
-    if _source_iv(W, sensors, targets, u_max, cov):
-        arr = as_weights(W)
-        n, n_targets = arr.shape[0], arr.shape[2]
-        check_pair_sizes(n, n_targets)
-        source = _WeightHeads.of(arr)
-    else:
-        x, y, u2 = target_rows(sensors, targets, u_max, cov)
-        n_targets, n = x.shape
-        check_pair_sizes(n, n_targets)
+    arr, geometry, k, progress = _greedy_iv(W, sensors, targets, u_max, cov, k, progress)
+    n, n_targets = _sizes(arr, geometry)
     # the bar ticks once per round, and from geometry first once per target's first search
-    bar = _progress(progress, n_targets * (1 if W is not None else 2), "greedy")
-    if W is None:
-        search = PairSearch(x, y, u2)
-        source = GeometryHeads(search, n_targets, k, bar)
+    bar = _progress(progress, n_targets * (1 if arr is not None else 2), "greedy")
     try:
+        if arr is not None:
+            source = WeightHeads.of(arr)
+        else:
+            search = PairSearch(*rows_of(geometry))
+            source = GeometryHeads(search, n_targets, k, bar)
         picks, weights = _rounds(source, np.ones((1, n), dtype=bool), n_targets, bar)
     finally:
         if bar is not None:
             bar.close()
-    counted = None if W is not None else search.n_evaluations
+    counted = None if arr is not None else search.n_evaluations
     return _assignment(picks[0], weights[0], counted)
+
+
+def _greedy_iv(W, sensors, targets, u_max, cov, k, progress) -> tuple:
+    """:func:`greedy_pair_assignment`'s arguments: weights or geometry (:func:`_pairs_iv`) with
+    ``N >= 2L`` and, from geometry, within the memory limit; ``k`` (default 16); the flag."""
+    k = 16 if k is None else as_int(k, "k", 1)
+    progress = as_bool(progress, "progress")
+    arr, geometry = _pairs_iv(W, sensors, targets, u_max, cov)
+    n, n_targets = _sizes(arr, geometry)
+    check_pair_sizes(n, n_targets)
+    if geometry is not None:
+        check_geometry_memory(n, n_targets, "greedy", "greedy_pair_assignment")
+    return arr, geometry, k, progress
 
 
 def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=None, cov=None,
@@ -335,25 +337,20 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
     >>> greedy_pair_assignment_literal(pair_bounds(S, T, 1.0)).triples
     [(2, 3, 1), (0, 1, 0)]
     """
-    as_bool(progress, "progress")
-    if _source_iv(W, sensors, targets, u_max, cov):
-        arr = as_weights(W)
-        n, n_targets = arr.shape[0], arr.shape[2]
-
+    arr, geometry, progress = _literal_iv(W, sensors, targets, u_max, cov, progress)
+    n, n_targets = _sizes(arr, geometry)
+    if arr is not None:
         def block(s_free, t_free):
             return arr[np.ix_(s_free, s_free, t_free)]
         counted = None
     else:
-        X, Y, u2 = target_rows(sensors, targets, u_max, cov)
-        n_targets, n = X.shape
-        check_weight_memory(n, n_targets)  # the first round evaluates the whole (N, N, L) block
+        X, Y, u2 = rows_of(geometry)
 
         def block(s_free, t_free):
             x, y = X[np.ix_(t_free, s_free)].T, Y[np.ix_(t_free, s_free)].T
             return pair_kernel(x[:, None, :], y[:, None, :], x[None, :, :], y[None, :, :],
                                u2[t_free])
         counted = 0
-    check_pair_sizes(n, n_targets)
     s_free = np.arange(n)
     t_free = np.arange(n_targets)
     triples, value = [], 0.0
@@ -378,6 +375,18 @@ def greedy_pair_assignment_literal(W=None, *, sensors=None, targets=None, u_max=
     return PairAssignment(triples=triples, value=float(value), n_evaluations=counted)
 
 
+def _literal_iv(W, sensors, targets, u_max, cov, progress) -> tuple:
+    """Weights or geometry (:func:`_pairs_iv`) with ``N >= 2L``, from geometry within the memory
+    of the ``(N, N, L)`` block its first round evaluates; the progress flag."""
+    progress = as_bool(progress, "progress")
+    arr, geometry = _pairs_iv(W, sensors, targets, u_max, cov)
+    n, n_targets = _sizes(arr, geometry)
+    if geometry is not None:
+        check_weight_memory(n, n_targets)
+    check_pair_sizes(n, n_targets)
+    return arr, geometry, progress
+
+
 # --------------------------------------------------------------------------------------------
 # Relaxed matching (Problem 3) and the exact optimum (Problem 1)
 # --------------------------------------------------------------------------------------------
@@ -389,7 +398,8 @@ def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 <
 
     Yields ``(l0, l1, block)`` with ``block[l - l0, p]`` the weight of pair ``p`` for target
     ``l``, ``l0 <= l < l1``; blocks hold about ``chunk`` weights (at least one target), so the
-    whole ``(L, P)`` array never needs to exist. Same kernel as :func:`obslib.pair_bounds`.
+    whole ``(L, P)`` array never needs to exist. Same kernel as :func:`obslib.pair_bounds`. The
+    arguments are checked when it is called, before the first block.
 
     Examples
     --------
@@ -398,7 +408,22 @@ def upper_pair_weight_blocks(sensors, targets, u_max, cov=None, chunk: int = 1 <
     >>> [(l0, l1, block.shape) for l0, l1, block in blocks]
     [(0, 1, (1, 6)), (1, 2, (1, 6))]
     """
-    xt, yt, u2 = target_rows(sensors, targets, u_max, cov)  # (L, N)
+    geometry, chunk = _blocks_iv(sensors, targets, u_max, cov, chunk)
+    return _blocks(geometry, chunk)
+
+
+def _blocks_iv(sensors, targets, u_max, cov, chunk) -> tuple:
+    """The validated geometry, within the memory of its rows, and ``chunk`` (at least 1)."""
+    chunk = as_int(chunk, "chunk", 1)
+    geometry = geometry_iv(sensors, targets, u_max, cov)
+    n, n_targets = geometry.sizes
+    check_geometry_memory(n, n_targets, "greedy", "upper_pair_weight_blocks")
+    return geometry, chunk
+
+
+def _blocks(geometry, chunk: int):
+    """The generator of :func:`upper_pair_weight_blocks`."""
+    xt, yt, u2 = rows_of(geometry)  # (L, N)
     ii, jj = np.triu_indices(xt.shape[1], 1)
     step = max(1, chunk // max(ii.size, 1))
     for a in range(0, xt.shape[0], step):
@@ -412,7 +437,8 @@ def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
 
     ``C[l, p]`` is ``pair_bounds(...)[ii[p], jj[p], l]`` (one shared elementwise kernel on the same
     rows, so equal) with pairs in ``numpy.triu_indices(N, 1)`` order; shape ``(L, P)``, filled from
-    :func:`upper_pair_weight_blocks`.
+    :func:`upper_pair_weight_blocks`. An array ``C`` over
+    :data:`obslib._memory.MAX_WEIGHT_BYTES` is refused before anything is allocated.
 
     Examples
     --------
@@ -421,12 +447,21 @@ def upper_pair_weights(sensors, targets, u_max, cov=None, chunk: int = 1 << 20):
     >>> ii.tolist(), jj.tolist(), C.shape
     ([0, 0, 0, 1, 1, 2], [1, 2, 3, 2, 3, 3], (2, 6))
     """
-    n, n_targets = as_points(sensors, "sensors").shape[0], as_points(targets, "targets").shape[0]
+    geometry, chunk = _upper_pair_weights_iv(sensors, targets, u_max, cov, chunk)
+    n, n_targets = geometry.sizes
     ii, jj = np.triu_indices(n, 1)
     out = np.empty((n_targets, ii.size))
-    for a, b, block in upper_pair_weight_blocks(sensors, targets, u_max, cov, chunk):
+    for a, b, block in _blocks(geometry, chunk):
         out[a:b] = block
     return ii, jj, out
+
+
+def _upper_pair_weights_iv(sensors, targets, u_max, cov, chunk) -> tuple:
+    """:func:`_blocks_iv`, and the ``(L, P)`` array within
+    :data:`obslib._memory.MAX_WEIGHT_BYTES`."""
+    geometry, chunk = _blocks_iv(sensors, targets, u_max, cov, chunk)
+    check_upper_weights_memory(*geometry.sizes)
+    return geometry, chunk
 
 
 def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targets=None,
@@ -434,9 +469,9 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
     """Problem 3: maximum-weight matching of sensor pairs to targets.
 
     Each unordered pair serves at most one target and each target gets at most one pair, but a
-    sensor may belong to several chosen pairs. Solved exactly with
-    ``scipy.optimize.linear_sum_assignment`` on the ``(L, P)`` matrix of pair weights. Its value
-    is an upper bound on Problem 1's optimum (Sec. V-C).
+    sensor may belong to several chosen pairs. Its value is an upper bound on Problem 1's
+    optimum (Sec. V-C). Solved exactly as a sparse bipartite matching between targets and each
+    target's ``L`` heaviest pairs (:mod:`obslib._relaxed_pairs`, the one solver of Problem 3).
 
     Parameters
     ----------
@@ -445,7 +480,9 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
         Match *ordered* pairs ``(i, j)``, ``i != j``, instead: the original code's relaxation, in
         which one unordered pair can serve two targets (as ``(i, j)`` and ``(j, i)``).
     sensors, targets, u_max, cov : optional
-        Instead of ``W``: the geometry (only the ``i < j`` weights are computed).
+        Instead of ``W``: the geometry, most of whose weights are never computed. Memory is
+        estimated first and a scene over :data:`obslib._memory.MAX_GEOMETRY_BYTES` refused,
+        saying what fits.
     progress : bool
         Show a progress bar (tqdm, on stderr): from geometry over the targets' candidate
         searches, from ``W`` over the one matching.
@@ -455,38 +492,21 @@ def relaxed_pair_assignment(W=None, ordered: bool = False, *, sensors=None, targ
     >>> S, T = [[0, 0], [1, 0], [10, 0], [11, 0.5]], [[0.5, 1], [10.5, 1]]
     >>> relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0).triples
     [(0, 1, 0), (2, 3, 1)]
+    >>> from obslib.bounds import pair_bounds
+    >>> relaxed_pair_assignment(pair_bounds(S, T, 1.0)).triples  # from weights
+    [(0, 1, 0), (2, 3, 1)]
     """
-    ordered = as_bool(ordered, "ordered")
-    as_bool(progress, "progress")
-    if _source_iv(W, sensors, targets, u_max, cov):
-        arr = as_weights(W)
-        n = arr.shape[0]
-        ii, jj = np.triu_indices(n, 1)
-        bar = _progress(progress, 1, "matching")
-        try:
-            return _relaxed_from_cost(n, ii, jj, arr[ii, jj, :].T, ordered, counted=None)
-        finally:
-            if bar is not None:
-                bar.update()
-                bar.close()
-    return relaxed_from_geometry(sensors, targets, u_max, cov, orders=(ordered,),
-                                 progress=progress)[0]
+    arr, geometry, orders, progress = _relaxed_iv(W, sensors, targets, u_max, cov, [ordered],
+                                                  progress, "ordered")
+    return _relaxed(arr, geometry, orders, progress)[0]
 
 
 def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True),
                           progress=False) -> list:
-    """Problem 3 from geometry, evaluating only each target's ``L`` best pairs.
-
-    A target matched to a pair outside its ``L`` heaviest could move to one of them, since the
-    other ``L - 1`` targets hold at most ``L - 1`` pairs; it would gain weight, so every optimum
-    uses only those candidates (with ``(i, j)`` and ``(j, i)`` for the ordered variant, whose
-    ``L``-th best ordered weight is at least the ``L``-th best unordered one). The candidates are
-    found with the greedy's exact pruning (:mod:`obslib._pair_search`), without computing most
-    weights, and the sparse matching is solved with
-    ``scipy.sparse.csgraph.min_weight_full_bipartite_matching``. Returns one
-    :class:`PairAssignment` per entry of ``orders`` (``ordered`` flags), sharing the candidates;
-    ``n_evaluations`` counts the weights computed (once, for all of them). ``progress`` shows a
-    tqdm bar (stderr) over the targets' searches.
+    """Problem 3 from geometry for each ``ordered`` flag of ``orders``, sharing one search of
+    the candidate pairs: ``[relaxed_pair_assignment(ordered=o, sensors=..., ...) for o in
+    orders]`` at the cost of one. ``n_evaluations`` counts the weights computed (once, for all
+    of them).
 
     Examples
     --------
@@ -494,73 +514,50 @@ def relaxed_from_geometry(sensors, targets, u_max, cov=None, orders=(False, True
     >>> [r.triples for r in relaxed_from_geometry(S, T, 1.0)]  # unordered, ordered
     [[(0, 1, 0), (2, 3, 1)], [(0, 1, 0), (2, 3, 1)]]
     """
-    from scipy.sparse import csr_array
-    from scipy.sparse.csgraph import min_weight_full_bipartite_matching
+    arr, geometry, orders, progress = _relaxed_iv(None, sensors, targets, u_max, cov, orders,
+                                                  progress)
+    return _relaxed(arr, geometry, orders, progress)
 
-    x, y, u2 = target_rows(sensors, targets, u_max, cov)
-    n_targets, n = x.shape
+
+def _relaxed_iv(W, sensors, targets, u_max, cov, orders, progress, name="orders") -> tuple:
+    """Problem 3's arguments: weights or geometry (:func:`_pairs_iv`) with a target and two
+    sensors, from geometry within the memory limit; the ``ordered`` flags ``orders`` (named
+    ``name`` in errors); the progress flag."""
+    if not (isinstance(orders, (tuple, list)) and orders):
+        raise ArgumentTypeError(f"{name} must be a non-empty list of True/False, got {orders!r}")
+    orders = tuple(as_bool(o, name) for o in orders)
+    progress = as_bool(progress, "progress")
+    arr, geometry = _pairs_iv(W, sensors, targets, u_max, cov)
+    n, n_targets = _sizes(arr, geometry)
     if n_targets < 1:
         raise ValueError("there must be at least one target")
     if n < 2:
         raise ValueError(f"pairs need at least two sensors, got {n}")
-    source = PairSearch(x, y, u2)
-    every = np.arange(n)
-    rows, ids, ws = [], [], []
-    bar = _progress(progress, n_targets, "candidate pairs")
-    for l in range(n_targets):
-        a, b, w, _ = source.best(l, every, n_targets)
-        a, b, w = keep_top(a, b, w, n_targets)
-        rows.append(np.full(w.size, l))
-        ids.append(np.minimum(a, b) * n + np.maximum(a, b))
-        ws.append(w)
+    if geometry is not None:
+        what = "relaxed" if len(orders) == 1 else "relaxed, both"
+        check_geometry_memory(n, n_targets, what, "relaxed_pair_assignment")
+    return arr, geometry, orders, progress
+
+
+def _relaxed(arr, geometry, orders, progress) -> list:
+    """Problem 3, the one solver (:mod:`obslib._relaxed_pairs`): each target's ``L`` heaviest
+    pairs, from the weights ``arr`` or searched from the geometry, then a maximum-weight matching
+    for each flag of ``orders``; one :class:`PairAssignment` per flag."""
+    n, n_targets = _sizes(arr, geometry)
+    if arr is not None:
+        candidates = relaxed_pairs.candidates_from_weights(arr)
+        bar = _progress(progress, 1, "matching")
+    else:
+        bar = _progress(progress, n_targets, "candidate pairs")
+        candidates = relaxed_pairs.candidates_from_geometry(rows_of(geometry), bar)
+    try:
+        return [PairAssignment(*relaxed_pairs.matching(*candidates[:3], n, n_targets, ordered),
+                               n_evaluations=candidates[3]) for ordered in orders]
+    finally:
         if bar is not None:
-            bar.update()
-    if bar is not None:
-        bar.close()
-    rows, ids, ws = np.concatenate(rows), np.concatenate(ids), np.concatenate(ws)
-    pairs, col = np.unique(ids, return_inverse=True)
-    ii, jj = pairs // n, pairs % n
-    out = []
-    for ordered in orders:
-        r, c, w, m = rows, col, ws, pairs.size
-        if ordered:  # the second copy of pair p is column m + p
-            r, c = np.r_[rows, rows], np.r_[col, col + pairs.size]
-            w, m = np.r_[ws, ws], 2 * pairs.size
-        # every full matching has L edges, so the offset (edges must be nonzero) changes no choice
-        graph = csr_array((w + 1.0, (r, c)), shape=(n_targets, m))
-        mr, mc = min_weight_full_bipartite_matching(graph, maximize=True)
-        key = r.astype(np.int64) * m + c  # each (target, column) edge once
-        order = np.argsort(key)
-        mr, mc = np.asarray(mr), np.asarray(mc)
-        value = w[order[np.searchsorted(key[order], mr.astype(np.int64) * m + mc)]]
-        p = mc % pairs.size
-        triples = sorted(zip(ii[p].tolist(), jj[p].tolist(), np.asarray(mr).tolist()),
-                         key=lambda t: t[2])
-        out.append(PairAssignment(triples=triples, value=float(value.sum()),
-                                  n_evaluations=source.n_evaluations))
-    return out
-
-
-def _relaxed_from_cost(n, ii, jj, cost, ordered, counted) -> PairAssignment:
-    """Problem 3 from the ``(L, P)`` weights ``cost`` of the pairs ``(ii, jj)``, ``ii < jj``."""
-    from scipy.optimize import linear_sum_assignment
-
-    n_targets = cost.shape[0]
-    if n_targets < 1:
-        raise ValueError("there must be at least one target")
-    if n < 2:
-        raise ValueError(f"pairs need at least two sensors, got {n}")
-    if ordered:  # (i, j) and (j, i) carry the same weight
-        ii, jj = np.concatenate([ii, jj]), np.concatenate([jj, ii])
-        cost = np.concatenate([cost, cost], axis=1)
-    rows, cols = linear_sum_assignment(cost, maximize=True)
-    triples = sorted(
-        (min(int(ii[c]), int(jj[c])), max(int(ii[c]), int(jj[c])), int(r))
-        for r, c in zip(rows, cols)
-    )
-    triples.sort(key=lambda t: t[2])
-    return PairAssignment(triples=triples, value=float(cost[rows, cols].sum()),
-                          n_evaluations=counted)
+            if arr is not None:
+                bar.update()
+            bar.close()
 
 
 class OptimumNotProven(RuntimeError):
@@ -660,20 +657,15 @@ def optimal_pair_assignment(W, time_limit: float | None = None, progress=False) 
     >>> optimal_pair_assignment(pair_bounds(S, T, 1.0)).triples
     [(0, 1, 0), (2, 3, 1)]
     """
-    arr = as_weights(W)
+    arr, time_limit, progress = _optimal_iv(W, time_limit, progress)
     n, n_targets = arr.shape[0], arr.shape[2]
-    check_pair_sizes(n, n_targets)
-    if time_limit is not None:
-        time_limit = as_positive(time_limit, "time_limit")
-    as_bool(progress, "progress")
-    exact_pairs.check_memory(n, n_targets, MAX_EXACT_BYTES)
     import scipy.optimize  # noqa: F401  (1 s on a first call: imported before the clock starts)
 
     deadline = None if not time_limit else time.perf_counter() + float(time_limit)
     bar = _progress(progress, None, "exact optimum")
     try:
         # Algorithm 1 (one of the search's incumbents) on the weights validated above
-        picks, _ = _rounds(_WeightHeads.of(arr), np.ones((1, n), dtype=bool), n_targets)
+        picks, _ = _rounds(WeightHeads.of(arr), np.ones((1, n), dtype=bool), n_targets)
         start = [tuple(t) for t in picks[0].tolist()]
         triples = exact_pairs.solve(arr, deadline, start, bar)
     except exact_pairs.Stopped as e:
@@ -691,3 +683,16 @@ def optimal_pair_assignment(W, time_limit: float | None = None, progress=False) 
             bar.close()
     triples = sorted(triples, key=lambda t: t[2])
     return PairAssignment(triples=triples, value=assignment_value(arr, triples))
+
+
+def _optimal_iv(W, time_limit, progress) -> tuple:
+    """Weights with ``N >= 2L`` within :data:`MAX_EXACT_BYTES`, a positive ``time_limit`` or
+    ``None``, the progress flag."""
+    arr = as_weights(W)
+    n, n_targets = arr.shape[0], arr.shape[2]
+    check_pair_sizes(n, n_targets)
+    if time_limit is not None:
+        time_limit = as_positive(time_limit, "time_limit")
+    progress = as_bool(progress, "progress")
+    exact_pairs.check_memory(n, n_targets, MAX_EXACT_BYTES)
+    return arr, time_limit, progress

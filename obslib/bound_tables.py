@@ -48,10 +48,19 @@ def lower_bound_tables(vectors, u_max) -> np.ndarray:
     >>> lower_bound_tables((target - sensors)[None], u_max=1.0).round(4)
     array([[0.    , 0.    , 0.    , 0.8165, 0.    , 0.8165, 0.    , 0.6325]])
     """
+    return _lower_bound_tables(*_lower_bound_tables_iv(vectors, u_max))
+
+
+def _lower_bound_tables_iv(vectors, u_max) -> tuple:
+    """Finite rows ``(I, N, 2)`` and ``u_max`` (finite, non-negative) broadcast to ``(I,)``."""
     v = as_stack(vectors, "vectors", 2)
     if v.ndim != 3:
         raise ValueError(f"vectors must have shape (I, N, 2), got {v.shape}")
-    u = as_u_max_stack(u_max, v.shape[:1])
+    return v, as_u_max_stack(u_max, v.shape[:1])
+
+
+def _lower_bound_tables(v: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """:func:`lower_bound_tables` of validated rows ``(I, N, 2)`` and speed bounds ``(I,)``."""
     p = pow2_scale(np.abs(v).max(axis=(1, 2), initial=0.0))  # (I,)
     v, u = rescale(v, p[:, None, None]), rescale(u, p)
     tr, det, lmax = tr_det(v, subset_masks(v.shape[1]))
@@ -75,8 +84,14 @@ def lower_bound_table(sensors, target, u_max) -> np.ndarray:
     >>> lower_bound_table(sensors, [1.0, 1.0], u_max=1.0).round(4)
     array([0.    , 0.    , 0.    , 0.8165, 0.    , 0.8165, 0.    , 0.6325])
     """
-    rows = relative_rows(sensors, target)
-    return lower_bound_tables(rows[None], float(as_u_max(u_max)))[0]
+    rows, u = _lower_bound_table_iv(sensors, target, u_max)
+    return _lower_bound_tables(rows[None], u[None])[0]
+
+
+def _lower_bound_table_iv(sensors, target, u_max) -> tuple:
+    """The rows ``o - p_i`` of the scene (:func:`obslib.observability.relative_rows`) and a
+    finite non-negative ``u_max``."""
+    return relative_rows(sensors, target), as_u_max(u_max)
 
 
 def lower_bound_set_function(sensors, target, u_max) -> Callable[[tuple], float]:
@@ -90,12 +105,17 @@ def lower_bound_set_function(sensors, target, u_max) -> Callable[[tuple], float]
     >>> round(omega((0, 1)), 4), round(omega((0, 1, 2)), 4)
     (0.8165, 0.6325)
     """
-    s = as_points(sensors, "sensors")
-    relative_rows(s, target)
-    o = as_point(target, "target")
-    u = float(as_u_max(u_max))
+    s, o, u = _lower_bound_set_function_iv(sensors, target, u_max)
 
     def omega(idx: tuple) -> float:
         return lower_bound(s[list(idx)].reshape(-1, 2), o, u)
 
     return omega
+
+
+def _lower_bound_set_function_iv(sensors, target, u_max) -> tuple:
+    """The sensors ``(N, 2)``, the target ``(2,)`` and ``u_max`` of a valid scene (checked as
+    :func:`obslib.lower_bound` checks it)."""
+    s = as_points(sensors, "sensors")
+    _, u = _lower_bound_table_iv(s, target, u_max)
+    return s, as_point(target, "target"), float(u)

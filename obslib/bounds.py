@@ -20,6 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from ._kernels import normalise, pair_kernel, pow2_scale, rescale
+from ._memory import check_weight_memory
 from ._validate import (
     as_float_array,
     as_points,
@@ -27,7 +28,6 @@ from ._validate import (
     as_u_max,
     as_u_max_stack,
     broadcast,
-    check_weight_memory,
     validated_vectors,
     vectors_between,
 )
@@ -74,7 +74,15 @@ def lower_bound(sensors, target, u_max) -> float:
     >>> lower_bound([[0, 0]], [1, 1], u_max=1.0)  # one sensor: rank 1 (Theorem 2)
     0.0
     """
-    return float(_lower_bounds(relative_rows(sensors, target), as_u_max(u_max)))
+    rows, u = _lower_bound_iv(sensors, target, u_max)
+    return float(_lower_bounds(rows, u))
+
+
+def _lower_bound_iv(sensors, target, u_max) -> tuple:
+    """The rows ``o - p_i`` of the scene (:func:`obslib.observability.relative_rows`) and a
+    finite non-negative ``u_max``: the arguments of :func:`lower_bound` and
+    :func:`worst_case_control`."""
+    return relative_rows(sensors, target), as_u_max(u_max)
 
 
 def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
@@ -95,7 +103,7 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
     >>> relative_vectors([[0, 0], [2, 0]], [[1, 1]], cov=4 * np.eye(2)).tolist()
     [[[0.5, 0.5]], [[-0.5, 0.5]]]
     """
-    v, unit = validated_vectors(sensors, targets, cov)
+    v, unit = _relative_vectors_iv(sensors, targets, cov)
     if cov is None:
         return v
     with np.errstate(over="ignore"):
@@ -105,6 +113,12 @@ def relative_vectors(sensors, targets, cov=None) -> np.ndarray:
         raise ValueError(f"the Mahalanobis lengths to target {l} overflow (cov of target {l} is "
                          "tiny relative to the distances); pair_bounds handles such scales")
     return out
+
+
+def _relative_vectors_iv(sensors, targets, cov) -> tuple:
+    """The validated vectors ``o_l - p_i`` ``(N, L, 2)`` in their units ``(L,)``
+    (:func:`obslib._validate.validated_vectors`)."""
+    return validated_vectors(sensors, targets, cov)
 
 
 def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
@@ -134,7 +148,7 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
     ------
     ValueError
         For bad input (naming the sensor, target or argument), and, before allocating, when the
-        ``(N, N, L)`` array would exceed :data:`obslib._validate.MAX_WEIGHT_BYTES` (1 GiB): the
+        ``(N, N, L)`` array would exceed :data:`obslib._memory.MAX_WEIGHT_BYTES` (1 GiB): the
         message suggests ``greedy_pair_assignment(sensors=..., targets=..., u_max=...)``, which
         computes weights on demand.
 
@@ -150,11 +164,18 @@ def pair_bounds(sensors, targets, u_max, cov=None) -> np.ndarray:
     >>> W.round(6)[0, 1, 0]
     np.float64(0.816497)
     """
+    v, u = _pair_bounds_iv(sensors, targets, u_max, cov)
+    return _pair_bounds(v, u)
+
+
+def _pair_bounds_iv(sensors, targets, u_max, cov) -> tuple:
+    """The validated vectors ``(N, L, 2)`` (the ``(N, N, L)`` result within
+    :data:`~obslib._memory.MAX_WEIGHT_BYTES`) and the speed bounds ``(L,)`` in their unit."""
     s = as_points(sensors, "sensors")
     t = as_points(targets, "targets")
     check_weight_memory(s.shape[0], t.shape[0])
     v, unit = vectors_between(s, t, cov)  # each input is checked once
-    return _pair_bounds(v, as_u_max(u_max, t.shape[0]) / unit)
+    return v, as_u_max(u_max, t.shape[0]) / unit
 
 
 def _pair_bounds(v: np.ndarray, u) -> np.ndarray:
@@ -196,14 +217,7 @@ def pair_bound_polar(alpha, theta, u_over_d):
     >>> round(pair_bound_polar(1.0, np.pi / 2, 1 / np.sqrt(2)), 6)
     0.816497
     """
-    a, th, q = (as_float_array(x, name) for x, name in
-                ((alpha, "alpha"), (theta, "theta"), (u_over_d, "u_over_d")))
-    for name, x, nonneg in (("alpha", a, True), ("theta", th, False), ("u_over_d", q, True)):
-        if not np.isfinite(x).all():
-            raise ValueError(f"{name} must be finite")
-        if nonneg and (x < 0).any():
-            raise ValueError(f"{name} must be non-negative")
-    a, th, q = broadcast({"alpha": a, "theta": th, "u_over_d": q})
+    a, th, q = _pair_bound_polar_iv(alpha, theta, u_over_d)
     # The bound is homogeneous of degree 0 in (d_io, d_jo, u_max) = d_io (1, alpha, u/d): for
     # alpha beyond the safe range, divide all three by a power of two m (exact), so that alpha^2
     # cannot overflow; b = 1/m is then the first length (b = 1 and the plain formula otherwise).
@@ -218,6 +232,18 @@ def pair_bound_polar(alpha, theta, u_over_d):
         minus = 4.0 * a2 * b2 * np.sin(th) ** 2 / plus
         out = np.sqrt(minus / (plus + 2.0 * q * q))
     return float(out) if out.ndim == 0 else out
+
+
+def _pair_bound_polar_iv(alpha, theta, u_over_d) -> tuple:
+    """Finite ``alpha >= 0``, ``theta``, ``u_over_d >= 0``, broadcast to one shape."""
+    a, th, q = (as_float_array(x, name) for x, name in
+                ((alpha, "alpha"), (theta, "theta"), (u_over_d, "u_over_d")))
+    for name, x, nonneg in (("alpha", a, True), ("theta", th, False), ("u_over_d", q, True)):
+        if not np.isfinite(x).all():
+            raise ValueError(f"{name} must be finite")
+        if nonneg and (x < 0).any():
+            raise ValueError(f"{name} must be non-negative")
+    return tuple(broadcast({"alpha": a, "theta": th, "u_over_d": q}))
 
 
 def worst_case_control(sensors, target, u_max) -> np.ndarray:
@@ -240,7 +266,8 @@ def worst_case_control(sensors, target, u_max) -> np.ndarray:
     >>> worst_case_control([[0, 0], [4, 0]], [2, 1], u_max=1.0)
     array([1., 0.])
     """
-    return _worst_case_controls(relative_rows(sensors, target), as_u_max(u_max))
+    rows, u = _lower_bound_iv(sensors, target, u_max)
+    return _worst_case_controls(rows, u)
 
 
 def lower_bounds(rows, u_max) -> np.ndarray:
@@ -266,8 +293,15 @@ def lower_bounds(rows, u_max) -> np.ndarray:
     >>> lower_bounds([[[1, 1], [-1, 1]]], 1.0).round(6)
     array([0.816497])
     """
+    r, u = _lower_bounds_iv(rows, u_max)
+    return _lower_bounds(r, u)
+
+
+def _lower_bounds_iv(rows, u_max) -> tuple:
+    """Finite rows ``(..., N, 2)`` and ``u_max`` (finite, non-negative) broadcast to their
+    scenes ``(...)``: the arguments of :func:`lower_bounds` and :func:`worst_case_controls`."""
     r = as_stack(rows, "rows", 2)
-    return _lower_bounds(r, as_u_max_stack(u_max, r.shape[:-2]))
+    return r, as_u_max_stack(u_max, r.shape[:-2])
 
 
 def _lower_bounds(r: np.ndarray, u: np.ndarray) -> np.ndarray:
@@ -297,8 +331,8 @@ def worst_case_controls(rows, u_max) -> np.ndarray:
     >>> worst_case_controls([[[2, 1], [-2, 1]]], 1.0)
     array([[1., 0.]])
     """
-    r = as_stack(rows, "rows", 2)
-    return _worst_case_controls(r, as_u_max_stack(u_max, r.shape[:-2]))
+    r, u = _lower_bounds_iv(rows, u_max)
+    return _worst_case_controls(r, u)
 
 
 def _worst_case_controls(r: np.ndarray, u: np.ndarray) -> np.ndarray:

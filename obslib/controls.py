@@ -39,14 +39,18 @@ def disc_controls(u_max: float, n_radii: int, n_angles: int) -> np.ndarray:
            [-2.,  0.],
            [ 0., -2.]])
     """
-    u_max = as_nonnegative(u_max, "u_max")
-    n_radii = as_int(n_radii, "n_radii", 1)
-    n_angles = as_int(n_angles, "n_angles", 1)
+    u_max, n_radii, n_angles = _disc_controls_iv(u_max, n_radii, n_angles)
     radii = u_max * np.arange(1, n_radii + 1) / n_radii
     phi = 2 * np.pi * np.arange(n_angles) / n_angles
     ring = np.column_stack([np.cos(phi), np.sin(phi)])
     grid = (radii[:, None, None] * ring[None, :, :]).reshape(-1, 2)
     return np.vstack([np.zeros((1, 2)), grid])
+
+
+def _disc_controls_iv(u_max, n_radii, n_angles) -> tuple:
+    """``u_max >= 0`` and two counts of at least 1."""
+    return (as_nonnegative(u_max, "u_max"), as_int(n_radii, "n_radii", 1),
+            as_int(n_angles, "n_angles", 1))
 
 
 def disc_mesh(controls, values, n_radii: int, n_angles: int):
@@ -77,6 +81,18 @@ def disc_mesh(controls, values, n_radii: int, n_angles: int):
     >>> X[1].round(12) + 0.0
     array([ 1.,  0., -1.,  0.,  1.])
     """
+    c, v, n_radii, n_angles = _disc_mesh_iv(controls, values, n_radii, n_angles)
+    pts = np.concatenate([np.broadcast_to(c[0], (1, n_angles, 2)),
+                          c[1:].reshape(n_radii, n_angles, 2)])
+    z = np.concatenate([np.full((1, n_angles), v[0]), v[1:].reshape(n_radii, n_angles)])
+    pts = np.concatenate([pts, pts[:, :1]], axis=1)
+    z = np.concatenate([z, z[:, :1]], axis=1)
+    return pts[..., 0], pts[..., 1], z
+
+
+def _disc_mesh_iv(controls, values, n_radii, n_angles) -> tuple:
+    """The counts, then controls ``(k, 2)`` and values ``(k,)`` with ``k = 1 + n_radii
+    n_angles``."""
     n_radii = as_int(n_radii, "n_radii", 1)
     n_angles = as_int(n_angles, "n_angles", 1)
     c = as_float_array(controls, "controls")
@@ -84,9 +100,4 @@ def disc_mesh(controls, values, n_radii: int, n_angles: int):
     k = 1 + n_radii * n_angles
     if c.shape != (k, 2) or v.shape != (k,):
         raise ValueError(f"need controls ({k}, 2) and values ({k},), got {c.shape}, {v.shape}")
-    pts = np.concatenate([np.broadcast_to(c[0], (1, n_angles, 2)),
-                          c[1:].reshape(n_radii, n_angles, 2)])
-    z = np.concatenate([np.full((1, n_angles), v[0]), v[1:].reshape(n_radii, n_angles)])
-    pts = np.concatenate([pts, pts[:, :1]], axis=1)
-    z = np.concatenate([z, z[:, :1]], axis=1)
-    return pts[..., 0], pts[..., 1], z
+    return c, v, n_radii, n_angles

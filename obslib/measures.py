@@ -63,7 +63,7 @@ from ._validate import (
     as_point,
     as_rank_rtol,
 )
-from .observability import observability_matrix, relative_rows
+from .observability import relative_rows
 
 __all__ = [
     "MEASURES",
@@ -111,13 +111,19 @@ def subset_masks(n: int) -> np.ndarray:
            [0, 1],
            [1, 1]])
     """
+    n = _subset_masks_iv(n)
+    k = np.arange(2**n)[:, None]
+    return ((k >> np.arange(n)[None, :]) & 1).astype(bool)
+
+
+def _subset_masks_iv(n) -> int:
+    """An integer ``0 <= n <= MAX_GROUND_SET``."""
     n = as_int(n, "n", 0)
     if n > MAX_GROUND_SET:
         raise ValueError(
             f"ground set of {n} elements is too large to enumerate (max {MAX_GROUND_SET})"
         )
-    k = np.arange(2**n)[:, None]
-    return ((k >> np.arange(n)[None, :]) & 1).astype(bool)
+    return n
 
 
 def _sensors_or_empty(sensors) -> np.ndarray:
@@ -151,9 +157,17 @@ def symmetric_observability_matrix(sensors, target, u=None, eps: float = 0.0) ->
     array([[2., 0.],
            [0., 2.]])
     """
-    e = as_eps(eps)
-    O = observability_matrix(_sensors_or_empty(sensors), target, u)
+    rows, uu, e = _symmetric_observability_matrix_iv(sensors, target, u, eps)
+    O = rows if uu is None else np.vstack([rows, uu])
     return O.T @ O + e * np.eye(2)
+
+
+def _symmetric_observability_matrix_iv(sensors, target, u, eps) -> tuple:
+    """``eps >= 0`` (checked first), the rows ``o - p_i`` (no sensor allowed) and the control
+    ``(2,)`` or ``None``: ``(rows, u, eps)``."""
+    e = as_eps(eps)
+    rows = relative_rows(_sensors_or_empty(sensors), target)
+    return rows, None if u is None else as_point(u, "u"), e
 
 
 def measure_from_vectors(vectors, masks, name: str, eps: float = 0.0, u=None,
@@ -184,8 +198,14 @@ def measure_from_vectors(vectors, masks, name: str, eps: float = 0.0, u=None,
     >>> measure_from_vectors([[1, 1], [-1, 1]], subset_masks(2), "trace")
     array([0., 2., 2., 4.])
     """
+    args = _measure_from_vectors_iv(vectors, masks, name, eps, u, rank_rtol)
+    return _measures(*args)[name]
+
+
+def _measure_from_vectors_iv(vectors, masks, name, eps, u, rank_rtol) -> tuple:
+    """One measure name, then :func:`_measures_from_vectors_iv` of it."""
     as_measure_name(name, MEASURES)
-    return measures_from_vectors(vectors, masks, (name,), eps, u, rank_rtol)[name]
+    return _measures_from_vectors_iv(vectors, masks, (name,), eps, u, rank_rtol)
 
 
 def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=None,
@@ -203,6 +223,13 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
     >>> t["trace"], t["rank"]
     (array([4.]), array([2.]))
     """
+    return _measures(*_measures_from_vectors_iv(vectors, masks, names, eps, u, rank_rtol))
+
+
+def _measures_from_vectors_iv(vectors, masks, names, eps, u, rank_rtol) -> tuple:
+    """The arguments of :func:`_measures`: finite vectors ``(..., N, 2)``, boolean masks
+    ``(K, N)``, measure names, ``eps``, ``rank_rtol`` and the controls broadcast to
+    ``(..., 2)`` or ``None``."""
     if isinstance(names, str):
         raise ArgumentTypeError(
             f"names must be a sequence of measure names, not the string {names!r}"
@@ -228,7 +255,7 @@ def measures_from_vectors(vectors, masks, names=MEASURES, eps: float = 0.0, u=No
             raise ValueError(
                 f"u must have shape (2,) or {v.shape[:-2] + (2,)}, got {uu.shape}"
             ) from None
-    return _measures(v, m, names, e, r, uu)
+    return v, m, names, e, r, uu
 
 
 def _mask_booleans(masks) -> np.ndarray:
@@ -302,6 +329,14 @@ def measure_table(sensors, target, name: str, eps: float = 0.0, u=None, masks=No
     >>> measure_table([[0, 0], [2, 0]], [1, 1], "rank")  # {}, {0}, {1}, {0, 1}
     array([0., 1., 1., 2.])
     """
+    args = _measure_table_iv(sensors, target, name, eps, u, masks, rank_rtol)
+    return _measures(*args)[name]
+
+
+def _measure_table_iv(sensors, target, name, eps, u, masks, rank_rtol) -> tuple:
+    """The arguments of :func:`_measures` for :func:`measure_table`: the rows ``o - p_i``, the
+    masks (all subsets by default), ``(name,)``, ``eps``, ``rank_rtol``, the control or
+    ``None``."""
     rows = relative_rows(sensors, target)
     if masks is None:
         masks = subset_masks(rows.shape[0])
@@ -310,7 +345,7 @@ def measure_table(sensors, target, name: str, eps: float = 0.0, u=None, masks=No
     e, r = as_eps(eps), as_rank_rtol(rank_rtol)
     m = _mask_booleans(masks)
     _check_mask_shape(m, rows.shape[0])
-    return _measures(rows, m, (name,), e, r, uu)[name]
+    return rows, m, (name,), e, r, uu
 
 
 def measure(sensors, target, name: str, eps: float = 0.0, u=None,
@@ -345,9 +380,16 @@ def measure(sensors, target, name: str, eps: float = 0.0, u=None,
     >>> measure([[0, 0], [2, 0]], [1, 1], "logdet")  # rows (1, 1), (-1, 1): det 4
     1.3862943611198906
     """
+    args = _measure_iv(sensors, target, name, eps, u, rank_rtol)
+    return float(_measures(*args)[name][0])
+
+
+def _measure_iv(sensors, target, name, eps, u, rank_rtol) -> tuple:
+    """The arguments of :func:`_measures` for :func:`measure`: the rows ``o - p_i`` (no sensor
+    allowed), one mask of them all, ``(name,)``, ``eps``, ``rank_rtol``, the control or
+    ``None``."""
     rows = relative_rows(_sensors_or_empty(sensors), target)
     uu = None if u is None else as_point(u, "u")
     as_measure_name(name, MEASURES)
     e, r = as_eps(eps), as_rank_rtol(rank_rtol)
-    mask = np.ones((1, rows.shape[0]), dtype=bool)
-    return float(_measures(rows, mask, (name,), e, r, uu)[name][0])
+    return rows, np.ones((1, rows.shape[0]), dtype=bool), (name,), e, r, uu

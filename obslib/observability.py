@@ -54,6 +54,12 @@ def relative_rows(sensors, target) -> np.ndarray:
     array([[ 1.,  1.],
            [-1.,  1.]])
     """
+    return _relative_rows_iv(sensors, target)
+
+
+def _relative_rows_iv(sensors, target) -> np.ndarray:
+    """The rows ``o - p_i`` of distinct finite sensors and a finite target, none on it, without
+    overflow: the canonical form of ``(sensors, target)``."""
     s = as_points(sensors, "sensors")
     o = as_point(target, "target")
     check_distinct(s)
@@ -88,10 +94,14 @@ def observability_matrix(sensors, target, u=None) -> np.ndarray:
            [-1.,  1.],
            [ 1.,  0.]])
     """
-    rows = relative_rows(sensors, target)
-    if u is None:
-        return rows
-    return np.vstack([rows, as_point(u, "u")])
+    rows, uu = _observability_matrix_iv(sensors, target, u)
+    return rows if uu is None else np.vstack([rows, uu])
+
+
+def _observability_matrix_iv(sensors, target, u) -> tuple:
+    """The rows ``o - p_i`` (:func:`_relative_rows_iv`) and one finite control ``(2,)`` or
+    ``None``."""
+    return _relative_rows_iv(sensors, target), None if u is None else as_point(u, "u")
 
 
 def inverse_condition_number(sensors, target, u=None):
@@ -133,17 +143,25 @@ def inverse_condition_number(sensors, target, u=None):
     >>> round(c, 6)
     0.816497
     """
-    rows = relative_rows(sensors, target)
-    if u is None:
+    rows, uu = _inverse_condition_number_iv(sensors, target, u)
+    if uu is None:
         return float(inverse_condition(rows))
-    uu = as_float_array(u, "u")
     if uu.ndim == 1:
-        return float(inverse_condition(np.vstack([rows, as_point(uu, "u")])))
-    uu = as_points(uu, "u")
+        return float(inverse_condition(np.vstack([rows, uu])))
     stack = np.concatenate(
         [np.broadcast_to(rows, (uu.shape[0],) + rows.shape), uu[:, None, :]], axis=1
     )
     return inverse_condition(stack)
+
+
+def _inverse_condition_number_iv(sensors, target, u) -> tuple:
+    """The rows ``o - p_i`` and ``u``: ``None``, one finite control ``(2,)`` or ``K`` of them
+    ``(K, 2)``."""
+    rows = _relative_rows_iv(sensors, target)
+    if u is None:
+        return rows, None
+    uu = as_float_array(u, "u")
+    return rows, as_point(uu, "u") if uu.ndim == 1 else as_points(uu, "u")
 
 
 def inverse_condition_numbers(rows, u=None) -> np.ndarray:
@@ -174,18 +192,16 @@ def inverse_condition_numbers(rows, u=None) -> np.ndarray:
     >>> inverse_condition_numbers([[[1, 1], [-1, 1]]], [[[1, 0]]]).round(6)
     array([[0.816497]])
     """
-    r = as_stack(rows, "rows", 2)
+    r, uu, single = _inverse_condition_numbers_iv(rows, u)
     p = pow2_scale(np.abs(r).max(axis=(-2, -1), initial=0.0))  # per scene, into the safe range
-    if u is not None:
-        uu = as_stack(u, "u", 1)
-        single = uu.ndim == r.ndim - 1
+    if uu is not None:
         if single:
             uu = uu[..., None, :]
         p = np.maximum(p, pow2_scale(np.abs(uu).max(axis=(-2, -1), initial=0.0)))
         uu = rescale(uu, p[..., None, None])
     r = rescale(r, p[..., None, None])
     det, tr = gram_parts(r)
-    if u is not None:
+    if uu is not None:
         ux, uy = uu[..., 0][..., None], uu[..., 1][..., None]  # (..., K, 1)
         cu = r[..., None, :, 0] * uy - r[..., None, :, 1] * ux  # (..., K, N): r_k x u
         det = det[..., None] + np.einsum("...k,...k->...", cu, cu)
@@ -193,6 +209,22 @@ def inverse_condition_numbers(rows, u=None) -> np.ndarray:
         if single:
             det, tr = det[..., 0], tr[..., 0]
     return ratio_from_gram(det, tr)
+
+
+def _inverse_condition_numbers_iv(rows, u) -> tuple:
+    """Finite rows ``(..., N, 2)``; finite controls ``(..., K, 2)`` or one per scene
+    ``(..., 2)`` (then ``single``), or ``None``; their scenes' shapes broadcast together."""
+    r = as_stack(rows, "rows", 2)
+    if u is None:
+        return r, None, False
+    uu = as_stack(u, "u", 1)
+    single = uu.ndim == r.ndim - 1
+    try:
+        np.broadcast_shapes(r.shape[:-2], uu.shape[:-1] if single else uu.shape[:-2])
+    except ValueError:
+        raise ValueError(f"the scenes of rows {r.shape} and u {uu.shape} do not broadcast "
+                         "together") from None
+    return r, uu, single
 
 
 def inverse_condition_numbers_polar(rows, radii, angles) -> np.ndarray:
@@ -224,16 +256,7 @@ def inverse_condition_numbers_polar(rows, radii, angles) -> np.ndarray:
     array([[[1.      ],
             [0.816497]]])
     """
-    r = as_stack(rows, "rows", 2)
-    if r.ndim != 3:
-        raise ValueError(f"rows must have shape (S, N, 2), got {r.shape}")
-    rho = as_float_array(radii, "radii")
-    phi = as_float_array(angles, "angles")
-    if rho.ndim != 2 or rho.shape[0] != r.shape[0] or phi.ndim != 1:
-        raise ValueError(f"need radii (S, R) with S = {r.shape[0]} and angles (A,), got "
-                         f"{rho.shape}, {phi.shape}")
-    if not (np.isfinite(rho).all() and np.isfinite(phi).all()) or (rho < 0).any():
-        raise ValueError("radii must be finite and non-negative, angles finite")
+    r, rho, phi = _polar_iv(rows, radii, angles)
     p = np.maximum(pow2_scale(np.abs(r).max(axis=(-2, -1), initial=0.0)),
                    pow2_scale(rho.max(axis=1, initial=0.0)))  # per scene, into the safe range
     r, rho = rescale(r, p[:, None, None]), rescale(rho, p[:, None])
@@ -245,3 +268,18 @@ def inverse_condition_numbers_polar(rows, radii, angles) -> np.ndarray:
     q = np.einsum("sak,sak->sa", c, c)  # (S, A): sum_k (r_k x e_phi)^2
     rho2 = (rho * rho)[:, :, None]  # (S, R, 1)
     return ratio_from_gram(det0[:, None, None] + rho2 * q[:, None, :], tr0[:, None, None] + rho2)
+
+
+def _polar_iv(rows, radii, angles) -> tuple:
+    """Finite rows ``(S, N, 2)``, finite non-negative radii ``(S, R)``, finite angles ``(A,)``."""
+    r = as_stack(rows, "rows", 2)
+    if r.ndim != 3:
+        raise ValueError(f"rows must have shape (S, N, 2), got {r.shape}")
+    rho = as_float_array(radii, "radii")
+    phi = as_float_array(angles, "angles")
+    if rho.ndim != 2 or rho.shape[0] != r.shape[0] or phi.ndim != 1:
+        raise ValueError(f"need radii (S, R) with S = {r.shape[0]} and angles (A,), got "
+                         f"{rho.shape}, {phi.shape}")
+    if not (np.isfinite(rho).all() and np.isfinite(phi).all()) or (rho < 0).any():
+        raise ValueError("radii must be finite and non-negative, angles finite")
+    return r, rho, phi

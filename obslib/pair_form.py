@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validate import as_float_array, as_int, as_nonnegative, as_positive, broadcast
+from ._validate import as_bool, as_float_array, as_int, as_nonnegative, as_positive, broadcast
 from .bounds import pair_bound_polar
 
 __all__ = [
@@ -51,11 +51,15 @@ def fine_grid(
     >>> theta / np.pi
     array([-1. , -0.5,  0. ,  0.5,  1. ])
     """
-    amax = as_positive(alpha_max, "alpha_max")
-    per = as_int(alpha_per_unit, "alpha_per_unit", 1)
-    m = as_int(theta_quarter, "theta_quarter", 1)
+    amax, per, m = _fine_grid_iv(alpha_max, alpha_per_unit, theta_quarter)
     n_a = int(np.floor(amax * per + 1e-9)) + 1
     return np.arange(n_a) / per, np.pi * (np.arange(4 * m + 1) / (2 * m) - 1.0)
+
+
+def _fine_grid_iv(alpha_max, alpha_per_unit, theta_quarter) -> tuple:
+    """A positive ``alpha_max`` and two counts of at least 1."""
+    return (as_positive(alpha_max, "alpha_max"), as_int(alpha_per_unit, "alpha_per_unit", 1),
+            as_int(theta_quarter, "theta_quarter", 1))
 
 
 def bound_surface(alpha, theta, u_max: float = 1.0, d_io: float = 1.0) -> np.ndarray:
@@ -83,14 +87,19 @@ def bound_surface(alpha, theta, u_max: float = 1.0, d_io: float = 1.0) -> np.nda
     array([[0.    , 0.    , 0.    ],
            [0.    , 0.7071, 0.4472]])
     """
+    a, t, u, d = _bound_surface_iv(alpha, theta, u_max, d_io)
+    A, T = np.meshgrid(a, t)
+    return pair_bound_polar(A, T, u / d)
+
+
+def _bound_surface_iv(alpha, theta, u_max, d_io) -> tuple:
+    """Non-empty 1-D axes, ``u_max >= 0`` and ``d_io > 0`` (the axes' values are checked by
+    :func:`obslib.pair_bound_polar`)."""
     a = as_float_array(alpha, "alpha")
     t = as_float_array(theta, "theta")
     if a.ndim != 1 or t.ndim != 1 or a.size == 0 or t.size == 0:
         raise ValueError("alpha and theta must be non-empty 1-D arrays")
-    u = as_nonnegative(u_max, "u_max")
-    d = as_positive(d_io, "d_io")
-    A, T = np.meshgrid(a, t)
-    return pair_bound_polar(A, T, u / d)
+    return a, t, as_nonnegative(u_max, "u_max"), as_positive(d_io, "d_io")
 
 
 @dataclass(frozen=True)
@@ -112,6 +121,16 @@ def grid_maximum(alpha, theta, Z, atol: float = 1e-12) -> GridMax:
     >>> round(m.value, 6), [(a, round(t / np.pi, 6)) for a, t in m.points]
     (0.707107, [(1.0, -0.5), (1.0, 0.5)])
     """
+    a, t, Z, atol = _grid_maximum_iv(alpha, theta, Z, atol)
+    top = float(Z.max())
+    k, l = np.nonzero(Z >= top - atol)
+    pts = tuple(sorted((float(a[j]), float(t[i])) for i, j in zip(k, l)))
+    return GridMax(top, tuple(sorted(pts, key=lambda p: p[1])))
+
+
+def _grid_maximum_iv(alpha, theta, Z, atol) -> tuple:
+    """Finite 1-D axes, a finite non-empty ``Z`` of shape ``(len(theta), len(alpha))`` and
+    ``atol >= 0``."""
     Z = as_float_array(Z, "Z")
     a = as_float_array(alpha, "alpha")
     t = as_float_array(theta, "theta")
@@ -122,15 +141,13 @@ def grid_maximum(alpha, theta, Z, atol: float = 1e-12) -> GridMax:
     for name, x in (("alpha", a), ("theta", t), ("Z", Z)):
         if not np.isfinite(x).all():
             raise ValueError(f"{name} must be finite")
-    atol = as_nonnegative(atol, "atol")
-    top = float(Z.max())
-    k, l = np.nonzero(Z >= top - atol)
-    pts = tuple(sorted((float(a[j]), float(t[i])) for i, j in zip(k, l)))
-    return GridMax(top, tuple(sorted(pts, key=lambda p: p[1])))
+    return a, t, Z, as_nonnegative(atol, "atol")
 
 
 # --- Theorem 5: the maximising alpha for a fixed theta -------------------------------------------
 def _theta_q_iv(theta, u_over_d):
+    """Finite ``theta``, not a multiple of pi, and finite ``u_over_d >= 0``, broadcast
+    together: the arguments of :func:`maximising_alpha_closed`."""
     th = as_float_array(theta, "theta")
     q = as_float_array(u_over_d, "u_over_d")
     if not np.isfinite(th).all():
@@ -282,8 +299,7 @@ def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):
     >>> maximising_alpha([np.pi / 4, np.pi / 2], 0.0)
     array([1., 1.])
     """
-    th, q = _theta_q_iv(theta, u_over_d)
-    xtol = as_positive(xtol, "xtol")
+    th, q, xtol = _maximising_alpha_iv(theta, u_over_d, xtol)
     shape = th.shape
     th, q = th.ravel(), q.ravel()
     out = np.ones(th.size)
@@ -307,6 +323,12 @@ def maximising_alpha(theta, u_over_d, xtol: float = 1e-14):
     out[inner] = 0.5 * (lo + hi)
     out = out.reshape(shape)
     return float(out) if out.ndim == 0 else out
+
+
+def _maximising_alpha_iv(theta, u_over_d, xtol) -> tuple:
+    """:func:`_theta_q_iv`, and a positive ``xtol``."""
+    th, q = _theta_q_iv(theta, u_over_d)
+    return th, q, as_positive(xtol, "xtol")
 
 
 def maximising_alpha_closed(theta, u_over_d):
@@ -348,7 +370,7 @@ def random_symmetric_2x2(n: int, seed: int, psd: bool = False) -> np.ndarray:
     >>> bool((np.linalg.eigvalsh(X)[:, 0] >= -1e-9 * np.abs(X).max()).all())
     True
     """
-    n = as_int(n, "n", 1)
+    n, seed, psd = _random_symmetric_2x2_iv(n, seed, psd)
     rng = np.random.default_rng(seed)
     scale = 10.0 ** rng.uniform(-3, 3, size=(n, 1, 1))
     if not psd:
@@ -357,6 +379,11 @@ def random_symmetric_2x2(n: int, seed: int, psd: bool = False) -> np.ndarray:
     rows = rng.normal(size=(n, 3, 2))
     rows[: n // 4, 1:] = 0.0
     return scale * np.einsum("nki,nkj->nij", rows, rows)
+
+
+def _random_symmetric_2x2_iv(n, seed, psd) -> tuple:
+    """A count of at least 1, a seed (an integer >= 0) and a flag."""
+    return as_int(n, "n", 1), as_int(seed, "seed", 0), as_bool(psd, "psd")
 
 
 def weyl_2x2_slacks(X, Y) -> dict[str, np.ndarray]:
@@ -383,16 +410,7 @@ def weyl_2x2_slacks(X, Y) -> dict[str, np.ndarray]:
     l2 >= l2+l1: 0.0
     ratio: 0.8
     """
-    X = as_float_array(X, "X")
-    Y = as_float_array(Y, "Y")
-    if X.shape != Y.shape or X.ndim < 2 or X.shape[-2:] != (2, 2):
-        raise ValueError(
-            f"X and Y must have the same shape (..., 2, 2), got {X.shape} and {Y.shape}"
-        )
-    if not (np.isfinite(X).all() and np.isfinite(Y).all()):
-        raise ValueError("X and Y must be finite")
-    if not (np.allclose(X, np.swapaxes(X, -1, -2)) and np.allclose(Y, np.swapaxes(Y, -1, -2))):
-        raise ValueError("X and Y must be symmetric")
+    X, Y = _weyl_2x2_slacks_iv(X, Y)
     x = np.linalg.eigvalsh(X)
     y = np.linalg.eigvalsh(Y)
     s = np.linalg.eigvalsh(X + Y)
@@ -410,3 +428,18 @@ def weyl_2x2_slacks(X, Y) -> dict[str, np.ndarray]:
         ratio = s1 / s2 - (x1 + y1) / (x2 + y2)
     out["ratio"] = np.where(psd, ratio, np.nan)
     return out
+
+
+def _weyl_2x2_slacks_iv(X, Y) -> tuple:
+    """Finite symmetric ``X``, ``Y`` of one shape ``(..., 2, 2)``."""
+    X = as_float_array(X, "X")
+    Y = as_float_array(Y, "Y")
+    if X.shape != Y.shape or X.ndim < 2 or X.shape[-2:] != (2, 2):
+        raise ValueError(
+            f"X and Y must have the same shape (..., 2, 2), got {X.shape} and {Y.shape}"
+        )
+    if not (np.isfinite(X).all() and np.isfinite(Y).all()):
+        raise ValueError("X and Y must be finite")
+    if not (np.allclose(X, np.swapaxes(X, -1, -2)) and np.allclose(Y, np.swapaxes(Y, -1, -2))):
+        raise ValueError("X and Y must be symmetric")
+    return X, Y

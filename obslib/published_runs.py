@@ -272,10 +272,15 @@ def published_run(name: str) -> PublishedRun:
     PublishedRun
         Arrays are fresh copies; fields a run did not log are None.
     """
-    if not isinstance(name, str) or name not in RUN_NAMES:
-        raise ValueError(f"unknown published run {name!r}; accepted names: {', '.join(RUN_NAMES)}")
-    r = _run(name)
+    r = _run(_published_run_iv(name))
     copies = {
         f: (v.copy() if isinstance(v, np.ndarray) else v) for f, v in vars(r).items()
     }
     return PublishedRun(**copies)
+
+
+def _published_run_iv(name) -> str:
+    """One of :data:`RUN_NAMES`."""
+    if not isinstance(name, str) or name not in RUN_NAMES:
+        raise ValueError(f"unknown published run {name!r}; accepted names: {', '.join(RUN_NAMES)}")
+    return name

@@ -76,11 +76,7 @@ def random_scene(
     >>> s.sensors.shape, s.kind
     ((3, 2), 'generic')
     """
-    rng = as_instance(rng, np.random.Generator, "rng")
-    if as_str(kind, "kind") not in SCENE_KINDS:
-        raise ValueError(f"kind must be one of {SCENE_KINDS}, got {kind!r}")
-    n_sensors = as_int(n_sensors, "n_sensors", 1)
-    scale = as_positive(scale, "scale")
+    rng, n_sensors, kind, scale = _random_scene_iv(rng, n_sensors, kind, scale)
     target = rng.uniform(-scale, scale, size=2)
     if kind == "generic":
         offsets = rng.uniform(-scale, scale, size=(n_sensors, 2))
@@ -100,6 +96,15 @@ def random_scene(
     sensors = target[None, :] + offsets
     u_max = float(scale * 10.0 ** rng.uniform(-2.0, 1.0))
     return Scene(sensors=sensors, target=target, u_max=u_max, kind=kind)
+
+
+def _random_scene_iv(rng, n_sensors, kind, scale) -> tuple:
+    """A NumPy generator, at least one sensor, a kind of :data:`SCENE_KINDS`, a positive
+    scale."""
+    rng = as_instance(rng, np.random.Generator, "rng")
+    if as_str(kind, "kind") not in SCENE_KINDS:
+        raise ValueError(f"kind must be one of {SCENE_KINDS}, got {kind!r}")
+    return rng, as_int(n_sensors, "n_sensors", 1), kind, as_positive(scale, "scale")
 
 
 def _draw_iv(n_scenes, seed, n_sensors, scale, kinds, min_scenes):
@@ -242,5 +247,11 @@ def random_scene_batch(
     u_max = s * 10.0 ** rng.uniform(-2.0, 1.0, size=S)
     sensors = targets[:, None, :] + offsets
     sensors[np.arange(M)[None, :] >= counts[:, None]] = np.nan
-    check_scene_batch(sensors, targets, counts)
-    return SceneBatch(sensors, targets, u_max, tuple(names.tolist()), counts)
+    return _checked(SceneBatch(sensors, targets, u_max, tuple(names.tolist()), counts))
+
+
+def _checked(batch: SceneBatch) -> SceneBatch:
+    """``batch``, after the checks input scenes get (:func:`obslib._validate.check_scene_batch`):
+    a draw of probability zero (a sensor on its target, two coincident sensors) raises."""
+    check_scene_batch(batch.sensors, batch.targets, batch.counts)
+    return batch

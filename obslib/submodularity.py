@@ -328,9 +328,7 @@ def set_function_table(ground, f: Callable[[tuple], float], min_size: int = 0) -
     >>> set_function_table(2, lambda s: float(len(s) > 0))
     array([0., 1., 1., 1.])
     """
-    n = _ground_size(ground)
-    m = _min_size_iv(min_size, n)
-    as_callable(f, "f")
+    n, f, m = _set_function_table_iv(ground, f, min_size)
     pc = _popcount(n)
     out = np.full(2**n, np.nan)
     for k in range(2**n):
@@ -346,8 +344,17 @@ def set_function_table(ground, f: Callable[[tuple], float], min_size: int = 0) -
     return out
 
 
-def _prepare_tables(values, n: int, min_size: int, rtol: float, atol: float):
-    """Validate tables for :func:`audit_tables` / :func:`audit_flags`; return ``n, m, v, tol``."""
+def _set_function_table_iv(ground, f, min_size) -> tuple:
+    """The ground set's size, a function, and ``0 <= min_size <= N``."""
+    n = _ground_size(ground)
+    m = _min_size_iv(min_size, n)
+    return n, as_callable(f, "f"), m
+
+
+def _tables_iv(values, n: int, min_size: int, rtol: float, atol: float):
+    """The arguments of :func:`audit_tables` and :func:`audit_flags`: ``n``, ``min_size``, the
+    tables ``(I, 2**N)`` (finite on the sets compared) and each table's tolerance
+    ``rtol * max |f| + atol``."""
     n = _ground_size(as_int(n, "n", 0))
     m = _min_size_iv(min_size, n)
     rtol, atol = as_nonnegative(rtol, "rtol"), as_nonnegative(atol, "atol")
@@ -400,7 +407,7 @@ def audit_tables(values, n: int, min_size: int = 0, rtol: float = RTOL,
     >>> modular.modular, coverage.submodular, coverage.supermodular
     (True, True, False)
     """
-    n, m, v, tol = _prepare_tables(values, n, min_size, rtol, atol)
+    n, m, v, tol = _tables_iv(values, n, min_size, rtol, atol)
     pa, px = _additions(n, m)
     ta, tb, tx = _triples(n, m)
     pax = pa | (1 << px)
@@ -545,7 +552,7 @@ def audit_flags(values, n: int, min_size: int = 0, rtol: float = RTOL,
     >>> flags.not_submodular, flags.not_supermodular
     (array([False, False]), array([False,  True]))
     """
-    n, m, v, tol = _prepare_tables(values, n, min_size, rtol, atol)
+    n, m, v, tol = _tables_iv(values, n, min_size, rtol, atol)
     n_i = v.shape[0]
     inc = np.zeros(n_i, dtype=bool)
     sup = np.zeros(n_i, dtype=bool)
@@ -632,13 +639,20 @@ def audit_set_function(
     >>> w.A, w.B, w.x, w.gain_A, w.gain_B
     ((), (0,), 1, 0.0, 1.0)
     """
+    n = _audit_set_function_iv(ground, f, values)
+    if values is None:
+        values = set_function_table(n, f, min_size)
+    return audit_tables(values, n, min_size, rtol, atol)[0]
+
+
+def _audit_set_function_iv(ground, f, values) -> int:
+    """The ground set's size, given exactly one of ``f`` and ``values`` (each checked by the
+    function it goes to)."""
     n = _ground_size(ground)
     if (f is None) == (values is None):
         raise ValueError("give exactly one of f and values, got "
                          + ("both" if f is not None else "neither"))
-    if values is None:
-        values = set_function_table(n, f, min_size)
-    return audit_tables(values, n, min_size, rtol, atol)[0]
+    return n
 
 
 def table_values(table) -> dict:
@@ -650,8 +664,14 @@ def table_values(table) -> dict:
     >>> table_values([0.0, 1.0, 2.0, 4.0])
     {(): 0.0, (0,): 1.0, (1,): 2.0, (0, 1): 4.0}
     """
+    t, n = _table_values_iv(table)
+    return {_members(k, n): float(t[k]) for k in range(t.size)}
+
+
+def _table_values_iv(table) -> tuple:
+    """A 1-D table of length ``2**N``, and ``N``."""
     t = as_float_array(table, "table")
     n = max(t.size.bit_length() - 1, 0)
     if t.ndim != 1 or t.size != 1 << n:
         raise ValueError(f"table must be 1-D of length 2**N, got shape {t.shape}")
-    return {_members(k, n): float(t[k]) for k in range(t.size)}
+    return t, n

@@ -46,20 +46,36 @@ MAXIMISABLE = ("trace", "logdet", "rank", "neg_trace_inverse")
 MAX_ASSIGNMENTS = 2_000_000
 
 
-def _rows(sensors, targets, u):
+def _scene_iv(sensors, targets, u):
+    """The validated vectors ``o_l - p_i`` ``(N, L, 2)`` and the controls ``(L, 2)`` (finite) or
+    ``None``."""
     v = relative_vectors(sensors, targets)  # (N, L, 2), validated
-    if u is not None:
-        uu = as_float_array(u, "u")
-        try:
-            uu = np.broadcast_to(uu, (v.shape[1], 2))
-        except ValueError:
-            raise ValueError(
-                f"u must have shape (2,) or ({v.shape[1]}, 2), got {uu.shape}"
-            ) from None
-        uu = as_points(uu, "u")
+    if u is None:
+        return v, None
+    uu = as_float_array(u, "u")
+    try:
+        uu = np.broadcast_to(uu, (v.shape[1], 2))
+    except ValueError:
+        raise ValueError(
+            f"u must have shape (2,) or ({v.shape[1]}, 2), got {uu.shape}"
+        ) from None
+    return v, as_points(uu, "u")
+
+
+def _teams_iv(sensors, targets, measure, eps, u, rank_rtol, maximisable: bool) -> tuple:
+    """``eps`` and the measure (one the greedy can maximise when ``maximisable``), ``rank_rtol``,
+    then the scene (:func:`_scene_iv`) with at least one target: ``(v, uu, measure, eps,
+    rank_rtol)``."""
+    e = as_eps(eps)
+    if maximisable:
+        check_maximisable(measure, e, MEASURES, MAXIMISABLE)
     else:
-        uu = np.zeros((v.shape[1], 2))
-    return v, uu
+        as_measure_name(measure, MEASURES)
+    rank_rtol = as_rank_rtol(rank_rtol)
+    v, uu = _scene_iv(sensors, targets, u)
+    if maximisable and v.shape[1] < 1:
+        raise ValueError("there must be at least one target")
+    return v, uu, measure, e, rank_rtol
 
 
 def greedy_team_assignment(sensors, targets, measure: str = "logdet", eps: float = 1.0, u=None,
@@ -100,14 +116,9 @@ def greedy_team_assignment(sensors, targets, measure: str = "logdet", eps: float
     >>> greedy_team_assignment(S, T, "rank")
     [[0, 1], [2, 3]]
     """
-    e = as_eps(eps)
-    check_maximisable(measure, e, MEASURES, MAXIMISABLE)
-    rank_rtol = as_rank_rtol(rank_rtol)
-    v, uu = _rows(sensors, targets, u)
-    if v.shape[1] < 1:
-        raise ValueError("there must be at least one target")
+    v, uu, measure, e, rank_rtol = _teams_iv(sensors, targets, measure, eps, u, rank_rtol, True)
     picks_i, picks_l = _greedy_teams(
-        v[None], uu[None] if u is not None else None, measure, e, rank_rtol
+        v[None], uu[None] if uu is not None else None, measure, e, rank_rtol
     )
     teams: list[list[int]] = [[] for _ in range(v.shape[1])]
     for i, l in zip(picks_i[0].tolist(), picks_l[0].tolist()):
@@ -139,6 +150,15 @@ def greedy_team_picks(sensors, targets, measure: str = "logdet", eps: float = 1.
     >>> picks_i.tolist(), picks_l.tolist()
     ([[0, 1, 2, 3]], [[0, 0, 1, 1]])
     """
+    v, measure, e, rank_rtol = _greedy_team_picks_iv(sensors, targets, measure, eps, rank_rtol)
+    if v.shape[0] == 0:
+        return np.zeros((0, v.shape[1]), np.int64), np.zeros((0, v.shape[1]), np.int64)
+    return _greedy_teams(v, None, measure, e, rank_rtol)
+
+
+def _greedy_team_picks_iv(sensors, targets, measure, eps, rank_rtol) -> tuple:
+    """A maximisable measure, ``eps`` and ``rank_rtol``, and the validated vectors of every
+    instance ``(K, N, L, 2)``, ``L >= 1``: ``(v, measure, eps, rank_rtol)``."""
     e = as_eps(eps)
     check_maximisable(measure, e, MEASURES, MAXIMISABLE)
     rank_rtol = as_rank_rtol(rank_rtol)
@@ -150,9 +170,8 @@ def greedy_team_picks(sensors, targets, measure: str = "logdet", eps: float = 1.
     if T.shape[1] < 1:
         raise ValueError("there must be at least one target")
     if S.shape[0] == 0:
-        return np.zeros((0, S.shape[1]), np.int64), np.zeros((0, S.shape[1]), np.int64)
-    v = _batch_vectors(S, T)  # validated, (K, N, L, 2)
-    return _greedy_teams(v, None, measure, e, rank_rtol)
+        return np.zeros((0, S.shape[1], T.shape[1], 2)), measure, e, rank_rtol
+    return _batch_vectors(S, T), measure, e, rank_rtol  # validated, (K, N, L, 2)
 
 
 def _batch_vectors(S, T) -> np.ndarray:
@@ -185,8 +204,10 @@ def greedy_team_counts(sensors, targets, measure: str = "logdet", eps: float = 1
     >>> greedy_team_counts([S], [T], "rank")
     array([[2, 2]])
     """
-    _, picks_l = greedy_team_picks(sensors, targets, measure, eps, rank_rtol)
-    n_targets = np.shape(targets)[1]
+    v, measure, e, rank_rtol = _greedy_team_picks_iv(sensors, targets, measure, eps, rank_rtol)
+    n_targets = v.shape[2]
+    picks_l = (_greedy_teams(v, None, measure, e, rank_rtol)[1] if v.shape[0]
+               else np.zeros((0, v.shape[1]), np.int64))
     return (
         np.stack([np.bincount(p, minlength=n_targets) for p in picks_l])
         if len(picks_l)
@@ -289,21 +310,26 @@ def team_value(sensors, targets, teams, measure: str = "logdet", eps: float = 1.
     >>> team_value(S, T, [[0, 1], [2, 3]], "rank")  # both teams have rank 2
     4.0
     """
-    e = as_eps(eps)
-    as_measure_name(measure, MEASURES)
-    v, uu = _rows(sensors, targets, u)
+    v, uu, measure, e, rank_rtol, teams = _team_value_iv(sensors, targets, teams, measure, eps,
+                                                         u, rank_rtol)
+    total = 0.0
+    for l, team in enumerate(teams):
+        mask = np.zeros((1, v.shape[0]), dtype=bool)
+        mask[0, list(team)] = True
+        uu_l = uu[l] if uu is not None else None
+        total += float(measure_from_vectors(v[:, l, :], mask, measure, e, uu_l, rank_rtol)[0])
+    return total
+
+
+def _team_value_iv(sensors, targets, teams, measure, eps, u, rank_rtol) -> tuple:
+    """:func:`_teams_iv` (any measure), and one team per target of distinct sensors in range."""
+    v, uu, measure, e, rank_rtol = _teams_iv(sensors, targets, measure, eps, u, rank_rtol, False)
     if len(teams) != v.shape[1]:
         raise ValueError(f"need one team per target ({v.shape[1]}), got {len(teams)}")
     members = [i for t in teams for i in t]
     if len(members) != len(set(members)) or any(not 0 <= i < v.shape[0] for i in members):
         raise ValueError("teams must use distinct sensor indices in range")
-    total = 0.0
-    for l, team in enumerate(teams):
-        mask = np.zeros((1, v.shape[0]), dtype=bool)
-        mask[0, list(team)] = True
-        uu_l = uu[l] if u is not None else None
-        total += float(measure_from_vectors(v[:, l, :], mask, measure, e, uu_l, rank_rtol)[0])
-    return total
+    return v, uu, measure, e, rank_rtol, teams
 
 
 def optimal_team_assignment(sensors, targets, measure: str = "logdet", eps: float = 1.0, u=None,
@@ -324,18 +350,14 @@ def optimal_team_assignment(sensors, targets, measure: str = "logdet", eps: floa
     >>> optimal_team_assignment(S, T, "rank")
     ([[0, 1], [2, 3]], 4.0)
     """
-    e = as_eps(eps)
-    as_measure_name(measure, MEASURES)
-    v, uu = _rows(sensors, targets, u)
+    v, uu, measure, e, rank_rtol = _optimal_team_assignment_iv(sensors, targets, measure, eps,
+                                                               u, rank_rtol)
     n, n_targets = v.shape[0], v.shape[1]
-    if n_targets < 1:
-        raise ValueError("there must be at least one target")
-    _check_assignments(n, n_targets)
     masks = subset_masks(n)
     tables = np.stack(
         [
             measure_from_vectors(
-                v[:, l, :], masks, measure, e, uu[l] if u is not None else None, rank_rtol
+                v[:, l, :], masks, measure, e, uu[l] if uu is not None else None, rank_rtol
             )
             for l in range(n_targets)
         ]
@@ -343,6 +365,15 @@ def optimal_team_assignment(sensors, targets, measure: str = "logdet", eps: floa
     labels, total = best_team_labelling(tables)
     teams = [[int(i) for i in np.flatnonzero(labels == l)] for l in range(n_targets)]
     return teams, float(total)
+
+
+def _optimal_team_assignment_iv(sensors, targets, measure, eps, u, rank_rtol) -> tuple:
+    """:func:`_teams_iv` (any measure), at least one target, and few enough assignments."""
+    v, uu, measure, e, rank_rtol = _teams_iv(sensors, targets, measure, eps, u, rank_rtol, False)
+    if v.shape[1] < 1:
+        raise ValueError("there must be at least one target")
+    _check_assignments(v.shape[0], v.shape[1])
+    return v, uu, measure, e, rank_rtol
 
 
 def best_team_labelling(tables) -> tuple[np.ndarray, np.ndarray]:
@@ -372,6 +403,21 @@ def best_team_labelling(tables) -> tuple[np.ndarray, np.ndarray]:
     >>> labels.tolist(), float(total)
     ([0, 1], 5.0)
     """
+    t, n = _best_team_labelling_iv(tables)
+    n_targets = t.shape[0]
+    labels, team_masks = _labellings(n, n_targets)
+    total = np.zeros(t.shape[1:-1] + (team_masks.shape[1],))
+    for l, mask in enumerate(team_masks):
+        total += t[l][..., mask]
+    if np.isnan(total).any():
+        raise RuntimeError("an assignment's total is NaN")
+    best = np.argmax(total, axis=-1)
+    return labels[best], np.take_along_axis(total, best[..., None], axis=-1)[..., 0]
+
+
+def _best_team_labelling_iv(tables) -> tuple:
+    """Tables ``(L, ..., 2**N)``, ``L >= 1``, without NaN and with few enough assignments, and
+    ``N``."""
     t = as_float_array(tables, "tables")
     if t.ndim < 2 or t.shape[0] < 1:
         raise ValueError(f"tables must have shape (L, ..., 2**N) with L >= 1, got {t.shape}")
@@ -382,16 +428,8 @@ def best_team_labelling(tables) -> tuple[np.ndarray, np.ndarray]:
         )
     if np.isnan(t).any():
         raise ValueError("tables has a NaN entry")
-    n_targets = t.shape[0]
-    _check_assignments(n, n_targets)
-    labels, team_masks = _labellings(n, n_targets)
-    total = np.zeros(t.shape[1:-1] + (team_masks.shape[1],))
-    for l, mask in enumerate(team_masks):
-        total += t[l][..., mask]
-    if np.isnan(total).any():
-        raise RuntimeError("an assignment's total is NaN")
-    best = np.argmax(total, axis=-1)
-    return labels[best], np.take_along_axis(total, best[..., None], axis=-1)[..., 0]
+    _check_assignments(n, t.shape[0])
+    return t, n
 
 
 def _check_assignments(n: int, n_targets: int) -> None:

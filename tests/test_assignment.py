@@ -217,8 +217,21 @@ def test_bad_geometry_for_greedy():
         greedy_pair_assignment(sensors=[[0, 0], [1, 1]], targets=[[5, 5]])
 
 
+def full_matching_value(W, ordered=False) -> float:
+    """Problem 3's optimum by a dense assignment over every pair (``i < j``, and ``j > i`` too
+    when ``ordered``): no pruning, another algorithm than the library's sparse matching."""
+    from scipy.optimize import linear_sum_assignment
+
+    ii, jj = np.triu_indices(W.shape[0], 1)
+    cost = W[ii, jj, :].T
+    if ordered:
+        cost = np.concatenate([cost, cost], axis=1)
+    r, c = linear_sum_assignment(cost, maximize=True)
+    return float(cost[r, c].sum())
+
+
 def test_pruned_relaxation_equals_the_full_matching():
-    # relaxed_from_geometry matches only each target's L best pairs; the full LSA sees every pair
+    # the solver matches only each target's L best pairs; a dense assignment sees every pair
     from obslib.assignment import relaxed_from_geometry
 
     rng = np.random.default_rng(11)
@@ -226,14 +239,30 @@ def test_pruned_relaxation_equals_the_full_matching():
         L, extra = int(rng.integers(1, 9)), int(rng.integers(0, 5))
         S, T, W = random_instance(rng, L, extra, grid=bool(rng.integers(2)))
         plain, ordered = relaxed_from_geometry(S, T, 1.0)
-        full, full_ordered = relaxed_pair_assignment(W), relaxed_pair_assignment(W, ordered=True)
-        assert plain.value == pytest.approx(full.value, rel=1e-12, abs=1e-15)
-        assert ordered.value == pytest.approx(full_ordered.value, rel=1e-12, abs=1e-15)
+        for res, flag in ((plain, False), (ordered, True), (relaxed_pair_assignment(W), False),
+                          (relaxed_pair_assignment(W, ordered=True), True)):
+            assert res.value == pytest.approx(full_matching_value(W, flag), rel=1e-12, abs=1e-15)
         assert plain.value == pytest.approx(sum(W[i, j, l] for i, j, l in plain.triples), rel=1e-12)
         assert len({(i, j) for i, j, _ in plain.triples}) == L and sorted(
             l for *_, l in plain.triples
         ) == list(range(L))
         assert all(i < j for i, j, _ in ordered.triples)
+
+
+def test_problem_3_has_one_solver_for_weights_and_geometry():
+    # from weights or from geometry, the same candidates and matching: the same triples
+    rng = np.random.default_rng(12)
+    for _ in range(50):
+        S, T, W = random_instance(rng, int(rng.integers(1, 7)), int(rng.integers(0, 4)))
+        for ordered in (False, True):
+            a = relaxed_pair_assignment(W, ordered)
+            b = relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0, ordered=ordered)
+            assert a.triples == b.triples and a.value == pytest.approx(b.value, rel=1e-12)
+    # fewer pairs than targets: every pair serves one target, the heaviest assignment of them
+    W = np.zeros((2, 2, 3))
+    W[0, 1] = W[1, 0] = [0.2, 0.7, 0.5]
+    assert relaxed_pair_assignment(W).triples == [(0, 1, 1)]
+    assert relaxed_pair_assignment(W, ordered=True).triples == [(0, 1, 1), (0, 1, 2)]
 
 
 def test_pruned_relaxation_skips_most_weights_on_large_instances():
@@ -457,3 +486,64 @@ def test_pair_search_returns_every_pair_down_to_its_floor():
                 assert floor == -np.inf or a.size >= k
                 W = {(i, j): v for i, j, v in zip(ii.tolist(), jj.tolist(), every.tolist())}
                 assert all(W[min(p, q), max(p, q)] == v for p, q, v in zip(a, b, w))
+
+
+def test_geometry_solvers_refuse_what_does_not_fit_before_allocating():
+    # a million sensors and a thousand targets: 15 GiB of rows, refused with the size and what
+    # fits, having allocated little more than the input (measured: tracemalloc's peak)
+    import tracemalloc
+
+    from obslib._memory import MAX_GEOMETRY_BYTES, geometry_bytes
+
+    rng = np.random.default_rng(0)
+    S, T = rng.uniform(0, 1e6, (1_000_000, 2)), rng.uniform(0, 1e6, (1_000, 2))
+    calls = {
+        "greedy_pair_assignment": lambda: greedy_pair_assignment(sensors=S, targets=T, u_max=1.0),
+        "relaxed_pair_assignment": lambda: relaxed_pair_assignment(sensors=S, targets=T,
+                                                                   u_max=1.0),
+        "upper_pair_weight_blocks": lambda: ob.assignment.upper_pair_weight_blocks(S, T, 1.0),
+    }
+    for name, call in calls.items():
+        tracemalloc.start()
+        with pytest.raises(ValueError) as exc:
+            call()
+        peak = tracemalloc.get_traced_memory()[1]
+        tracemalloc.stop()
+        message = str(exc.value)
+        assert message.startswith(f"{name} from geometry needs about ") and "GiB" in message
+        assert "N = 1,000,000 sensors and L = 1,000 targets" in message and "fit" in message
+        assert peak < 200 * 2**20, (name, peak)  # the input is 16 MB; the rows would be 15 GiB
+    # what the message says fits does fit, and one more does not
+    import re
+
+    n_fit, l_fit = (int(v.replace(",", "")) for v in re.search(
+        r"at most N = ([\d,]+) sensors with these 1,000 targets or L = ([\d,]+) targets",
+        str(exc.value)).groups())
+    for (n, L), more in (((n_fit, 1000), (n_fit + 1, 1000)), ((1_000_000, l_fit),
+                                                             (1_000_000, l_fit + 1))):
+        assert geometry_bytes(n, L, "greedy") <= MAX_GEOMETRY_BYTES < geometry_bytes(*more,
+                                                                                     "greedy")
+    with pytest.raises(ValueError, match=r"\(L, P\) = \(2, 199990000\) array of pair weights "
+                       r"needs 3.0 GiB.*upper_pair_weight_blocks"):
+        ob.assignment.upper_pair_weights(S[:20_000], T[:2], 1.0)
+
+
+def test_the_geometry_memory_estimate_bounds_the_measured_peak():
+    # the estimate is an upper bound of what the solvers take (tracemalloc counts NumPy's arrays)
+    import tracemalloc
+
+    from obslib._memory import geometry_bytes
+
+    rng = np.random.default_rng(1)
+    for n, L in ((1000, 500), (20_000, 10)):
+        S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (L, 2))
+        for what, call in (
+            ("greedy", lambda: greedy_pair_assignment(sensors=S, targets=T, u_max=1.0)),
+            ("relaxed", lambda: relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0)),
+            ("relaxed, both", lambda: ob.assignment.relaxed_from_geometry(S, T, 1.0)),
+        ):
+            tracemalloc.start()
+            call()
+            peak = tracemalloc.get_traced_memory()[1]
+            tracemalloc.stop()
+            assert peak <= geometry_bytes(n, L, what), (what, n, L, peak)

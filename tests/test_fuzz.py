@@ -3,7 +3,10 @@
 Each call either returns a finite, valid result or raises ValueError/TypeError whose message
 names the argument at fault; nothing hangs (a deadline per example) and nothing returns NaN.
 Hypothesis draws random shapes, dtypes, NaN/inf, scales from 1e-300 to 1e300 and degenerate
-geometry (coincident and collinear points). The whole file runs in well under a minute.
+geometry (coincident and collinear points), and arrays NumPy would misread without a word (a
+masked entry, a bool among numbers, numbers as text). The arguments handed on to joblib and Dask
+are refused by name before any worker starts or any connection is tried. The whole file runs in
+well under a minute.
 """
 
 from __future__ import annotations
@@ -359,13 +362,16 @@ def _cli_mains():
     from obslib.tools import bench, run
 
     stubs = [mock.patch.object(_io, "write_output", lambda *a, **k: True),
+             mock.patch.object(_io, "write_or_report", lambda *a, **k: True),
+             mock.patch.object(bench, "write_or_report", lambda *a, **k: True),
+             mock.patch.object(run, "write_output", lambda *a, **k: True),
              mock.patch.object(run, "execute_all", lambda *a, **k: {}),
              mock.patch.object(run, "precompile", lambda: None),
              mock.patch.object(run, "TIMES_FILE", TMP / "fuzz_times.json"),
              mock.patch.object(run, "EXECUTION_PAGE", TMP / "fuzz_execution.md"),
              mock.patch.object(run, "RUNS_DIR", TMP / "fuzz_runs"),
              mock.patch.object(claims_cli, "evaluate", lambda *a, **k: []),
-             mock.patch.object(claims_cli, "write_output", lambda *a, **k: True),
+             mock.patch.object(claims_cli, "write_or_report", lambda *a, **k: True),
              mock.patch.object(robustness, "verdict_robustness", lambda *a, **k: []),
              mock.patch.object(robustness, "write_json", lambda *a, **k: True),
              mock.patch.object(claims, "evaluate", lambda *a, **k: []),
@@ -597,7 +603,11 @@ FUZZ_EXAMPLES = int(os.environ.get("OBSLIB_FUZZ_EXAMPLES", 25))
 
 #: Wrong types and wrong values, one of which is given to one argument at a time.
 HOSTILE = [None, True, "x", 1 + 1j, np.nan, -np.inf, -1, 2.5, 0, [], [[np.nan, 0.0]],
-           np.zeros((2, 3)), np.array(["a", "b"]), {"a": 1}, object()]
+           np.zeros((2, 3)), np.array(["a", "b"]), {"a": 1}, object(),
+           # arrays NumPy would misread without a word: a masked entry, a bool among numbers,
+           # numbers as text in an object array
+           np.ma.masked_array([[0.0, 1.0], [2.0, 3.0]], mask=[[False, True], [False, False]]),
+           [[0.0, 1.0], [True, 2.0]], np.array([["1.5", 2.0]], dtype=object)]
 
 #: Where an argument's error may be named by a part of it: an entry or a row of an array
 #: (``sensor 1 ...``, ``W[0, 1, 0] ...``, ``cov 0 ...``, ``each seed ...``).
@@ -720,3 +730,126 @@ def test_public_function_refuses_a_wrong_argument_by_name(qualname, data, tmp_pa
         assert qualname in DOCUMENTED_NAN or not _has_nan(out), f"{qualname}({args}): NaN {out!r}"
     finally:
         plt.close("all")
+
+
+# --------------------------------------------------------------------------- what numpy misreads
+
+
+#: Arrays NumPy reads silently as something else, per kind: a masked entry read as a number, a
+#: bool among numbers read as 0 or 1, numeric text in an object array read as a number.
+def _misread(good: np.ndarray) -> dict:
+    mask = np.zeros(good.shape, dtype=bool)
+    mask.flat[-1] = True
+    with_bool = good.tolist()
+    flat = with_bool
+    while isinstance(flat[-1], list):
+        flat = flat[-1]
+    flat[-1] = True
+    text = good.astype(object)
+    text.flat[-1] = str(good.flat[-1])
+    return {"masked": np.ma.masked_array(good, mask=mask), "bool": with_bool, "text": text}
+
+
+S4 = np.array([[-3.0, 2.0], [0.0, 0.0], [1.0, -1.0], [4.0, 0.5]])
+T2 = np.array([[2.0, 3.0], [5.0, 3.0]])
+W4 = ob.pair_bounds(S4, T2, 1.0)
+
+#: (call taking the argument, argument's name, a good value of it)
+ARRAY_ARGUMENTS = [
+    (lambda x: ob.lower_bound(x, T2[0], 1.0), "sensors", S4),
+    (lambda x: ob.lower_bound(S4, x, 1.0), "target", T2[0]),
+    (lambda x: ob.inverse_condition_number(S4, T2[0], x), "u", np.array([0.3, 0.1])),
+    (lambda x: ob.pair_bounds(S4, x, 1.0), "targets", T2),
+    (lambda x: ob.pair_bounds(S4, T2, x), "u_max", np.array([1.0, 2.0])),
+    (lambda x: ob.pair_bounds(S4, T2, 1.0, cov=x), "cov", np.array([[2.0, 0.3], [0.3, 1.0]])),
+    (lambda x: ob.pair_bound_polar(x, 1.0, 1.0), "alpha", np.array([0.5, 2.0])),
+    (lambda x: ob.greedy_pair_assignment(x), "W", W4),
+    (lambda x: ob.relaxed_pair_assignment(sensors=x, targets=T2, u_max=1.0), "sensors", S4),
+    (lambda x: ob.optimal_pair_assignment(x), "W", W4),
+    (lambda x: ob.measure(S4, T2[0], "trace", u=x), "u", np.array([0.3, 0.1])),
+    (lambda x: ob.greedy_team_assignment(S4, x), "targets", T2),
+    (lambda x: ob.bounds.lower_bounds(x, 1.0), "rows", S4[None] - T2[:1, None]),
+    (lambda x: ob.measures.measures_from_vectors(x, [[True] * 4]), "vectors", S4),
+]
+
+
+@pytest.mark.parametrize("kind", ["masked", "bool", "text"])
+@pytest.mark.parametrize("index", range(len(ARRAY_ARGUMENTS)))
+def test_arrays_numpy_would_misread_are_refused_by_name(index, kind):
+    call, name, good = ARRAY_ARGUMENTS[index]
+    call(good)  # the good value is accepted
+    bad = _misread(good)[kind]
+    with pytest.raises(ValueError) as exc:
+        call(bad)
+    assert _named(str(exc.value), [name]), exc.value
+    if kind != "masked":
+        assert isinstance(exc.value, TypeError)
+
+
+# --------------------------------------------------------------------------- joblib and Dask
+
+
+@pytest.mark.parametrize("backend, n_jobs, scheduler, name", [
+    ("joblib", 0, None, "n_jobs"),  # joblib: "n_jobs == 0 has no meaning"; was all cores
+    ("joblib", -1, None, "n_jobs"),  # joblib: every core; here None says so
+    ("joblib", -7, None, "n_jobs"),  # joblib: silently one process
+    ("joblib", 2.0, None, "n_jobs"),
+    ("joblib", True, None, "n_jobs"),
+    ("joblib", "2", None, "n_jobs"),
+    ("serial", 2, None, "n_jobs"),  # was ignored
+    ("dask", 2, "tcp://127.0.0.1:8786", "n_jobs"),
+    ("serial", None, "tcp://127.0.0.1:8786", "scheduler"),  # was ignored
+    ("joblib", None, "tcp://127.0.0.1:8786", "scheduler"),
+    ("dask", None, None, "scheduler"),
+    ("dask", None, "nohost", "scheduler"),  # no port: Dask would wait for it
+    ("dask", None, "tcp:// 1.2.3.4:8786", "scheduler"),
+    ("dask", None, 8786, "scheduler"),
+    ("dask", None, {"address": "tcp://x:1"}, "scheduler"),
+    ("threads", None, None, "backend"),
+    (None, None, None, "backend"),
+])
+def test_arguments_for_joblib_and_dask_are_named_before_anything_starts(backend, n_jobs,
+                                                                         scheduler, name):
+    from obslib.studies import greedy_vs_relaxed, teams
+    from obslib.sweep import run_sweep
+
+    calls = (lambda: run_sweep(pow, [dict(base=2, exp=1)], backend, n_jobs, scheduler),
+             lambda: greedy_vs_relaxed.fig8_sweep([2], 2, 0, backend=backend, n_jobs=n_jobs,
+                                                  scheduler=scheduler),
+             lambda: teams.fig9_sweep([6], 2, 0, backend=backend, n_jobs=n_jobs,
+                                      scheduler=scheduler))
+    for call in calls:
+        with _time_limit(5), pytest.raises(ValueError) as exc:  # no worker, no connection
+            call()
+        assert _named(str(exc.value), [name]), exc.value
+
+
+@pytest.mark.parametrize("kwargs, name", [
+    ({"measure": "trace_inverse"}, "measure"), ({"measure": "nope"}, "measure"),
+    ({"eps": -1.0}, "eps"), ({"n_targets": 2.5}, "n_targets"), ({"side": 0.0}, "side"),
+])
+def test_the_trials_arguments_are_checked_before_the_tasks_go_out(kwargs, name, monkeypatch):
+    from obslib.studies import teams
+
+    monkeypatch.setattr(teams, "run_sweep", lambda *a, **k: pytest.fail("dispatched"))
+    with pytest.raises(ValueError) as exc:
+        teams.fig9_sweep([6], 2, 0, backend="joblib", n_jobs=2, **kwargs)
+    assert _named(str(exc.value), [name]), exc.value
+
+
+def test_an_address_where_no_scheduler_answers_is_a_named_error():
+    import dask
+
+    from obslib.sweep import run_sweep
+
+    with dask.config.set({"distributed.comm.timeouts.connect": "1s"}), _time_limit(60):
+        with pytest.raises(ValueError, match=r"^scheduler 'tcp://127.0.0.1:9': no Dask sched"):
+            run_sweep(pow, [dict(base=2, exp=1)], "dask", scheduler="tcp://127.0.0.1:9")
+
+
+def test_tasks_must_be_keyword_dicts():
+    from obslib.sweep import run_sweep
+
+    for tasks in ([{1: 2}], [[("base", 2)]], [{"base": 2}, 3], "base"):
+        with pytest.raises(ValueError, match="tasks"):
+            run_sweep(pow, tasks)

@@ -194,3 +194,64 @@ def test_validators_take_the_value_first():
         v.as_positive(0, "step")
     with pytest.raises(v.ArgumentTypeError, match="n must be an integer, got 3.0"):
         v.as_int(3.0, "n", 1)
+
+
+# --------------------------------------------------------------------------------------------
+# One validator per public entry point (scipy.optimize's `_milp_iv` pattern)
+# --------------------------------------------------------------------------------------------
+
+#: The core modules: the paper's numerics and the assignment solvers.
+CORE = ("observability", "bounds", "measures", "assignment", "teams", "pair_form", "scenes",
+        "controls", "submodularity", "bound_tables", "sweep", "published_runs")
+
+
+def _entry_points():
+    """``(module, function name, ast of its body without the docstring)`` of every public function
+    with arguments of the core modules."""
+    import ast
+    import importlib
+    import inspect
+
+    out = []
+    for name in CORE:
+        mod = importlib.import_module(f"obslib.{name}")
+        tree = ast.parse(inspect.getsource(mod))
+        defs = {n.name: n for n in tree.body if isinstance(n, ast.FunctionDef)}
+        for fn in mod.__all__:
+            node = defs.get(fn)
+            if node is None or not node.args.args + node.args.kwonlyargs:
+                continue
+            body = node.body
+            if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant):
+                body = body[1:]
+            out.append((name, fn, body))
+    return out
+
+
+def _called(nodes) -> set:
+    import ast
+
+    names = set()
+    for node in nodes:
+        for sub in ast.walk(node):
+            if isinstance(sub, ast.Call):
+                f = sub.func
+                names.add(f.id if isinstance(f, ast.Name) else getattr(f, "attr", ""))
+    return names
+
+
+def test_every_core_entry_point_validates_in_one_iv_function_first():
+    """Each public function of the core starts with one call to its ``_..._iv`` function, which
+    returns the canonical arguments, and calls no validator of ``obslib._validate`` after it:
+    the rest is the computation (or a call of the worker)."""
+    from obslib import _validate
+
+    validators = {n for n in dir(_validate) if n.startswith(("as_", "check_"))} | {
+        "broadcast", "validated_vectors", "vectors_between"}
+    entries = _entry_points()
+    assert len(entries) > 50
+    for module, fn, body in entries:
+        first = [n for n in _called(body[:1]) if n.endswith("_iv")]
+        assert first, f"obslib.{module}.{fn}: its first statement calls no _..._iv function"
+        later = _called(body[1:]) & validators
+        assert not later, f"obslib.{module}.{fn} validates after its _iv function: {later}"

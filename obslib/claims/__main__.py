@@ -17,11 +17,13 @@ import argparse
 import json
 import sys
 
-from .._io import OutputPathError, as_output_path, write_output
+from .._io import OutputPathError, as_output_path, command, write_or_report
 from .._validate import as_argv
 from ..profiles import profile_names
 from . import as_json, evaluate, registry
 from . import robustness as rb
+
+PROG = "python -m obslib.claims"
 
 
 def parse_args(argv=None) -> argparse.Namespace:
@@ -32,7 +34,7 @@ def parse_args(argv=None) -> argparse.Namespace:
     >>> parse_args(["--id", "thm1"]).ids
     ['thm1']
     """
-    ap = argparse.ArgumentParser(prog="python -m obslib.claims", description=__doc__,
+    ap = argparse.ArgumentParser(prog=PROG, description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--profile", default=None, choices=profile_names(),
                     help="parameter profile (default: paper)")
@@ -55,14 +57,15 @@ def parse_args(argv=None) -> argparse.Namespace:
             args.write = as_output_path(args.write)
         except OutputPathError as exc:
             ap.error(f"--write {exc}")
-        regular = args.write.is_file() or not args.write.exists()  # not /dev/stdout, a FIFO...
-        if regular and args.write.suffix != ".json":
+        if args.write.suffix != ".json":
             ap.error(f"--write {args.write}: the data file must end in .json")
     return args
 
 
+@command(PROG)
 def main(argv=None) -> int:
-    """Command line entry point: re-check the entries and print or store them; returns 0.
+    """Command line entry point: re-check the entries and print or store them; returns the exit
+    status (1 if the file of ``--write`` cannot be written, after a one-line error).
 
     Examples
     --------
@@ -72,7 +75,8 @@ def main(argv=None) -> int:
     if args.robustness:
         rows = rb.verdict_robustness(args.ids, base=args.profile)
         if args.write:
-            rb.write_json(rows, args.write, base=args.profile)
+            if not write_or_report(PROG, args.write, rb.to_json(rows, args.profile)):
+                return 1
             print(f"{args.write}: {len(rows)} claims")
         elif args.json:
             print(rb.to_json(rows, args.profile), end="")
@@ -84,7 +88,8 @@ def main(argv=None) -> int:
     if args.write or args.json:
         text = json.dumps(as_json(records), indent=1, default=float) + "\n"
         if args.write:
-            write_output(args.write, text)
+            if not write_or_report(PROG, args.write, text):
+                return 1
             print(f"{args.write}: {len(records)} entries")
         else:
             sys.stdout.write(text)

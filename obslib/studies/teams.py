@@ -125,7 +125,10 @@ def fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, measure: st
     """
     N_values = as_ints(N_values, "N_values", 0)
     trials, seed = as_int(trials, "trials", 1), as_int(seed, "seed", 0)
-    as_str(measure, "measure")
+    # every argument of the trials is checked here, before the tasks go to joblib or Dask
+    n_targets, eps = as_int(n_targets, "n_targets", 0), as_eps(eps)
+    check_maximisable(as_str(measure, "measure"), eps, MEASURES, MAXIMISABLE)
+    side = as_positive(side, "side")
     tasks = [
         dict(
             n_sensors=n,

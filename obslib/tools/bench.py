@@ -1,7 +1,8 @@
 """Benchmarks that print ratios: ``python -m obslib.bench assignment``.
 
 Absolute times depend on the machine; the ratios are what the project tracks. Each benchmark
-prints a few readable lines and, last, one JSON object.
+prints its readable lines and progress on standard error and one JSON object, alone, on standard
+output.
 
 ``assignment``
     ``greedy_over_one_pass``: the greedy (Algorithm 1 from geometry) at ``N = 2000``,
@@ -14,16 +15,16 @@ prints a few readable lines and, last, one JSON object.
     Progress goes to stderr, the JSON line to stdout.
 
 ``scaling``
-    Wall time of each assignment algorithm against ``N`` (``L = N / 2``), written with the
-    machine's description to ``book/data/scaling_times.json`` (``--write``), which the scaling
-    notebook plots: measured times are committed data, so ``make book`` stays deterministic.
+    Wall time of each assignment algorithm against ``N`` (``L = N / 2``), with the machine's
+    description. The scaling notebook plots ``book/data/scaling_times.json``: measured times are
+    committed data, so ``make book`` stays deterministic.
 
 ``criteria``
     Microseconds per pair evaluation of the bound and of each classical criterion of the
     criteria notebook (:func:`obslib.studies.criteria.criterion_scores`), batched over many
-    estimates and for a single estimate, written with the machine's description to
-    ``book/data/criteria_times.json`` (``--write``), which that notebook reads: measured times
-    are committed data, so ``make book`` stays deterministic.
+    estimates and for a single estimate, with the machine's description. That notebook reads
+    ``book/data/criteria_times.json``: measured times are committed data, so ``make book`` stays
+    deterministic.
 
 ``book``
     ``exec_s``: executing every notebook at its default parameters one at a time (papermill, one
@@ -34,16 +35,21 @@ prints a few readable lines and, last, one JSON object.
     (matplotlib, NumPy, pandas, myst-nb's ``glue``, ``obslib``, ``obsbook.setup()``) and
     showing one small figure; ``stack_over_floor`` is
     what that start costs before any content, and ``exec_over_stack`` what the notebooks cost over
-    it (a regression guard: at most 2.5). The notebooks also run ``jobs`` at a time as ``make book``
+    it (a regression guard: at most 3.5). The notebooks also run ``jobs`` at a time as ``make book``
     runs them (``--jobs``, default the cores available), longest first by their times alone:
     ``parallel_s`` is that wall time and ``parallel_speedup`` is ``exec_s`` over it (target at
     least 1.6 on two cores).
     ``--profile quick`` runs the notebooks at the ``quick`` profile's tiny sizes instead: what
     the same notebooks, figures and derivations cost with almost no computation.
 
-Progress goes to standard error (on a terminal); ``--write`` is checked before any work (a
-missing directory or an unwritable path is a command-line error, exit status 2) and written at
-the end (:mod:`obslib._io`).
+Progress goes to standard error (on a terminal). ``--write FILE`` (scaling, criteria) also stores
+the JSON, indented, in ``FILE``; it is checked before any work (a missing directory, an
+unwritable path, a FIFO or a device is a command-line error, exit status 2) and written at the
+end, atomically (:mod:`obslib._io`); a write that fails then is a one-line error, exit status 1.
+The book's committed data (``book/data/``) is refused unless ``--update-book`` says so: the
+notebooks read it, so replacing it changes their outputs, and nbval fails until ``make book``
+has re-executed them. A stop (Ctrl-C, SIGTERM, SIGHUP) ends a benchmark with one line and the
+exit status ``128 +`` the signal's number.
 """
 
 from __future__ import annotations
@@ -56,6 +62,7 @@ import time
 
 import numpy as np
 
+from .._io import command, write_or_report, write_output
 from .._validate import (
     as_argv,
     as_bool,
@@ -66,6 +73,7 @@ from .._validate import (
     as_points,
     as_str,
 )
+from . import ROOT
 
 __all__ = [
     "one_pass",
@@ -77,8 +85,14 @@ __all__ = [
     "literal_count",
     "COUNTED",
     "SCALING_SIZES",
+    "EXEC_OVER_STACK_MAX",
+    "BOOK_DATA",
     "main",
 ]
+
+#: The regression guard of ``bench book``: the notebooks at most this many times the minimal
+#: notebooks of the book's stack (``exec_over_stack``).
+EXEC_OVER_STACK_MAX = 3.5
 
 #: Sizes ``N`` at which :func:`bench_scaling` times each algorithm (``L = N / 2``).
 SCALING_SIZES = {
@@ -298,7 +312,7 @@ def bench_scaling(seed: int = 0, repeat: int = 3) -> dict:
                 S, T = rng.uniform(0, 100, (n, 2)), rng.uniform(0, 100, (n // 2, 2))
                 reps = 1 if name == "literal Algorithm 1" and n >= 400 else repeat
                 times.append(round(_timed(lambda: algos[name](S, T), reps)[0], 6))
-                bar.write(f"{name:22s} N={n:5d} {times[-1]:10.4f} s", file=sys.stdout)
+                bar.write(f"{name:22s} N={n:5d} {times[-1]:10.4f} s", file=sys.stderr)
                 bar.update(1)
             out[name] = {"N": list(ns), "seconds": times}
     return {
@@ -366,7 +380,7 @@ def bench_criteria(n_timing: int = 1000, seed: int = 0, repeat: int = 3) -> dict
             per_decision[name] = round(1e6 * t_one, 1)
             bar.write(f"{name:10s} {per_pair[name]:7.3f} us per pair (batched)"
                       f"  {per_decision[name]:6.0f} us per decision (one estimate)",
-                      file=sys.stdout)
+                      file=sys.stderr)
             bar.update(1)
     return {"machine": _machine(), "seed": seed, "n_timing": n_timing, "repeat": repeat,
             "per_pair_us": per_pair, "per_decision_us": per_decision}
@@ -413,7 +427,7 @@ def bench_book(profile: str = "paper", jobs: int | None = None) -> dict:
                 stack_s += execute(stack, tmp / f"stack_{k}.ipynb")
                 alone[r.notebook.name] = execute(r.notebook, tmp / r.notebook.name, r.parameters)
                 bar.write(f"{r.notebook.name:40s} {alone[r.notebook.name]:7.1f} s",
-                          file=sys.stdout)
+                          file=sys.stderr)
                 bar.update(1)
         exec_s = sum(alone.values())
         _say(f"all {len(runs)} notebooks, {jobs} at a time")
@@ -421,16 +435,16 @@ def bench_book(profile: str = "paper", jobs: int | None = None) -> dict:
         execute_all(runs, jobs, progress=None, expected=alone)
         parallel_s = time.perf_counter() - t0
     n = len(nbs)
-    print(f"{n} notebooks {exec_s:.1f} s, {n} trivial notebooks {floor_s:.1f} s, "
-          f"{n} minimal notebooks of the book's stack {stack_s:.1f} s", flush=True)
-    print(f"{n} notebooks {jobs} at a time, longest first: {parallel_s:.1f} s", flush=True)
-    print(f"{'exec_over_floor':18s} {exec_s / floor_s:6.2f}", flush=True)
-    print(f"{'stack_over_floor':18s} {stack_s / floor_s:6.2f}", flush=True)
-    for key, value, target in (("exec_over_stack", exec_s / stack_s, 2.5),
+    _say(f"{n} notebooks {exec_s:.1f} s, {n} trivial notebooks {floor_s:.1f} s, "
+         f"{n} minimal notebooks of the book's stack {stack_s:.1f} s")
+    _say(f"{n} notebooks {jobs} at a time, longest first: {parallel_s:.1f} s")
+    _say(f"{'exec_over_floor':18s} {exec_s / floor_s:6.2f}")
+    _say(f"{'stack_over_floor':18s} {stack_s / floor_s:6.2f}")
+    for key, value, target in (("exec_over_stack", exec_s / stack_s, EXEC_OVER_STACK_MAX),
                                ("parallel_speedup", exec_s / parallel_s, -1.6)):
         met = value <= target if target > 0 else value >= -target
         rule = f"<= {target}" if target > 0 else f">= {-target} on 2 cores"
-        print(f"{key:18s} {value:6.2f}  target {rule}: {'met' if met else 'MISSED'}", flush=True)
+        _say(f"{key:18s} {value:6.2f}  target {rule}: {'met' if met else 'MISSED'}")
     return {
         "notebooks": n,
         "profile": profile,
@@ -465,7 +479,7 @@ def _scratch_notebook(path, code: str):
     for k, c in enumerate(nb.cells):
         c.id = f"c{k}"
     nb.metadata["kernelspec"] = {"name": KERNEL, "display_name": "Python 3", "language": "python"}
-    nbformat.write(nb, path)
+    write_output(path, nbformat.writes(nb) + "\n")
     return path
 
 
@@ -489,6 +503,11 @@ plt.show()
 """
 
 
+#: The book's committed data, which the notebooks read: refused by ``--write`` without
+#: ``--update-book``.
+BOOK_DATA = ROOT / "book" / "data"
+
+
 def parse_args(argv=None) -> argparse.Namespace:
     """Parse and check the command line; a bad profile or path is an argparse error (exit 2).
 
@@ -496,6 +515,10 @@ def parse_args(argv=None) -> argparse.Namespace:
     --------
     >>> parse_args(["book", "--profile", "quick"]).profile
     'quick'
+    >>> data = "book/data/criteria_times.json"
+    >>> parse_args(["criteria", "--write", data])  # doctest: +SKIP
+    usage: ...
+    python -m obslib.bench: error: --write book/data/criteria_times.json: ...
     """
     from .._io import OutputPathError, as_output_path
     from ..profiles import profile_names
@@ -505,7 +528,10 @@ def parse_args(argv=None) -> argparse.Namespace:
     ap.add_argument(
         "which", choices=["assignment", "book", "criteria", "scaling"], help="benchmark to run"
     )
-    ap.add_argument("--write", help="scaling, criteria: also write the JSON to this file")
+    ap.add_argument("--write", help="scaling, criteria: also store the JSON in this file")
+    ap.add_argument("--update-book", action="store_true",
+                    help="allow --write to replace the book's data (book/data/); then run "
+                    "make book")
     ap.add_argument(
         "--profile",
         default="paper",
@@ -526,11 +552,29 @@ def parse_args(argv=None) -> argparse.Namespace:
             args.write = as_output_path(args.write)
         except OutputPathError as exc:
             ap.error(f"--write {exc}")
+        book = _in_book_data(args.write)
+        if book and not args.update_book:
+            ap.error(f"--write {args.write}: the book's data, which its notebooks read; replacing "
+                     "it changes their outputs (nbval fails until make book re-executes them). "
+                     "Add --update-book to replace it, then run make book")
+        if args.update_book and not book:
+            ap.error(f"--update-book: --write {args.write} is not the book's data ({BOOK_DATA})")
+    elif args.update_book:
+        ap.error("--update-book goes with --write book/data/<file>.json")
     if args.profile != "paper" and args.which != "book":
         ap.error("--profile applies to the book benchmark only")
     if args.jobs is not None and (args.which != "book" or args.jobs < 1):
         ap.error("--jobs applies to the book benchmark only and must be at least 1")
     return args
+
+
+def _in_book_data(path) -> bool:
+    """Whether ``path`` (links followed) lies in the book's data folder :data:`BOOK_DATA`."""
+    import os
+    from pathlib import Path
+
+    real, data = Path(os.path.realpath(path)), Path(os.path.realpath(BOOK_DATA))
+    return real == data or data in real.parents
 
 
 def _check_assignment_size(ap, args) -> None:
@@ -548,6 +592,7 @@ def _check_assignment_size(ap, args) -> None:
                  "and at least two sensors per target (N >= 2L)")
 
 
+@command("python -m obslib.bench")
 def main(argv=None) -> int:
     """Command line entry point: run one benchmark and print its JSON; returns the exit status.
 
@@ -557,8 +602,6 @@ def main(argv=None) -> int:
     --------
     >>> main(["assignment"])  # doctest: +SKIP
     """
-    from .._io import write_output
-
     args = parse_args(argv)
     if args.which == "assignment":
         result = bench_assignment(sensors=args.sensors, targets=args.targets)
@@ -566,15 +609,10 @@ def main(argv=None) -> int:
         result = bench_book(args.profile, args.jobs)
     else:
         result = bench_scaling() if args.which == "scaling" else bench_criteria()
-    text = json.dumps(result)
-    print(text, flush=True)
-    if args.write:
-        try:
-            write_output(args.write, json.dumps(result, indent=1) + "\n")
-        except OSError as exc:
-            print(f"python -m obslib.bench: error: cannot write {args.write}: "
-                  f"{exc.strerror or exc}", file=sys.stderr)
-            return 1
+    print(json.dumps(result), flush=True)
+    if args.write and not write_or_report("python -m obslib.bench", args.write,
+                                          json.dumps(result, indent=1) + "\n"):
+        return 1
     return 0
 
 

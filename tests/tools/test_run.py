@@ -84,7 +84,9 @@ def test_stream_chunks_are_merged():
         {"output_type": "stream", "name": "stdout", "text": "c"},
         {"output_type": "stream", "name": "stdout", "text": "\n"},
     ]
-    merged = run._merge_streams(outs)
+    from obslib.tools._papermill import merge_streams
+
+    merged = merge_streams(outs)
     assert [o.get("text") for o in merged] == ["a\nb\n", "w\n", None, "c\n"]
 
 
