@@ -381,9 +381,9 @@ def _filter_step(x, P, ps, z, q, r):
     (rows the two sensors), measurements ``z`` (..., 2), noise variances ``q``, ``r`` per axis.
     Returns the new ``x, P`` (new arrays); raises
     :class:`~obslib.tracking.kalman.SingularInnovation` as the update does."""
-    Pm = kalman.predict((P[..., 0, 0], P[..., 0, 1], P[..., 1, 0], P[..., 1, 1]),
+    Pm = kalman._predict((P[..., 0, 0], P[..., 0, 1], P[..., 1, 0], P[..., 1, 1]),
                         ((q, 0.0), (0.0, q)))
-    xn, Pn = kalman.update((x[..., 0], x[..., 1]), Pm, (ps[..., 0, 0], ps[..., 0, 1]),
+    xn, Pn = kalman._update((x[..., 0], x[..., 1]), Pm, (ps[..., 0, 0], ps[..., 0, 1]),
                            (ps[..., 1, 0], ps[..., 1, 1]), (z[..., 0], z[..., 1]),
                            ((r, 0.0), (0.0, r)))
     return np.stack(xn, axis=-1), np.stack(Pn, axis=-1).reshape(P.shape)

@@ -1,10 +1,14 @@
-"""Tracking simulations of Section V: sensor pairs chosen step by step track a circling target
-(Figs. 4-6) or an adversary (Fig. 7) with an extended Kalman filter.
+"""Tracking simulations: sensor pairs chosen step by step track a circling target (Figs. 4-6)
+or an adversary (Fig. 7) with an extended Kalman filter (Section V), and teams of sensors
+re-assigned every step track many targets, one filter per target (the authors' later
+experiment and larger networks).
 
-Six stationary range sensors; at each step a *strategy* picks two of them, which measure the
-half squared range :math:`z_i = \\tfrac12 \\lVert p_i - o \\rVert^2 + n_i` to the target
-(:mod:`~obslib.tracking.model`), and an extended Kalman filter on the target's 2-D position fuses
-the two measurements. The parts:
+In Section V six stationary range sensors serve one target; at each step a *strategy* picks two
+of them, which measure the half squared range :math:`z_i = \\tfrac12 \\lVert p_i - o
+\\rVert^2 + n_i` to the target (:mod:`~obslib.tracking.model`), and an extended Kalman filter on
+the target's 2-D position fuses the two measurements. With many targets
+(:mod:`~obslib.tracking.targets`) an *assignment* gives every target its sensors at every step.
+Both run on one engine (:mod:`~obslib.tracking.engine`). The parts:
 
 :mod:`~obslib.tracking.setup`
     the parameter record :class:`TrackingSetup`, the paper's :data:`PAPER_CIRCLE` and
@@ -15,22 +19,27 @@ the two measurements. The parts:
     the pair choosers: the paper's :data:`STRATEGIES` (``"best-pair"``, ``"best-partner"``,
     ``"fixed-pair"``, by Theorem 4's bound) and, beyond the paper, :data:`CRITERIA`
     (``"d-optimal"``, ``"a-optimal"``, ``"e-optimal"`` on the filter's information,
-    ``"exact-icn"`` an oracle knowing the target's control, ``"random"``); every name runs in
-    both engines with the same decisions;
+    ``"exact-icn"`` an oracle knowing the target's control, ``"random"``);
 :mod:`~obslib.tracking.adversary`
     the adversarial target's moves (Section V-B);
 :mod:`~obslib.tracking.kalman`
-    the extended Kalman filter's predict and update for many filters at once (filterpy's
-    equations on 2 x 2 component arrays);
-:mod:`~obslib.tracking.ekf`
-    :func:`simulate`, the reference engine (filterpy's EKF, one run);
+    the extended Kalman filter's predict and update, for one filter or many at once
+    (filterpy's equations; the tests hold them to filterpy);
+:mod:`~obslib.tracking.engine`
+    the one step loop of every run, over many filters at once;
 :mod:`~obslib.tracking.batch`
-    :func:`simulate_many`, :func:`simulate_batch`, :func:`monte_carlo`: the same runs
-    vectorised over seeds, strategies and setup variants, filtered by
-    :mod:`~obslib.tracking.kalman` (the tests hold the two engines to the same picks and to
-    rounding);
+    Section V on the engine: :func:`simulate` (one run), :func:`simulate_batch`,
+    :func:`simulate_many`, :func:`monte_carlo` (many runs over seeds, strategies and setup
+    variants at once);
+:mod:`~obslib.tracking.targets`
+    many targets: the setup record :class:`TargetsSetup`, the authors' later experiment
+    :data:`LATER_MULTI_TARGET`, larger scenes (:func:`network_scene`), and
+    :func:`simulate_targets`, :func:`simulate_targets_batch`;
+:mod:`~obslib.tracking.assigners`
+    the assignments of sensors to many targets (:data:`ASSIGNMENTS`);
 :mod:`~obslib.tracking.results`
-    :class:`TrackingResult` and :class:`BatchResult`;
+    :class:`TrackingResult`, :class:`BatchResult`, :class:`TargetsResult` and
+    :class:`TargetsBatch`;
 :mod:`~obslib.tracking.stats`
     comparisons, correlations, switches, track loss, entrapment.
 
@@ -43,11 +52,12 @@ The drawings are in :mod:`obslib.viz.tracking` and the studies of the paper's cl
 
 from __future__ import annotations
 
-from .batch import monte_carlo, simulate_batch, simulate_many
+from .batch import monte_carlo, simulate, simulate_batch, simulate_many
 from .choosers import CRITERIA, STRATEGIES, choose_pairs
-from .ekf import simulate
 from .model import (
     circle_truth,
+    euclidean_range,
+    euclidean_range_jacobian,
     half_squared_range,
     pair_bound_series,
     range_jacobian,
@@ -104,6 +114,8 @@ __all__ = [
     "circle_truth",
     "half_squared_range",
     "range_jacobian",
+    "euclidean_range",
+    "euclidean_range_jacobian",
     "choose_pairs",
     "pair_bound_series",
     "target_objective",

@@ -19,7 +19,7 @@ __all__ = ["TrackingResult", "BatchResult"]
 
 
 def derived_arrays(est, cov, truth_ext) -> dict:
-    """Arrays shared by both engines, for any leading shape: errors, traces, truth, controls.
+    """Arrays every run logs, for any leading shape: errors, traces, truth, controls.
 
     ``truth_ext`` holds ``o_1 .. o_{steps+1}`` (the last is where the target moves after the
     last step).
