@@ -52,6 +52,7 @@ The drawings are in :mod:`obslib.viz.tracking` and the studies of the paper's cl
 
 from __future__ import annotations
 
+from .assigners import ASSIGNMENTS, PAIR_ASSIGNMENTS, assign_targets
 from .batch import monte_carlo, simulate, simulate_batch, simulate_many
 from .choosers import CRITERIA, STRATEGIES, choose_pairs
 from .model import (
@@ -63,7 +64,7 @@ from .model import (
     range_jacobian,
     target_objective,
 )
-from .results import BatchResult, TrackingResult
+from .results import BatchResult, TargetsBatch, TargetsResult, TrackingResult
 from .setup import (
     ADVERSARIES,
     METRICS,
@@ -91,6 +92,16 @@ from .stats import (
     switch_back_fraction,
     switch_rate,
     track_loss,
+)
+from .targets import (
+    LATER_MULTI_TARGET,
+    LATER_SENSORS,
+    TargetsSetup,
+    circle_paths,
+    network_scene,
+    simulate_targets,
+    simulate_targets_batch,
+    targets_noise_table,
 )
 
 __all__ = [
@@ -134,4 +145,17 @@ __all__ = [
     "bound_correlation",
     "mirror_point",
     "track_loss",
+    "ASSIGNMENTS",
+    "PAIR_ASSIGNMENTS",
+    "TargetsSetup",
+    "LATER_SENSORS",
+    "LATER_MULTI_TARGET",
+    "TargetsResult",
+    "TargetsBatch",
+    "circle_paths",
+    "network_scene",
+    "targets_noise_table",
+    "assign_targets",
+    "simulate_targets",
+    "simulate_targets_batch",
 ]

@@ -1,0 +1,613 @@
+"""Assignments of sensors to many targets, re-made at every step from the filters' estimates
+:math:`\\hat x_l` and covariances :math:`\\Sigma_l` (:data:`ASSIGNMENTS`).
+
+Pairs, one per target, no sensor serving two targets (Problem 1 of the paper; at least two
+sensors per target):
+
+``"unique-pairs"``
+    Algorithm 1, the greedy of Fig. 8, on Theorem 4's pair bound at the estimates with the
+    setup's :math:`u_{\\max}` (Euclidean distances, or Mahalanobis ones in :math:`\\Sigma_l`,
+    the setup's ``metric``); ties to the smallest ``(i, j, l)``;
+``"optimal-pairs"``
+    Problem 1 solved exactly at every step on the same weights: by enumeration of every
+    assignment where there are at most :data:`MAX_ENUMERATED` (the first optimum in the order of
+    the enumeration), else by :func:`obslib.optimal_pair_assignment` (branch and bound, within
+    its memory limit);
+``"random"``
+    a uniformly random assignment: a random permutation of the sensors, target ``l`` taking its
+    entries ``2l`` and ``2l + 1`` (drawn from ``numpy.random.default_rng([2, seed])``, a stream
+    apart from the run's noise).
+
+Teams, every sensor given to one target (Problem 2), by the greedy of Fig. 9: ``N`` rounds, each
+giving one free sensor to the target whose measure grows most. The paper's measure is
+:math:`\\log\\det(O_l^T O_l)`, with the rows :math:`\\hat x_l - p_i` of the team and no prior. For
+a team of fewer than two sensors :math:`O_l^T O_l` is singular, and what a greedy does then is a
+matter of arithmetic:
+
+``"logdet-teams"``
+    the measure as the authors' code evaluates it in floating point (:func:`code_logdet_det`):
+    the determinant of the rounded :math:`O_l^T O_l` by an LU factorisation with partial
+    pivoting and a fused multiply-add, which leaves the rounding residue of a singular matrix
+    (zero, a tiny positive number, or a tiny negative one, whose logarithm is complex); the
+    logarithm of an empty team's determinant is 0 (MATLAB's :math:`\\det` of a 0 x 0 matrix is
+    1); the table of gains of the sensors already taken holds zeros; and the round's maximum is
+    MATLAB's: ignoring NaN, by value when every gain is real, else by magnitude and then by
+    phase angle, the first in column order (smallest target, then smallest sensor) among
+    equal values. Which target gets a first sensor is then decided by those residues;
+``"logdet-teams-as-run"``
+    the same teams, read as the authors' experiment reads them: target ``l``'s filter measures
+    with the sensors numbered by the *rounds* at which ``l`` won a sensor, not with the sensors
+    it won (its script takes the column indices of the greedy's table of picks). This is what
+    produced the saved run;
+``"logdet-teams-exact"``
+    the same greedy in exact arithmetic: a singular team's :math:`\\log\\det` is
+    :math:`-\\infty`, so every first gain is :math:`-\\infty`, every second :math:`+\\infty`,
+    and the first target takes every sensor;
+``"logdet-teams-prior"``
+    the greedy on :math:`\\log\\det(O_l^T O_l + \\varepsilon I)` with the setup's ``eps``
+    (:func:`obslib.greedy_team_assignment`, the measure of Fig. 9 as this book evaluates it);
+``"d-optimal-teams"``, ``"a-optimal-teams"``, ``"e-optimal-teams"``
+    the greedy on the information each filter's next update would have,
+    :math:`J_l(S) = (\\Sigma_l + Q)^{-1} + \\sum_{i \\in S} h_{il} h_{il}^T / R` with the
+    measurement model's Jacobian rows :math:`h_{il}` at :math:`\\hat x_l`: maximising
+    :math:`\\sum_l \\log\\det J_l`, :math:`-\\sum_l \\operatorname{tr} J_l^{-1}` or
+    :math:`\\sum_l \\lambda_{\\min}(J_l)` (the criteria of chapter 10, one filter per target);
+    ties to the smallest sensor, then the smallest target.
+"""
+
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+from itertools import combinations
+
+import numpy as np
+
+from .._kernels import mahalanobis_rescale, normalise_rows, pair_kernel
+from .._validate import as_choice, as_float_array, as_instance, as_int
+
+__all__ = ["ASSIGNMENTS", "PAIR_ASSIGNMENTS", "MAX_ENUMERATED", "code_logdet_det",
+           "assign_targets"]
+
+#: The assignments :func:`~obslib.tracking.simulate_targets` accepts (see the module docstring).
+ASSIGNMENTS = ("unique-pairs", "optimal-pairs", "random", "logdet-teams", "logdet-teams-as-run",
+               "logdet-teams-exact", "logdet-teams-prior", "d-optimal-teams", "a-optimal-teams",
+               "e-optimal-teams")
+
+#: The assignments of one pair per target (they need at least two sensors per target).
+PAIR_ASSIGNMENTS = ("unique-pairs", "optimal-pairs", "random")
+
+#: Largest number of assignments ``"optimal-pairs"`` enumerates, ``N! / ((N - 2L)! 2^L)``;
+#: beyond it each step is solved by branch and bound.
+MAX_ENUMERATED = 200_000
+
+#: Weights per block of runs for the batched greedy (about 32 MB); beyond one run's worth the
+#: greedy runs from geometry, run by run, without the weights.
+_BLOCK_WEIGHTS = 1 << 22
+
+
+# --------------------------------------------------------------------------------------------
+# Pairs
+# --------------------------------------------------------------------------------------------
+
+
+def pair_weights(S, x, P, u_max: float, maha: bool) -> np.ndarray:
+    """Theorem 4's bound of every pair ``i < j`` (``numpy.triu_indices`` order) for every
+    target of ``M`` runs, ``(M, N (N - 1) / 2, L)``: sensors ``S`` ``(N, 2)``, estimates ``x``
+    ``(M, L, 2)``, covariances ``P`` ``(M, L, 2, 2)`` (used where ``maha``). The rows, their
+    normalisation and the kernel of :func:`obslib.pair_bounds`, elementwise, so the weights are
+    its numbers (exact ties stay ties: the later experiment's first step has one).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import obslib as ob
+    >>> S = np.array([[0.0, 0.0], [4.0, 0.0], [1.0, 3.0]])
+    >>> x = np.array([[[2.0, 1.0], [0.5, 0.5]]])
+    >>> w = pair_weights(S, x, np.broadcast_to(np.eye(2), (1, 2, 2, 2)), 0.5, False)
+    >>> W = ob.pair_bounds(S, x[0], 0.5)
+    >>> bool((w[0] == W[[0, 0, 1], [1, 2, 2]]).all())
+    True
+    """
+    M, L = x.shape[:2]
+    N = S.shape[0]
+    ii, jj = np.triu_indices(N, 1)
+    d = x.reshape(M * L, 1, 2) - S[None]  # rows o_l - p_i, (M L, N, 2)
+    unit = 1.0
+    if maha:
+        v, unit = mahalanobis_rescale(d.transpose(1, 0, 2), P.reshape(M * L, 2, 2))
+        dx, dy = v[..., 0].T, v[..., 1].T
+    else:
+        dx, dy = d[..., 0], d[..., 1]
+    with np.errstate(over="ignore"):
+        vx, vy, u2 = normalise_rows(dx, dy, u_max / unit)
+    w = pair_kernel(vx[:, ii], vy[:, ii], vx[:, jj], vy[:, jj], u2[:, None])
+    return np.ascontiguousarray(w.reshape(M, L, ii.size).transpose(0, 2, 1))
+
+
+def _labels_of_picks(picks, N) -> np.ndarray:
+    """Labels ``(M, N)`` (the target of each sensor, -1 for none) of pair picks ``(M, L, 3)``."""
+    M = picks.shape[0]
+    labels = np.full((M, N), -1, dtype=np.int64)
+    rows = np.arange(M)[:, None]
+    labels[rows, picks[..., 0]] = picks[..., 2]
+    labels[rows, picks[..., 1]] = picks[..., 2]
+    return labels
+
+
+def _unique_pairs(S, x, P, u_max, maha) -> np.ndarray:
+    from ..assignment import greedy_pair_assignment, greedy_pairs_batch
+
+    M, L = x.shape[:2]
+    N = S.shape[0]
+    per_run = N * (N - 1) // 2 * L
+    if per_run > _BLOCK_WEIGHTS:  # from geometry, run by run: the weights are never built
+        labels = np.full((M, N), -1, dtype=np.int64)
+        for m in range(M):
+            a = greedy_pair_assignment(sensors=S, targets=x[m], u_max=u_max,
+                                       cov=P[m] if maha else None)
+            for i, j, l in a.triples:
+                labels[m, i] = labels[m, j] = l
+        return labels
+    out = []
+    block = max(1, _BLOCK_WEIGHTS // per_run)
+    for a in range(0, M, block):
+        w = pair_weights(S, x[a:a + block], P[a:a + block], u_max, maha)
+        picks, _ = greedy_pairs_batch(w, N)
+        out.append(_labels_of_picks(picks, N))
+    return np.concatenate(out)
+
+
+def assignment_count(n: int, n_targets: int) -> int:
+    """The number of assignments of disjoint pairs of ``n`` sensors to ``n_targets`` targets,
+    :math:`n! / ((n - 2L)!\\, 2^L)`.
+
+    Examples
+    --------
+    >>> assignment_count(8, 3)  # the later experiment
+    2520
+    """
+    if n < 2 * n_targets:
+        return 0
+    return math.factorial(n) // math.factorial(n - 2 * n_targets) // 2**n_targets
+
+
+@lru_cache(maxsize=8)
+def _enumerated(n: int, n_targets: int) -> np.ndarray:
+    """Every assignment as pair indices (``numpy.triu_indices(n, 1)`` order) per target,
+    ``(A, L)``, target 0's pair varying slowest, each in increasing order."""
+    index = {p: k for k, p in enumerate(zip(*np.triu_indices(n, 1)))}
+    rows = [()]
+    for _ in range(n_targets):
+        nxt = []
+        for row in rows:
+            used = {i for p in row for i in p}
+            free = [i for i in range(n) if i not in used]
+            nxt += [row + (p,) for p in combinations(free, 2)]
+        rows = nxt
+    return np.array([[index[p] for p in row] for row in rows], dtype=np.int64)
+
+
+def _optimal_pairs(S, x, P, u_max, maha) -> np.ndarray:
+    from ..assignment import optimal_pair_assignment
+
+    M, L = x.shape[:2]
+    N = S.shape[0]
+    ii, jj = np.triu_indices(N, 1)
+    w = pair_weights(S, x, P, u_max, maha)  # (M, P, L)
+    if assignment_count(N, L) <= MAX_ENUMERATED:
+        table = _enumerated(N, L)  # (A, L)
+        total = np.zeros((M, table.shape[0]))
+        for l in range(L):
+            total += w[:, table[:, l], l]
+        best = table[total.argmax(axis=1)]  # (M, L): the first optimum
+        picks = np.stack([ii[best], jj[best], np.broadcast_to(np.arange(L), best.shape)], -1)
+        return _labels_of_picks(picks, N)
+    labels = np.full((M, N), -1, dtype=np.int64)
+    for m in range(M):
+        W = np.zeros((N, N, L))
+        W[ii, jj], W[jj, ii] = w[m], w[m]
+        for i, j, l in optimal_pair_assignment(W).triples:
+            labels[m, i] = labels[m, j] = l
+    return labels
+
+
+def random_draws(seed: int, steps: int, n_sensors: int) -> np.ndarray:
+    """The ``"random"`` assignment's permutations of the sensors for the ``steps + 1`` choices
+    of a run, ``(steps + 1, N)``, from ``numpy.random.default_rng([2, seed])``.
+
+    Examples
+    --------
+    >>> d = random_draws(0, 3, 5)
+    >>> d.shape, sorted(d[0].tolist())
+    ((4, 5), [0, 1, 2, 3, 4])
+    """
+    rng = np.random.default_rng([2, int(seed)])
+    return rng.permuted(np.tile(np.arange(n_sensors), (steps + 1, 1)), axis=1)
+
+
+def _random_pairs(perm, n_targets) -> np.ndarray:
+    M, N = perm.shape
+    labels = np.full((M, N), -1, dtype=np.int64)
+    rows = np.arange(M)[:, None]
+    labels[rows, perm[:, : 2 * n_targets]] = np.repeat(np.arange(n_targets), 2)
+    return labels
+
+
+# --------------------------------------------------------------------------------------------
+# The code's log det: an LU determinant with a fused multiply-add, MATLAB's max
+# --------------------------------------------------------------------------------------------
+
+
+def _two_product(a, b):
+    """``a * b = p + e`` exactly (Dekker's product with Veltkamp's split; no overflow)."""
+    p = a * b
+    t = 134217729.0 * a  # 2^27 + 1
+    ah = t - (t - a)
+    al = a - ah
+    t = 134217729.0 * b
+    bh = t - (t - b)
+    bl = b - bh
+    e = ((ah * bh - p) + ah * bl + al * bh) + al * bl
+    return p, e
+
+
+def fused_multiply_add(a, b, c):
+    """``a * b + c`` with one rounding where the product and ``c`` cancel (the exact sum then
+    is ``c + p + e`` with ``c + p`` exact, Sterbenz's lemma), and within a unit in the last
+    place elsewhere: the fused multiply-add of an optimised LAPACK's update, elementwise.
+
+    Examples
+    --------
+    >>> x = 1.0 + 2.0**-30
+    >>> float(fused_multiply_add(x, x, -(x * x)))  # the product's rounding error, 2^-60
+    8.673617379884035e-19
+    """
+    p, e = _two_product(a, b)
+    s = p + c
+    bb = s - p
+    t = (p - (s - bb)) + (c - bb)
+    return s + (t + e)
+
+
+def code_logdet_det(g00, g01, g11):
+    """The determinant of the symmetric ``[[g00, g01], [g01, g11]]`` as the authors' code gets
+    it: an LU factorisation with partial pivoting (LAPACK's ``dgetrf``: the pivot is the first
+    entry of largest magnitude in the first column, the multiplier the other entry times the
+    pivot's reciprocal, the update :math:`u_{22} = a_{22} - l\\, a_{12}` with a fused
+    multiply-add), then the product of the pivots with the permutation's sign. For a singular
+    matrix this leaves the rounding residue of :math:`u_{22}`: zero, or a tiny number of either
+    sign.
+
+    Examples
+    --------
+    The Gram matrix of one row, singular in exact arithmetic:
+
+    >>> import numpy as np
+    >>> r = np.array([0.5, -1.5])  # the rows are target minus sensor
+    >>> g = r[:, None] * r[None, :]
+    >>> float(code_logdet_det(g[0, 0], g[0, 1], g[1, 1]))
+    0.0
+    >>> r = np.array([2.5 - 2.0, 1.5 - 7.0])
+    >>> g = r[:, None] * r[None, :]
+    >>> float(code_logdet_det(g[0, 0], g[0, 1], g[1, 1])) != 0.0
+    True
+    """
+    g00, g01, g11 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (g00, g01, g11)))
+    swap = np.abs(g01) > np.abs(g00)
+    p = np.where(swap, g01, g00)
+    q = np.where(swap, g11, g01)  # the pivot row's second entry
+    c = np.where(swap, g00, g01)
+    d = np.where(swap, g01, g11)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lm = c * (1.0 / p)
+        u = fused_multiply_add(-lm, q, d)
+        det = p * u
+    det = np.where(p == 0, 0.0, det)  # a zero column: U has a zero pivot
+    return np.where(swap, -det, det)
+
+
+def _complex_log(det):
+    """:math:`\\log` of real numbers as (real, imaginary) parts: :math:`-\\infty` at 0, the
+    principal value (imaginary part :math:`\\pi`) below."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        re = np.log(np.abs(det))
+    im = np.where(det < 0, np.pi, 0.0)
+    return re, im
+
+
+def _matlab_first_max(re, im) -> np.ndarray:
+    """Per run, the position in ``re, im`` ``(M, L, N)`` (flattened, target-major: MATLAB's
+    column order of an ``N x L`` table) of the first entry equal to MATLAB's ``max`` of the
+    table: NaN ignored; a real table by value; a table with an entry of non-zero imaginary part
+    by magnitude, then phase angle."""
+    M = re.shape[0]
+    re, im = re.reshape(M, -1), im.reshape(M, -1)
+    valid = ~(np.isnan(re) | np.isnan(im))
+    cplx = (im != 0).any(axis=1)[:, None]
+    with np.errstate(invalid="ignore"):
+        mag = np.hypot(re, im)
+        ang = np.arctan2(im, re)
+    k1 = np.where(valid, np.where(cplx, mag, re), -np.inf)
+    k2 = np.where(cplx, ang, 0.0)
+    m1 = np.where(valid, k1, -np.inf).max(axis=1, keepdims=True)
+    cand = valid & (k1 == m1)
+    m2 = np.where(cand, k2, -np.inf).max(axis=1, keepdims=True)
+    return (cand & (k2 == m2)).argmax(axis=1)
+
+
+def _logdet_teams(S, x, exact: bool):
+    """The code's greedy (module docstring) for ``M`` runs: the labels of the sensors each
+    target won and of the rounds it won, each ``(M, N)``."""
+    with np.errstate(invalid="ignore"):  # -inf - (-inf): a NaN gain, which the max ignores
+        return _logdet_rounds(S, x, exact)
+
+
+def _logdet_rounds(S, x, exact: bool):
+    M, L = x.shape[:2]
+    N = S.shape[0]
+    vx = x[:, None, :, 0] - S[None, :, None, 0]  # rows target - sensor, (M, N, L)
+    vy = x[:, None, :, 1] - S[None, :, None, 1]
+    rows = np.arange(M)
+    g00, g01, g11 = (np.zeros((M, L)) for _ in range(3))  # the teams' O^T O (code)
+    det = np.zeros((M, L))  # the teams' exact det (Cauchy-Binet) and increments C
+    C = np.zeros((M, N, L))
+    size = np.zeros((M, L), dtype=np.int64)
+    old_re, old_im = np.zeros((M, L)), np.zeros((M, L))  # log det of the empty team: 0
+
+    def new_logdet(ms, l):
+        """log det of team ``l[m]`` plus each sensor's row, ``(len(ms), N)``."""
+        ax, ay = vx[ms, :, l], vy[ms, :, l]
+        if exact:
+            d = det[ms, l][:, None] + C[ms, :, l]
+        else:
+            d = code_logdet_det(fused_multiply_add(ax, ax, g00[ms, l][:, None]),
+                                fused_multiply_add(ax, ay, g01[ms, l][:, None]),
+                                fused_multiply_add(ay, ay, g11[ms, l][:, None]))
+        return _complex_log(d)
+
+    gain_re, gain_im = np.empty((M, N, L)), np.empty((M, N, L))
+    for l in range(L):
+        re, im = new_logdet(rows, np.full(M, l))
+        gain_re[:, :, l], gain_im[:, :, l] = re - old_re[:, l, None], im - old_im[:, l, None]
+    free = np.ones((M, N), dtype=bool)
+    picked = np.full((M, N), -1, dtype=np.int64)
+    rounds = np.empty((M, N), dtype=np.int64)
+    for t in range(N):
+        at = _matlab_first_max(gain_re.transpose(0, 2, 1), gain_im.transpose(0, 2, 1))
+        l, i = np.divmod(at, N)
+        rounds[:, t] = l
+        newly = free[rows, i]
+        picked[rows[newly], i[newly]] = l[newly]
+        # the team's new O^T O and log det (the value of the table's entry)
+        nre, nim = new_logdet(rows, l)
+        old_re[rows, l], old_im[rows, l] = nre[rows, i], nim[rows, i]
+        ax, ay = vx[rows, i, l], vy[rows, i, l]
+        g00[rows, l] = fused_multiply_add(ax, ax, g00[rows, l])
+        g01[rows, l] = fused_multiply_add(ax, ay, g01[rows, l])
+        g11[rows, l] = fused_multiply_add(ay, ay, g11[rows, l])
+        det[rows, l] = det[rows, l] + C[rows, i, l]
+        cross = vx[rows, :, l] * ay[:, None] - vy[rows, :, l] * ax[:, None]
+        C[rows, :, l] = C[rows, :, l] + cross * cross
+        size[rows, l] += 1
+        free[rows, i] = False
+        re, im = new_logdet(rows, l)
+        gain_re[rows, :, l] = re - old_re[rows, l][:, None]
+        gain_im[rows, :, l] = im - old_im[rows, l][:, None]
+        gain_re[~free], gain_im[~free] = 0.0, 0.0  # the table's rows of the taken sensors
+    return picked, rounds
+
+
+def _prior_logdet_teams(S, x, eps) -> np.ndarray:
+    from ..teams import greedy_team_picks
+
+    M = x.shape[0]
+    picks_i, picks_l = greedy_team_picks(np.broadcast_to(S, (M,) + S.shape), x, "logdet", eps)
+    labels = np.empty(picks_i.shape, dtype=np.int64)
+    np.put_along_axis(labels, picks_i, picks_l, axis=1)
+    return labels
+
+
+# --------------------------------------------------------------------------------------------
+# Teams by the filters' information
+# --------------------------------------------------------------------------------------------
+
+
+def _information_gain(criterion, j00, j01, j11, hx, hy):
+    """The gain of adding the row ``h = (hx, hy)`` to the information ``J = [[j00, j01], [j01,
+    j11]]`` (broadcasting): :math:`\\log\\det`, :math:`-\\operatorname{tr} J^{-1}` or
+    :math:`\\lambda_{\\min}` of :math:`J + h h^T` minus that of :math:`J`, each from a
+    closed form without cancellation (so a gain that is zero, such as a first row's
+    :math:`\\lambda_{\\min}` gain on an isotropic ``J``, is exactly zero):
+    :math:`\\log(1 + q)` and :math:`h^T J^{-2} h / (1 + q)` with :math:`q = h^T J^{-1} h`
+    (Sherman-Morrison), and for :math:`\\lambda_{\\min}`
+    :math:`2 h^T (\\operatorname{adj} J - \\lambda_{\\min} I) h / ((\\lambda_{\\max} -
+    \\lambda_{\\min}) + \\lvert h \\rvert^2 + (\\mu_{\\max} - \\mu_{\\min}))` with
+    :math:`\\mu` the eigenvalues of :math:`J + h h^T`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> J, h = np.array([[2.0, 0.5], [0.5, 1.0]]), np.array([0.3, -0.7])
+    >>> new = J + np.outer(h, h)
+    >>> [round(float(_information_gain(c, 2.0, 0.5, 1.0, 0.3, -0.7)), 12) for c in
+    ...  ("d-optimal-teams", "a-optimal-teams", "e-optimal-teams")] == [
+    ...  round(float(np.log(np.linalg.det(new) / np.linalg.det(J))), 12),
+    ...  round(float(np.trace(np.linalg.inv(J)) - np.trace(np.linalg.inv(new))), 12),
+    ...  round(float(np.linalg.eigvalsh(new)[0] - np.linalg.eigvalsh(J)[0]), 12)]
+    True
+    """
+    det = j00 * j11 - j01 * j01
+    ux, uy = (j11 * hx - j01 * hy) / det, (j00 * hy - j01 * hx) / det  # J^{-1} h
+    q = hx * ux + hy * uy
+    if criterion == "d-optimal-teams":
+        return np.log1p(q)
+    if criterion == "a-optimal-teams":
+        return (ux * ux + uy * uy) / (1.0 + q)
+    half = 0.5 * (j00 - j11)
+    r = np.hypot(half, j01)  # (lambda_max - lambda_min) / 2
+    # adj J - lambda_min I = [[r - half, -j01], [-j01, r + half]], a rank-one square
+    big = r + np.abs(half)
+    small = np.where(big > 0, j01 * j01 / np.where(big > 0, big, 1.0), 0.0)
+    m00 = np.where(half >= 0, small, big)
+    m11 = np.where(half >= 0, big, small)
+    root = np.sqrt(m00) * hx - np.sign(j01) * np.sqrt(m11) * hy
+    n00, n01, n11 = j00 + hx * hx, j01 + hx * hy, j11 + hy * hy
+    spread = 2.0 * r + (hx * hx + hy * hy) + 2.0 * np.hypot(0.5 * (n00 - n11), n01)
+    return np.where(spread > 0, 2.0 * root * root / np.where(spread > 0, spread, 1.0), 0.0)
+
+
+def _information_teams(S, x, Ppred, r, measurement, criterion) -> np.ndarray:
+    """The greedy on the filters' information (module docstring) for ``M`` runs: labels
+    ``(M, N)``. ``Ppred`` ``(M, L, 2, 2)`` is the predicted covariance :math:`\\Sigma + Q`."""
+    from .kalman import measurement_rows
+
+    M, L = x.shape[:2]
+    N = S.shape[0]
+    H, _ = measurement_rows(x.reshape(M * L, 2), np.broadcast_to(S, (M * L, N, 2)),
+                            measurement)  # (M L, N, 2)
+    H = H.reshape(M, L, N, 2).transpose(0, 2, 1, 3) / np.sqrt(r)  # (M, N, L, 2)
+    hx, hy = H[..., 0], H[..., 1]
+    p00, p01, p11 = Ppred[..., 0, 0], 0.5 * (Ppred[..., 0, 1] + Ppred[..., 1, 0]), Ppred[..., 1, 1]
+    dp = p00 * p11 - p01 * p01
+    j00, j01, j11 = p11 / dp, -p01 / dp, p00 / dp  # (M, L): the prior information
+    rows = np.arange(M)
+
+    def gains(ms, l):
+        return _information_gain(criterion, j00[ms, l][:, None], j01[ms, l][:, None],
+                                 j11[ms, l][:, None], hx[ms, :, l], hy[ms, :, l])
+
+    g = np.empty((M, N, L))
+    for l in range(L):
+        g[:, :, l] = gains(rows, np.full(M, l))
+    free = np.ones((M, N), dtype=bool)
+    labels = np.empty((M, N), dtype=np.int64)
+    for _ in range(N):
+        masked = np.where(free[:, :, None], g, -np.inf).reshape(M, -1)
+        i, l = np.divmod(masked.argmax(axis=1), L)  # C order: smallest sensor, then target
+        labels[rows, i] = l
+        free[rows, i] = False
+        bx, by = hx[rows, i, l], hy[rows, i, l]
+        j00[rows, l] += bx * bx
+        j01[rows, l] += bx * by
+        j11[rows, l] += by * by
+        g[rows, :, l] = gains(rows, l)
+    return labels
+
+
+# --------------------------------------------------------------------------------------------
+# The chooser of a pass, and one assignment by hand
+# --------------------------------------------------------------------------------------------
+
+
+class TeamChooser:
+    """The assignments of ``R`` runs of one setup at once: row ``r`` follows ``kinds[r]`` (a
+    name of :data:`ASSIGNMENTS`); ``seeds[r]`` draws the ``"random"`` rows' permutations.
+    Calling it with the estimates ``x`` ``(R, L, 2)``, covariances ``P`` ``(R, L, 2, 2)`` and
+    the step ``k`` (0-based) returns the labels ``(R, N)``: the target each sensor measures at
+    step ``k + 1`` (-1: none)."""
+
+    def __init__(self, setup, kinds, seeds=None):
+        self.setup = setup
+        self.S = setup.sensor_array
+        kinds = np.asarray(kinds, dtype=object)
+        self.groups = [(name, np.flatnonzero(kinds == name)) for name in ASSIGNMENTS
+                       if (kinds == name).any()]
+        self.draws = None
+        rows = np.flatnonzero(kinds == "random")
+        if rows.size:
+            self.draws = {int(r): random_draws(seeds[r], setup.steps, setup.n_sensors)
+                          for r in rows}
+        self.Q = np.asarray(setup.Q, dtype=float)
+
+    def __call__(self, x, P, k: int) -> np.ndarray:
+        su = self.setup
+        R_, L = x.shape[:2]
+        labels = np.empty((R_, self.S.shape[0]), dtype=np.int64)
+        maha = su.metric == "mahalanobis"
+        for name, rows in self.groups:
+            xs, Ps = x[rows], P[rows]
+            if name == "unique-pairs":
+                labels[rows] = _unique_pairs(self.S, xs, Ps, su.u_max, maha)
+            elif name == "optimal-pairs":
+                labels[rows] = _optimal_pairs(self.S, xs, Ps, su.u_max, maha)
+            elif name == "random":
+                perm = np.stack([self.draws[int(r)][k] for r in rows])
+                labels[rows] = _random_pairs(perm, L)
+            elif name.startswith("logdet-teams") and name != "logdet-teams-prior":
+                picked, won = _logdet_teams(self.S, xs, exact=name == "logdet-teams-exact")
+                labels[rows] = won if name == "logdet-teams-as-run" else picked
+            elif name == "logdet-teams-prior":
+                labels[rows] = _prior_logdet_teams(self.S, xs, su.eps)
+            else:
+                labels[rows] = _information_teams(self.S, xs, Ps + self.Q, su.R, su.measurement,
+                                                  name)
+        return labels
+
+
+def check_assignment(setup, assignment: str) -> str:
+    """``assignment`` if it is a name of :data:`ASSIGNMENTS` that ``setup`` can run: the pair
+    assignments need two free sensors per target (``N >= 2 L``)."""
+    as_choice(assignment, ASSIGNMENTS, "assignment")
+    if assignment in PAIR_ASSIGNMENTS and setup.n_sensors < 2 * setup.n_targets:
+        raise ValueError(
+            f"assignment {assignment!r} gives every target a pair of its own: it needs at least "
+            f"two free sensors per target, N >= 2 L = {2 * setup.n_targets}, but the setup has "
+            f"N = {setup.n_sensors} sensors for L = {setup.n_targets} targets"
+        )
+    return assignment
+
+
+def assign_targets(setup, assignment: str, xhat, cov, seed: int = 0, step: int = 0):
+    """One step's assignment: the target each sensor serves at the estimates ``xhat`` with
+    covariances ``cov`` (what :func:`~obslib.tracking.simulate_targets` does at each step).
+
+    Parameters
+    ----------
+    setup : TargetsSetup
+    assignment : str
+        A name of :data:`ASSIGNMENTS`.
+    xhat : array_like, shape (L, 2)
+        The targets' estimates.
+    cov : array_like, shape (L, 2, 2) or (2, 2)
+        Their covariances (before the step's prediction).
+    seed, step : int
+        The run's seed and the step (0-based) of a ``"random"`` assignment's draw.
+
+    Returns
+    -------
+    ndarray of int, shape (N,)
+        The target of each sensor, -1 for a sensor left out.
+
+    Examples
+    --------
+    The later experiment's first step, from its initial estimates:
+
+    >>> from obslib import tracking
+    >>> su = tracking.LATER_MULTI_TARGET
+    >>> tracking.assign_targets(su, "unique-pairs", su.estimate0, su.cov0).tolist()
+    [0, 2, -1, 1, 2, -1, 0, 1]
+    >>> tracking.assign_targets(su, "logdet-teams-exact", su.estimate0, su.cov0).tolist()
+    [0, 0, 0, 0, 0, 0, 0, 0]
+    """
+    from .._validate import as_covariances, as_points
+    from .setup import MAX_COV_SCALE
+    from .targets import TargetsSetup
+
+    as_instance(setup, TargetsSetup, "setup")
+    check_assignment(setup, assignment)
+    L = setup.n_targets
+    x = as_points(as_float_array(xhat, "xhat"), "xhat")
+    if x.shape != (L, 2) or not np.isfinite(x).all():
+        raise ValueError(f"xhat must hold {L} finite estimates, shape ({L}, 2), got {x.shape}")
+    c = as_covariances(cov, L, MAX_COV_SCALE)
+    seed = as_int(seed, "seed", 0)
+    step = as_int(step, "step", 0)
+    if step > setup.steps:
+        raise ValueError(f"step must be at most the setup's {setup.steps} steps, got {step}")
+    d = x[:, None, :] - setup.sensor_array[None]
+    if (d == 0).all(axis=-1).any():
+        l, i = (int(v) for v in np.argwhere((d == 0).all(axis=-1))[0])
+        raise ValueError(f"xhat: estimate {l} sits on sensor {i}")
+    chooser = TeamChooser(setup, [assignment], [seed])
+    return chooser(x[None], np.array(c)[None], step)[0]

@@ -1,0 +1,470 @@
+"""Many targets in closed loop: at every step an assignment gives each target its sensors, and
+one extended Kalman filter per target fuses their measurements.
+
+The paper's experiments track one target (Figs. 4-7) or assign sensors once, without tracking
+(Figs. 8-9). Its authors closed the loop afterwards, in an experiment of their code repository
+the paper never published: eight range sensors, three targets on circles, one filter per
+target, the sensors re-assigned every step. :data:`LATER_MULTI_TARGET` holds that experiment's
+parameters as its code runs it, :func:`network_scene` draws larger networks of the same kind,
+and :func:`simulate_targets` and :func:`simulate_targets_batch` run them with any assignment of
+:data:`~obslib.tracking.ASSIGNMENTS` on the tracking engine (:mod:`~obslib.tracking.engine`).
+
+Order within step :math:`k` (the authors' and Section V's): assign the sensors from the
+current estimates and covariances; log each target's error :math:`\\lVert \\hat x_{l,k} -
+o_{l,k} \\rVert` and :math:`\\operatorname{tr} \\Sigma_{l,k}` before the update; predict every
+filter (:math:`\\Sigma \\leftarrow \\Sigma + Q`); each sensor measures its target's true
+position, entry ``[k - 1, i]`` of the run's noise table added to sensor ``i``'s measurement
+whatever target it serves; update every filter with its team's measurements (Joseph form; a
+target without a sensor keeps its prediction, so its trace grows by exactly
+:math:`\\operatorname{tr} Q`). The targets' paths are known in advance.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+import numpy as np
+
+from .._validate import (
+    ArgumentTypeError,
+    as_choice,
+    as_float_array,
+    as_instance,
+    as_int,
+    as_names,
+    as_noise_table,
+    as_nonnegative,
+    as_points,
+    as_positive,
+    check_distinct,
+)
+from . import kalman
+from .assigners import ASSIGNMENTS, TeamChooser, check_assignment
+from .engine import FilterBank, FixedPaths, run_steps, singular_update_message
+from .results import TargetsBatch, TargetsResult
+from .setup import METRICS, _matrix
+
+__all__ = [
+    "TargetsSetup",
+    "LATER_SENSORS",
+    "LATER_MULTI_TARGET",
+    "circle_paths",
+    "network_scene",
+    "targets_noise_table",
+    "simulate_targets",
+    "simulate_targets_batch",
+]
+
+#: The eight sensors of the authors' later experiment.
+LATER_SENSORS = ((-3.0, 0.0), (-3.0, 4.0), (0.0, 0.0), (2.0, -1.0), (5.0, 0.0), (4.0, 6.0),
+                 (2.0, 7.0), (1.0, 3.0))
+
+
+def _array_field(value, name: str, ndim_tail: tuple, what: str) -> np.ndarray:
+    a = as_float_array(value, name)
+    if a.ndim != len(ndim_tail) or any(t is not None and s != t
+                                       for s, t in zip(a.shape, ndim_tail)):
+        raise ValueError(f"{name} must have shape {what}, got {a.shape}")
+    if not np.isfinite(a).all():
+        raise ValueError(f"{name} must be finite")
+    return a
+
+
+def _nested(a: np.ndarray) -> tuple:
+    if a.ndim == 1:
+        return tuple(float(v) for v in a)
+    return tuple(_nested(b) for b in a)
+
+
+@dataclass(frozen=True)
+class TargetsSetup:
+    """Parameters of a multi-target tracking experiment (a frozen, validated record).
+
+    Attributes
+    ----------
+    sensors : tuple of (x, y)
+        The ``N`` stationary sensors, distinct.
+    truth : nested tuple, shape (steps + 1, L, 2)
+        The targets' true positions :math:`o_{l,k}`, ``k = 1 .. steps + 1`` (the last is where
+        they move after the last step); ``steps`` and ``L`` are read from it.
+    estimate0 : nested tuple, shape (L, 2)
+        The filters' initial estimates.
+    cov0 : 2 x 2 matrix or number
+        Their initial covariance (a number means that multiple of :math:`I`), shared.
+    Q : 2 x 2 matrix or number
+        The filters' process noise (random-walk prediction).
+    R : float
+        The filters' measurement-noise variance, per measurement.
+    noise_std : float
+        Standard deviation of the true measurement noise (the noise tables).
+    u_max : float
+        The targets' speed bound in Theorem 4's pair bound.
+    measurement : {"range", "half-squared-range"}
+        What a sensor measures (:data:`~obslib.tracking.kalman.MEASUREMENTS`): the range, as
+        the later experiment, or Section V's half squared range.
+    metric : {"euclidean", "mahalanobis"}
+        Distances of the pair bound: Euclidean to the estimates (the later experiment) or
+        Mahalanobis in the estimates' covariances.
+    eps : float
+        The prior :math:`\\varepsilon I` of ``"logdet-teams-prior"``.
+    """
+
+    sensors: tuple
+    truth: tuple
+    estimate0: tuple
+    cov0: tuple = ((0.5, 0.0), (0.0, 0.5))
+    Q: tuple = ((0.2, 0.0), (0.0, 0.2))
+    R: float = 0.04
+    noise_std: float = 0.2
+    u_max: float = 0.1
+    measurement: str = "range"
+    metric: str = "euclidean"
+    eps: float = 1.0
+
+    def __post_init__(self):
+        put = lambda name, value: object.__setattr__(self, name, value)  # noqa: E731
+        s = as_points(as_float_array(self.sensors, "sensors"), "sensors", min_count=1)
+        if not np.isfinite(s).all():
+            raise ValueError("sensors must be finite")
+        check_distinct(s)
+        put("sensors", _nested(s))
+        t = _array_field(self.truth, "truth", (None, None, 2), "(steps + 1, L, 2)")
+        if t.shape[0] < 2 or t.shape[1] < 1:
+            raise ValueError(f"truth must hold at least 2 positions of at least 1 target, shape "
+                             f"(steps + 1, L, 2), got {t.shape}")
+        put("truth", _nested(t))
+        x0 = _array_field(self.estimate0, "estimate0", (t.shape[1], 2),
+                          f"({t.shape[1]}, 2), one per target")
+        put("estimate0", _nested(x0))
+        put("cov0", _matrix(self.cov0, "cov0"))
+        put("Q", _matrix(self.Q, "Q"))
+        put("R", as_positive(self.R, "R"))
+        put("noise_std", as_nonnegative(self.noise_std, "noise_std"))
+        put("u_max", as_nonnegative(self.u_max, "u_max"))
+        as_choice(self.measurement, kalman.MEASUREMENTS, "measurement")
+        as_choice(self.metric, METRICS, "metric")
+        put("eps", as_positive(self.eps, "eps"))
+
+    @property
+    def sensor_array(self) -> np.ndarray:
+        """The sensors, ``(N, 2)``."""
+        return np.array(self.sensors, dtype=float)
+
+    @property
+    def truth_array(self) -> np.ndarray:
+        """The true positions, ``(steps + 1, L, 2)``."""
+        return np.array(self.truth, dtype=float)
+
+    @property
+    def n_sensors(self) -> int:
+        return len(self.sensors)
+
+    @property
+    def n_targets(self) -> int:
+        return len(self.estimate0)
+
+    @property
+    def steps(self) -> int:
+        return len(self.truth) - 1
+
+    def replace(self, **changes) -> TargetsSetup:
+        """A validated copy with some fields changed (:func:`dataclasses.replace`)."""
+        return dataclasses.replace(self, **changes)
+
+    def first(self, steps: int) -> TargetsSetup:
+        """The same experiment cut to its first ``steps`` steps.
+
+        Examples
+        --------
+        >>> LATER_MULTI_TARGET.first(10).steps
+        10
+        """
+        steps = as_int(steps, "steps", 1)
+        if steps > self.steps:
+            raise ValueError(f"steps must be at most the setup's {self.steps}, got {steps}")
+        return self.replace(truth=self.truth[: steps + 1])
+
+
+def circle_paths(centers, periods, steps: int, radius: float = 1.0) -> np.ndarray:
+    """The later experiment's targets: at step 1 each stands at its centre :math:`c_l`, at step
+    :math:`k + 1` at :math:`c_l + r\\,(\\cos(k / W_l), \\sin(k / W_l))`, ``(steps + 1, L, 2)``
+    (so the first move jumps from the centre onto the circle).
+
+    Examples
+    --------
+    >>> circle_paths([[2.0, 1.0]], [10.0], 2).round(4).tolist()
+    [[[2.0, 1.0]], [[2.995, 1.0998]], [[2.9801, 1.1987]]]
+    """
+    c = as_points(as_float_array(centers, "centers"), "centers", min_count=1)
+    w = as_float_array(periods, "periods")
+    if w.shape != (c.shape[0],) or not np.isfinite(w).all() or (w == 0).any():
+        raise ValueError(f"periods must be {c.shape[0]} finite non-zero numbers, one per centre")
+    steps = as_int(steps, "steps", 1)
+    radius = as_nonnegative(radius, "radius")
+    k = np.arange(1, steps + 1)[:, None]
+    a = k / w
+    out = np.empty((steps + 1, c.shape[0], 2))
+    out[0] = c
+    out[1:, :, 0] = radius * np.cos(a) + c[:, 0]
+    out[1:, :, 1] = radius * np.sin(a) + c[:, 1]
+    return out
+
+
+#: The authors' later multi-target experiment as their code runs it: 8 range sensors, 3 targets
+#: on unit circles about (2, 1), (-2, 2), (3, 4) (periods 10, 20, -30 steps per radian, each
+#: starting at its centre), initial estimates (2.5, 1.5), (-0.5, 0.5), (3.5, 4.5) with
+#: covariance 0.5 I, Q = 0.2 I, range noise of standard deviation 0.2 (R = 0.04), u_max = 0.1,
+#: Euclidean distances in the pair bound, 100 steps.
+LATER_MULTI_TARGET = TargetsSetup(
+    sensors=LATER_SENSORS,
+    truth=_nested(circle_paths([[2.0, 1.0], [-2.0, 2.0], [3.0, 4.0]], [10.0, 20.0, -30.0], 100)),
+    estimate0=((2.5, 1.5), (-0.5, 0.5), (3.5, 4.5)),
+)
+
+
+def network_scene(n_sensors: int, n_targets: int, steps: int = 100, seed: int = 0,
+                  side: float | None = None) -> TargetsSetup:
+    """A larger network of the later experiment's kind: ``N`` sensors and ``L`` targets on
+    random smooth paths, with the filter, noise and bound of :data:`LATER_MULTI_TARGET`.
+
+    The sensors are uniform in the square ``[0, side]^2``; ``side`` defaults to
+    :math:`10 \\sqrt{N / 8}`, so the sensors are as dense as the later experiment's eight in
+    its 10 x 10 field. Each target starts uniform in the square's middle ``[0.2, 0.8]`` part and
+    moves at a constant speed, uniform in ``[u_max / 3, u_max]`` (the later experiment's
+    targets move 0.1, 0.05 and 0.033 per step, u_max = 0.1), with a heading that turns
+    smoothly: :math:`\\theta_k = \\theta_0 + \\sum_{m=1}^{3} b_m \\sin(2 \\pi m k / K +
+    \\phi_m)`, :math:`b_m` uniform in :math:`\\pm 1.5 / m`, ``K`` the steps. The initial
+    estimates are the starts plus Gaussian errors of covariance ``cov0``. Everything is drawn
+    from ``numpy.random.default_rng([3, seed])``.
+
+    Examples
+    --------
+    >>> su = network_scene(200, 50, steps=20, seed=1)
+    >>> su.n_sensors, su.n_targets, su.steps
+    (200, 50, 20)
+    >>> import numpy as np
+    >>> step = np.diff(su.truth_array, axis=0)
+    >>> bool((np.hypot(step[..., 0], step[..., 1]) <= su.u_max * (1 + 1e-12)).all())
+    True
+    """
+    n = as_int(n_sensors, "n_sensors", 1)
+    L = as_int(n_targets, "n_targets", 1)
+    steps = as_int(steps, "steps", 1)
+    seed = as_int(seed, "seed", 0)
+    side = 10.0 * np.sqrt(n / 8.0) if side is None else as_positive(side, "side")
+    base = LATER_MULTI_TARGET
+    rng = np.random.default_rng([3, seed])
+    sensors = rng.uniform(0.0, side, size=(n, 2))
+    start = rng.uniform(0.2 * side, 0.8 * side, size=(L, 2))
+    speed = rng.uniform(base.u_max / 3, base.u_max, size=L)
+    theta0 = rng.uniform(0.0, 2 * np.pi, size=L)
+    m = np.arange(1, 4)
+    b = rng.uniform(-1.5, 1.5, size=(L, 3)) / m
+    phi = rng.uniform(0.0, 2 * np.pi, size=(L, 3))
+    k = np.arange(steps)[:, None, None]
+    theta = theta0 + (b * np.sin(2 * np.pi * m * k / steps + phi)).sum(axis=-1)  # (steps, L)
+    moves = speed[:, None] * np.stack([np.cos(theta), np.sin(theta)], axis=-1)  # (steps, L, 2)
+    truth = np.concatenate([start[None], start + np.cumsum(moves, axis=0)])
+    chol = np.linalg.cholesky(np.array(base.cov0))
+    estimate0 = start + rng.normal(size=(L, 2)) @ chol.T
+    return base.replace(sensors=_nested(sensors), truth=_nested(truth),
+                        estimate0=_nested(estimate0))
+
+
+def targets_noise_table(setup: TargetsSetup, seed: int = 0) -> np.ndarray:
+    """The measurement noise of one run, ``(steps, N)``: entry ``[k-1, i]`` is added to sensor
+    ``i``'s measurement at step ``k``, whichever target it serves and whatever the assignment
+    (``numpy.random.default_rng(seed).normal(0, noise_std)``).
+
+    Examples
+    --------
+    >>> targets_noise_table(LATER_MULTI_TARGET, 0).shape
+    (100, 8)
+    """
+    as_instance(setup, TargetsSetup, "setup")
+    rng = np.random.default_rng(as_int(seed, "seed", 0))
+    return rng.normal(0.0, setup.noise_std, size=(setup.steps, setup.n_sensors))
+
+
+# --------------------------------------------------------------------------------------------
+# The engine's pass
+# --------------------------------------------------------------------------------------------
+
+
+def _pass(setup: TargetsSetup, kinds, tables, seeds, single: bool = False) -> dict:
+    """``R = len(kinds)`` runs of ``setup`` at once: row ``r`` follows the assignment
+    ``kinds[r]`` with the noise table ``tables[r % B]`` and the seed ``seeds[r]`` (for
+    ``"random"``). Returns the logs as run-major arrays."""
+    R_ = len(kinds)
+    B, steps, N = tables.shape
+    L = setup.n_targets
+    S = setup.sensor_array
+    truth = setup.truth_array
+    F = R_ * L
+    filters = FilterBank(np.broadcast_to(setup.estimate0, (R_, L, 2)).reshape(F, 2),
+                         np.broadcast_to(setup.cov0, (F, 2, 2)), setup.Q)
+    chooser = TeamChooser(setup, kinds, seeds)
+    labels_log = np.empty((steps, R_, N), dtype=np.int16 if L < 2**15 else np.int64)
+    est = np.empty((steps, F, 2))
+    cov = np.empty((steps, F, 2, 2))
+
+    def choose(k, control):
+        if k == steps:
+            return None  # no step follows the last
+        return chooser(filters.estimates().reshape(R_, L, 2),
+                       filters.covariances().reshape(R_, L, 2, 2), k)
+
+    def record(k, labels):
+        labels_log[k] = labels
+        est[k] = filters.estimates()
+        cov[k] = filters.covariances()
+
+    def update(k, labels, position):
+        P = filters.predict()
+        rr, ii = np.nonzero(labels >= 0)  # runs, then sensors, ascending
+        owner = rr * L + labels[rr, ii]
+        order = np.argsort(owner, kind="stable")
+        rr, ii, owner = rr[order], ii[order], owner[order]
+        try:
+            filters.update_teams(P, owner, S[ii], position[0][owner % L],
+                                 tables[rr % B, k, ii], setup.R, setup.measurement)
+        except kalman.SingularInnovation as e:
+            f = int(np.flatnonzero(~e.ok)[0])
+            r, l = divmod(f, L)
+            x = np.array([filters.xx[f], filters.xy[f]])
+            ps = S[ii[owner == f]]
+            raise ValueError(singular_update_message(x, ps, k, None if single else r, l)) from None
+
+    run_steps(steps, update, choose, FixedPaths(truth[None]), record)
+    est_r = est.reshape(steps, R_, L, 2).transpose(1, 0, 2, 3)
+    cov_r = cov.reshape(steps, R_, L, 2, 2).transpose(1, 0, 2, 3, 4)
+    diff = est_r - truth[None, :steps]
+    return {
+        "labels": np.ascontiguousarray(labels_log.transpose(1, 0, 2)),
+        "error": np.hypot(diff[..., 0], diff[..., 1]),
+        "trace_cov": cov_r[..., 0, 0] + cov_r[..., 1, 1],
+        "truth": np.broadcast_to(truth[:steps], (R_, steps, L, 2)),
+        "estimate": np.ascontiguousarray(est_r),
+        "cov": np.ascontiguousarray(cov_r),
+        "estimate_end": filters.estimates().reshape(R_, L, 2),
+        "cov_end": filters.covariances().reshape(R_, L, 2, 2),
+    }
+
+
+def simulate_targets(setup: TargetsSetup, assignment: str, noise=None,
+                     seed: int = 0) -> TargetsResult:
+    """One run of many targets in closed loop (the module docstring gives the order of a step).
+
+    Parameters
+    ----------
+    setup : TargetsSetup
+        E.g. :data:`LATER_MULTI_TARGET` or a :func:`network_scene`.
+    assignment : str
+        A name of :data:`~obslib.tracking.ASSIGNMENTS` (see
+        :mod:`~obslib.tracking.assigners`).
+    noise : array_like, shape (steps, N), optional
+        Entry ``[k-1, i]`` is added to sensor ``i``'s measurement at step ``k``, the same for
+        every assignment. Default: :func:`targets_noise_table` of ``seed``.
+    seed : int
+        Seed of the noise table when ``noise`` is not given, and of the ``"random"``
+        assignment's draws in any case.
+
+    Returns
+    -------
+    TargetsResult
+        Per-step arrays: ``teams`` (each target's sorted sensors), ``labels``, ``error``,
+        ``trace_cov`` (logged before each step's update), ``truth``, ``estimate``, ``cov``.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> r = tracking.simulate_targets(tracking.LATER_MULTI_TARGET, "unique-pairs", seed=0)
+    >>> r.teams[0]
+    ((0, 6), (3, 7), (1, 4))
+    >>> r.error.shape, r.error[0].round(4).tolist(), r.trace_cov[1].round(4).tolist()
+    ((100, 3), [0.7071, 2.1213, 0.7071], [0.0778, 0.0757, 0.0799])
+    """
+    as_instance(setup, TargetsSetup, "setup")
+    check_assignment(setup, assignment)
+    if noise is None or assignment == "random":
+        seed = as_int(seed, "seed", 0)
+    if noise is None:
+        table, used = targets_noise_table(setup, seed), seed
+    else:
+        table, used = as_noise_table(noise, (setup.steps, setup.n_sensors)), None
+    res = _pass(setup, [assignment], table[None], [seed], single=True)
+    return TargetsResult(setup=setup, assignment=assignment, seed=used, noise=table,
+                         **{k: np.array(v[0]) for k, v in res.items()})
+
+
+def simulate_targets_batch(setup: TargetsSetup, assignments, seeds=None, noise=None) -> dict:
+    """Several assignments over many noise realisations at once, with common noise.
+
+    Run ``b`` of every assignment uses ``targets_noise_table(setup, seeds[b])`` (or
+    ``noise[b]``), so it equals ``simulate_targets(setup, assignment, seed=seeds[b])``; all
+    runs of all assignments advance together on the engine.
+
+    Parameters
+    ----------
+    setup : TargetsSetup
+    assignments : list of str
+        Names of :data:`~obslib.tracking.ASSIGNMENTS`.
+    seeds : iterable of int, optional
+    noise : array_like, shape (B, steps, N), optional
+        Explicit noise tables instead of seeds (not with ``"random"``, which draws from the
+        seed).
+
+    Returns
+    -------
+    dict
+        ``{assignment: TargetsBatch}`` in the order given.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> su = tracking.LATER_MULTI_TARGET.first(20)
+    >>> runs = tracking.simulate_targets_batch(su, ["unique-pairs", "logdet-teams"],
+    ...                                        seeds=[0, 1, 2])
+    >>> runs["logdet-teams"].labels.shape, runs["unique-pairs"].team_sizes[0, 0].tolist()
+    ((3, 20, 8), [2, 2, 2])
+    """
+    as_instance(setup, TargetsSetup, "setup")
+    if isinstance(assignments, str):
+        raise ArgumentTypeError(f"assignments must be a list of names, got the string "
+                                f"{assignments!r}; write [{assignments!r}]")
+    names = list(dict.fromkeys(as_names(assignments, "assignments", ASSIGNMENTS)))
+    if not names:
+        raise ValueError("assignments is empty")
+    for name in names:
+        check_assignment(setup, name)
+    if (seeds is None) == (noise is None):
+        raise ValueError("give either seeds or noise tables")
+    if noise is not None:
+        given = as_float_array(noise, "noise")
+        if given.ndim != 3:
+            raise ValueError(f"noise must have shape (B, steps, N), got {given.shape}")
+        if "random" in names:
+            raise ValueError("the random assignment draws from the run's seed: give seeds, "
+                             "not noise tables")
+        tables = np.stack([as_noise_table(t, (setup.steps, setup.n_sensors)) for t in given])
+        seeds = ()
+    else:
+        if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
+            raise ArgumentTypeError(
+                f"seeds must be an iterable of non-negative integers, got {seeds!r}")
+        seeds = tuple(as_int(x, "each seed", 0) for x in seeds)
+        if not seeds:
+            raise ValueError("seeds is empty")
+        tables = np.stack([targets_noise_table(setup, x) for x in seeds])
+    B = tables.shape[0]
+    kinds = np.repeat(names, B)
+    row_seeds = list(seeds) * len(names) if seeds else [0] * (B * len(names))
+    res = _pass(setup, kinds, tables, row_seeds)
+    out = {}
+    for g, name in enumerate(names):
+        sl = slice(g * B, (g + 1) * B)
+        out[name] = TargetsBatch(setup=setup, assignment=name, seed=None, noise=tables,
+                                 seeds=seeds, **{k: v[sl] for k, v in res.items()})
+    return out
