@@ -30,10 +30,11 @@ matter of arithmetic:
     pivoting and a fused multiply-add, which leaves the rounding residue of a singular matrix
     (zero, a tiny positive number, or a tiny negative one, whose logarithm is complex); the
     logarithm of an empty team's determinant is 0 (MATLAB's :math:`\\det` of a 0 x 0 matrix is
-    1); the table of gains of the sensors already taken holds zeros; and the round's maximum is
-    MATLAB's: ignoring NaN, by value when every gain is real, else by magnitude and then by
-    phase angle, the first in column order (smallest target, then smallest sensor) among
-    equal values. Which target gets a first sensor is then decided by those residues;
+    1); the table of gains of the sensors already taken holds zeros; and the round's pick is
+    the first entry, in column order (smallest target, then smallest sensor), equal to
+    MATLAB's ``max(max(table))`` (:func:`matlab_table_max`: by value among real numbers, by
+    magnitude and phase angle in a table with complex entries). Which target gets a first
+    sensor is then decided by those residues;
 ``"logdet-teams-as-run"``
     the same teams, read as the authors' experiment reads them: target ``l``'s filter measures
     with the sensors numbered by the *rounds* at which ``l`` won a sensor, not with the sensors
@@ -67,7 +68,7 @@ from .._kernels import mahalanobis_rescale, normalise_rows, pair_kernel
 from .._validate import as_choice, as_float_array, as_instance, as_int
 
 __all__ = ["ASSIGNMENTS", "PAIR_ASSIGNMENTS", "MAX_ENUMERATED", "code_logdet_det",
-           "assign_targets"]
+           "matlab_table_max", "assign_targets"]
 
 #: The assignments :func:`~obslib.tracking.simulate_targets` accepts (see the module docstring).
 ASSIGNMENTS = ("unique-pairs", "optimal-pairs", "random", "logdet-teams", "logdet-teams-as-run",
@@ -313,24 +314,65 @@ def _complex_log(det):
     return re, im
 
 
-def _matlab_first_max(re, im) -> np.ndarray:
-    """Per run, the position in ``re, im`` ``(M, L, N)`` (flattened, target-major: MATLAB's
-    column order of an ``N x L`` table) of the first entry equal to MATLAB's ``max`` of the
-    table: NaN ignored; a real table by value; a table with an entry of non-zero imaginary part
-    by magnitude, then phase angle."""
-    M = re.shape[0]
-    re, im = re.reshape(M, -1), im.reshape(M, -1)
+def _max_keys(re, im, cplx):
+    """MATLAB's order of ``re + i im``: by value where ``cplx`` is false, else by magnitude,
+    then phase angle; NaN is ignored (``valid``)."""
     valid = ~(np.isnan(re) | np.isnan(im))
-    cplx = (im != 0).any(axis=1)[:, None]
     with np.errstate(invalid="ignore"):
-        mag = np.hypot(re, im)
-        ang = np.arctan2(im, re)
-    k1 = np.where(valid, np.where(cplx, mag, re), -np.inf)
-    k2 = np.where(cplx, ang, 0.0)
-    m1 = np.where(valid, k1, -np.inf).max(axis=1, keepdims=True)
+        k1 = np.where(valid, np.where(cplx, np.hypot(re, im), re), -np.inf)
+        k2 = np.where(cplx, np.arctan2(im, re), 0.0)
+    return valid, k1, k2
+
+
+def _first_max(valid, k1, k2, axis):
+    """Whether each entry attains the maximum along ``axis`` of the keys (``k1``, then
+    ``k2``), among the ``valid`` entries."""
+    m1 = k1.max(axis=axis, keepdims=True)
     cand = valid & (k1 == m1)
-    m2 = np.where(cand, k2, -np.inf).max(axis=1, keepdims=True)
-    return (cand & (k2 == m2)).argmax(axis=1)
+    m2 = np.where(cand, k2, -np.inf).max(axis=axis, keepdims=True)
+    return cand & (k2 == m2)
+
+
+def matlab_table_max(re, im) -> np.ndarray:
+    """Per table, where the authors' code finds its round's pick: ``[row, col] =
+    find(T == max(max(T)))``, the first match, of the gains ``T = re + i im`` ``(M, L, N)``
+    (an ``N x L`` table per run, stored target-major as MATLAB stores its columns). Returns the
+    flat index ``l N + i`` of the pick, ``(M,)``.
+
+    MATLAB's rules: ``max`` ignores NaN; it compares real numbers by value and, in an array
+    with any entry of non-zero imaginary part, every entry by magnitude, then by phase angle.
+    ``max(T)`` takes the maximum of each column; MATLAB drops a zero imaginary part from a
+    result, so where every column maximum is real the second ``max`` compares them by value.
+    ``find`` then returns the first entry equal to that maximum in column order (smallest
+    target, then smallest sensor).
+
+    Examples
+    --------
+    A real table: the largest value wins. One entry of non-zero imaginary part makes each
+    column's maximum be chosen by magnitude (-36 and -40); both are real, so the larger value
+    wins:
+
+    >>> import numpy as np
+    >>> re = np.array([[[-36.0, 2.0], [-30.0, -40.0]]])  # targets 0, 1; sensors 0, 1
+    >>> int(matlab_table_max(re, np.zeros_like(re))[0])  # target 0, sensor 1
+    1
+    >>> im = np.array([[[0.0, np.pi], [0.0, 0.0]]])
+    >>> int(matlab_table_max(re, im)[0])  # target 0, sensor 0
+    0
+    """
+    M, L, N = re.shape
+    cplx = (im != 0).any(axis=(1, 2))[:, None, None]
+    win = _first_max(*_max_keys(re, im, cplx), axis=2)
+    i = win.argmax(axis=2)  # each column's maximum (M, L); NaN where the column has none
+    has = win.any(axis=2)
+    rows = np.arange(M)[:, None]
+    cre = np.where(has, re[rows, np.arange(L), i], np.nan)
+    cim = np.where(has, im[rows, np.arange(L), i], np.nan)
+    cplx2 = (np.where(has, cim, 0.0) != 0).any(axis=1)[:, None]
+    l = _first_max(*_max_keys(cre, cim, cplx2), axis=1).argmax(axis=1)
+    vre, vim = cre[np.arange(M), l], cim[np.arange(M), l]
+    equal = (re == vre[:, None, None]) & (im == vim[:, None, None])
+    return equal.reshape(M, -1).argmax(axis=1)
 
 
 def _logdet_teams(S, x, exact: bool):
@@ -371,7 +413,7 @@ def _logdet_rounds(S, x, exact: bool):
     picked = np.full((M, N), -1, dtype=np.int64)
     rounds = np.empty((M, N), dtype=np.int64)
     for t in range(N):
-        at = _matlab_first_max(gain_re.transpose(0, 2, 1), gain_im.transpose(0, 2, 1))
+        at = matlab_table_max(gain_re.transpose(0, 2, 1), gain_im.transpose(0, 2, 1))
         l, i = np.divmod(at, N)
         rounds[:, t] = l
         newly = free[rows, i]

@@ -36,9 +36,10 @@ __all__ = ["MEASUREMENTS", "SINGULAR_RTOL", "SingularInnovation", "predict", "up
 MEASUREMENTS = ("half-squared-range", "range")
 
 #: The update stops with :class:`SingularInnovation` when the innovation covariance
-#: ``S = H P H^T + R`` is singular to this relative precision, ``det S <= SINGULAR_RTOL *
-#: prod(diag S)`` (by Hadamard's inequality the ratio is at most 1; below this its gain would
-#: carry no correct digit).
+#: ``S = H P H^T + R`` is singular to this relative precision: when a pivot of its Cholesky
+#: factorisation, the variance of a measurement's innovation given the ones before it, is at
+#: most ``SINGULAR_RTOL`` times that measurement's own variance ``S_mm`` (for two measurements,
+#: ``det S <= SINGULAR_RTOL * S_00 S_11``); the gain would carry no correct digit.
 SINGULAR_RTOL = 1e-13
 
 
@@ -305,6 +306,30 @@ def _update(x, P, s0, s1, z, R):
     return (xx, xy), P
 
 
+def _regular(S) -> np.ndarray:
+    """Whether each of the stacked ``S`` ``(G, m, m)`` is positive definite to
+    :data:`SINGULAR_RTOL`: every pivot of its Cholesky factor, squared, above ``SINGULAR_RTOL``
+    times its diagonal entry (false for non-finite entries)."""
+    ok = np.isfinite(S).all(axis=(1, 2))
+    rows = np.flatnonzero(ok)
+    try:
+        pivots = {None: np.einsum("gii->gi", np.linalg.cholesky(S[rows])) ** 2}
+    except np.linalg.LinAlgError:  # one at a time, to tell which
+        pivots = {}
+        for g in rows:
+            try:
+                pivots[g] = np.diag(np.linalg.cholesky(S[g])) ** 2
+            except np.linalg.LinAlgError:
+                ok[g] = False
+    diag = np.einsum("gii->gi", S)
+    if None in pivots:
+        ok[rows] = (pivots[None] > SINGULAR_RTOL * diag[rows]).all(axis=1)
+    else:
+        for g, piv in pivots.items():
+            ok[g] = bool((piv > SINGULAR_RTOL * diag[g]).all())
+    return ok
+
+
 def _update_rows(x, P, H, y, R):
     """:func:`update` for ``G`` filters of ``m`` measurements each, given their Jacobian rows
     ``H`` ``(G, m, 2)`` and innovations ``y`` ``(G, m)``: estimates ``x`` ``(G, 2)``,
@@ -318,10 +343,7 @@ def _update_rows(x, P, H, y, R):
     Ht = np.swapaxes(H, 1, 2)
     PHt = P @ Ht  # (G, 2, m)
     S = H @ PHt + R
-    diag = np.einsum("gii->gi", S)
-    with np.errstate(all="ignore"):
-        sign, logdet = np.linalg.slogdet(S)
-        ok = (sign > 0) & (logdet - np.log(diag).sum(axis=1) > np.log(SINGULAR_RTOL))
+    ok = _regular(S)
     if not ok.all():
         raise SingularInnovation(ok)
     K = PHt @ np.linalg.inv(S)  # (G, 2, m)
