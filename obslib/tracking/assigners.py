@@ -82,9 +82,9 @@ PAIR_ASSIGNMENTS = ("unique-pairs", "optimal-pairs", "random")
 #: beyond it each step is solved by branch and bound.
 MAX_ENUMERATED = 200_000
 
-#: Weights per block of runs for the batched greedy (about 32 MB); beyond one run's worth the
+#: Weights per block of runs for the batched greedy (0.5 MB); beyond one run's worth the
 #: greedy runs from geometry, run by run, without the weights.
-_BLOCK_WEIGHTS = 1 << 22
+_BLOCK_WEIGHTS = 1 << 16
 
 
 # --------------------------------------------------------------------------------------------
@@ -314,23 +314,25 @@ def _complex_log(det):
     return re, im
 
 
-def _max_keys(re, im, cplx):
-    """MATLAB's order of ``re + i im``: by value where ``cplx`` is false, else by magnitude,
-    then phase angle; NaN is ignored (``valid``)."""
-    valid = ~(np.isnan(re) | np.isnan(im))
-    with np.errstate(invalid="ignore"):
-        k1 = np.where(valid, np.where(cplx, np.hypot(re, im), re), -np.inf)
-        k2 = np.where(cplx, np.arctan2(im, re), 0.0)
-    return valid, k1, k2
-
-
-def _first_max(valid, k1, k2, axis):
-    """Whether each entry attains the maximum along ``axis`` of the keys (``k1``, then
-    ``k2``), among the ``valid`` entries."""
-    m1 = k1.max(axis=axis, keepdims=True)
-    cand = valid & (k1 == m1)
-    m2 = np.where(cand, k2, -np.inf).max(axis=axis, keepdims=True)
-    return cand & (k2 == m2)
+def _column_maxima(re, im, cplx):
+    """Each column's maximum ``(cre, cim)`` ``(M, L)`` of the tables ``re + i im``
+    ``(M, L, N)`` by MATLAB's rules (NaN where a column has no number): by value in a real
+    table, else by magnitude, then phase angle. The angle is computed only for the entries of
+    largest magnitude."""
+    M, L, N = re.shape
+    with np.errstate(invalid="ignore", over="ignore"):
+        key = np.where(cplx, re * re + im * im, re)  # magnitude squared: the same order
+    top = np.fmax.reduce(key, axis=2)  # NaN ignored
+    m, l, i = np.nonzero(key == top[..., None])  # the candidates, NaN excluded
+    ang = np.where(cplx[m, 0, 0], np.arctan2(im[m, l, i], re[m, l, i]), 0.0)
+    order = np.lexsort((i, -ang, l, m))  # per column: largest angle first, then first entry
+    first = np.ones(order.size, dtype=bool)
+    first[1:] = (m[order][1:] != m[order][:-1]) | (l[order][1:] != l[order][:-1])
+    sel = order[first]
+    cre, cim = np.full((M, L), np.nan), np.full((M, L), np.nan)
+    cre[m[sel], l[sel]] = re[m[sel], l[sel], i[sel]]
+    cim[m[sel], l[sel]] = im[m[sel], l[sel], i[sel]]
+    return cre, cim
 
 
 def matlab_table_max(re, im) -> np.ndarray:
@@ -362,16 +364,10 @@ def matlab_table_max(re, im) -> np.ndarray:
     """
     M, L, N = re.shape
     cplx = (im != 0).any(axis=(1, 2))[:, None, None]
-    win = _first_max(*_max_keys(re, im, cplx), axis=2)
-    i = win.argmax(axis=2)  # each column's maximum (M, L); NaN where the column has none
-    has = win.any(axis=2)
-    rows = np.arange(M)[:, None]
-    cre = np.where(has, re[rows, np.arange(L), i], np.nan)
-    cim = np.where(has, im[rows, np.arange(L), i], np.nan)
-    cplx2 = (np.where(has, cim, 0.0) != 0).any(axis=1)[:, None]
-    l = _first_max(*_max_keys(cre, cim, cplx2), axis=1).argmax(axis=1)
-    vre, vim = cre[np.arange(M), l], cim[np.arange(M), l]
-    equal = (re == vre[:, None, None]) & (im == vim[:, None, None])
+    cre, cim = _column_maxima(re, im, cplx)
+    cplx2 = (np.nan_to_num(cim) != 0).any(axis=1)[:, None, None]
+    vre, vim = _column_maxima(cre[:, None, :], cim[:, None, :], cplx2)
+    equal = (re == vre[:, :, None]) & (im == vim[:, :, None])
     return equal.reshape(M, -1).argmax(axis=1)
 
 
@@ -394,15 +390,24 @@ def _logdet_rounds(S, x, exact: bool):
     size = np.zeros((M, L), dtype=np.int64)
     old_re, old_im = np.zeros((M, L)), np.zeros((M, L))  # log det of the empty team: 0
 
-    def new_logdet(ms, l):
-        """log det of team ``l[m]`` plus each sensor's row, ``(len(ms), N)``."""
-        ax, ay = vx[ms, :, l], vy[ms, :, l]
-        if exact:
-            d = det[ms, l][:, None] + C[ms, :, l]
+    def new_logdet(ms, l, i=slice(None)):
+        """log det of team ``l[m]`` plus the row of sensor ``i`` (every sensor by default),
+        ``(len(ms), N)`` or ``(len(ms),)``."""
+        if isinstance(i, slice):
+            ax, ay = vx[ms, :, l], vy[ms, :, l]
+            sums = (det[ms, l][:, None], g00[ms, l][:, None], g01[ms, l][:, None],
+                    g11[ms, l][:, None])
+            inc = C[ms, :, l]
         else:
-            d = code_logdet_det(fused_multiply_add(ax, ax, g00[ms, l][:, None]),
-                                fused_multiply_add(ax, ay, g01[ms, l][:, None]),
-                                fused_multiply_add(ay, ay, g11[ms, l][:, None]))
+            ax, ay = vx[ms, i, l], vy[ms, i, l]
+            sums = (det[ms, l], g00[ms, l], g01[ms, l], g11[ms, l])
+            inc = C[ms, i, l]
+        if exact:
+            d = sums[0] + inc
+        else:
+            d = code_logdet_det(fused_multiply_add(ax, ax, sums[1]),
+                                fused_multiply_add(ax, ay, sums[2]),
+                                fused_multiply_add(ay, ay, sums[3]))
         return _complex_log(d)
 
     gain_re, gain_im = np.empty((M, N, L)), np.empty((M, N, L))
@@ -419,8 +424,7 @@ def _logdet_rounds(S, x, exact: bool):
         newly = free[rows, i]
         picked[rows[newly], i[newly]] = l[newly]
         # the team's new O^T O and log det (the value of the table's entry)
-        nre, nim = new_logdet(rows, l)
-        old_re[rows, l], old_im[rows, l] = nre[rows, i], nim[rows, i]
+        old_re[rows, l], old_im[rows, l] = new_logdet(rows, l, i)
         ax, ay = vx[rows, i, l], vy[rows, i, l]
         g00[rows, l] = fused_multiply_add(ax, ax, g00[rows, l])
         g01[rows, l] = fused_multiply_add(ax, ay, g01[rows, l])

@@ -330,17 +330,41 @@ def _regular(S) -> np.ndarray:
     return ok
 
 
+#: Above this many measurements per filter (and with a measurement noise ``R = r I``), the
+#: engine's update computes the gain in its information form (:func:`_update_rows`).
+INFORMATION_FORM_ROWS = 8
+
+
 def _update_rows(x, P, H, y, R):
     """:func:`update` for ``G`` filters of ``m`` measurements each, given their Jacobian rows
     ``H`` ``(G, m, 2)`` and innovations ``y`` ``(G, m)``: estimates ``x`` ``(G, 2)``,
     covariances ``P`` ``(G, 2, 2)``, noise ``R`` ``(m, m)`` (or a number: that variance).
-    filterpy's order of operations, as stacked matrix products. Returns the new ``x, P``;
-    raises :class:`SingularInnovation` where ``S`` is singular to :data:`SINGULAR_RTOL`.
+    Returns the new ``x, P``; raises :class:`SingularInnovation` where ``S`` is singular to
+    :data:`SINGULAR_RTOL`.
+
+    filterpy's order of operations, as stacked matrix products: ``K = P H^T S^{-1}``, then the
+    Joseph form. With more than :data:`INFORMATION_FORM_ROWS` measurements of variance ``r``
+    (a number ``R``), the same gain is computed as :math:`K = (P^{-1} + H^T H / r)^{-1} H^T / r`
+    (the matrix inversion lemma), with 2 x 2 inverses instead of an ``m x m`` one, and the
+    Joseph form follows as before; ``S = H P H^T + r I`` is then positive definite whatever
+    ``H``, and only its finiteness is checked.
     """
     m = H.shape[1]
+    Ht = np.swapaxes(H, 1, 2)
+    if np.ndim(R) == 0 and m > INFORMATION_FORM_ROWS:
+        r = float(R)
+        with np.errstate(all="ignore"):
+            A = np.linalg.inv(P) + (Ht @ H) / r
+            K = np.linalg.inv(A) @ Ht / r  # (G, 2, m)
+            x = x + (K @ y[:, :, None])[:, :, 0]
+            IKH = np.eye(2) - K @ H
+            P = (IKH @ P) @ np.swapaxes(IKH, 1, 2) + r * (K @ np.swapaxes(K, 1, 2))
+        ok = np.isfinite(x).all(axis=1) & np.isfinite(P).all(axis=(1, 2))
+        if not ok.all():
+            raise SingularInnovation(ok)
+        return x, P
     if np.ndim(R) == 0:
         R = float(R) * np.eye(m)
-    Ht = np.swapaxes(H, 1, 2)
     PHt = P @ Ht  # (G, 2, m)
     S = H @ PHt + R
     ok = _regular(S)

@@ -65,11 +65,11 @@ def test_batched_pair_steps_equal_filterpy_on_random_problems(diagonal):
 
 
 @pytest.mark.parametrize("measurement", kalman.MEASUREMENTS)
-@pytest.mark.parametrize("m", [1, 2, 3, 5])
+@pytest.mark.parametrize("m", [1, 2, 3, 5, 12])
 def test_teams_of_any_size_equal_filterpy(measurement, m):
     """m sensors per filter, either measurement model: the stacked update the engine uses for
-    teams (``_update_rows``, through the public ``update``) against filterpy over several
-    steps, to 1e-9 relative."""
+    teams (``_update_rows``, through the public ``update``; the gain in its information form
+    for m = 12) against filterpy over several steps, to 1e-9 relative."""
     rng = np.random.default_rng(10 * m + len(measurement))
     B = 12
     x = rng.uniform(0, 10, size=(B, 2))

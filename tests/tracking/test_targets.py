@@ -195,6 +195,37 @@ def test_the_round_maximum_follows_matlab_s_rules():
     assert m(re, np.zeros_like(re)).tolist() == [0]  # all equal: the first in column order
 
 
+def _matlab_max(values, real):
+    """MATLAB's max of numbers of one array: NaN ignored; by value if the array is real, else
+    by abs, then angle; the first of the maxima."""
+    vals = [v for v in values if not np.isnan(v.real)]
+    if not vals:
+        return complex(np.nan, 0.0)
+    if real:
+        return max(vals, key=lambda v: v.real)
+    return max(vals, key=lambda v: (abs(v), np.angle(v)))
+
+
+def test_the_round_maximum_equals_a_plain_two_stage_max():
+    """``find(T == max(max(T)))``, written entry by entry, on random tables with the values the
+    code's gains take: NaN, infinities, zeros (taken sensors), and complex entries."""
+    rng = np.random.default_rng(6)
+    pool = [np.nan, np.inf, -np.inf, 0.0, 37.1, -35.2, 2.5]
+    for _ in range(300):
+        N, L = rng.integers(1, 6, size=2)
+        re = rng.choice(pool + list(rng.normal(0, 30, 5)), size=(1, L, N))
+        im = np.where(rng.random((1, L, N)) < 0.2, rng.choice([np.pi, -np.pi], (1, L, N)), 0.0)
+        im[np.isnan(re)] = 0.0
+        T = re + 1j * im  # T[0, l, i]: column l, row i
+        real = not (im != 0).any()  # the array is complex if any entry is
+        cols = [_matlab_max(list(T[0, l]), real) for l in range(L)]
+        v = _matlab_max(cols, all(c.imag == 0 for c in cols))  # zero parts dropped
+        hits = [l * N + i for l in range(L) for i in range(N)
+                if T[0, l, i].real == v.real and T[0, l, i].imag == v.imag]
+        if hits:  # a table of NaN only has no maximum (MATLAB's find then finds nothing)
+            assert assigners.matlab_table_max(re, im).tolist() == [hits[0]]
+
+
 def test_exact_arithmetic_gives_the_first_target_every_sensor():
     r = tr.simulate_targets(LATER, "logdet-teams-exact", seed=0)
     assert (r.labels == 0).all()
