@@ -101,6 +101,7 @@ from .targets import (
     network_scene,
     simulate_targets,
     simulate_targets_batch,
+    step_times,
     targets_noise_table,
 )
 
@@ -158,4 +159,5 @@ __all__ = [
     "assign_targets",
     "simulate_targets",
     "simulate_targets_batch",
+    "step_times",
 ]

@@ -22,6 +22,7 @@ target without a sensor keeps its prediction, so its trace grows by exactly
 from __future__ import annotations
 
 import dataclasses
+import time
 from collections.abc import Iterable
 from dataclasses import dataclass
 
@@ -55,6 +56,7 @@ __all__ = [
     "targets_noise_table",
     "simulate_targets",
     "simulate_targets_batch",
+    "step_times",
 ]
 
 #: The eight sensors of the authors' later experiment.
@@ -293,10 +295,12 @@ def targets_noise_table(setup: TargetsSetup, seed: int = 0) -> np.ndarray:
 # --------------------------------------------------------------------------------------------
 
 
-def _pass(setup: TargetsSetup, kinds, tables, seeds, single: bool = False) -> dict:
+def _pass(setup: TargetsSetup, kinds, tables, seeds, single: bool = False,
+          clock: list | None = None) -> dict:
     """``R = len(kinds)`` runs of ``setup`` at once: row ``r`` follows the assignment
     ``kinds[r]`` with the noise table ``tables[r % B]`` and the seed ``seeds[r]`` (for
-    ``"random"``). Returns the logs as run-major arrays."""
+    ``"random"``). Returns the logs as run-major arrays; ``clock`` (a list) receives the
+    ``time.perf_counter()`` at the start of every step."""
     R_ = len(kinds)
     B, steps, N = tables.shape
     L = setup.n_targets
@@ -317,6 +321,8 @@ def _pass(setup: TargetsSetup, kinds, tables, seeds, single: bool = False) -> di
                        filters.covariances().reshape(R_, L, 2, 2), k)
 
     def record(k, labels):
+        if clock is not None:
+            clock.append(time.perf_counter())
         labels_log[k] = labels
         est[k] = filters.estimates()
         cov[k] = filters.covariances()
@@ -468,3 +474,33 @@ def simulate_targets_batch(setup: TargetsSetup, assignments, seeds=None, noise=N
         out[name] = TargetsBatch(setup=setup, assignment=name, seed=None, noise=tables,
                                  seeds=seeds, **{k: v[sl] for k, v in res.items()})
     return out
+
+
+def step_times(setup: TargetsSetup, assignment: str, seed: int = 0) -> tuple:
+    """The wall time of each step of one run of :func:`simulate_targets`: from the start of
+    step ``k`` to the start of step ``k + 1``, that is every filter's predict and update and the
+    assignment for the next step (steps ``1 .. steps - 1``; the last step makes no assignment).
+
+    Returns
+    -------
+    times : ndarray, shape (steps - 1,)
+        Seconds.
+    run : TargetsResult
+        The run (its estimates are what each step's assignment was made from).
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> t, run = tracking.step_times(tracking.LATER_MULTI_TARGET.first(5), "unique-pairs")
+    >>> t.shape, bool((t > 0).all()), run.steps
+    ((4,), True, 5)
+    """
+    as_instance(setup, TargetsSetup, "setup")
+    check_assignment(setup, assignment)
+    seed = as_int(seed, "seed", 0)
+    table = targets_noise_table(setup, seed)
+    clock: list = []
+    res = _pass(setup, [assignment], table[None], [seed], single=True, clock=clock)
+    run = TargetsResult(setup=setup, assignment=assignment, seed=seed, noise=table,
+                        **{k: np.array(v[0]) for k, v in res.items()})
+    return np.diff(np.array(clock)), run
