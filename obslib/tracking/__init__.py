@@ -101,6 +101,7 @@ from .targets import (
     network_scene,
     simulate_targets,
     simulate_targets_batch,
+    simulate_targets_scenes,
     step_times,
     targets_noise_table,
 )
@@ -159,5 +160,6 @@ __all__ = [
     "assign_targets",
     "simulate_targets",
     "simulate_targets_batch",
+    "simulate_targets_scenes",
     "step_times",
 ]

@@ -67,8 +67,8 @@ import numpy as np
 from .._kernels import mahalanobis_rescale, normalise_rows, pair_kernel
 from .._validate import as_choice, as_float_array, as_instance, as_int
 
-__all__ = ["ASSIGNMENTS", "PAIR_ASSIGNMENTS", "MAX_ENUMERATED", "code_logdet_det",
-           "matlab_table_max", "assign_targets"]
+__all__ = ["ASSIGNMENTS", "PAIR_ASSIGNMENTS", "MAX_ENUMERATED", "ARITHMETICS", "code_logdet_det",
+           "matlab_table_max", "logdet_rounds", "assign_targets"]
 
 #: The assignments :func:`~obslib.tracking.simulate_targets` accepts (see the module docstring).
 ASSIGNMENTS = ("unique-pairs", "optimal-pairs", "random", "logdet-teams", "logdet-teams-as-run",
@@ -94,8 +94,9 @@ _BLOCK_WEIGHTS = 1 << 16
 
 def pair_weights(S, x, P, u_max: float, maha: bool) -> np.ndarray:
     """Theorem 4's bound of every pair ``i < j`` (``numpy.triu_indices`` order) for every
-    target of ``M`` runs, ``(M, N (N - 1) / 2, L)``: sensors ``S`` ``(N, 2)``, estimates ``x``
-    ``(M, L, 2)``, covariances ``P`` ``(M, L, 2, 2)`` (used where ``maha``). The rows, their
+    target of ``M`` runs, ``(M, N (N - 1) / 2, L)``: sensors ``S`` ``(N, 2)`` or one set per
+    run ``(M, N, 2)``, estimates ``x`` ``(M, L, 2)``, covariances ``P`` ``(M, L, 2, 2)`` (used
+    where ``maha``). The rows, their
     normalisation and the kernel of :func:`obslib.pair_bounds`, elementwise, so the weights are
     its numbers (exact ties stay ties: the later experiment's first step has one).
 
@@ -111,9 +112,10 @@ def pair_weights(S, x, P, u_max: float, maha: bool) -> np.ndarray:
     True
     """
     M, L = x.shape[:2]
-    N = S.shape[0]
+    N = S.shape[-2]
     ii, jj = np.triu_indices(N, 1)
-    d = x.reshape(M * L, 1, 2) - S[None]  # rows o_l - p_i, (M L, N, 2)
+    S = np.broadcast_to(S, (M, N, 2))
+    d = (x[:, :, None, :] - S[:, None, :, :]).reshape(M * L, N, 2)  # rows o_l - p_i
     unit = 1.0
     if maha:
         v, unit = mahalanobis_rescale(d.transpose(1, 0, 2), P.reshape(M * L, 2, 2))
@@ -140,12 +142,12 @@ def _unique_pairs(S, x, P, u_max, maha) -> np.ndarray:
     from ..assignment import greedy_pair_assignment, greedy_pairs_batch
 
     M, L = x.shape[:2]
-    N = S.shape[0]
+    N = S.shape[1]
     per_run = N * (N - 1) // 2 * L
     if per_run > _BLOCK_WEIGHTS:  # from geometry, run by run: the weights are never built
         labels = np.full((M, N), -1, dtype=np.int64)
         for m in range(M):
-            a = greedy_pair_assignment(sensors=S, targets=x[m], u_max=u_max,
+            a = greedy_pair_assignment(sensors=S[m], targets=x[m], u_max=u_max,
                                        cov=P[m] if maha else None)
             for i, j, l in a.triples:
                 labels[m, i] = labels[m, j] = l
@@ -153,7 +155,7 @@ def _unique_pairs(S, x, P, u_max, maha) -> np.ndarray:
     out = []
     block = max(1, _BLOCK_WEIGHTS // per_run)
     for a in range(0, M, block):
-        w = pair_weights(S, x[a:a + block], P[a:a + block], u_max, maha)
+        w = pair_weights(S[a:a + block], x[a:a + block], P[a:a + block], u_max, maha)
         picks, _ = greedy_pairs_batch(w, N)
         out.append(_labels_of_picks(picks, N))
     return np.concatenate(out)
@@ -193,7 +195,7 @@ def _optimal_pairs(S, x, P, u_max, maha) -> np.ndarray:
     from ..assignment import optimal_pair_assignment
 
     M, L = x.shape[:2]
-    N = S.shape[0]
+    N = S.shape[1]
     ii, jj = np.triu_indices(N, 1)
     w = pair_weights(S, x, P, u_max, maha)  # (M, P, L)
     if assignment_count(N, L) <= MAX_ENUMERATED:
@@ -271,14 +273,14 @@ def fused_multiply_add(a, b, c):
     return s + (t + e)
 
 
-def code_logdet_det(g00, g01, g11):
+def code_logdet_det(g00, g01, g11, fused: bool = True):
     """The determinant of the symmetric ``[[g00, g01], [g01, g11]]`` as the authors' code gets
     it: an LU factorisation with partial pivoting (LAPACK's ``dgetrf``: the pivot is the first
     entry of largest magnitude in the first column, the multiplier the other entry times the
     pivot's reciprocal, the update :math:`u_{22} = a_{22} - l\\, a_{12}` with a fused
-    multiply-add), then the product of the pivots with the permutation's sign. For a singular
-    matrix this leaves the rounding residue of :math:`u_{22}`: zero, or a tiny number of either
-    sign.
+    multiply-add, or with two roundings where ``fused`` is false), then the product of the
+    pivots with the permutation's sign. For a singular matrix this leaves the rounding residue
+    of :math:`u_{22}`: zero, or a tiny number of either sign.
 
     Examples
     --------
@@ -299,7 +301,7 @@ def code_logdet_det(g00, g01, g11):
     d = np.where(swap, g01, g11)
     with np.errstate(divide="ignore", invalid="ignore"):
         lm = c * (1.0 / p)
-        u = fused_multiply_add(-lm, q, d)
+        u = fused_multiply_add(-lm, q, d) if fused else d - lm * q
         det = p * u
     det = np.where(p == 0, 0.0, det)  # a zero column: U has a zero pivot
     return np.where(swap, -det, det)
@@ -371,18 +373,18 @@ def matlab_table_max(re, im) -> np.ndarray:
     return equal.reshape(M, -1).argmax(axis=1)
 
 
-def _logdet_teams(S, x, exact: bool):
+def _logdet_teams(S, x, exact: bool, fused: bool = True):
     """The code's greedy (module docstring) for ``M`` runs: the labels of the sensors each
     target won and of the rounds it won, each ``(M, N)``."""
     with np.errstate(invalid="ignore"):  # -inf - (-inf): a NaN gain, which the max ignores
-        return _logdet_rounds(S, x, exact)
+        return _logdet_rounds(S, x, exact, fused)
 
 
-def _logdet_rounds(S, x, exact: bool):
+def _logdet_rounds(S, x, exact: bool, fused: bool):
     M, L = x.shape[:2]
-    N = S.shape[0]
-    vx = x[:, None, :, 0] - S[None, :, None, 0]  # rows target - sensor, (M, N, L)
-    vy = x[:, None, :, 1] - S[None, :, None, 1]
+    N = S.shape[1]
+    vx = x[:, None, :, 0] - S[:, :, None, 0]  # rows target - sensor, (M, N, L)
+    vy = x[:, None, :, 1] - S[:, :, None, 1]
     rows = np.arange(M)
     g00, g01, g11 = (np.zeros((M, L)) for _ in range(3))  # the teams' O^T O (code)
     det = np.zeros((M, L))  # the teams' exact det (Cauchy-Binet) and increments C
@@ -407,7 +409,7 @@ def _logdet_rounds(S, x, exact: bool):
         else:
             d = code_logdet_det(fused_multiply_add(ax, ax, sums[1]),
                                 fused_multiply_add(ax, ay, sums[2]),
-                                fused_multiply_add(ay, ay, sums[3]))
+                                fused_multiply_add(ay, ay, sums[3]), fused)
         return _complex_log(d)
 
     gain_re, gain_im = np.empty((M, N, L)), np.empty((M, N, L))
@@ -444,8 +446,7 @@ def _logdet_rounds(S, x, exact: bool):
 def _prior_logdet_teams(S, x, eps) -> np.ndarray:
     from ..teams import greedy_team_picks
 
-    M = x.shape[0]
-    picks_i, picks_l = greedy_team_picks(np.broadcast_to(S, (M,) + S.shape), x, "logdet", eps)
+    picks_i, picks_l = greedy_team_picks(S, x, "logdet", eps)
     labels = np.empty(picks_i.shape, dtype=np.int64)
     np.put_along_axis(labels, picks_i, picks_l, axis=1)
     return labels
@@ -506,8 +507,9 @@ def _information_teams(S, x, Ppred, r, measurement, criterion) -> np.ndarray:
     from .kalman import measurement_rows
 
     M, L = x.shape[:2]
-    N = S.shape[0]
-    H, _ = measurement_rows(x.reshape(M * L, 2), np.broadcast_to(S, (M * L, N, 2)),
+    N = S.shape[1]
+    H, _ = measurement_rows(x.reshape(M * L, 2),
+                            np.broadcast_to(S[:, None], (M, L, N, 2)).reshape(M * L, N, 2),
                             measurement)  # (M L, N, 2)
     H = H.reshape(M, L, N, 2).transpose(0, 2, 1, 3) / np.sqrt(r)  # (M, N, L, 2)
     hx, hy = H[..., 0], H[..., 1]
@@ -544,15 +546,16 @@ def _information_teams(S, x, Ppred, r, measurement, criterion) -> np.ndarray:
 
 
 class TeamChooser:
-    """The assignments of ``R`` runs of one setup at once: row ``r`` follows ``kinds[r]`` (a
-    name of :data:`ASSIGNMENTS`); ``seeds[r]`` draws the ``"random"`` rows' permutations.
-    Calling it with the estimates ``x`` ``(R, L, 2)``, covariances ``P`` ``(R, L, 2, 2)`` and
-    the step ``k`` (0-based) returns the labels ``(R, N)``: the target each sensor measures at
-    step ``k + 1`` (-1: none)."""
+    """The assignments of ``R`` runs at once: row ``r`` follows ``kinds[r]`` (a name of
+    :data:`ASSIGNMENTS`) among the sensors ``sensors[r % B]`` (``(B, N, 2)``: one set per
+    scene, ``B`` 1 or the number of noise tables), with the parameters of ``setup``;
+    ``seeds[r]`` draws the ``"random"`` rows' permutations. Calling it with the estimates ``x``
+    ``(R, L, 2)``, covariances ``P`` ``(R, L, 2, 2)`` and the step ``k`` (0-based) returns the
+    labels ``(R, N)``: the target each sensor measures at step ``k + 1`` (-1: none)."""
 
-    def __init__(self, setup, kinds, seeds=None):
+    def __init__(self, setup, kinds, seeds=None, sensors=None):
         self.setup = setup
-        self.S = setup.sensor_array
+        self.S = setup.sensor_array[None] if sensors is None else np.asarray(sensors)
         kinds = np.asarray(kinds, dtype=object)
         self.groups = [(name, np.flatnonzero(kinds == name)) for name in ASSIGNMENTS
                        if (kinds == name).any()]
@@ -566,26 +569,73 @@ class TeamChooser:
     def __call__(self, x, P, k: int) -> np.ndarray:
         su = self.setup
         R_, L = x.shape[:2]
-        labels = np.empty((R_, self.S.shape[0]), dtype=np.int64)
+        B, N = self.S.shape[:2]
+        labels = np.empty((R_, N), dtype=np.int64)
         maha = su.metric == "mahalanobis"
         for name, rows in self.groups:
-            xs, Ps = x[rows], P[rows]
+            xs, Ps, S = x[rows], P[rows], self.S[rows % B]
             if name == "unique-pairs":
-                labels[rows] = _unique_pairs(self.S, xs, Ps, su.u_max, maha)
+                labels[rows] = _unique_pairs(S, xs, Ps, su.u_max, maha)
             elif name == "optimal-pairs":
-                labels[rows] = _optimal_pairs(self.S, xs, Ps, su.u_max, maha)
+                labels[rows] = _optimal_pairs(S, xs, Ps, su.u_max, maha)
             elif name == "random":
                 perm = np.stack([self.draws[int(r)][k] for r in rows])
                 labels[rows] = _random_pairs(perm, L)
             elif name.startswith("logdet-teams") and name != "logdet-teams-prior":
-                picked, won = _logdet_teams(self.S, xs, exact=name == "logdet-teams-exact")
+                picked, won = _logdet_teams(S, xs, exact=name == "logdet-teams-exact")
                 labels[rows] = won if name == "logdet-teams-as-run" else picked
             elif name == "logdet-teams-prior":
-                labels[rows] = _prior_logdet_teams(self.S, xs, su.eps)
+                labels[rows] = _prior_logdet_teams(S, xs, su.eps)
             else:
-                labels[rows] = _information_teams(self.S, xs, Ps + self.Q, su.R, su.measurement,
+                labels[rows] = _information_teams(S, xs, Ps + self.Q, su.R, su.measurement,
                                                   name)
         return labels
+
+
+#: The arithmetic :func:`logdet_rounds` evaluates the code's measure in.
+ARITHMETICS = ("code", "code-unfused", "exact")
+
+
+def logdet_rounds(sensors, targets, arithmetic: str = "code"):
+    """The authors' team greedy on :math:`\\log\\det(O_l^T O_l)` for one instance: which
+    sensor each target won, and which rounds.
+
+    ``arithmetic`` is ``"code"`` (the code's floating point, :func:`code_logdet_det`, as
+    ``"logdet-teams"`` evaluates it), ``"code-unfused"`` (the same with the LU update rounded
+    twice, as an LAPACK without fused multiply-adds would) or ``"exact"`` (singular teams have
+    :math:`\\log\\det = -\\infty`).
+
+    Returns
+    -------
+    picked : ndarray of int, shape (N,)
+        The target of each sensor (-1 if it was never won).
+    rounds : ndarray of int, shape (N,)
+        The target that won round ``r`` (what the authors' script hands to the filters as
+        sensor ``r``).
+
+    Examples
+    --------
+    The later experiment's first step, at its initial estimates:
+
+    >>> from obslib import tracking
+    >>> su = tracking.LATER_MULTI_TARGET
+    >>> picked, rounds = logdet_rounds(su.sensors, su.estimate0)
+    >>> picked.tolist(), rounds.tolist()
+    ([0, 1, 1, 2, 2, 2, 1, 0], [0, 1, 0, 1, 2, 2, 1, 2])
+    >>> logdet_rounds(su.sensors, su.estimate0, "exact")[0].tolist()
+    [0, 0, 0, 0, 0, 0, 0, 0]
+    """
+    from .._validate import as_points, check_distinct
+
+    S = as_points(as_float_array(sensors, "sensors"), "sensors", min_count=1)
+    T = as_points(as_float_array(targets, "targets"), "targets", min_count=1)
+    if not (np.isfinite(S).all() and np.isfinite(T).all()):
+        raise ValueError("sensors and targets must be finite")
+    check_distinct(S)
+    as_choice(arithmetic, ARITHMETICS, "arithmetic")
+    picked, rounds = _logdet_teams(S[None], T[None], arithmetic == "exact",
+                                   arithmetic == "code")
+    return picked[0], rounds[0]
 
 
 def check_assignment(setup, assignment: str) -> str:

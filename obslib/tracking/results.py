@@ -272,11 +272,13 @@ class TargetsResult:
 
 @dataclass(frozen=True, eq=False)
 class TargetsBatch(TargetsResult):
-    """Many runs of one assignment (:func:`~obslib.tracking.simulate_targets_batch`): the
-    arrays of :class:`TargetsResult` with a leading run axis ``(B, ...)``; ``seeds`` replaces
-    ``seed``. ``run(b)`` gives one run."""
+    """Many runs of one assignment (:func:`~obslib.tracking.simulate_targets_batch`,
+    :func:`~obslib.tracking.simulate_targets_scenes`): the arrays of :class:`TargetsResult`
+    with a leading run axis ``(B, ...)``; ``seeds`` replaces ``seed``; ``scenes`` holds each
+    run's setup where they differ (``setup`` is then the first). ``run(b)`` gives one run."""
 
     seeds: tuple = ()
+    scenes: tuple = ()
 
     @property
     def n_runs(self) -> int:
@@ -287,4 +289,5 @@ class TargetsBatch(TargetsResult):
         arrays = {f.name: getattr(self, f.name)[b] for f in dataclasses.fields(TargetsResult)
                   if f.name not in ("setup", "assignment", "seed")}
         seed = self.seeds[b] if self.seeds else None
-        return TargetsResult(setup=self.setup, assignment=self.assignment, seed=seed, **arrays)
+        setup = self.scenes[b] if self.scenes else self.setup
+        return TargetsResult(setup=setup, assignment=self.assignment, seed=seed, **arrays)

@@ -56,6 +56,8 @@ __all__ = [
     "targets_noise_table",
     "simulate_targets",
     "simulate_targets_batch",
+    "simulate_targets_scenes",
+    "SCENE_FIELDS",
     "step_times",
 ]
 
@@ -295,21 +297,26 @@ def targets_noise_table(setup: TargetsSetup, seed: int = 0) -> np.ndarray:
 # --------------------------------------------------------------------------------------------
 
 
-def _pass(setup: TargetsSetup, kinds, tables, seeds, single: bool = False,
+def _pass(setups, kinds, tables, seeds, single: bool = False,
           clock: list | None = None) -> dict:
-    """``R = len(kinds)`` runs of ``setup`` at once: row ``r`` follows the assignment
-    ``kinds[r]`` with the noise table ``tables[r % B]`` and the seed ``seeds[r]`` (for
-    ``"random"``). Returns the logs as run-major arrays; ``clock`` (a list) receives the
-    ``time.perf_counter()`` at the start of every step."""
+    """``R = len(kinds)`` runs at once: row ``r`` follows the assignment ``kinds[r]`` with the
+    noise table ``tables[r % B]``, the scene ``setups[r % len(setups)]`` (one setup, or one per
+    table: setups that differ only in ``sensors``, ``truth`` and ``estimate0``) and the seed
+    ``seeds[r]`` (for ``"random"``). Returns the logs as run-major arrays; ``clock`` (a list)
+    receives the ``time.perf_counter()`` at the start of every step."""
+    setup = setups[0]
     R_ = len(kinds)
     B, steps, N = tables.shape
+    C = len(setups)
     L = setup.n_targets
-    S = setup.sensor_array
-    truth = setup.truth_array
+    S = np.stack([su.sensor_array for su in setups])  # (C, N, 2)
+    truth = np.stack([su.truth_array for su in setups])  # (C, steps + 1, L, 2)
+    x0 = np.stack([np.array(su.estimate0) for su in setups])  # (C, L, 2)
+    scene = np.arange(R_) % C
     F = R_ * L
-    filters = FilterBank(np.broadcast_to(setup.estimate0, (R_, L, 2)).reshape(F, 2),
-                         np.broadcast_to(setup.cov0, (F, 2, 2)), setup.Q)
-    chooser = TeamChooser(setup, kinds, seeds)
+    filters = FilterBank(x0[scene].reshape(F, 2), np.broadcast_to(setup.cov0, (F, 2, 2)),
+                         setup.Q)
+    chooser = TeamChooser(setup, kinds, seeds, S)
     labels_log = np.empty((steps, R_, N), dtype=np.int16 if L < 2**15 else np.int64)
     est = np.empty((steps, F, 2))
     cov = np.empty((steps, F, 2, 2))
@@ -334,24 +341,25 @@ def _pass(setup: TargetsSetup, kinds, tables, seeds, single: bool = False,
         order = np.argsort(owner, kind="stable")
         rr, ii, owner = rr[order], ii[order], owner[order]
         try:
-            filters.update_teams(P, owner, S[ii], position[0][owner % L],
+            filters.update_teams(P, owner, S[scene[rr], ii], position[scene[rr], owner % L],
                                  tables[rr % B, k, ii], setup.R, setup.measurement)
         except kalman.SingularInnovation as e:
             f = int(np.flatnonzero(~e.ok)[0])
             r, l = divmod(f, L)
             x = np.array([filters.xx[f], filters.xy[f]])
-            ps = S[ii[owner == f]]
+            ps = S[scene[r], ii[owner == f]]
             raise ValueError(singular_update_message(x, ps, k, None if single else r, l)) from None
 
-    run_steps(steps, update, choose, FixedPaths(truth[None]), record)
+    run_steps(steps, update, choose, FixedPaths(truth), record)
     est_r = est.reshape(steps, R_, L, 2).transpose(1, 0, 2, 3)
     cov_r = cov.reshape(steps, R_, L, 2, 2).transpose(1, 0, 2, 3, 4)
-    diff = est_r - truth[None, :steps]
+    tru = truth[scene, :steps] if C > 1 else np.broadcast_to(truth[:, :steps], (R_, steps, L, 2))
+    diff = est_r - tru
     return {
         "labels": np.ascontiguousarray(labels_log.transpose(1, 0, 2)),
         "error": np.hypot(diff[..., 0], diff[..., 1]),
         "trace_cov": cov_r[..., 0, 0] + cov_r[..., 1, 1],
-        "truth": np.broadcast_to(truth[:steps], (R_, steps, L, 2)),
+        "truth": tru,
         "estimate": np.ascontiguousarray(est_r),
         "cov": np.ascontiguousarray(cov_r),
         "estimate_end": filters.estimates().reshape(R_, L, 2),
@@ -400,7 +408,7 @@ def simulate_targets(setup: TargetsSetup, assignment: str, noise=None,
         table, used = targets_noise_table(setup, seed), seed
     else:
         table, used = as_noise_table(noise, (setup.steps, setup.n_sensors)), None
-    res = _pass(setup, [assignment], table[None], [seed], single=True)
+    res = _pass((setup,), [assignment], table[None], [seed], single=True)
     return TargetsResult(setup=setup, assignment=assignment, seed=used, noise=table,
                          **{k: np.array(v[0]) for k, v in res.items()})
 
@@ -467,12 +475,81 @@ def simulate_targets_batch(setup: TargetsSetup, assignments, seeds=None, noise=N
     B = tables.shape[0]
     kinds = np.repeat(names, B)
     row_seeds = list(seeds) * len(names) if seeds else [0] * (B * len(names))
-    res = _pass(setup, kinds, tables, row_seeds)
+    res = _pass((setup,), kinds, tables, row_seeds)
     out = {}
     for g, name in enumerate(names):
         sl = slice(g * B, (g + 1) * B)
         out[name] = TargetsBatch(setup=setup, assignment=name, seed=None, noise=tables,
                                  seeds=seeds, **{k: v[sl] for k, v in res.items()})
+    return out
+
+
+#: Fields in which the scenes of :func:`simulate_targets_scenes` may differ.
+SCENE_FIELDS = ("sensors", "truth", "estimate0")
+
+
+def simulate_targets_scenes(setups, assignments, seeds) -> dict:
+    """Several assignments on several scenes at once, one run per scene: scene ``b``
+    (``setups[b]``) with the noise of ``seeds[b]``, for every assignment.
+
+    Run ``b`` of every assignment equals ``simulate_targets(setups[b], assignment,
+    seed=seeds[b])``. The setups must agree in everything but :data:`SCENE_FIELDS` and have
+    the same numbers of sensors, targets and steps (e.g. :func:`network_scene` of several
+    seeds); all runs advance together on the engine.
+
+    Returns
+    -------
+    dict
+        ``{assignment: TargetsBatch}`` with the scenes in ``scenes``.
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> scenes = [tracking.network_scene(12, 3, steps=10, seed=s) for s in (0, 1)]
+    >>> runs = tracking.simulate_targets_scenes(scenes, ["unique-pairs"], seeds=[0, 1])
+    >>> b = runs["unique-pairs"]
+    >>> b.error.shape, b.run(1).setup is scenes[1]
+    ((2, 10, 3), True)
+    """
+    if isinstance(setups, TargetsSetup) or not isinstance(setups, (list, tuple)):
+        raise ArgumentTypeError(f"setups must be a list of TargetsSetup, got {setups!r}")
+    setups = tuple(as_instance(su, TargetsSetup, "each of setups") for su in setups)
+    if not setups:
+        raise ValueError("setups is empty")
+    first = setups[0]
+    for b, su in enumerate(setups):
+        for f in dataclasses.fields(TargetsSetup):
+            if f.name not in SCENE_FIELDS and getattr(su, f.name) != getattr(first, f.name):
+                raise ValueError(f"setups {b} and 0 differ in {f.name}: scenes may differ only "
+                                 f"in {SCENE_FIELDS}")
+        if (su.n_sensors, su.n_targets, su.steps) != (first.n_sensors, first.n_targets,
+                                                      first.steps):
+            raise ValueError(f"setups {b} and 0 differ in their numbers of sensors, targets or "
+                             "steps")
+    if isinstance(assignments, str):
+        raise ArgumentTypeError(f"assignments must be a list of names, got the string "
+                                f"{assignments!r}; write [{assignments!r}]")
+    names = list(dict.fromkeys(as_names(assignments, "assignments", ASSIGNMENTS)))
+    if not names:
+        raise ValueError("assignments is empty")
+    for name in names:
+        check_assignment(first, name)
+    if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
+        raise ArgumentTypeError(f"seeds must be an iterable of non-negative integers, got "
+                                f"{seeds!r}")
+    seeds = tuple(as_int(x, "each seed", 0) for x in seeds)
+    if len(seeds) != len(setups):
+        raise ValueError(f"seeds must give one seed per scene ({len(setups)}), got "
+                         f"{len(seeds)}")
+    tables = np.stack([targets_noise_table(su, x) for su, x in zip(setups, seeds)])
+    B = len(setups)
+    res = _pass(setups, np.repeat(names, B), tables, list(seeds) * len(names))
+    out = {}
+    for g, name in enumerate(names):
+        sl = slice(g * B, (g + 1) * B)
+        out[name] = TargetsBatch(setup=first, assignment=name, seed=None, noise=tables,
+                                 seeds=seeds, scenes=setups,
+                                 **{k: v[sl] for k, v in res.items()})
     return out
 
 
@@ -500,7 +577,7 @@ def step_times(setup: TargetsSetup, assignment: str, seed: int = 0) -> tuple:
     seed = as_int(seed, "seed", 0)
     table = targets_noise_table(setup, seed)
     clock: list = []
-    res = _pass(setup, [assignment], table[None], [seed], single=True, clock=clock)
+    res = _pass((setup,), [assignment], table[None], [seed], single=True, clock=clock)
     run = TargetsResult(setup=setup, assignment=assignment, seed=seed, noise=table,
                         **{k: np.array(v[0]) for k, v in res.items()})
     return np.diff(np.array(clock)), run

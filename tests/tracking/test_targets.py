@@ -382,3 +382,20 @@ def test_bad_input_is_named():
         LATER.replace(R=0.0)
     with pytest.raises(ValueError, match="steps must be at most"):
         LATER.first(101)
+
+
+def test_scenes_run_together_equal_each_scene_alone():
+    scenes = [tr.network_scene(14, 4, steps=25, seed=s) for s in (3, 4, 5)]
+    names = ["unique-pairs", "logdet-teams", "e-optimal-teams", "random"]
+    runs = tr.simulate_targets_scenes(scenes, names, seeds=[3, 4, 5])
+    for name in names:
+        for b, su in enumerate(scenes):
+            one = tr.simulate_targets(su, name, seed=3 + b)
+            np.testing.assert_array_equal(runs[name].labels[b], one.labels)
+            np.testing.assert_allclose(runs[name].estimate[b], one.estimate, rtol=0, atol=1e-12)
+            np.testing.assert_array_equal(runs[name].truth[b], one.truth)
+            assert runs[name].run(b).setup is su
+    with pytest.raises(ValueError, match="differ in u_max"):
+        tr.simulate_targets_scenes([scenes[0], scenes[1].replace(u_max=0.2)], names, [0, 1])
+    with pytest.raises(ValueError, match="one seed per scene"):
+        tr.simulate_targets_scenes(scenes, names, [0])
