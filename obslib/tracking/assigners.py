@@ -8,15 +8,21 @@ sensors per target):
     Algorithm 1, the greedy of Fig. 8, on Theorem 4's pair bound at the estimates with the
     setup's :math:`u_{\\max}` (Euclidean distances, or Mahalanobis ones in :math:`\\Sigma_l`,
     the setup's ``metric``); ties to the smallest ``(i, j, l)``;
+``"d-optimal-pairs"``
+    the same greedy on each pair's information gain for its target's filter,
+    :math:`\\log\\det(I + H \\Sigma_l^- H^T / R)` with :math:`\\Sigma_l^- = \\Sigma_l + Q`
+    and the measurement model's Jacobian rows ``H`` of the pair at :math:`\\hat x_l`
+    (:math:`\\log\\det J_l(i, j) - \\log\\det (\\Sigma_l^-)^{-1}`, the D-optimal choice of
+    chapter 10 made target by target);
 ``"optimal-pairs"``
-    Problem 1 solved exactly at every step on the same weights: by enumeration of every
+    Problem 1 solved exactly at every step on the bound's weights: by enumeration of every
     assignment where there are at most :data:`MAX_ENUMERATED` (the first optimum in the order of
     the enumeration), else by :func:`obslib.optimal_pair_assignment` (branch and bound, within
     its memory limit);
 ``"random"``
     a uniformly random assignment: a random permutation of the sensors, target ``l`` taking its
     entries ``2l`` and ``2l + 1`` (drawn from ``numpy.random.default_rng([2, seed])``, a stream
-    apart from the run's noise).
+    apart from the run's noise, unless the permutations are given).
 
 Teams, every sensor given to one target (Problem 2), by the greedy of Fig. 9: ``N`` rounds, each
 giving one free sensor to the target whose measure grows most. The paper's measure is
@@ -71,12 +77,12 @@ __all__ = ["ASSIGNMENTS", "PAIR_ASSIGNMENTS", "MAX_ENUMERATED", "ARITHMETICS", "
            "matlab_table_max", "logdet_rounds", "assign_targets"]
 
 #: The assignments :func:`~obslib.tracking.simulate_targets` accepts (see the module docstring).
-ASSIGNMENTS = ("unique-pairs", "optimal-pairs", "random", "logdet-teams", "logdet-teams-as-run",
-               "logdet-teams-exact", "logdet-teams-prior", "d-optimal-teams", "a-optimal-teams",
-               "e-optimal-teams")
+ASSIGNMENTS = ("unique-pairs", "d-optimal-pairs", "optimal-pairs", "random", "logdet-teams",
+               "logdet-teams-as-run", "logdet-teams-exact", "logdet-teams-prior",
+               "d-optimal-teams", "a-optimal-teams", "e-optimal-teams")
 
 #: The assignments of one pair per target (they need at least two sensors per target).
-PAIR_ASSIGNMENTS = ("unique-pairs", "optimal-pairs", "random")
+PAIR_ASSIGNMENTS = ("unique-pairs", "d-optimal-pairs", "optimal-pairs", "random")
 
 #: Largest number of assignments ``"optimal-pairs"`` enumerates, ``N! / ((N - 2L)! 2^L)``;
 #: beyond it each step is solved by branch and bound.
@@ -126,6 +132,60 @@ def pair_weights(S, x, P, u_max: float, maha: bool) -> np.ndarray:
         vx, vy, u2 = normalise_rows(dx, dy, u_max / unit)
     w = pair_kernel(vx[:, ii], vy[:, ii], vx[:, jj], vy[:, jj], u2[:, None])
     return np.ascontiguousarray(w.reshape(M, L, ii.size).transpose(0, 2, 1))
+
+
+def pair_gain_weights(S, x, Ppred, r: float, measurement: str) -> np.ndarray:
+    """The information gain of every pair ``i < j`` for every target of ``M`` runs,
+    :math:`\\log\\det(I_2 + H \\Sigma^- H^T / r)`, ``(M, N (N - 1) / 2, L)``: sensors ``S``
+    ``(N, 2)`` or ``(M, N, 2)``, estimates ``x`` ``(M, L, 2)``, predicted covariances ``Ppred``
+    ``(M, L, 2, 2)``, the measurement model's rows ``H`` of the pair at the estimate.
+
+    With :math:`a_i = h_i^T \\Sigma^- h_i / r` and :math:`c_{ij} = h_i^T \\Sigma^- h_j / r`
+    (Sylvester's determinant identity), the gain is :math:`\\log((1 + a_i)(1 + a_j) -
+    c_{ij}^2)`, :math:`\\log\\det J(i, j) - \\log\\det (\\Sigma^-)^{-1}` with
+    :math:`J(i, j) = (\\Sigma^-)^{-1} + H^T H / r`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> S = np.array([[0.0, 0.0], [4.0, 0.0], [1.0, 3.0]])
+    >>> x, Pm = np.array([[[2.0, 1.0]]]), np.array([[[[1.0, 0.2], [0.2, 0.5]]]])
+    >>> g = pair_gain_weights(S, x, Pm, 0.25, "half-squared-range")
+    >>> H = x[0, 0] - S[[0, 2]]  # the rows of the pair (0, 2)
+    >>> J = np.linalg.inv(Pm[0, 0]) + H.T @ H / 0.25
+    >>> bool(np.isclose(g[0, 1, 0], np.log(np.linalg.det(J) * np.linalg.det(Pm[0, 0]))))
+    True
+    """
+    M, L = x.shape[:2]
+    N = S.shape[-2]
+    ii, jj = np.triu_indices(N, 1)
+    S = np.broadcast_to(S, (M, N, 2))
+    h = x[:, None, :, :] - S[:, :, None, :]  # (M, N, L, 2)
+    if measurement == "range":
+        h = h / np.hypot(h[..., 0], h[..., 1])[..., None]
+    hx, hy = h[..., 0] / np.sqrt(r), h[..., 1] / np.sqrt(r)  # (M, N, L)
+    p00, p01, p11 = (Ppred[:, None, :, a, b] for a, b in ((0, 0), (0, 1), (1, 1)))
+    a = p00 * (hx * hx) + p01 * (hx * hy + hy * hx) + p11 * (hy * hy)  # c_ii, (M, N, L)
+    xi, yi, xj, yj = hx[:, ii], hy[:, ii], hx[:, jj], hy[:, jj]
+    c = p00 * (xi * xj) + p01 * (xi * yj + yi * xj) + p11 * (yi * yj)  # (M, P, L)
+    det = (1 + a[:, ii]) * (1 + a[:, jj]) - c * c
+    return np.log(det)
+
+
+def _gain_pairs(S, x, Ppred, r, measurement) -> np.ndarray:
+    from ..assignment import greedy_pairs_batch
+
+    M, L = x.shape[:2]
+    N = S.shape[1]
+    per_run = N * (N - 1) // 2 * L
+    block = max(1, _BLOCK_WEIGHTS // per_run)
+    out = []
+    for a in range(0, M, block):
+        w = pair_gain_weights(S[a:a + block], x[a:a + block], Ppred[a:a + block], r,
+                              measurement)
+        picks, _ = greedy_pairs_batch(w, N)
+        out.append(_labels_of_picks(picks, N))
+    return np.concatenate(out)
 
 
 def _labels_of_picks(picks, N) -> np.ndarray:
@@ -549,11 +609,13 @@ class TeamChooser:
     """The assignments of ``R`` runs at once: row ``r`` follows ``kinds[r]`` (a name of
     :data:`ASSIGNMENTS`) among the sensors ``sensors[r % B]`` (``(B, N, 2)``: one set per
     scene, ``B`` 1 or the number of noise tables), with the parameters of ``setup``;
-    ``seeds[r]`` draws the ``"random"`` rows' permutations. Calling it with the estimates ``x``
+    ``seeds[r]`` draws the ``"random"`` rows' permutations, unless ``draws`` gives them (a
+    ``(steps, N)`` table per noise table, row ``r`` taking ``draws[r % B]``). Calling it with
+    the estimates ``x``
     ``(R, L, 2)``, covariances ``P`` ``(R, L, 2, 2)`` and the step ``k`` (0-based) returns the
     labels ``(R, N)``: the target each sensor measures at step ``k + 1`` (-1: none)."""
 
-    def __init__(self, setup, kinds, seeds=None, sensors=None):
+    def __init__(self, setup, kinds, seeds=None, sensors=None, draws=None):
         self.setup = setup
         self.S = setup.sensor_array[None] if sensors is None else np.asarray(sensors)
         kinds = np.asarray(kinds, dtype=object)
@@ -562,8 +624,9 @@ class TeamChooser:
         self.draws = None
         rows = np.flatnonzero(kinds == "random")
         if rows.size:
-            self.draws = {int(r): random_draws(seeds[r], setup.steps, setup.n_sensors)
-                          for r in rows}
+            # given permutations (one table per noise table, row r uses draws[r % B]), or drawn
+            self.draws = {int(r): (random_draws(seeds[r], setup.steps, setup.n_sensors)
+                                   if draws is None else draws[r % len(draws)]) for r in rows}
         self.Q = np.asarray(setup.Q, dtype=float)
 
     def __call__(self, x, P, k: int) -> np.ndarray:
@@ -576,6 +639,8 @@ class TeamChooser:
             xs, Ps, S = x[rows], P[rows], self.S[rows % B]
             if name == "unique-pairs":
                 labels[rows] = _unique_pairs(S, xs, Ps, su.u_max, maha)
+            elif name == "d-optimal-pairs":
+                labels[rows] = _gain_pairs(S, xs, Ps + self.Q, su.R, su.measurement)
             elif name == "optimal-pairs":
                 labels[rows] = _optimal_pairs(S, xs, Ps, su.u_max, maha)
             elif name == "random":

@@ -114,7 +114,8 @@ class FilterBank:
         The measurements are listed sorted by ``owner`` ``(M,)``, the filter they update:
         ``sensor_xy`` ``(M, 2)`` the sensor's position, ``truth_xy`` ``(M, 2)`` the target's
         true position, ``noise`` ``(M,)`` the noise added to the true measurement. Filters with
-        equal team sizes are updated together (``kalman._update_rows``); raises
+        equal team sizes are updated together (``kalman._update_rows``; pairs of half squared
+        ranges by Section V's closed form, ``kalman._update``); raises
         ``kalman.SingularInnovation`` with ``ok`` over the filters.
         """
         self.p00, self.p01, self.p10, self.p11 = (np.array(p, dtype=float)
@@ -126,13 +127,24 @@ class FilterBank:
             f = np.flatnonzero(counts == m)
             at = start[f][:, None] + np.arange(m)  # (G, m): this group's measurements
             ps = sensor_xy[at]  # (G, m, 2)
-            x = np.stack([self.xx[f], self.xy[f]], axis=-1)
-            Pg = np.stack([self.p00[f], self.p01[f], self.p10[f], self.p11[f]],
-                          axis=-1).reshape(-1, 2, 2)
-            H, h = kalman.measurement_rows(x, ps, measurement)
             _, ztrue = kalman.measurement_rows(truth_xy[at[:, 0]], ps, measurement)
+            z = ztrue + noise[at]
             try:
-                xn, Pn = kalman._update_rows(x, Pg, H, ztrue + noise[at] - h, R)
+                if m == 2 and measurement == "half-squared-range":
+                    r = float(R)
+                    (xx, xy), Pc = kalman._update(
+                        (self.xx[f], self.xy[f]),
+                        (self.p00[f], self.p01[f], self.p10[f], self.p11[f]),
+                        (ps[:, 0, 0], ps[:, 0, 1]), (ps[:, 1, 0], ps[:, 1, 1]),
+                        (z[:, 0], z[:, 1]), ((r, 0.0), (0.0, r)))
+                    xn = np.stack([xx, xy], axis=-1)
+                    Pn = np.stack(Pc, axis=-1).reshape(-1, 2, 2)
+                else:
+                    x = np.stack([self.xx[f], self.xy[f]], axis=-1)
+                    Pg = np.stack([self.p00[f], self.p01[f], self.p10[f], self.p11[f]],
+                                  axis=-1).reshape(-1, 2, 2)
+                    H, h = kalman.measurement_rows(x, ps, measurement)
+                    xn, Pn = kalman._update_rows(x, Pg, H, z - h, R)
             except kalman.SingularInnovation as e:
                 ok = np.ones(F, dtype=bool)
                 ok[f[~e.ok]] = False

@@ -298,12 +298,13 @@ def targets_noise_table(setup: TargetsSetup, seed: int = 0) -> np.ndarray:
 
 
 def _pass(setups, kinds, tables, seeds, single: bool = False,
-          clock: list | None = None) -> dict:
+          clock: list | None = None, draws=None) -> dict:
     """``R = len(kinds)`` runs at once: row ``r`` follows the assignment ``kinds[r]`` with the
     noise table ``tables[r % B]``, the scene ``setups[r % len(setups)]`` (one setup, or one per
     table: setups that differ only in ``sensors``, ``truth`` and ``estimate0``) and the seed
-    ``seeds[r]`` (for ``"random"``). Returns the logs as run-major arrays; ``clock`` (a list)
-    receives the ``time.perf_counter()`` at the start of every step."""
+    ``seeds[r]`` (for ``"random"``, unless ``draws[r % B]`` gives its permutations). Returns the
+    logs as run-major arrays; ``clock`` (a list) receives the ``time.perf_counter()`` at the
+    start of every step."""
     setup = setups[0]
     R_ = len(kinds)
     B, steps, N = tables.shape
@@ -316,7 +317,7 @@ def _pass(setups, kinds, tables, seeds, single: bool = False,
     F = R_ * L
     filters = FilterBank(x0[scene].reshape(F, 2), np.broadcast_to(setup.cov0, (F, 2, 2)),
                          setup.Q)
-    chooser = TeamChooser(setup, kinds, seeds, S)
+    chooser = TeamChooser(setup, kinds, seeds, S, draws)
     labels_log = np.empty((steps, R_, N), dtype=np.int16 if L < 2**15 else np.int64)
     est = np.empty((steps, F, 2))
     cov = np.empty((steps, F, 2, 2))
@@ -488,14 +489,29 @@ def simulate_targets_batch(setup: TargetsSetup, assignments, seeds=None, noise=N
 SCENE_FIELDS = ("sensors", "truth", "estimate0")
 
 
-def simulate_targets_scenes(setups, assignments, seeds) -> dict:
+def simulate_targets_scenes(setups, assignments, seeds=None, noise=None, draws=None) -> dict:
     """Several assignments on several scenes at once, one run per scene: scene ``b``
-    (``setups[b]``) with the noise of ``seeds[b]``, for every assignment.
+    (``setups[b]``) with the noise of ``seeds[b]`` (or the table ``noise[b]``), for every
+    assignment.
 
     Run ``b`` of every assignment equals ``simulate_targets(setups[b], assignment,
     seed=seeds[b])``. The setups must agree in everything but :data:`SCENE_FIELDS` and have
     the same numbers of sensors, targets and steps (e.g. :func:`network_scene` of several
     seeds); all runs advance together on the engine.
+
+    Parameters
+    ----------
+    setups : list of TargetsSetup
+    assignments : list of str
+        Names of :data:`~obslib.tracking.ASSIGNMENTS`.
+    seeds : iterable of int, optional
+        One per scene: its noise table (:func:`targets_noise_table`) and its ``"random"``
+        draws.
+    noise : array_like, shape (B, steps, N), optional
+        Explicit noise tables instead of seeds.
+    draws : array_like of int, shape (B, steps, N), optional
+        Explicit permutations of the sensors for ``"random"`` (row ``k - 1`` for step ``k``),
+        instead of the seeds' draws.
 
     Returns
     -------
@@ -517,6 +533,7 @@ def simulate_targets_scenes(setups, assignments, seeds) -> dict:
     if not setups:
         raise ValueError("setups is empty")
     first = setups[0]
+    B = len(setups)
     for b, su in enumerate(setups):
         for f in dataclasses.fields(TargetsSetup):
             if f.name not in SCENE_FIELDS and getattr(su, f.name) != getattr(first, f.name):
@@ -534,21 +551,42 @@ def simulate_targets_scenes(setups, assignments, seeds) -> dict:
         raise ValueError("assignments is empty")
     for name in names:
         check_assignment(first, name)
-    if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
-        raise ArgumentTypeError(f"seeds must be an iterable of non-negative integers, got "
-                                f"{seeds!r}")
-    seeds = tuple(as_int(x, "each seed", 0) for x in seeds)
-    if len(seeds) != len(setups):
-        raise ValueError(f"seeds must give one seed per scene ({len(setups)}), got "
-                         f"{len(seeds)}")
-    tables = np.stack([targets_noise_table(su, x) for su, x in zip(setups, seeds)])
-    B = len(setups)
-    res = _pass(setups, np.repeat(names, B), tables, list(seeds) * len(names))
+    shape = (first.steps, first.n_sensors)
+    if seeds is not None:
+        if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
+            raise ArgumentTypeError(f"seeds must be an iterable of non-negative integers, got "
+                                    f"{seeds!r}")
+        seeds = tuple(as_int(x, "each seed", 0) for x in seeds)
+        if len(seeds) != B:
+            raise ValueError(f"seeds must give one seed per scene ({B}), got {len(seeds)}")
+    if noise is not None:
+        given = as_float_array(noise, "noise")
+        if given.ndim != 3 or given.shape[0] != B:
+            raise ValueError(f"noise must have shape ({B}, steps, N), one table per scene, got "
+                             f"{given.shape}")
+        tables = np.stack([as_noise_table(t, shape) for t in given])
+    elif seeds is not None:
+        tables = np.stack([targets_noise_table(su, x) for su, x in zip(setups, seeds)])
+    else:
+        raise ValueError("give seeds or noise tables")
+    if draws is not None:
+        draws = np.asarray(draws)
+        n = first.n_sensors
+        if (draws.ndim != 3 or draws.shape[0] != B or draws.shape[1] < first.steps
+                or draws.shape[2] != n or not np.issubdtype(draws.dtype, np.integer)
+                or not (np.sort(draws, axis=-1) == np.arange(n)).all()):
+            raise ValueError(f"draws must hold a permutation of the {first.n_sensors} sensors "
+                             f"per scene and step, shape ({B}, {first.steps}, "
+                             f"{first.n_sensors}), got {draws.shape}")
+    elif "random" in names and seeds is None:
+        raise ValueError("the random assignment draws from the run's seed: give seeds or draws")
+    row_seeds = list(seeds) * len(names) if seeds is not None else [0] * (B * len(names))
+    res = _pass(setups, np.repeat(names, B), tables, row_seeds, draws=draws)
     out = {}
     for g, name in enumerate(names):
         sl = slice(g * B, (g + 1) * B)
         out[name] = TargetsBatch(setup=first, assignment=name, seed=None, noise=tables,
-                                 seeds=seeds, scenes=setups,
+                                 seeds=seeds or (), scenes=setups,
                                  **{k: v[sl] for k, v in res.items()})
     return out
 

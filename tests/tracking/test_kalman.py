@@ -120,9 +120,9 @@ def test_bad_filter_arguments_are_named():
 
 def test_the_assignment_study_names_a_singular_update():
     """Initial estimates some 1e8 away from the sensors (p0 = 1e17): the two rows are parallel
-    to about 1e-7, so S is singular to the engines' precision, and the study says where."""
+    to about 1e-7, so S is singular to the engine's precision, and the error says where."""
     from obslib.studies import assignment_tracking as at
 
     setup = at.AssignmentTrackingSetup(n_targets=2, steps=2, p0=1e17)
-    with pytest.raises(ValueError, match=r"filter of target \d failed at step 1 of seed 0"):
+    with pytest.raises(ValueError, match=r"update at step 1 of run 0 \(target \d\) failed"):
         at.run(setup, "random", [0])
