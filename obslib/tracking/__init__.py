@@ -103,7 +103,6 @@ from .targets import (
     simulate_targets_batch,
     simulate_targets_scenes,
     step_times,
-    targets_noise_table,
 )
 
 __all__ = [
@@ -156,7 +155,6 @@ __all__ = [
     "TargetsBatch",
     "circle_paths",
     "network_scene",
-    "targets_noise_table",
     "assign_targets",
     "simulate_targets",
     "simulate_targets_batch",

@@ -27,7 +27,6 @@ import numpy as np
 from .._validate import (
     ArgumentTypeError,
     as_choice,
-    as_float_array,
     as_instance,
     as_int,
     as_names,
@@ -38,7 +37,7 @@ from .choosers import NAMES, PairChooser, candidates, fixed_pair_bound, pair_dra
 from .engine import Adversaries, FilterBank, run_steps, singular_update_message
 from .model import circle_truth, pair_index
 from .results import BatchResult, TrackingResult, derived_arrays
-from .setup import TrackingSetup, noise_table
+from .setup import TrackingSetup, noise_table, run_table, seeds_or_noise
 
 __all__ = ["simulate", "simulate_many", "simulate_batch", "monte_carlo"]
 
@@ -186,23 +185,6 @@ def _arms_iv(arms) -> dict:
     return arms
 
 
-def _seeds_iv(seeds, noise):
-    if (seeds is None) == (noise is None):
-        raise ValueError("give either seeds or noise tables")
-    if noise is not None:
-        given = as_float_array(noise, "noise")
-        if given.ndim != 3:
-            raise ValueError(f"noise must have shape (B, steps, N), got {given.shape}")
-        return (), given
-    if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
-        raise ArgumentTypeError(
-            f"seeds must be an iterable of non-negative integers, got {seeds!r}")
-    seeds = tuple(as_int(x, "each seed", 0) for x in seeds)
-    if not seeds:
-        raise ValueError("seeds is empty")
-    return seeds, None
-
-
 def _kind(strategy: str) -> str:
     """The chooser kind of a strategy: ``"bound"`` for the paper's, else the criterion."""
     return "bound" if strategy in ("best-pair", "best-partner", "fixed-pair") else strategy
@@ -288,12 +270,7 @@ def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> 
     """
     as_instance(setup, TrackingSetup, "setup")
     as_choice(strategy, NAMES, "strategy")
-    if noise is None or strategy == "random":
-        seed = as_int(seed, "seed", 0)
-    if noise is None:
-        table, used_seed = noise_table(setup, seed), seed
-    else:
-        table, used_seed = as_noise_table(noise, (setup.steps, setup.n_sensors)), None
+    table, used_seed = run_table(setup, noise, seed, strategy == "random")
     cand = candidates(setup, strategy)[None]
     draws = pair_draws(seed, setup.steps, cand.shape[1])[None] if strategy == "random" else None
     nxt = np.array([setup.motion == "adversarial" and setup.adversary == "next-pair"])
@@ -343,7 +320,7 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
     ((3, 30, 2), (0, 1, 2))
     """
     arms = _arms_iv(arms)
-    seeds, given = _seeds_iv(seeds, noise)
+    seeds, given = seeds_or_noise(seeds, noise)
     first: dict = {}
     for name, arm in arms.items():
         first.setdefault(_run_key(arm), name)

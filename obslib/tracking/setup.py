@@ -10,14 +10,18 @@ strategy asks for it (:func:`noise_table`).
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 import numpy as np
 
 from .._validate import (
+    ArgumentTypeError,
+    as_float_array,
     as_instance,
     as_int,
     as_mapping,
+    as_noise_table,
     as_nonnegative,
     as_point,
     as_points,
@@ -322,17 +326,71 @@ def setup_from_params(base: TrackingSetup, params: dict) -> TrackingSetup:
 # --------------------------------------------------------------------------------------------
 
 
-def noise_table(setup: TrackingSetup, seed: int = 0) -> np.ndarray:
+def noise_table(setup, seed: int = 0) -> np.ndarray:
     """The measurement noise of one run, ``(steps, N)``: ``[k-1, i]`` is sensor ``i`` at step ``k``.
 
     Drawn once from ``numpy.random.default_rng(seed)`` as ``normal(0, noise_std)``, so every
-    strategy sees the same realisation (noise common to all strategies).
+    strategy (or assignment) sees the same realisation, whatever target a sensor serves.
+    ``setup`` is a :class:`TrackingSetup` or a :class:`~obslib.tracking.TargetsSetup`.
 
     Examples
     --------
     >>> noise_table(PAPER_CIRCLE, 0).shape
     (315, 6)
     """
-    as_instance(setup, TrackingSetup, "setup")
+    _setup_iv(setup)
     rng = np.random.default_rng(as_int(seed, "seed", 0))
     return rng.normal(0.0, setup.noise_std, size=(setup.steps, setup.n_sensors))
+
+
+def _setup_iv(setup):
+    from .targets import TargetsSetup
+
+    if not isinstance(setup, (TrackingSetup, TargetsSetup)):
+        raise ValueError(f"setup must be a TrackingSetup or a TargetsSetup, got "
+                         f"{type(setup).__name__}")
+    return setup
+
+
+def run_table(setup, noise, seed, seeded: bool):
+    """The noise table of one run and the seed it records: ``noise`` checked against the
+    setup's ``(steps, N)``, or :func:`noise_table` of ``seed`` (then recorded); ``seed`` is
+    checked wherever it is used (``seeded``: it also draws the run's random choices).
+
+    Examples
+    --------
+    >>> table, used = run_table(PAPER_CIRCLE.replace(steps=3), None, 4, False)
+    >>> table.shape, used
+    ((3, 6), 4)
+    """
+    _setup_iv(setup)
+    if noise is None or seeded:
+        seed = as_int(seed, "seed", 0)
+    if noise is None:
+        return noise_table(setup, seed), seed
+    return as_noise_table(noise, (setup.steps, setup.n_sensors)), None
+
+
+def seeds_or_noise(seeds, noise):
+    """Either seeds (a non-empty iterable of integers, returned as a tuple with ``None``) or
+    noise tables (an array ``(B, steps, N)``, returned as ``()`` and the array), not both.
+
+    Examples
+    --------
+    >>> seeds_or_noise(range(3), None)
+    ((0, 1, 2), None)
+    """
+    if (seeds is None) == (noise is None):
+        raise ValueError("give either seeds or noise tables")
+    if noise is not None:
+        given = as_float_array(noise, "noise")
+        if given.ndim != 3:
+            raise ValueError(f"noise must have shape (B, steps, N), got {given.shape}")
+        return (), given
+    if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
+        raise ArgumentTypeError(
+            f"seeds must be an iterable of non-negative integers, got {seeds!r}")
+    seeds = tuple(as_int(x, "each seed", 0) for x in seeds)
+    if not seeds:
+        raise ValueError("seeds is empty")
+    return seeds, None

@@ -45,7 +45,7 @@ from . import kalman
 from .assigners import ASSIGNMENTS, TeamChooser, check_assignment
 from .engine import FilterBank, FixedPaths, run_steps, singular_update_message
 from .results import TargetsBatch, TargetsResult
-from .setup import METRICS, _matrix
+from .setup import METRICS, _matrix, noise_table, run_table, seeds_or_noise
 
 __all__ = [
     "TargetsSetup",
@@ -53,7 +53,6 @@ __all__ = [
     "LATER_MULTI_TARGET",
     "circle_paths",
     "network_scene",
-    "targets_noise_table",
     "simulate_targets",
     "simulate_targets_batch",
     "simulate_targets_scenes",
@@ -277,24 +276,22 @@ def network_scene(n_sensors: int, n_targets: int, steps: int = 100, seed: int = 
                         estimate0=_nested(estimate0))
 
 
-def targets_noise_table(setup: TargetsSetup, seed: int = 0) -> np.ndarray:
-    """The measurement noise of one run, ``(steps, N)``: entry ``[k-1, i]`` is added to sensor
-    ``i``'s measurement at step ``k``, whichever target it serves and whatever the assignment
-    (``numpy.random.default_rng(seed).normal(0, noise_std)``).
-
-    Examples
-    --------
-    >>> targets_noise_table(LATER_MULTI_TARGET, 0).shape
-    (100, 8)
-    """
-    as_instance(setup, TargetsSetup, "setup")
-    rng = np.random.default_rng(as_int(seed, "seed", 0))
-    return rng.normal(0.0, setup.noise_std, size=(setup.steps, setup.n_sensors))
-
-
 # --------------------------------------------------------------------------------------------
 # The engine's pass
 # --------------------------------------------------------------------------------------------
+
+
+def _assignments_iv(setup, assignments) -> list:
+    """A list of distinct names of :data:`ASSIGNMENTS` that ``setup`` can run."""
+    if isinstance(assignments, str):
+        raise ArgumentTypeError(f"assignments must be a list of names, got the string "
+                                f"{assignments!r}; write [{assignments!r}]")
+    names = list(dict.fromkeys(as_names(assignments, "assignments", ASSIGNMENTS)))
+    if not names:
+        raise ValueError("assignments is empty")
+    for name in names:
+        check_assignment(setup, name)
+    return names
 
 
 def _pass(setups, kinds, tables, seeds, single: bool = False,
@@ -381,7 +378,7 @@ def simulate_targets(setup: TargetsSetup, assignment: str, noise=None,
         :mod:`~obslib.tracking.assigners`).
     noise : array_like, shape (steps, N), optional
         Entry ``[k-1, i]`` is added to sensor ``i``'s measurement at step ``k``, the same for
-        every assignment. Default: :func:`targets_noise_table` of ``seed``.
+        every assignment. Default: :func:`~obslib.tracking.noise_table` of ``seed``.
     seed : int
         Seed of the noise table when ``noise`` is not given, and of the ``"random"``
         assignment's draws in any case.
@@ -403,12 +400,7 @@ def simulate_targets(setup: TargetsSetup, assignment: str, noise=None,
     """
     as_instance(setup, TargetsSetup, "setup")
     check_assignment(setup, assignment)
-    if noise is None or assignment == "random":
-        seed = as_int(seed, "seed", 0)
-    if noise is None:
-        table, used = targets_noise_table(setup, seed), seed
-    else:
-        table, used = as_noise_table(noise, (setup.steps, setup.n_sensors)), None
+    table, used = run_table(setup, noise, seed, assignment == "random")
     res = _pass((setup,), [assignment], table[None], [seed], single=True)
     return TargetsResult(setup=setup, assignment=assignment, seed=used, noise=table,
                          **{k: np.array(v[0]) for k, v in res.items()})
@@ -417,7 +409,7 @@ def simulate_targets(setup: TargetsSetup, assignment: str, noise=None,
 def simulate_targets_batch(setup: TargetsSetup, assignments, seeds=None, noise=None) -> dict:
     """Several assignments over many noise realisations at once, with common noise.
 
-    Run ``b`` of every assignment uses ``targets_noise_table(setup, seeds[b])`` (or
+    Run ``b`` of every assignment uses ``noise_table(setup, seeds[b])`` (or
     ``noise[b]``), so it equals ``simulate_targets(setup, assignment, seed=seeds[b])``; all
     runs of all assignments advance together on the engine.
 
@@ -446,33 +438,15 @@ def simulate_targets_batch(setup: TargetsSetup, assignments, seeds=None, noise=N
     ((3, 20, 8), [2, 2, 2])
     """
     as_instance(setup, TargetsSetup, "setup")
-    if isinstance(assignments, str):
-        raise ArgumentTypeError(f"assignments must be a list of names, got the string "
-                                f"{assignments!r}; write [{assignments!r}]")
-    names = list(dict.fromkeys(as_names(assignments, "assignments", ASSIGNMENTS)))
-    if not names:
-        raise ValueError("assignments is empty")
-    for name in names:
-        check_assignment(setup, name)
-    if (seeds is None) == (noise is None):
-        raise ValueError("give either seeds or noise tables")
-    if noise is not None:
-        given = as_float_array(noise, "noise")
-        if given.ndim != 3:
-            raise ValueError(f"noise must have shape (B, steps, N), got {given.shape}")
+    names = _assignments_iv(setup, assignments)
+    seeds, given = seeds_or_noise(seeds, noise)
+    if given is not None:
         if "random" in names:
             raise ValueError("the random assignment draws from the run's seed: give seeds, "
                              "not noise tables")
         tables = np.stack([as_noise_table(t, (setup.steps, setup.n_sensors)) for t in given])
-        seeds = ()
     else:
-        if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
-            raise ArgumentTypeError(
-                f"seeds must be an iterable of non-negative integers, got {seeds!r}")
-        seeds = tuple(as_int(x, "each seed", 0) for x in seeds)
-        if not seeds:
-            raise ValueError("seeds is empty")
-        tables = np.stack([targets_noise_table(setup, x) for x in seeds])
+        tables = np.stack([noise_table(setup, x) for x in seeds])
     B = tables.shape[0]
     kinds = np.repeat(names, B)
     row_seeds = list(seeds) * len(names) if seeds else [0] * (B * len(names))
@@ -505,7 +479,7 @@ def simulate_targets_scenes(setups, assignments, seeds=None, noise=None, draws=N
     assignments : list of str
         Names of :data:`~obslib.tracking.ASSIGNMENTS`.
     seeds : iterable of int, optional
-        One per scene: its noise table (:func:`targets_noise_table`) and its ``"random"``
+        One per scene: its noise table (:func:`~obslib.tracking.noise_table`) and its ``"random"``
         draws.
     noise : array_like, shape (B, steps, N), optional
         Explicit noise tables instead of seeds.
@@ -543,14 +517,7 @@ def simulate_targets_scenes(setups, assignments, seeds=None, noise=None, draws=N
                                                       first.steps):
             raise ValueError(f"setups {b} and 0 differ in their numbers of sensors, targets or "
                              "steps")
-    if isinstance(assignments, str):
-        raise ArgumentTypeError(f"assignments must be a list of names, got the string "
-                                f"{assignments!r}; write [{assignments!r}]")
-    names = list(dict.fromkeys(as_names(assignments, "assignments", ASSIGNMENTS)))
-    if not names:
-        raise ValueError("assignments is empty")
-    for name in names:
-        check_assignment(first, name)
+    names = _assignments_iv(first, assignments)
     shape = (first.steps, first.n_sensors)
     if seeds is not None:
         if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
@@ -566,7 +533,7 @@ def simulate_targets_scenes(setups, assignments, seeds=None, noise=None, draws=N
                              f"{given.shape}")
         tables = np.stack([as_noise_table(t, shape) for t in given])
     elif seeds is not None:
-        tables = np.stack([targets_noise_table(su, x) for su, x in zip(setups, seeds)])
+        tables = np.stack([noise_table(su, x) for su, x in zip(setups, seeds)])
     else:
         raise ValueError("give seeds or noise tables")
     if draws is not None:
@@ -613,7 +580,7 @@ def step_times(setup: TargetsSetup, assignment: str, seed: int = 0) -> tuple:
     as_instance(setup, TargetsSetup, "setup")
     check_assignment(setup, assignment)
     seed = as_int(seed, "seed", 0)
-    table = targets_noise_table(setup, seed)
+    table = noise_table(setup, seed)
     clock: list = []
     res = _pass((setup,), [assignment], table[None], [seed], single=True, clock=clock)
     run = TargetsResult(setup=setup, assignment=assignment, seed=seed, noise=table,

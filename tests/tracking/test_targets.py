@@ -55,7 +55,7 @@ def test_unique_pair_run_equals_a_plain_reimplementation(seed):
     (``greedy_pair_assignment``), then filterpy's EKF per target with the ranges of its pair.
     The same pairs at every step and the same states to rounding."""
     su = LATER
-    table = tr.targets_noise_table(su, seed)
+    table = tr.noise_table(su, seed)
     r = tr.simulate_targets(su, "unique-pairs", seed=seed)
     filters = _filters(su)
     est, cov = np.empty((su.steps, 3, 2)), np.empty((su.steps, 3, 2, 2))
@@ -126,7 +126,7 @@ def test_batch_runs_equal_single_runs_and_share_the_noise():
 def test_noise_entry_is_keyed_by_step_and_sensor():
     """Changing the noise of a sensor no target uses at a step changes nothing."""
     su = LATER.first(30)
-    table = tr.targets_noise_table(su, 3)
+    table = tr.noise_table(su, 3)
     r = tr.simulate_targets(su, "unique-pairs", noise=table)
     unused = r.labels < 0
     t2 = table + np.where(unused, 5.0, 0.0)
@@ -328,7 +328,7 @@ def test_the_logdet_prior_teams_are_the_team_greedy_of_fig_9():
 def test_random_assignments_are_drawn_from_the_seed():
     su = LATER.first(30)
     a = tr.simulate_targets(su, "random", seed=7)
-    b = tr.simulate_targets(su, "random", noise=tr.targets_noise_table(su, 7), seed=7)
+    b = tr.simulate_targets(su, "random", noise=tr.noise_table(su, 7), seed=7)
     np.testing.assert_array_equal(a.labels, b.labels)
     perm = assigners.random_draws(7, su.steps, 8)
     for k in range(su.steps):
