@@ -67,13 +67,18 @@ from .model import (
 from .results import BatchResult, TargetsBatch, TargetsResult, TrackingResult
 from .setup import (
     ADVERSARIES,
+    LATER_MULTI_TARGET,
+    LATER_SENSORS,
     METRICS,
     MOTIONS,
     PAPER_ADVERSARIAL,
     PAPER_CIRCLE,
     PAPER_SENSORS,
     PARAM_FIELDS,
+    TargetsSetup,
     TrackingSetup,
+    circle_paths,
+    network_scene,
     noise_table,
     paper_controls,
     setup_from_params,
@@ -94,11 +99,6 @@ from .stats import (
     track_loss,
 )
 from .targets import (
-    LATER_MULTI_TARGET,
-    LATER_SENSORS,
-    TargetsSetup,
-    circle_paths,
-    network_scene,
     simulate_targets,
     simulate_targets_batch,
     simulate_targets_scenes,

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from .._kernels import matmul_rows
-from .._validate import as_float_array, as_points
+from .._validate import as_float_array
 from .model import inverse_condition
 
 __all__ = ["control_basis", "adversary_moves"]
@@ -34,17 +34,19 @@ def control_basis(controls) -> np.ndarray:
     >>> control_basis(np.array([[1.0, 2.0]])).ravel().tolist()
     [1.0, 1.0, 2.0, 1.0, 2.0, 4.0]
     """
-    return _basis(_controls_iv(controls))
+    return control_monomials(_controls_iv(controls))
 
 
 def _controls_iv(controls) -> np.ndarray:
-    c = as_points(controls, "controls", min_count=1)
+    c = as_float_array(controls, "controls")
+    if c.ndim != 2 or c.shape[1] != 2 or not c.shape[0]:
+        raise ValueError(f"controls must have shape (K, 2), K >= 1, got {c.shape}")
     if not np.isfinite(c).all():
         raise ValueError("controls must be finite")
     return c
 
 
-def _basis(controls) -> np.ndarray:
+def control_monomials(controls) -> np.ndarray:
     ux, uy = controls[:, 0], controls[:, 1]
     return np.stack([np.ones_like(ux), ux, uy, ux * ux, ux * uy, uy * uy])
 
@@ -106,14 +108,15 @@ def adversary_moves(pair_sensors, position, controls) -> np.ndarray:
     if not (np.isfinite(ps).all() and np.isfinite(o).all()):
         raise ValueError("pair_sensors and position must be finite")
     c = _controls_iv(controls)
-    return _moves(ps, o, c)
+    return screened_moves(ps, o, c)
 
 
-def _moves(eval_ps, o, controls, basis=None, barred=None) -> np.ndarray:
-    """:func:`adversary_moves` without checks, for the engine: ``basis`` is ``_basis`` of the
-    controls (computed once per run), ``barred`` the removed controls (see above)."""
+def screened_moves(eval_ps, o, controls, basis=None, barred=None) -> np.ndarray:
+    """:func:`adversary_moves` without checks, for the engine: ``basis`` is
+    ``control_monomials`` of the controls (computed once per run), ``barred`` the removed
+    controls (see above)."""
     if basis is None:
-        basis = _basis(controls)
+        basis = control_monomials(controls)
     R_ = o.shape[0]
     ax, ay = o[:, 0] - eval_ps[:, 0, 0], o[:, 1] - eval_ps[:, 0, 1]
     bx, by = o[:, 0] - eval_ps[:, 1, 0], o[:, 1] - eval_ps[:, 1, 1]

@@ -31,14 +31,16 @@ a team of fewer than two sensors :math:`O_l^T O_l` is singular, and what a greed
 matter of arithmetic:
 
 ``"logdet-teams"``
-    the measure as the authors' code evaluates it in floating point (:func:`code_logdet_det`):
+    the measure as the authors' code evaluates it in floating point
+    (:mod:`~obslib.tracking.code_logdet`, :func:`~obslib.tracking.code_logdet.code_logdet_det`):
     the determinant of the rounded :math:`O_l^T O_l` by an LU factorisation with partial
     pivoting and a fused multiply-add, which leaves the rounding residue of a singular matrix
     (zero, a tiny positive number, or a tiny negative one, whose logarithm is complex); the
     logarithm of an empty team's determinant is 0 (MATLAB's :math:`\\det` of a 0 x 0 matrix is
     1); the table of gains of the sensors already taken holds zeros; and the round's pick is
     the first entry, in column order (smallest target, then smallest sensor), equal to
-    MATLAB's ``max(max(table))`` (:func:`matlab_table_max`: by value among real numbers, by
+    MATLAB's ``max(max(table))``
+    (:func:`~obslib.tracking.code_logdet.matlab_table_max`: by value among real numbers, by
     magnitude and phase angle in a table with complex entries). Which target gets a first
     sensor is then decided by those residues;
 ``"logdet-teams-as-run"``
@@ -72,9 +74,9 @@ import numpy as np
 
 from .._kernels import mahalanobis_rescale, normalise_rows, pair_kernel
 from .._validate import as_choice, as_float_array, as_instance, as_int
+from .code_logdet import logdet_labels
 
-__all__ = ["ASSIGNMENTS", "PAIR_ASSIGNMENTS", "MAX_ENUMERATED", "ARITHMETICS", "code_logdet_det",
-           "matlab_table_max", "logdet_rounds", "assign_targets"]
+__all__ = ["ASSIGNMENTS", "PAIR_ASSIGNMENTS", "MAX_ENUMERATED", "assign_targets"]
 
 #: The assignments :func:`~obslib.tracking.simulate_targets` accepts (see the module docstring).
 ASSIGNMENTS = ("unique-pairs", "d-optimal-pairs", "optimal-pairs", "random", "logdet-teams",
@@ -112,7 +114,8 @@ def pair_weights(S, x, P, u_max: float, maha: bool) -> np.ndarray:
     >>> import obslib as ob
     >>> S = np.array([[0.0, 0.0], [4.0, 0.0], [1.0, 3.0]])
     >>> x = np.array([[[2.0, 1.0], [0.5, 0.5]]])
-    >>> w = pair_weights(S, x, np.broadcast_to(np.eye(2), (1, 2, 2, 2)), 0.5, False)
+    >>> P = np.broadcast_to(np.eye(2), (1, 2, 2, 2))
+    >>> w = pair_weights(S, x, P, 0.5, False)
     >>> W = ob.pair_bounds(S, x[0], 0.5)
     >>> bool((w[0] == W[[0, 0, 1], [1, 2, 2]]).all())
     True
@@ -153,7 +156,8 @@ def pair_gain_weights(S, x, Ppred, r: float, measurement: str) -> np.ndarray:
     >>> g = pair_gain_weights(S, x, Pm, 0.25, "half-squared-range")
     >>> H = x[0, 0] - S[[0, 2]]  # the rows of the pair (0, 2)
     >>> J = np.linalg.inv(Pm[0, 0]) + H.T @ H / 0.25
-    >>> bool(np.isclose(g[0, 1, 0], np.log(np.linalg.det(J) * np.linalg.det(Pm[0, 0]))))
+    >>> gain = np.log(np.linalg.det(J) * np.linalg.det(Pm[0, 0]))
+    >>> bool(np.isclose(g[0, 1, 0], gain))
     True
     """
     M, L = x.shape[:2]
@@ -297,212 +301,6 @@ def _random_pairs(perm, n_targets) -> np.ndarray:
     return labels
 
 
-# --------------------------------------------------------------------------------------------
-# The code's log det: an LU determinant with a fused multiply-add, MATLAB's max
-# --------------------------------------------------------------------------------------------
-
-
-def _two_product(a, b):
-    """``a * b = p + e`` exactly (Dekker's product with Veltkamp's split; no overflow)."""
-    p = a * b
-    t = 134217729.0 * a  # 2^27 + 1
-    ah = t - (t - a)
-    al = a - ah
-    t = 134217729.0 * b
-    bh = t - (t - b)
-    bl = b - bh
-    e = ((ah * bh - p) + ah * bl + al * bh) + al * bl
-    return p, e
-
-
-def fused_multiply_add(a, b, c):
-    """``a * b + c`` with one rounding where the product and ``c`` cancel (the exact sum then
-    is ``c + p + e`` with ``c + p`` exact, Sterbenz's lemma), and within a unit in the last
-    place elsewhere: the fused multiply-add of an optimised LAPACK's update, elementwise.
-
-    Examples
-    --------
-    >>> x = 1.0 + 2.0**-30
-    >>> float(fused_multiply_add(x, x, -(x * x)))  # the product's rounding error, 2^-60
-    8.673617379884035e-19
-    """
-    p, e = _two_product(a, b)
-    s = p + c
-    bb = s - p
-    t = (p - (s - bb)) + (c - bb)
-    return s + (t + e)
-
-
-def code_logdet_det(g00, g01, g11, fused: bool = True):
-    """The determinant of the symmetric ``[[g00, g01], [g01, g11]]`` as the authors' code gets
-    it: an LU factorisation with partial pivoting (LAPACK's ``dgetrf``: the pivot is the first
-    entry of largest magnitude in the first column, the multiplier the other entry times the
-    pivot's reciprocal, the update :math:`u_{22} = a_{22} - l\\, a_{12}` with a fused
-    multiply-add, or with two roundings where ``fused`` is false), then the product of the
-    pivots with the permutation's sign. For a singular matrix this leaves the rounding residue
-    of :math:`u_{22}`: zero, or a tiny number of either sign.
-
-    Examples
-    --------
-    The Gram matrix of one row is singular in exact arithmetic; its computed determinant is
-    zero, or a residue of either sign:
-
-    >>> import numpy as np
-    >>> def one_row(x, y):
-    ...     return float(code_logdet_det(x * x, x * y, y * y))
-    >>> one_row(1.0, 1.0), one_row(5.5, 1.5), one_row(0.5, -1.5)
-    (0.0, 5.037636974236648e-15, -3.122502256758253e-17)
-    """
-    g00, g01, g11 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (g00, g01, g11)))
-    swap = np.abs(g01) > np.abs(g00)
-    p = np.where(swap, g01, g00)
-    q = np.where(swap, g11, g01)  # the pivot row's second entry
-    c = np.where(swap, g00, g01)
-    d = np.where(swap, g01, g11)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        lm = c * (1.0 / p)
-        u = fused_multiply_add(-lm, q, d) if fused else d - lm * q
-        det = p * u
-    det = np.where(p == 0, 0.0, det)  # a zero column: U has a zero pivot
-    return np.where(swap, -det, det)
-
-
-def _complex_log(det):
-    """:math:`\\log` of real numbers as (real, imaginary) parts: :math:`-\\infty` at 0, the
-    principal value (imaginary part :math:`\\pi`) below."""
-    with np.errstate(divide="ignore", invalid="ignore"):
-        re = np.log(np.abs(det))
-    im = np.where(det < 0, np.pi, 0.0)
-    return re, im
-
-
-def _column_maxima(re, im, cplx):
-    """Each column's maximum ``(cre, cim)`` ``(M, L)`` of the tables ``re + i im``
-    ``(M, L, N)`` by MATLAB's rules (NaN where a column has no number): by value in a real
-    table, else by magnitude, then phase angle. The angle is computed only for the entries of
-    largest magnitude."""
-    M, L, N = re.shape
-    with np.errstate(invalid="ignore", over="ignore"):
-        key = np.where(cplx, re * re + im * im, re)  # magnitude squared: the same order
-    top = np.fmax.reduce(key, axis=2)  # NaN ignored
-    m, l, i = np.nonzero(key == top[..., None])  # the candidates, NaN excluded
-    ang = np.where(cplx[m, 0, 0], np.arctan2(im[m, l, i], re[m, l, i]), 0.0)
-    order = np.lexsort((i, -ang, l, m))  # per column: largest angle first, then first entry
-    first = np.ones(order.size, dtype=bool)
-    first[1:] = (m[order][1:] != m[order][:-1]) | (l[order][1:] != l[order][:-1])
-    sel = order[first]
-    cre, cim = np.full((M, L), np.nan), np.full((M, L), np.nan)
-    cre[m[sel], l[sel]] = re[m[sel], l[sel], i[sel]]
-    cim[m[sel], l[sel]] = im[m[sel], l[sel], i[sel]]
-    return cre, cim
-
-
-def matlab_table_max(re, im) -> np.ndarray:
-    """Per table, where the authors' code finds its round's pick: ``[row, col] =
-    find(T == max(max(T)))``, the first match, of the gains ``T = re + i im`` ``(M, L, N)``
-    (an ``N x L`` table per run, stored target-major as MATLAB stores its columns). Returns the
-    flat index ``l N + i`` of the pick, ``(M,)``.
-
-    MATLAB's rules: ``max`` ignores NaN; it compares real numbers by value and, in an array
-    with any entry of non-zero imaginary part, every entry by magnitude, then by phase angle.
-    ``max(T)`` takes the maximum of each column; MATLAB drops a zero imaginary part from a
-    result, so where every column maximum is real the second ``max`` compares them by value.
-    ``find`` then returns the first entry equal to that maximum in column order (smallest
-    target, then smallest sensor).
-
-    Examples
-    --------
-    A real table: the largest value wins. One entry of non-zero imaginary part makes each
-    column's maximum be chosen by magnitude (-36 and -40); both are real, so the larger value
-    wins:
-
-    >>> import numpy as np
-    >>> re = np.array([[[-36.0, 2.0], [-30.0, -40.0]]])  # targets 0, 1; sensors 0, 1
-    >>> int(matlab_table_max(re, np.zeros_like(re))[0])  # target 0, sensor 1
-    1
-    >>> im = np.array([[[0.0, np.pi], [0.0, 0.0]]])
-    >>> int(matlab_table_max(re, im)[0])  # target 0, sensor 0
-    0
-    """
-    M, L, N = re.shape
-    cplx = (im != 0).any(axis=(1, 2))[:, None, None]
-    cre, cim = _column_maxima(re, im, cplx)
-    cplx2 = (np.nan_to_num(cim) != 0).any(axis=1)[:, None, None]
-    vre, vim = _column_maxima(cre[:, None, :], cim[:, None, :], cplx2)
-    equal = (re == vre[:, :, None]) & (im == vim[:, :, None])
-    return equal.reshape(M, -1).argmax(axis=1)
-
-
-def _logdet_teams(S, x, exact: bool, fused: bool = True):
-    """The code's greedy (module docstring) for ``M`` runs: the labels of the sensors each
-    target won and of the rounds it won, each ``(M, N)``."""
-    with np.errstate(invalid="ignore"):  # -inf - (-inf): a NaN gain, which the max ignores
-        return _logdet_rounds(S, x, exact, fused)
-
-
-def _logdet_rounds(S, x, exact: bool, fused: bool):
-    M, L = x.shape[:2]
-    N = S.shape[1]
-    vx = x[:, None, :, 0] - S[:, :, None, 0]  # rows target - sensor, (M, N, L)
-    vy = x[:, None, :, 1] - S[:, :, None, 1]
-    rows = np.arange(M)
-    g00, g01, g11 = (np.zeros((M, L)) for _ in range(3))  # the teams' O^T O (code)
-    det = np.zeros((M, L))  # the teams' exact det (Cauchy-Binet) and increments C
-    C = np.zeros((M, N, L))
-    size = np.zeros((M, L), dtype=np.int64)
-    old_re, old_im = np.zeros((M, L)), np.zeros((M, L))  # log det of the empty team: 0
-
-    def new_logdet(ms, l, i=slice(None)):
-        """log det of team ``l[m]`` plus the row of sensor ``i`` (every sensor by default),
-        ``(len(ms), N)`` or ``(len(ms),)``."""
-        if isinstance(i, slice):
-            ax, ay = vx[ms, :, l], vy[ms, :, l]
-            sums = (det[ms, l][:, None], g00[ms, l][:, None], g01[ms, l][:, None],
-                    g11[ms, l][:, None])
-            inc = C[ms, :, l]
-        else:
-            ax, ay = vx[ms, i, l], vy[ms, i, l]
-            sums = (det[ms, l], g00[ms, l], g01[ms, l], g11[ms, l])
-            inc = C[ms, i, l]
-        if exact:
-            d = sums[0] + inc
-        else:
-            d = code_logdet_det(fused_multiply_add(ax, ax, sums[1]),
-                                fused_multiply_add(ax, ay, sums[2]),
-                                fused_multiply_add(ay, ay, sums[3]), fused)
-        return _complex_log(d)
-
-    gain_re, gain_im = np.empty((M, N, L)), np.empty((M, N, L))
-    for l in range(L):
-        re, im = new_logdet(rows, np.full(M, l))
-        gain_re[:, :, l], gain_im[:, :, l] = re - old_re[:, l, None], im - old_im[:, l, None]
-    free = np.ones((M, N), dtype=bool)
-    picked = np.full((M, N), -1, dtype=np.int64)
-    rounds = np.empty((M, N), dtype=np.int64)
-    for t in range(N):
-        at = matlab_table_max(gain_re.transpose(0, 2, 1), gain_im.transpose(0, 2, 1))
-        l, i = np.divmod(at, N)
-        rounds[:, t] = l
-        newly = free[rows, i]
-        picked[rows[newly], i[newly]] = l[newly]
-        # the team's new O^T O and log det (the value of the table's entry)
-        old_re[rows, l], old_im[rows, l] = new_logdet(rows, l, i)
-        ax, ay = vx[rows, i, l], vy[rows, i, l]
-        g00[rows, l] = fused_multiply_add(ax, ax, g00[rows, l])
-        g01[rows, l] = fused_multiply_add(ax, ay, g01[rows, l])
-        g11[rows, l] = fused_multiply_add(ay, ay, g11[rows, l])
-        det[rows, l] = det[rows, l] + C[rows, i, l]
-        cross = vx[rows, :, l] * ay[:, None] - vy[rows, :, l] * ax[:, None]
-        C[rows, :, l] = C[rows, :, l] + cross * cross
-        size[rows, l] += 1
-        free[rows, i] = False
-        re, im = new_logdet(rows, l)
-        gain_re[rows, :, l] = re - old_re[rows, l][:, None]
-        gain_im[rows, :, l] = im - old_im[rows, l][:, None]
-        gain_re[~free], gain_im[~free] = 0.0, 0.0  # the table's rows of the taken sensors
-    return picked, rounds
-
-
 def _prior_logdet_teams(S, x, eps) -> np.ndarray:
     from ..teams import greedy_team_picks
 
@@ -534,11 +332,13 @@ def _information_gain(criterion, j00, j01, j11, hx, hy):
     >>> import numpy as np
     >>> J, h = np.array([[2.0, 0.5], [0.5, 1.0]]), np.array([0.3, -0.7])
     >>> new = J + np.outer(h, h)
-    >>> [round(float(_information_gain(c, 2.0, 0.5, 1.0, 0.3, -0.7)), 12) for c in
-    ...  ("d-optimal-teams", "a-optimal-teams", "e-optimal-teams")] == [
-    ...  round(float(np.log(np.linalg.det(new) / np.linalg.det(J))), 12),
-    ...  round(float(np.trace(np.linalg.inv(J)) - np.trace(np.linalg.inv(new))), 12),
-    ...  round(float(np.linalg.eigvalsh(new)[0] - np.linalg.eigvalsh(J)[0]), 12)]
+    >>> got = [float(_information_gain(c, 2.0, 0.5, 1.0, 0.3, -0.7)) for c in
+    ...        ("d-optimal-teams", "a-optimal-teams", "e-optimal-teams")]
+    >>> inv = np.linalg.inv
+    >>> want = [np.log(np.linalg.det(new) / np.linalg.det(J)),
+    ...         np.trace(inv(J)) - np.trace(inv(new)),
+    ...         np.linalg.eigvalsh(new)[0] - np.linalg.eigvalsh(J)[0]]
+    >>> bool(np.allclose(got, want, rtol=1e-12))
     True
     """
     det = j00 * j11 - j01 * j01
@@ -647,7 +447,7 @@ class TeamChooser:
                 perm = np.stack([self.draws[int(r)][k] for r in rows])
                 labels[rows] = _random_pairs(perm, L)
             elif name.startswith("logdet-teams") and name != "logdet-teams-prior":
-                picked, won = _logdet_teams(S, xs, exact=name == "logdet-teams-exact")
+                picked, won = logdet_labels(S, xs, exact=name == "logdet-teams-exact")
                 labels[rows] = won if name == "logdet-teams-as-run" else picked
             elif name == "logdet-teams-prior":
                 labels[rows] = _prior_logdet_teams(S, xs, su.eps)
@@ -655,52 +455,6 @@ class TeamChooser:
                 labels[rows] = _information_teams(S, xs, Ps + self.Q, su.R, su.measurement,
                                                   name)
         return labels
-
-
-#: The arithmetic :func:`logdet_rounds` evaluates the code's measure in.
-ARITHMETICS = ("code", "code-unfused", "exact")
-
-
-def logdet_rounds(sensors, targets, arithmetic: str = "code"):
-    """The authors' team greedy on :math:`\\log\\det(O_l^T O_l)` for one instance: which
-    sensor each target won, and which rounds.
-
-    ``arithmetic`` is ``"code"`` (the code's floating point, :func:`code_logdet_det`, as
-    ``"logdet-teams"`` evaluates it), ``"code-unfused"`` (the same with the LU update rounded
-    twice, as an LAPACK without fused multiply-adds would) or ``"exact"`` (singular teams have
-    :math:`\\log\\det = -\\infty`).
-
-    Returns
-    -------
-    picked : ndarray of int, shape (N,)
-        The target of each sensor (-1 if it was never won).
-    rounds : ndarray of int, shape (N,)
-        The target that won round ``r`` (what the authors' script hands to the filters as
-        sensor ``r``).
-
-    Examples
-    --------
-    The later experiment's first step, at its initial estimates:
-
-    >>> from obslib import tracking
-    >>> su = tracking.LATER_MULTI_TARGET
-    >>> picked, rounds = logdet_rounds(su.sensors, su.estimate0)
-    >>> picked.tolist(), rounds.tolist()
-    ([0, 1, 1, 2, 2, 2, 1, 0], [0, 1, 0, 1, 2, 2, 1, 2])
-    >>> logdet_rounds(su.sensors, su.estimate0, "exact")[0].tolist()
-    [0, 0, 0, 0, 0, 0, 0, 0]
-    """
-    from .._validate import as_points, check_distinct
-
-    S = as_points(as_float_array(sensors, "sensors"), "sensors", min_count=1)
-    T = as_points(as_float_array(targets, "targets"), "targets", min_count=1)
-    if not (np.isfinite(S).all() and np.isfinite(T).all()):
-        raise ValueError("sensors and targets must be finite")
-    check_distinct(S)
-    as_choice(arithmetic, ARITHMETICS, "arithmetic")
-    picked, rounds = _logdet_teams(S[None], T[None], arithmetic == "exact",
-                                   arithmetic == "code")
-    return picked[0], rounds[0]
 
 
 def check_assignment(setup, assignment: str) -> str:
@@ -743,14 +497,14 @@ def assign_targets(setup, assignment: str, xhat, cov, seed: int = 0, step: int =
 
     >>> from obslib import tracking
     >>> su = tracking.LATER_MULTI_TARGET
-    >>> tracking.assign_targets(su, "unique-pairs", su.estimate0, su.cov0).tolist()
+    >>> x, cov = su.estimate0, su.cov0
+    >>> tracking.assign_targets(su, "unique-pairs", x, cov).tolist()
     [0, 2, -1, 1, 2, -1, 0, 1]
-    >>> tracking.assign_targets(su, "logdet-teams-exact", su.estimate0, su.cov0).tolist()
+    >>> tracking.assign_targets(su, "logdet-teams-exact", x, cov).tolist()
     [0, 0, 0, 0, 0, 0, 0, 0]
     """
     from .._validate import as_covariances, as_points
-    from .setup import MAX_COV_SCALE
-    from .targets import TargetsSetup
+    from .setup import MAX_COV_SCALE, TargetsSetup
 
     as_instance(setup, TargetsSetup, "setup")
     check_assignment(setup, assignment)

@@ -27,7 +27,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import kalman
-from .adversary import _basis, _moves
+from .adversary import control_monomials, screened_moves
 
 __all__ = []
 
@@ -36,7 +36,13 @@ def singular_update_message(x, ps, k: int, run: int | None = None,
                             target: int | None = None) -> str:
     """The error of an update whose innovation covariance is singular (see
     :data:`~obslib.tracking.kalman.SINGULAR_RTOL`): estimate ``x``, sensors ``ps``, step
-    ``k`` (0-based), and the run and target where there are several."""
+    ``k`` (0-based), and the run and target where there are several.
+
+    Examples
+    --------
+    >>> singular_update_message([1e10, 7e9], [[0, 0], [1, 1]], 4, run=2)[:45]
+    "the filter's update at step 5 of run 2 failed"
+    """
     where = (f"step {k + 1}" + ("" if run is None else f" of run {run}")
              + ("" if target is None else f" (target {target})"))
     return (
@@ -57,6 +63,26 @@ def run_steps(steps: int, update, choose, motion, record, move_first: bool = Fal
     the choice's measurements of the true positions ``motion.position(k)``, and
     ``motion.move(k, choice, next_choice)`` moves the targets (``next_choice`` is None where
     ``move_first``). Returns the choice after the last step.
+
+    Examples
+    --------
+    The order of the calls, for two steps of a target that stands still:
+
+    >>> log = []
+    >>> class Still:
+    ...     def position(self, k):
+    ...         return 0.0
+    ...     def move(self, k, choice, nxt):
+    ...         log.append(f"move {k}")
+    >>> last = run_steps(2, lambda k, c, o: log.append(f"update {k}"),
+    ...                  lambda k, u: f"choice {k}", Still(),
+    ...                  lambda k, c: log.append(f"log {k}: {c}"))
+    >>> log[:3]
+    ['log 0: choice 0', 'update 0', 'move 0']
+    >>> log[3:]
+    ['log 1: choice 1', 'update 1', 'move 1']
+    >>> last
+    'choice 2'
     """
     choice = choose(0, None)
     for k in range(steps):
@@ -98,13 +124,13 @@ class FilterBank:
 
     def predict(self):
         """The predicted covariance entries (the state is not changed)."""
-        return kalman._predict(self.covariance(), self.Q)
+        return kalman.predict_entries(self.covariance(), self.Q)
 
     def update_pairs(self, P, s0x, s0y, s1x, s1y, z0, z1, R) -> None:
         """Every filter with the half squared ranges ``z0, z1`` of its two sensors, from the
         predicted covariance ``P`` (Section V; raises ``kalman.SingularInnovation``)."""
-        (self.xx, self.xy), P = kalman._update((self.xx, self.xy), P, (s0x, s0y), (s1x, s1y),
-                                               (z0, z1), R)
+        (self.xx, self.xy), P = kalman.update_pair_entries(
+            (self.xx, self.xy), P, (s0x, s0y), (s1x, s1y), (z0, z1), R)
         self.p00, self.p01, self.p10, self.p11 = P
 
     def update_teams(self, P, owner, sensor_xy, truth_xy, noise, R, measurement) -> None:
@@ -114,8 +140,8 @@ class FilterBank:
         The measurements are listed sorted by ``owner`` ``(M,)``, the filter they update:
         ``sensor_xy`` ``(M, 2)`` the sensor's position, ``truth_xy`` ``(M, 2)`` the target's
         true position, ``noise`` ``(M,)`` the noise added to the true measurement. Filters with
-        equal team sizes are updated together (``kalman._update_rows``; pairs of half squared
-        ranges by Section V's closed form, ``kalman._update``); raises
+        equal team sizes are updated together (``kalman.update_stacked``; pairs of half squared
+        ranges by Section V's closed form, ``kalman.update_pair_entries``); raises
         ``kalman.SingularInnovation`` with ``ok`` over the filters.
         """
         self.p00, self.p01, self.p10, self.p11 = (np.array(p, dtype=float)
@@ -132,7 +158,7 @@ class FilterBank:
             try:
                 if m == 2 and measurement == "half-squared-range":
                     r = float(R)
-                    (xx, xy), Pc = kalman._update(
+                    (xx, xy), Pc = kalman.update_pair_entries(
                         (self.xx[f], self.xy[f]),
                         (self.p00[f], self.p01[f], self.p10[f], self.p11[f]),
                         (ps[:, 0, 0], ps[:, 0, 1]), (ps[:, 1, 0], ps[:, 1, 1]),
@@ -144,7 +170,7 @@ class FilterBank:
                     Pg = np.stack([self.p00[f], self.p01[f], self.p10[f], self.p11[f]],
                                   axis=-1).reshape(-1, 2, 2)
                     H, h = kalman.measurement_rows(x, ps, measurement)
-                    xn, Pn = kalman._update_rows(x, Pg, H, z - h, R)
+                    xn, Pn = kalman.update_stacked(x, Pg, H, z - h, R)
             except kalman.SingularInnovation as e:
                 ok = np.ones(F, dtype=bool)
                 ok[f[~e.ok]] = False
@@ -190,7 +216,7 @@ class Adversaries:
         self.anynext = bool(nextpair.any())
         self.pair_sensors = pair_sensors
         if barred is None:
-            self.blocks = [(None, 0, self.controls, _basis(self.controls))]
+            self.blocks = [(None, 0, self.controls, control_monomials(self.controls))]
         else:
             allowed = np.asarray(barred) == 0
             lo = allowed.argmax(axis=1)
@@ -200,7 +226,8 @@ class Adversaries:
             self.blocks = []
             for a, b in sorted(set(zip(lo.tolist(), hi.tolist()))):
                 c = self.controls[a:b]
-                self.blocks.append((np.flatnonzero((lo == a) & (hi == b)), a, c, _basis(c)))
+                self.blocks.append((np.flatnonzero((lo == a) & (hi == b)), a, c,
+                                    control_monomials(c)))
 
     def position(self, k):
         return self.truth[k, :, 0], self.truth[k, :, 1]
@@ -217,9 +244,9 @@ class Adversaries:
         o = self.truth[k]
         if self.blocks[0][0] is None:
             _, _, c, basis = self.blocks[0]
-            pick = _moves(eval_ps, o, c, basis)
+            pick = screened_moves(eval_ps, o, c, basis)
         else:
             pick = np.empty(o.shape[0], dtype=int)
             for rows, a, c, basis in self.blocks:
-                pick[rows] = a + _moves(eval_ps[rows], o[rows], c, basis)
+                pick[rows] = a + screened_moves(eval_ps[rows], o[rows], c, basis)
         self.truth[k + 1] = o + self.controls[pick]

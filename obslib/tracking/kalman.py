@@ -123,7 +123,7 @@ def predict(P, Q):
     """
     P = _matrix_iv(P, "P", (2, 2), "(..., 2, 2)")
     Q = _noise_iv(Q, "Q", 2)
-    out = _predict((P[..., 0, 0], P[..., 0, 1], P[..., 1, 0], P[..., 1, 1]), Q.tolist())
+    out = predict_entries((P[..., 0, 0], P[..., 0, 1], P[..., 1, 0], P[..., 1, 1]), Q.tolist())
     return np.stack(np.broadcast_arrays(*out), axis=-1).reshape(P.shape)
 
 
@@ -171,15 +171,15 @@ def update(x, P, sensors, z, R, measurement: str = "half-squared-range"):
     At :math:`\\hat x = 0` with sensors :math:`e_1, e_2`, :math:`H = -I`; with :math:`P = I`,
     :math:`R = I`, :math:`S = 2I`, :math:`K = -I/2`:
 
-    >>> x, P = update([0.0, 0.0], [[1.0, 0.0], [0.0, 1.0]], [[1.0, 0.0], [0.0, 1.0]],
-    ...               [1.5, 0.5], 1.0)
+    >>> eye = [[1.0, 0.0], [0.0, 1.0]]
+    >>> x, P = update([0.0, 0.0], eye, [[1.0, 0.0], [0.0, 1.0]], [1.5, 0.5], 1.0)
     >>> x.tolist(), P.tolist()
     ([-0.5, 0.0], [[0.5, 0.0], [0.0, 0.5]])
 
     With ranges, one sensor at :math:`(3, 4)` seen from the origin gives the row
     :math:`-(0.6, 0.8)`:
 
-    >>> x, P = update([0.0, 0.0], [[1.0, 0.0], [0.0, 1.0]], [[3.0, 4.0]], [4.0], 1.0,
+    >>> x, P = update([0.0, 0.0], eye, [[3.0, 4.0]], [4.0], 1.0,
     ...               measurement="range")
     >>> x.round(12).tolist(), P.round(12).tolist()
     ([0.3, 0.4], [[0.82, -0.24], [-0.24, 0.68]])
@@ -204,13 +204,13 @@ def update(x, P, sensors, z, R, measurement: str = "half-squared-range"):
     if (d == 0).all(axis=-1).any():
         raise ValueError("sensors: a sensor sits on an estimate, where the Jacobian is undefined")
     if measurement == "half-squared-range" and m == 2:
-        (xx, xy), Pc = _update((x[..., 0], x[..., 1]), (P[..., 0, 0], P[..., 0, 1], P[..., 1, 0],
-                                                        P[..., 1, 1]),
-                               (s[..., 0, 0], s[..., 0, 1]), (s[..., 1, 0], s[..., 1, 1]),
-                               (z[..., 0], z[..., 1]), R.tolist())
+        (xx, xy), Pc = update_pair_entries(
+            (x[..., 0], x[..., 1]), (P[..., 0, 0], P[..., 0, 1], P[..., 1, 0], P[..., 1, 1]),
+            (s[..., 0, 0], s[..., 0, 1]), (s[..., 1, 0], s[..., 1, 1]),
+            (z[..., 0], z[..., 1]), R.tolist())
         return np.stack([xx, xy], axis=-1), np.stack(Pc, axis=-1).reshape(lead + (2, 2))
     H, h = measurement_rows(x.reshape(-1, 2), s.reshape(-1, m, 2), measurement)
-    xn, Pn = _update_rows(x.reshape(-1, 2), P.reshape(-1, 2, 2), H,
+    xn, Pn = update_stacked(x.reshape(-1, 2), P.reshape(-1, 2, 2), H,
                           z.reshape(-1, m) - h, R)
     return xn.reshape(lead + (2,)), Pn.reshape(lead + (2, 2))
 
@@ -227,7 +227,8 @@ def measurement_rows(x, sensors, measurement: str):
     Examples
     --------
     >>> import numpy as np
-    >>> H, h = measurement_rows(np.zeros((1, 2)), np.array([[[3.0, 4.0]]]), "range")
+    >>> x, s = np.zeros((1, 2)), np.array([[[3.0, 4.0]]])
+    >>> H, h = measurement_rows(x, s, "range")
     >>> H.tolist(), h.tolist()
     ([[[-0.6, -0.8]]], [[5.0]])
     """
@@ -239,7 +240,7 @@ def measurement_rows(x, sensors, measurement: str):
     return d / r[..., None], r
 
 
-def _predict(P, Q):
+def predict_entries(P, Q):
     """:func:`predict` on component arrays ``P = (p00, p01, p10, p11)`` and a nested ``Q``.
 
     Zero off-diagonal entries of ``Q`` are not added (the result is the same number).
@@ -251,7 +252,7 @@ def _predict(P, Q):
     return p00 + q00, p01 + q01, p10 + q10, p11 + q11
 
 
-def _update(x, P, s0, s1, z, R):
+def update_pair_entries(x, P, s0, s1, z, R):
     """:func:`update` with two half squared ranges, on component arrays: the sensors ``s0 =
     (s0x, s0y)`` and ``s1``, the measurements ``z = (z0, z1)``, a nested 2 x 2 ``R``. Returns
     the new ``x`` and ``P`` (tuples of component arrays); raises :class:`SingularInnovation`
@@ -331,11 +332,11 @@ def _regular(S) -> np.ndarray:
 
 
 #: Above this many measurements per filter (and with a measurement noise ``R = r I``), the
-#: engine's update computes the gain in its information form (:func:`_update_rows`).
+#: engine's update computes the gain in its information form (:func:`update_stacked`).
 INFORMATION_FORM_ROWS = 8
 
 
-def _update_rows(x, P, H, y, R):
+def update_stacked(x, P, H, y, R):
     """:func:`update` for ``G`` filters of ``m`` measurements each, given their Jacobian rows
     ``H`` ``(G, m, 2)`` and innovations ``y`` ``(G, m)``: estimates ``x`` ``(G, 2)``,
     covariances ``P`` ``(G, 2, 2)``, noise ``R`` ``(m, m)`` (or a number: that variance).

@@ -30,7 +30,8 @@ def _filterpy(x, P, Q, R, m):
 def test_batched_pair_steps_equal_filterpy_on_random_problems(diagonal):
     """Random states, covariances, pairs and measurements, B filters over several steps, with
     diagonal noise matrices (the zero entries skipped) and full ones: the engine's closed form
-    of two half squared ranges (``_predict``, ``_update`` on component arrays) and the public
+    of two half squared ranges (``predict_entries``, ``update_pair_entries`` on component
+    arrays) and the public
     ``predict``/``update``. filterpy computes K = P H^T inv(S) with matrix products; the closed
     form writes the 2 x 2 products out, so the two agree to rounding (1e-9 relative: the
     covariances shrink by up to 1e4 over the steps)."""
@@ -47,8 +48,8 @@ def test_batched_pair_steps_equal_filterpy_on_random_problems(diagonal):
     for _ in range(6):
         ps = rng.uniform(-5, 15, size=(B, 2, 2))
         z = rng.normal(20, 5, size=(B, 2))
-        cov = kalman._predict(cov, Q.tolist())
-        state, cov = kalman._update(state, cov, (ps[:, 0, 0], ps[:, 0, 1]),
+        cov = kalman.predict_entries(cov, Q.tolist())
+        state, cov = kalman.update_pair_entries(state, cov, (ps[:, 0, 0], ps[:, 0, 1]),
                                     (ps[:, 1, 0], ps[:, 1, 1]), (z[:, 0], z[:, 1]), R.tolist())
         xm, Pm = kalman.update(xm, kalman.predict(Pm, Q), ps, z, R)
         for b, f in enumerate(filters):
@@ -68,7 +69,7 @@ def test_batched_pair_steps_equal_filterpy_on_random_problems(diagonal):
 @pytest.mark.parametrize("m", [1, 2, 3, 5, 12])
 def test_teams_of_any_size_equal_filterpy(measurement, m):
     """m sensors per filter, either measurement model: the stacked update the engine uses for
-    teams (``_update_rows``, through the public ``update``; the gain in its information form
+    teams (``update_stacked``, through the public ``update``; the gain in its information form
     for m = 12) against filterpy over several steps, to 1e-9 relative."""
     rng = np.random.default_rng(10 * m + len(measurement))
     B = 12
@@ -96,7 +97,7 @@ def test_a_singular_innovation_is_reported_per_filter():
     s0 = (np.array([1.0, 1.0]), np.array([0.0, 0.0]))
     s1 = (np.array([2.0, 0.0]), np.array([0.0, 2.0]))  # filter 0: collinear; filter 1: not
     with pytest.raises(kalman.SingularInnovation) as err:
-        kalman._update(x, P, s0, s1, (np.ones(2), np.ones(2)), [[0.0, 0.0], [0.0, 0.0]])
+        kalman.update_pair_entries(x, P, s0, s1, (np.ones(2), np.ones(2)), [[0.0, 0.0], [0.0, 0.0]])
     assert err.value.ok.tolist() == [False, True]
     assert isinstance(err.value, ValueError)
     ps = np.array([[[1.0, 0.0], [2.0, 0.0]], [[1.0, 0.0], [0.0, 2.0]]])

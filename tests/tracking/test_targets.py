@@ -12,7 +12,7 @@ from filterpy.kalman import ExtendedKalmanFilter
 
 import obslib as ob
 from obslib import tracking as tr
-from obslib.tracking import assigners
+from obslib.tracking import assigners, code_logdet
 
 LATER = tr.LATER_MULTI_TARGET
 MODELS = {"half-squared-range": (tr.range_jacobian, tr.half_squared_range),
@@ -163,12 +163,12 @@ def test_code_determinant_is_lapack_s_lu_with_one_rounding_of_the_update():
     for _ in range(400):
         x, y = rng.normal(0, 3, 2)
         g00, g01, g11 = x * x, x * y, y * y  # one row: singular, the residue decides
-        got = float(assigners.code_logdet_det(g00, g01, g11))
+        got = float(code_logdet.code_logdet_det(g00, g01, g11))
         assert got == _exact_lu_det(g00, g01, g01, g11)
         if rng.random() < 0.5:  # two rows: a regular matrix
             u, v = rng.normal(0, 3, 2)
             g00, g01, g11 = g00 + u * u, g01 + u * v, g11 + v * v
-            got = float(assigners.code_logdet_det(g00, g01, g11))
+            got = float(code_logdet.code_logdet_det(g00, g01, g11))
             assert got == pytest.approx(_exact_lu_det(g00, g01, g01, g11), rel=1e-15)
 
 
@@ -176,13 +176,13 @@ def test_fused_multiply_add_is_exactly_rounded_where_it_cancels():
     rng = np.random.default_rng(1)
     a, b = rng.normal(0, 10, 500), rng.normal(0, 10, 500)
     c = -(a * b) * (1 + rng.uniform(-0.4, 0.4, 500))  # within a factor 2 of -ab
-    got = assigners.fused_multiply_add(a, b, c)
+    got = code_logdet.fused_multiply_add(a, b, c)
     want = [_round(Fraction(x) * Fraction(y) + Fraction(z)) for x, y, z in zip(a, b, c)]
     np.testing.assert_array_equal(got, want)
 
 
 def test_the_round_maximum_follows_matlab_s_rules():
-    m = assigners.matlab_table_max
+    m = code_logdet.matlab_table_max
     re = np.array([[[np.nan, -1.0], [-5.0, 0.5]]])  # NaN ignored
     assert m(re, np.zeros_like(re)).tolist() == [3]
     re = np.array([[[-np.inf, np.inf], [1.0, 2.0]]])
@@ -223,7 +223,7 @@ def test_the_round_maximum_equals_a_plain_two_stage_max():
         hits = [l * N + i for l in range(L) for i in range(N)
                 if T[0, l, i].real == v.real and T[0, l, i].imag == v.imag]
         if hits:  # a table of NaN only has no maximum (MATLAB's find then finds nothing)
-            assert assigners.matlab_table_max(re, im).tolist() == [hits[0]]
+            assert code_logdet.matlab_table_max(re, im).tolist() == [hits[0]]
 
 
 def test_exact_arithmetic_gives_the_first_target_every_sensor():
