@@ -11,10 +11,12 @@ the target's 2-D position fuses the two measurements. With many targets
 Both run on one engine (:mod:`~obslib.tracking.engine`). The parts:
 
 :mod:`~obslib.tracking.setup`
-    the parameter record :class:`TrackingSetup`, the paper's :data:`PAPER_CIRCLE` and
-    :data:`PAPER_ADVERSARIAL`, the common noise tables;
+    the parameter records: :class:`TrackingSetup` with the paper's :data:`PAPER_CIRCLE` and
+    :data:`PAPER_ADVERSARIAL`; :class:`TargetsSetup` with the authors' later experiment
+    :data:`LATER_MULTI_TARGET` and larger networks (:func:`network_scene`); the common noise
+    tables;
 :mod:`~obslib.tracking.model`
-    measurement function and Jacobian, the circle, the pair bound along a run;
+    the measurement functions and their Jacobians, the circle, the pair bound along a run;
 :mod:`~obslib.tracking.choosers`
     the pair choosers: the paper's :data:`STRATEGIES` (``"best-pair"``, ``"best-partner"``,
     ``"fixed-pair"``, by Theorem 4's bound) and, beyond the paper, :data:`CRITERIA`
@@ -32,19 +34,22 @@ Both run on one engine (:mod:`~obslib.tracking.engine`). The parts:
     :func:`simulate_many`, :func:`monte_carlo` (many runs over seeds, strategies and setup
     variants at once);
 :mod:`~obslib.tracking.targets`
-    many targets: the setup record :class:`TargetsSetup`, the authors' later experiment
-    :data:`LATER_MULTI_TARGET`, larger scenes (:func:`network_scene`), and
-    :func:`simulate_targets`, :func:`simulate_targets_batch`;
+    many targets on the engine: :func:`simulate_targets` (one run),
+    :func:`simulate_targets_batch` (many noise seeds), :func:`simulate_targets_scenes` (many
+    scenes), :func:`step_times`;
 :mod:`~obslib.tracking.assigners`
     the assignments of sensors to many targets (:data:`ASSIGNMENTS`);
+:mod:`~obslib.tracking.code_logdet`
+    the authors' team greedy as their code evaluates it in floating point;
 :mod:`~obslib.tracking.results`
     :class:`TrackingResult`, :class:`BatchResult`, :class:`TargetsResult` and
     :class:`TargetsBatch`;
 :mod:`~obslib.tracking.stats`
     comparisons, correlations, switches, track loss, entrapment.
 
-Noise is common to all strategies: entry ``[k-1, i]`` of a ``(steps, N)`` table is sensor
-``i``'s noise at step ``k``, whichever strategy asks for it (:func:`noise_table`).
+Noise is common to all strategies and assignments: entry ``[k-1, i]`` of a ``(steps, N)`` table
+is sensor ``i``'s noise at step ``k``, whichever strategy asks for it and whatever target it
+serves (:func:`noise_table`).
 
 The drawings are in :mod:`obslib.viz.tracking` and the studies of the paper's claims in
 :mod:`obslib.studies.tracking`.
