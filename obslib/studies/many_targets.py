@@ -19,8 +19,8 @@ chapter and the ledger:
   scenes (:func:`obslib.tracking.network_scene`), one noise seed per scene.
 
 The statistics of a run leave out step 1, whose logged values are the initial ones for every
-assignment: a target's *mean error* and *mean trace* are over steps ``2 .. K``; its *steps
-without a sensor* count the steps ``1 .. K`` at which it had none; its track is *lost* when its
+assignment: a target's *mean error* and *mean trace* are over steps 2 to K; its *steps
+without a sensor* count the steps 1 to K at which it had none; its track is *lost* when its
 mean error exceeds :data:`LOSS_THRESHOLD` (chapter 10's threshold).
 """
 
@@ -100,8 +100,8 @@ def later_runs(n_seeds: int = 200, seed: int = 0, assignments=tr.ASSIGNMENTS) ->
 
 
 def run_statistics(batch, loss_threshold: float = LOSS_THRESHOLD) -> dict:
-    """Per run and target, ``(B, L)``: ``mean_error`` and ``mean_trace`` over steps
-    ``2 .. K``, ``unobserved`` (steps without a sensor) and ``lost`` (mean error above
+    """Per run and target, ``(B, L)``: ``mean_error`` and ``mean_trace`` over the steps after
+    the first, ``unobserved`` (steps without a sensor) and ``lost`` (mean error above
     ``loss_threshold``).
 
     Examples

@@ -55,6 +55,26 @@ def adversary_moves(pair_sensors, position, controls) -> np.ndarray:
     """Index of the control each adversary takes: the first minimiser over ``controls`` of
     :func:`~obslib.tracking.target_objective` (its exact values), ``(R,)``.
 
+    With :math:`a = o - p_i`, :math:`b = o - p_j` and the rows :math:`a + u`, :math:`b + u`,
+    :math:`u` of the matrix :math:`M`, the three 2 x 2 minors of :math:`M` are affine in :math:`u`
+    (:math:`a \\times b + (a - b) \\times u`, :math:`a \\times u`, :math:`b \\times u`), so
+    :math:`\\det(M^T M)` (their sum of squares, Cauchy-Binet) and :math:`\\operatorname{tr}(M^T M)`
+    are quadratics in :math:`u`: one matrix product with the monomials of the controls
+    (:func:`control_basis`) gives both for all runs and controls. :math:`C^{-1}(M)` is an
+    increasing function of :math:`t = 4 \\det / \\operatorname{tr}^2` (:math:`C^{-2} =
+    \\lambda_{\\min} / \\lambda_{\\max}` and :math:`t = 4 \\lambda_{\\min} \\lambda_{\\max} /
+    (\\lambda_{\\min} + \\lambda_{\\max})^2`), so the controls whose
+    :math:`\\det / \\operatorname{tr}^2` is within ``1e-11`` of the run's minimum contain the
+    exact minimiser (the screen's rounding error is some 1e-15). Those few candidates (usually
+    one) are evaluated with the arithmetic of :func:`~obslib.tracking.target_objective` and the
+    first exact minimiser is taken, so the pick equals its ``argmin`` over the whole set (tests
+    check it).
+
+    The engine's worker (the same computation without the checks) also takes ``barred``
+    (``(R, K)``, 0 or inf), which removes controls from a run's set: runs with different
+    control sets share one call with the union of the sets, each run's own set a contiguous
+    block of it in its own order.
+
     Parameters
     ----------
     pair_sensors : array_like, shape (R, 2, 2)
@@ -64,25 +84,9 @@ def adversary_moves(pair_sensors, position, controls) -> np.ndarray:
     controls : array_like, shape (K, 2)
         The control set :math:`U`, in its order.
 
-    With :math:`a = o - p_i`, :math:`b = o - p_j` and the rows :math:`a + u`, :math:`b + u`,
-    :math:`u` of the matrix :math:`M`, the three 2 x 2 minors of :math:`M` are affine in :math:`u`
-    (:math:`a \\times b + (a - b) \\times u`, :math:`a \\times u`, :math:`b \\times u`), so
-    :math:`\\det(M^T M)` (their sum of squares, Cauchy-Binet) and :math:`\\operatorname{tr}(M^T M)`
-    are quadratics in :math:`u`: one matrix product with the monomials of the controls
-    (``control_basis``) gives both for all runs and controls. :math:`C^{-1}(M)` is an
-    increasing function of :math:`t = 4 \\det / \\operatorname{tr}^2` (:math:`C^{-2} =
-    \\lambda_{\\min} / \\lambda_{\\max}` and :math:`t = 4 \\lambda_{\\min} \\lambda_{\\max} /
-    (\\lambda_{\\min} + \\lambda_{\\max})^2`), so the controls whose
-    :math:`\\det / \\operatorname{tr}^2` is within ``1e-11`` of the run's minimum contain the
-    exact minimiser (the screen's rounding error is some 1e-15). Those few candidates (usually
-    one) are evaluated with :func:`target_objective`'s own arithmetic and the first exact
-    minimiser is taken, so the pick equals ``argmin`` of :func:`target_objective` over the whole
-    set (tests check it).
-
-    The engine's worker (the same computation without the checks) also takes ``barred``
-    (``(R, K)``, 0 or inf), which removes controls from a run's set: runs with different
-    control sets share one call with the union of the sets, each run's own set a contiguous
-    block of it in its own order.
+    Returns
+    -------
+    ndarray of int, shape (R,)
 
     Examples
     --------

@@ -61,7 +61,11 @@ matter of arithmetic:
     measurement model's Jacobian rows :math:`h_{il}` at :math:`\\hat x_l`: maximising
     :math:`\\sum_l \\log\\det J_l`, :math:`-\\sum_l \\operatorname{tr} J_l^{-1}` or
     :math:`\\sum_l \\lambda_{\\min}(J_l)` (the criteria of chapter 10, one filter per target);
-    ties to the smallest sensor, then the smallest target.
+    ties to the smallest sensor, then the smallest target. One row never raises the smallest
+    eigenvalue of an isotropic :math:`J_l`, so where every prior is isotropic (the later
+    experiment's first step) every first gain of the E-criterion is zero, the first target takes
+    the first sensor, and from then on only its gains are positive: the E-optimal greedy
+    gives it every sensor, as exact arithmetic does with the log det.
 """
 
 from __future__ import annotations
