@@ -31,7 +31,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import tracking as tr
-from .._validate import as_int, as_names, as_nonnegative
+from .._validate import as_int, as_mapping, as_names, as_nonnegative, as_str
 from ..later_experiment import RUN_NAMES, saved_run
 from .criteria import paired_test, significance
 
@@ -275,6 +275,32 @@ def code_treatment(n_seeds: int = 200, seed: int = 0) -> dict:
 # --------------------------------------------------------------------------------------------
 
 
+_STAT_KEYS = ("mean_error", "mean_trace", "unobserved", "lost")
+
+
+def _stats_iv(stats, reference: str) -> dict:
+    """``{assignment: run_statistics(...)}`` holding ``reference``, every array ``(B, L)`` of
+    one shape, at least two runs."""
+    stats = as_mapping(stats, "stats")
+    if reference not in stats:
+        raise ValueError(f"stats must hold the reference {reference!r}, got {list(stats)}")
+    shape = None
+    out = {}
+    for name, st in stats.items():
+        st = as_mapping(st, "stats")
+        if set(st) != set(_STAT_KEYS):
+            raise ValueError(f"stats[{name!r}] must be run_statistics' {_STAT_KEYS}")
+        arrays = {k: np.asarray(st[k]) for k in _STAT_KEYS}
+        for k, a in arrays.items():
+            if a.dtype.kind not in "biuf" or a.ndim != 2 or a.shape[0] < 2 or (
+                    shape is not None and a.shape != shape) or not np.isfinite(a).all():
+                raise ValueError(f"stats[{name!r}][{k!r}] must be finite (runs, targets), at "
+                                 f"least 2 runs, one shape for all, got {a.shape}")
+            shape = a.shape
+        out[name] = arrays
+    return out
+
+
 def comparison_rows(stats: dict, reference: str = REFERENCE) -> list:
     """One row per assignment and target (``target`` 1..L) and overall (``target`` ``"all"``)
     from per-run statistics ``{assignment: run_statistics(...)}`` (runs paired by index).
@@ -297,9 +323,7 @@ def comparison_rows(stats: dict, reference: str = REFERENCE) -> list:
     >>> rows[-1]["vs_n"], rows[-1]["verdict"] in ("better", "worse", "same")
     (4, True)
     """
-    if not isinstance(stats, dict) or reference not in stats:
-        raise ValueError(f"stats must be a dict of run_statistics holding the reference "
-                         f"{reference!r}")
+    stats = _stats_iv(stats, as_str(reference, "reference"))
     ref = stats[reference]
     rows = []
     for name, s in stats.items():

@@ -52,6 +52,19 @@ def fused_multiply_add(a, b, c):
     >>> float(fused_multiply_add(x, x, -(x * x)))  # the rounding error, 2^-60
     8.673617379884035e-19
     """
+    a, b, c = (as_float_array(v, name) for v, name in ((a, "a"), (b, "b"), (c, "c")))
+    for v, name in ((a, "a"), (b, "b"), (c, "c")):
+        if not np.isfinite(v).all():
+            raise ValueError(f"{name} must be finite")
+    try:
+        np.broadcast_shapes(a.shape, b.shape, c.shape)
+    except ValueError:
+        raise ValueError("a, b and c must broadcast together") from None
+    return fma(a, b, c)
+
+
+def fma(a, b, c):
+    """:func:`fused_multiply_add` without checks (the determinant's worker)."""
     p, e = _two_product(a, b)
     s = p + c
     bb = s - p
@@ -100,7 +113,7 @@ def code_det(g00, g01, g11, fused: bool = True):
     d = np.where(swap, g01, g11)
     with np.errstate(divide="ignore", invalid="ignore"):
         lm = c * (1.0 / p)
-        u = fused_multiply_add(-lm, q, d) if fused else d - lm * q
+        u = fma(-lm, q, d) if fused else d - lm * q
         det = p * u
     det = np.where(p == 0, 0.0, det)  # a zero column: U has a zero pivot
     return np.where(swap, -det, det)
@@ -216,9 +229,8 @@ def _logdet_rounds(S, x, exact: bool, fused: bool):
         if exact:
             d = sums[0] + inc
         else:
-            d = code_det(fused_multiply_add(ax, ax, sums[1]),
-                                fused_multiply_add(ax, ay, sums[2]),
-                                fused_multiply_add(ay, ay, sums[3]), fused)
+            d = code_det(fma(ax, ax, sums[1]), fma(ax, ay, sums[2]), fma(ay, ay, sums[3]),
+                         fused)
         return _complex_log(d)
 
     gain_re, gain_im = np.empty((M, N, L)), np.empty((M, N, L))
@@ -237,9 +249,9 @@ def _logdet_rounds(S, x, exact: bool, fused: bool):
         # the team's new O^T O and log det (the value of the table's entry)
         old_re[rows, l], old_im[rows, l] = new_logdet(rows, l, i)
         ax, ay = vx[rows, i, l], vy[rows, i, l]
-        g00[rows, l] = fused_multiply_add(ax, ax, g00[rows, l])
-        g01[rows, l] = fused_multiply_add(ax, ay, g01[rows, l])
-        g11[rows, l] = fused_multiply_add(ay, ay, g11[rows, l])
+        g00[rows, l] = fma(ax, ax, g00[rows, l])
+        g01[rows, l] = fma(ax, ay, g01[rows, l])
+        g11[rows, l] = fma(ay, ay, g11[rows, l])
         det[rows, l] = det[rows, l] + C[rows, i, l]
         cross = vx[rows, :, l] * ay[:, None] - vy[rows, :, l] * ax[:, None]
         C[rows, :, l] = C[rows, :, l] + cross * cross
