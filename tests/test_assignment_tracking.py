@@ -1,12 +1,14 @@
-"""The assignment-by-tracking engine: weights vs direct formulas, the batched
-greedy vs Algorithm 1, valid assignments, determinism and common random numbers."""
+"""The assignment-by-tracking study on the tracking engine: its rules' weights vs direct
+formulas, the batched greedy vs Algorithm 1, valid assignments, determinism and common random
+numbers."""
 
 import numpy as np
 import pytest
 
 import obslib as ob
-from obslib.assignment import greedy_pair_assignment_literal
+from obslib.assignment import greedy_pair_assignment_literal, greedy_pairs_batch
 from obslib.studies import assignment_tracking as at
+from obslib.tracking import assigners
 
 SMALL = at.AssignmentTrackingSetup(n_targets=3, steps=12, side=20.0)
 
@@ -16,25 +18,35 @@ def _random_spd(rng, shape):
     return A @ np.swapaxes(A, -1, -2) + 0.2 * np.eye(2)
 
 
+def _full(w, n):
+    """The pair weights ``w`` ``(B, P, L)`` of the pairs i < j as symmetric ``(B, N, N, L)``."""
+    ii, jj = np.triu_indices(n, 1)
+    W = np.zeros((w.shape[0], n, n, w.shape[2]))
+    W[:, ii, jj], W[:, jj, ii] = w, w
+    return W
+
+
 @pytest.mark.parametrize("metric", at.METRICS)
 def test_bound_weights_equal_pair_bounds(metric):
+    """The "bound" rule's weights (the engine's "unique-pairs") are pair_bounds' numbers."""
     rng = np.random.default_rng(2)
     S = rng.uniform(0, 10, size=(4, 6, 2))
     X = rng.uniform(0, 10, size=(4, 3, 2))
     C = _random_spd(rng, (4, 3))
-    W = at.bound_weights(S, X, C, 1.5, metric)
+    W = _full(assigners.pair_weights(S, X, C, 1.5, metric == "mahalanobis"), 6)
     for b in range(4):
         want = ob.pair_bounds(S[b], X[b], 1.5, cov=C[b] if metric == "mahalanobis" else None)
         np.testing.assert_allclose(W[b], want, rtol=1e-12, atol=1e-15)
 
 
 def test_info_gain_equals_log_det_difference():
+    """The "d-optimal" rule's weights (the engine's "d-optimal-pairs")."""
     rng = np.random.default_rng(3)
     S = rng.uniform(0, 10, size=(2, 5, 2))
     X = rng.uniform(0, 10, size=(2, 3, 2))
     Pm = _random_spd(rng, (2, 3))
     r = 0.4
-    W = at.info_gain_weights(S, X, Pm, r)
+    W = _full(assigners.pair_gain_weights(S, X, Pm, r, "half-squared-range"), 5)
     for b in range(2):
         for l in range(3):
             prior = np.linalg.inv(Pm[b, l])
@@ -46,7 +58,6 @@ def test_info_gain_equals_log_det_difference():
                     J = prior + H.T @ H / r
                     want = np.linalg.slogdet(J)[1] - np.linalg.slogdet(prior)[1]
                     assert W[b, i, j, l] == pytest.approx(want, rel=1e-10, abs=1e-12)
-    assert np.array_equal(W, W.transpose(0, 2, 1, 3))
 
 
 def test_batch_greedy_equals_algorithm_1():
@@ -54,19 +65,20 @@ def test_batch_greedy_equals_algorithm_1():
     S = rng.uniform(0, 10, size=(5, 8, 2))
     X = rng.uniform(0, 10, size=(5, 3, 2))
     C = _random_spd(rng, (5, 3))
-    ties = rng.integers(0, 3, size=(5, 8, 8, 3)).astype(float)
-    ties = ties + ties.transpose(0, 2, 1, 3)  # many equal weights: the tie rule decides
-    for W in (at.bound_weights(S, X, C, 1.0), at.info_gain_weights(S, X, C, 0.5), ties):
-        got = at.batch_greedy(W)
+    ties = rng.integers(0, 3, size=(5, 28, 3)).astype(float)  # the tie rule decides
+    ii, jj = np.triu_indices(8, 1)
+    for w in (assigners.pair_weights(S, X, C, 1.0, True),
+              assigners.pair_gain_weights(S, X, C, 0.5, "half-squared-range"), ties):
+        picks, _ = greedy_pairs_batch(w, 8)
+        W = _full(w, 8)
         for b in range(5):
             ref = greedy_pair_assignment_literal(W[b])  # the algorithm as printed
-            want = {l: (i, j) for i, j, l in ref.triples}
-            assert {l: tuple(got[b, l]) for l in range(3)} == want
+            assert sorted(map(tuple, picks[b].tolist())) == sorted(ref.triples)
 
 
 def test_random_assignments_from_permutation():
     perm = np.array([[3, 1, 0, 2, 5, 4]])
-    assert at.random_assignments(perm, 2).tolist() == [[[1, 3], [0, 2]]]
+    assert assigners._random_pairs(perm, 2).tolist() == [[1, 0, 1, 0, -1, -1]]
 
 
 @pytest.mark.parametrize("rule", at.RULES)
@@ -108,8 +120,9 @@ def test_common_random_numbers():
         assert np.array_equal(e, first[0])
     want = np.hypot(*(sc.estimate0 - sc.start).transpose(2, 0, 1))
     np.testing.assert_allclose(first[0], want, rtol=1e-14)
-    # the random rule uses the scenario's permutations
-    assert np.array_equal(runs["random"].pairs[:, 3], at.random_assignments(sc.perm[:, 3], 3))
+    # the random rule uses the scenario's permutations, target l taking entries 2l and 2l + 1
+    want = np.sort(sc.perm[:, 3, :6].reshape(3, 3, 2), axis=-1)
+    assert np.array_equal(runs["random"].pairs[:, 3], want)
     # controls stay in the disc of radius u_max
     assert (np.hypot(*sc.controls.transpose(3, 0, 1, 2)) <= SMALL.u_max).all()
 
@@ -152,8 +165,10 @@ def test_logged_values_are_the_chosen_weights():
         # replay step 1, whose estimate and covariance are the scenario's
         x0 = sc.estimate0
         P0 = np.broadcast_to(SMALL.p0 * np.eye(2), x0.shape[:2] + (2, 2))
-        Wb = at.bound_weights(sc.sensors, x0, P0, SMALL.u_max)
-        Wd = at.info_gain_weights(sc.sensors, x0, P0 + SMALL.Q * np.eye(2), SMALL.R)
+        n = sc.sensors.shape[1]
+        Wb = _full(assigners.pair_weights(sc.sensors, x0, P0, SMALL.u_max, True), n)
+        Wd = _full(assigners.pair_gain_weights(sc.sensors, x0, P0 + SMALL.Q * np.eye(2), SMALL.R,
+                                               "half-squared-range"), n)
         p = r.pairs[:, 0]
         b, l = np.arange(2)[:, None], np.arange(3)[None, :]
         np.testing.assert_allclose(r.bound[:, 0], Wb[b, p[..., 0], p[..., 1], l], rtol=1e-12)
@@ -184,21 +199,3 @@ def test_mirrored_uses_the_reflection_across_the_last_pair():
     np.testing.assert_allclose(
         np.hypot(*(r.estimate - r.truth).transpose(3, 0, 1, 2)), r.post_error
     )
-
-
-@pytest.mark.parametrize("metric", ["mahalanobis", "euclidean"])
-def test_upper_weights_are_the_full_weights_above_the_diagonal(metric):
-    """The runs score only the pairs i < j; those scores are the entries of the full
-    bound_weights and info_gain_weights."""
-    rng = np.random.default_rng(11)
-    B, N, L = 4, 7, 3
-    S, x = rng.uniform(0, 10, (B, N, 2)), rng.uniform(0, 10, (B, L, 2))
-    A = rng.normal(size=(B, L, 2, 2))
-    P = A @ np.swapaxes(A, -1, -2) + 0.1 * np.eye(2)
-    ii, jj = np.triu_indices(N, 1)
-    full = at.bound_weights(S, x, P, 1.3, metric)
-    np.testing.assert_allclose(at._upper_bound_weights(S, x, P, 1.3, metric, ii, jj),
-                               full[:, ii, jj], rtol=1e-14, atol=0)
-    g = at.info_gain_weights(S, x, P, 0.3)
-    np.testing.assert_allclose(at._upper_gain_weights(S, x, P, 0.3, ii, jj), g[:, ii, jj],
-                               rtol=1e-13, atol=0)

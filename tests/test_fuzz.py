@@ -687,7 +687,7 @@ LIBRARY = (str(Path(ob.__file__).parent), str(Path(ob.__file__).parents[1] / "ob
 
 def test_every_public_function_is_found():
     # the enumeration reaches every layer, so a new public function cannot be left out
-    for expected in ("obslib.bounds.lower_bound", "obslib.tracking.ekf.simulate",
+    for expected in ("obslib.bounds.lower_bound", "obslib.tracking.batch.simulate",
                      "obslib.studies.tracking.partner_study", "obslib.claims.robustness.",
                      "obslib.viz.tracking.", "obslib.tools.run.", "obslib.profiles.params",
                      "obslib.symbolic.theorem4.", "obslib.scenes.random_scenes"):

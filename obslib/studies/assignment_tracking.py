@@ -10,14 +10,17 @@ the assignment, re-made at every step from the current estimates:
 ``"bound"``
     Algorithm 1 (greedy unique pairs) on Theorem 4's pair bound at each estimate, with
     Mahalanobis distances in the estimate's covariance ``Sigma_l`` (as the tracking experiments
-    of Section V evaluate it) or Euclidean ones;
+    of Section V evaluate it) or Euclidean ones (the assignment ``"unique-pairs"`` of
+    :mod:`obslib.tracking.assigners`);
 ``"d-optimal"``
     the same greedy on the information gain of the pair,
     :math:`\\log\\det J_l(i, j) - \\log\\det (\\Sigma_l^-)^{-1}` with
     :math:`J_l(i, j) = (\\Sigma_l^-)^{-1} + H^T R^{-1} H`, :math:`\\Sigma_l^- = \\Sigma_l + Q` and
-    ``H`` the rows :math:`(\\hat x_l - p_i)^T, (\\hat x_l - p_j)^T` (D-optimal design);
+    ``H`` the rows :math:`(\\hat x_l - p_i)^T, (\\hat x_l - p_j)^T` (D-optimal design;
+    ``"d-optimal-pairs"``);
 ``"random"``
-    a uniformly random valid assignment (a random permutation of the sensors, paired in order).
+    a uniformly random valid assignment (a random permutation of the sensors, paired in order;
+    ``"random"`` with the scenario's permutations).
 
 The model
 ---------
@@ -27,9 +30,10 @@ bounded unknown control): :math:`o_{k+1} = o_k + u_k`. Each filter predicts with
 (the covariance of the uniform disc), and updates with the half squared ranges
 :math:`z_i = \\tfrac12 \\|p_i - o\\|^2 + n_i` (Section II;
 :func:`obslib.tracking.half_squared_range`) of its two sensors, :math:`n_i \\sim N(0, \\sigma^2)`,
-``R = sigma^2 I``: the batched EKF of :mod:`obslib.tracking.kalman` (filterpy's equations, Joseph
-form), which stops with a ``ValueError`` naming the target, step and seed where the innovation
-covariance is singular.
+``R = sigma^2 I``: the tracking engine's extended Kalman filters (:mod:`obslib.tracking.engine`,
+filterpy's equations, Joseph form; the runs are :func:`obslib.tracking.simulate_targets_scenes`,
+one scene per seed), which stop with a ``ValueError`` naming the run, target and step where the
+innovation covariance is singular.
 
 Order within step ``k``, as in :mod:`obslib.tracking`: (1) assign from the current estimates and
 covariances; (2) log each target's error :math:`\\|\\hat x - o\\|` and :math:`\\operatorname{tr}
@@ -39,7 +43,7 @@ Common random numbers: seed ``s`` fixes the sensors, the targets' starts and con
 initial estimates and the measurement noise (``numpy.random.default_rng([s, 0])``; entry
 ``[k, i]`` of the noise table is sensor ``i``'s at step ``k``, whichever target it serves) and
 the random assignments (``default_rng([s, 1])``), identically for every rule. All runs and
-targets advance together as NumPy array operations.
+targets advance together on the engine.
 """
 
 from __future__ import annotations
@@ -52,7 +56,6 @@ from .. import tracking as tr
 from .._kernels import pair_kernel
 from .._validate import (
     as_choice,
-    as_float_array,
     as_instance,
     as_int,
     as_names,
@@ -60,8 +63,6 @@ from .._validate import (
     as_sequence,
     as_str,
 )
-from ..assignment import greedy_pairs_batch
-from ..tracking import kalman
 
 __all__ = [
     "RULES",
@@ -217,176 +218,17 @@ def scenario(setup: AssignmentTrackingSetup, seeds) -> Scenario:
 
 
 # --------------------------------------------------------------------------------------------
-# Pair weights, batched over runs (validation-free workers; the public entry is run())
+# The logged pairs' values (validation-free workers; the public entry is run())
 # --------------------------------------------------------------------------------------------
 
 
-def bound_weights(sensors, xhat, cov, u_max, metric="mahalanobis") -> np.ndarray:
-    """Theorem 4's pair bound for a batch: ``W[b, i, j, l]``, shape (B, N, N, L).
-
-    Equals :func:`obslib.pair_bounds` ``(sensors[b], xhat[b], u_max, cov=cov[b])`` (Mahalanobis)
-    or without ``cov`` (Euclidean), up to rounding: the same rescaling and the same kernel.
-    ``sensors`` (B, N, 2), ``xhat`` (B, L, 2), ``cov`` (B, L, 2, 2).
-
-    Examples
-    --------
-    >>> import obslib as ob
-    >>> rng = np.random.default_rng(0)
-    >>> S, x = rng.uniform(0, 10, (1, 4, 2)), rng.uniform(0, 10, (1, 2, 2))
-    >>> cov = np.array([[[[1.0, 0.2], [0.2, 0.5]], [[0.3, 0.0], [0.0, 2.0]]]])
-    >>> W = bound_weights(S, x, cov, 1.0)
-    >>> W.shape
-    (1, 4, 4, 2)
-    >>> bool(np.allclose(W[0], ob.pair_bounds(S[0], x[0], 1.0, cov=cov[0])))
-    True
-    >>> We = bound_weights(S, x, cov, 1.0, "euclidean")
-    >>> bool(np.allclose(We[0], ob.pair_bounds(S[0], x[0], 1.0)))
-    True
-    """
-    x, y, u2 = _bound_rows(sensors, xhat, cov, u_max, metric)
-    return pair_kernel(
-        x[:, :, None, :], y[:, :, None, :], x[:, None, :, :], y[:, None, :, :], u2[:, None, None, :]
-    )
-
-
-def _bound_rows(sensors, xhat, cov, u_max, metric):
-    """The scaled rows ``x, y`` ``(B, N, L)`` of ``bound_weights`` and their ``u_max^2``
-    ``(B, L)``."""
-    B, N, L = sensors.shape[0], sensors.shape[1], xhat.shape[1]
-    v = xhat[:, :, None, :] - sensors[:, None, :, :]  # (B, L, N, 2)
-    x, y, inv = _scaled(v.reshape(B * L, N, 2), cov.reshape(B * L, 2, 2), metric)
-    x = x.reshape(B, L, N).transpose(0, 2, 1)  # (B, N, L)
-    y = y.reshape(B, L, N).transpose(0, 2, 1)
-    return x, y, (u_max**2 * inv).reshape(B, L)
-
-
 def _scaled(v, cov, metric):
-    """Rows ``v`` ``(M, K, 2)`` scaled as the tracking engine scales the bound's rows
+    """Rows ``v`` ``(M, K, 2)`` scaled as Section V's choosers scale the bound's rows
     (``choosers.scaled_rows``): Mahalanobis lengths in ``cov`` ``(M, 2, 2)``
     when ``metric`` says so, divided by each estimate's longest row."""
     c = (cov[:, 0, 0], cov[:, 0, 1], cov[:, 1, 0], cov[:, 1, 1])
     maha = np.full(v.shape[0], metric == "mahalanobis")
     return tr.choosers.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
-
-
-def info_gain_weights(sensors, xhat, cov_pred, r) -> np.ndarray:
-    """Information gain of every pair, ``log det J(i, j) - log det (Sigma^-)^{-1}``, (B, N, N, L).
-
-    With ``H`` the rows ``h_i = (xhat - p_i)^T``, ``h_j`` and ``R = r I``, the gain is
-    :math:`\\log\\det(I_2 + H \\Sigma^- H^T / r) = \\log((1 + a_i/r)(1 + a_j/r) - c_{ij}^2/r^2)`
-    with :math:`a_i = h_i^T \\Sigma^- h_i`, :math:`c_{ij} = h_i^T \\Sigma^- h_j` (Sylvester's
-    determinant identity). Symmetric in ``i, j``; the diagonal is the gain of measuring one sensor
-    twice and is never used.
-
-    Examples
-    --------
-    Against :math:`\\log\\det J - \\log\\det (\\Sigma^-)^{-1}` computed directly:
-
-    >>> rng = np.random.default_rng(0)
-    >>> S, x = rng.uniform(0, 10, (1, 4, 2)), rng.uniform(0, 10, (1, 1, 2))
-    >>> Pm = np.array([[[[1.0, 0.2], [0.2, 0.5]]]])  # (B, L, 2, 2)
-    >>> G = info_gain_weights(S, x, Pm, 0.25)
-    >>> H = x[0, 0] - S[0, [0, 2]]  # rows of the pair (0, 2)
-    >>> J = np.linalg.inv(Pm[0, 0]) + H.T @ H / 0.25
-    >>> gain = np.log(np.linalg.det(J) * np.linalg.det(Pm[0, 0]))
-    >>> bool(np.isclose(G[0, 0, 2, 0], gain, rtol=1e-10))
-    True
-    >>> bool((G == G.transpose(0, 2, 1, 3)).all())
-    True
-    """
-    h = xhat[:, None, :, :] - sensors[:, :, None, :]  # (B, N, L, 2)
-    hx, hy = h[..., 0] / np.sqrt(r), h[..., 1] / np.sqrt(r)  # (B, N, L)
-    p00, p01, p11 = (cov_pred[:, None, None, :, a, b] for a, b in ((0, 0), (0, 1), (1, 1)))
-    xi, yi, xj, yj = hx[:, :, None], hy[:, :, None], hx[:, None], hy[:, None]
-    # c_ij = h_i^T Sigma^- h_j / r, written symmetrically so that c_ij == c_ji exactly
-    c = p00 * (xi * xj) + p01 * (xi * yj + yi * xj) + p11 * (yi * yj)  # (B, N, N, L)
-    a = np.einsum("biil->bil", c)
-    det = (1 + a[:, :, None, :]) * (1 + a[:, None, :, :]) - c * c
-    return np.log(det)
-
-
-def batch_greedy(W) -> np.ndarray:
-    """Algorithm 1 on a batch of weights ``W`` (B, N, N, L): each target's pair, (B, L, 2).
-
-    The picks of :func:`obslib.assignment.greedy_pairs_batch` on the pairs ``i < j`` (ties to the
-    smallest ``(i, j, l)``, as :func:`obslib.greedy_pair_assignment`), arranged by target.
-
-    Examples
-    --------
-    >>> import obslib as ob
-    >>> rng = np.random.default_rng(1)
-    >>> W = rng.uniform(size=(2, 6, 6, 3))
-    >>> W = W + W.transpose(0, 2, 1, 3)  # symmetric in i, j
-    >>> pairs = batch_greedy(W)
-    >>> pairs.shape
-    (2, 3, 2)
-    >>> for b in range(2):
-    ...     t = ob.greedy_pair_assignment(W[b]).triples
-    ...     print(all(list(pairs[b, l]) == [i, j] for i, j, l in t))
-    True
-    True
-    """
-    W = as_float_array(W, "W")
-    ii, jj = np.triu_indices(W.shape[1], 1)
-    return _greedy_upper(W[:, ii, jj], W.shape[1])
-
-
-def _upper_bound_weights(sensors, xhat, cov, u_max, metric, ii, jj) -> np.ndarray:
-    """The entries ``W[b, ii[p], jj[p], l]`` of ``bound_weights``, ``(B, P, L)``: the same
-    rows and kernel for the pairs ``i < j`` only (half the kernel's work)."""
-    x, y, u2 = _bound_rows(sensors, xhat, cov, u_max, metric)
-    return pair_kernel(x[:, ii], y[:, ii], x[:, jj], y[:, jj], u2[:, None, :])
-
-
-def _upper_gain_weights(sensors, xhat, cov_pred, r, ii, jj) -> np.ndarray:
-    """The entries ``G[b, ii[p], jj[p], l]`` of ``info_gain_weights``, ``(B, P, L)``, with
-    its arithmetic, for the pairs ``i < j`` only."""
-    h = xhat[:, None, :, :] - sensors[:, :, None, :]  # (B, N, L, 2)
-    hx, hy = h[..., 0] / np.sqrt(r), h[..., 1] / np.sqrt(r)  # (B, N, L)
-    p00, p01, p11 = (cov_pred[:, None, :, a, b] for a, b in ((0, 0), (0, 1), (1, 1)))
-    a = p00 * (hx * hx) + p01 * (hx * hy + hy * hx) + p11 * (hy * hy)  # c_ii, (B, N, L)
-    xi, yi, xj, yj = hx[:, ii], hy[:, ii], hx[:, jj], hy[:, jj]
-    c = p00 * (xi * xj) + p01 * (xi * yj + yi * xj) + p11 * (yi * yj)  # (B, P, L)
-    det = (1 + a[:, ii]) * (1 + a[:, jj]) - c * c
-    return np.log(det)
-
-
-def _greedy_upper(w, n) -> np.ndarray:
-    """Each target's pair ``(B, L, 2)`` picked by Algorithm 1
-    (:func:`obslib.assignment.greedy_pairs_batch`) from the weights ``w`` ``(B, P, L)`` of the
-    pairs ``i < j`` of ``n`` sensors."""
-    picks, _ = greedy_pairs_batch(w, n)
-    out = np.empty(picks.shape[:2] + (2,), dtype=np.int64)
-    rows = np.arange(picks.shape[0])[:, None]
-    out[rows, picks[..., 2]] = picks[..., :2]
-    return out
-
-
-def random_assignments(perm, n_targets) -> np.ndarray:
-    """Pairs from sensor permutations ``perm`` (B, N): target ``l`` gets ``perm[2l], perm[2l+1]``
-    (sorted), shape (B, L, 2).
-
-    Examples
-    --------
-    >>> random_assignments([[3, 0, 1, 2, 5, 4]], 2).tolist()
-    [[[0, 3], [1, 2]]]
-    """
-    p = np.asarray(perm)[:, : 2 * n_targets].reshape(-1, n_targets, 2)
-    return np.sort(p, axis=-1)
-
-
-def _filter_step(x, P, ps, z, q, r):
-    """Predict and update every target's filter at once (:mod:`obslib.tracking.kalman`):
-    estimates ``x`` (..., 2), covariances ``P`` (..., 2, 2), pair sensors ``ps`` (..., 2, 2)
-    (rows the two sensors), measurements ``z`` (..., 2), noise variances ``q``, ``r`` per axis.
-    Returns the new ``x, P`` (new arrays); raises
-    :class:`~obslib.tracking.kalman.SingularInnovation` as the update does."""
-    Pm = kalman.predict((P[..., 0, 0], P[..., 0, 1], P[..., 1, 0], P[..., 1, 1]),
-                        ((q, 0.0), (0.0, q)))
-    xn, Pn = kalman.update((x[..., 0], x[..., 1]), Pm, (ps[..., 0, 0], ps[..., 0, 1]),
-                           (ps[..., 1, 0], ps[..., 1, 1]), (z[..., 0], z[..., 1]),
-                           ((r, 0.0), (0.0, r)))
-    return np.stack(xn, axis=-1), np.stack(Pn, axis=-1).reshape(P.shape)
 
 
 # --------------------------------------------------------------------------------------------
@@ -471,64 +313,47 @@ def _chosen_values(S, x, P, pr, u_max, metric, q, r):
     return bound, gain
 
 
-def _run(sc: Scenario, rules) -> dict:
-    """All ``rules`` on the scenario ``sc`` in one batch (rule-major rows), step by step."""
+#: The assignments of :mod:`obslib.tracking.assigners` that make each rule's choice.
+_ASSIGNMENT = {"bound": "unique-pairs", "d-optimal": "d-optimal-pairs", "random": "random"}
+
+
+def _scene_setups(sc: Scenario) -> list:
+    """One :class:`obslib.tracking.TargetsSetup` per run of the scenario: its sensors, the
+    targets' paths and initial estimates, and the filter of the study."""
     st = sc.setup
-    nb, L, T = len(sc.seeds), st.n_targets, st.steps
-    nr = len(rules)
-    B = nr * nb
-    q, r = st.Q, st.R
-    S = np.tile(sc.sensors, (nr, 1, 1))
-    truth = np.tile(sc.truth, (nr, 1, 1, 1))
-    noise = np.tile(sc.noise, (nr, 1, 1))
-    rows = {rule: slice(a * nb, (a + 1) * nb) for a, rule in enumerate(rules)}
-    x = np.tile(sc.estimate0, (nr, 1, 1))
-    P = np.broadcast_to(st.p0 * np.eye(2), (B, L, 2, 2)).copy()
-    pairs = np.empty((B, T, L, 2), dtype=np.int64)
-    err, post, tr, bnd, gain = (np.empty((B, T, L)) for _ in range(5))
-    est = np.empty((B, T, L, 2))
-    bb = np.arange(B)[:, None]
-    pr = np.empty((B, L, 2), dtype=np.int64)
-    # the rules score the pairs i < j only: the greedy never looks at the others (the picks of
-    # bound_weights and info_gain_weights with batch_greedy; 0.25 s against 0.5 s per study)
-    ii, jj = np.triu_indices(S.shape[1], 1)
-    for k in range(T):
-        for rule, sl in rows.items():
-            if rule == "bound":
-                w = _upper_bound_weights(S[sl], x[sl], P[sl], st.u_max, st.metric, ii, jj)
-                pr[sl] = _greedy_upper(w, S.shape[1])
-            elif rule == "d-optimal":
-                w = _upper_gain_weights(S[sl], x[sl], P[sl] + q * np.eye(2), r, ii, jj)
-                pr[sl] = _greedy_upper(w, S.shape[1])
-            else:
-                pr[sl] = random_assignments(sc.perm[:, k], L)
-        pairs[:, k] = pr
-        bnd[:, k], gain[:, k] = _chosen_values(S, x, P, pr, st.u_max, st.metric, q, r)
-        o = truth[:, k]
-        dx = x - o
-        err[:, k] = np.hypot(dx[..., 0], dx[..., 1])
-        tr[:, k] = P[..., 0, 0] + P[..., 1, 1]
-        ps = S[bb[..., None], pr]  # (B, L, 2, 2)
-        d = ps - o[..., None, :]
-        z = 0.5 * (d[..., 0] ** 2 + d[..., 1] ** 2) + noise[:, k][bb[..., None], pr]
-        try:
-            x, P = _filter_step(x, P, ps, z, q, r)
-        except kalman.SingularInnovation as e:
-            b, l = (int(v) for v in np.argwhere(~e.ok)[0])
-            raise ValueError(
-                f"the filter of target {l} failed at step {k + 1} of seed {sc.seeds[b % nb]} "
-                f"(rule {rules[b // nb]!r}): the innovation covariance H P H^T + R is singular in "
-                f"floating point (estimate {np.round(x[b, l], 6).tolist()}, pair sensors "
-                f"{ps[b, l].tolist()}); the estimate is too far from the sensors or its "
-                "covariance too large for the two ranges to tell it apart") from None
-        dx = x - o
-        post[:, k] = np.hypot(dx[..., 0], dx[..., 1])
-        est[:, k] = x
-    return {
-        rule: AssignmentRuns(st, rule, sc.seeds, pairs[sl], err[sl], post[sl], est[sl],
-                             sc.truth[:, :T], tr[sl], bnd[sl], gain[sl], {"sensors": sc.sensors})
-        for rule, sl in rows.items()
-    }
+    common = dict(cov0=st.p0, Q=st.Q, R=st.R, noise_std=st.noise_std, u_max=st.u_max,
+                  measurement="half-squared-range", metric=st.metric)
+    return [tr.TargetsSetup(sensors=sc.sensors[b], truth=sc.truth[b], estimate0=sc.estimate0[b],
+                            **common) for b in range(len(sc.seeds))]
+
+
+def _run(sc: Scenario, rules) -> dict:
+    """All ``rules`` on the scenario ``sc`` in one pass of the tracking engine
+    (:func:`obslib.tracking.simulate_targets_scenes` with the scenario's noise and random
+    permutations), then each chosen pair's bound and gain from the logged states."""
+    st = sc.setup
+    T, L = st.steps, st.n_targets
+    runs = tr.simulate_targets_scenes(_scene_setups(sc), [_ASSIGNMENT[r] for r in rules],
+                                      noise=sc.noise, draws=sc.perm)
+    nb, n = len(sc.seeds), st.n_sensors
+    out = {}
+    for rule in rules:
+        b = runs[_ASSIGNMENT[rule]]
+        # each target's two sensors, in increasing order: sort by (target, sensor)
+        key = np.where(b.labels >= 0, b.labels, L).astype(np.int64) * n + np.arange(n)
+        pairs = np.sort(key, axis=-1)[..., : 2 * L] % n
+        pairs = pairs.reshape(nb, T, L, 2)
+        post = np.concatenate([b.estimate[:, 1:], b.estimate_end[:, None]], axis=1)
+        dx = post - sc.truth[:, :T]
+        S = np.repeat(sc.sensors, T, axis=0)
+        bound, gain = _chosen_values(S, b.estimate.reshape(nb * T, L, 2),
+                                     b.cov.reshape(nb * T, L, 2, 2), pairs.reshape(nb * T, L, 2),
+                                     st.u_max, st.metric, st.Q, st.R)
+        out[rule] = AssignmentRuns(st, rule, sc.seeds, pairs, b.error,
+                                   np.hypot(dx[..., 0], dx[..., 1]), post, sc.truth[:, :T],
+                                   b.trace_cov, bound.reshape(nb, T, L), gain.reshape(nb, T, L),
+                                   {"sensors": sc.sensors})
+    return out
 
 
 def run(setup: AssignmentTrackingSetup, rule: str, seeds) -> AssignmentRuns:

@@ -26,6 +26,11 @@ output.
     ``book/data/criteria_times.json``: measured times are committed data, so ``make book`` stays
     deterministic.
 
+``tracking``
+    The closed loop of many targets with the unique-pair greedy (``--sensors``, ``--targets``;
+    default 1000 and 100): ``step_ms``, ``step_over_greedy`` (target at most 1.5) and
+    ``steps_per_s``, from :mod:`obslib.tools.bench_tracking`.
+
 ``book``
     ``exec_s``: executing every notebook at its default parameters one at a time (papermill, one
     kernel per notebook, into a scratch folder); ``floor_s``: executing the same number of
@@ -526,7 +531,8 @@ def parse_args(argv=None) -> argparse.Namespace:
     ap = argparse.ArgumentParser(prog="python -m obslib.bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument(
-        "which", choices=["assignment", "book", "criteria", "scaling"], help="benchmark to run"
+        "which", choices=["assignment", "book", "criteria", "scaling", "tracking"],
+        help="benchmark to run"
     )
     ap.add_argument("--write", help="scaling, criteria: also store the JSON in this file")
     ap.add_argument("--update-book", action="store_true",
@@ -541,8 +547,10 @@ def parse_args(argv=None) -> argparse.Namespace:
     ap.add_argument("--jobs", type=int, default=None,
                     help="book: notebooks side by side in the parallel runs (default: the cores)")
     ap.add_argument("--sensors", type=int, help="assignment: only the greedy from geometry, with "
-                    "this many sensors (and --targets targets)")
-    ap.add_argument("--targets", type=int, help="assignment: the number of targets of --sensors")
+                    "this many sensors (and --targets targets); tracking: the sensors "
+                    "(default 1000)")
+    ap.add_argument("--targets", type=int, help="assignment, tracking: the number of targets "
+                    "(tracking: default 100)")
     args = ap.parse_args(as_argv(argv))
     _check_assignment_size(ap, args)
     if args.write is not None:
@@ -578,14 +586,17 @@ def _in_book_data(path) -> bool:
 
 
 def _check_assignment_size(ap, args) -> None:
-    """``--sensors N --targets L``: both or neither, for the assignment benchmark,
-    ``N >= 2L >= 2``."""
+    """``--sensors N --targets L``: both or neither, for the assignment benchmark; for the
+    tracking benchmark either (defaults 1000 and 100); ``N >= 2L >= 2``."""
     given = (args.sensors is not None, args.targets is not None)
-    if not any(given):
+    if any(given) and args.which not in ("assignment", "tracking"):
+        ap.error("--sensors and --targets apply to the assignment and tracking benchmarks only")
+    if args.which == "tracking":
+        args.sensors = 1000 if args.sensors is None else args.sensors
+        args.targets = 100 if args.targets is None else args.targets
+    elif not any(given):
         return
-    if args.which != "assignment":
-        ap.error("--sensors and --targets apply to the assignment benchmark only")
-    if not all(given):
+    elif not all(given):
         ap.error("give both --sensors and --targets")
     if args.targets < 1 or args.sensors < 2 * args.targets:
         ap.error(f"--sensors {args.sensors} --targets {args.targets}: need at least one target "
@@ -607,6 +618,10 @@ def main(argv=None) -> int:
         result = bench_assignment(sensors=args.sensors, targets=args.targets)
     elif args.which == "book":
         result = bench_book(args.profile, args.jobs)
+    elif args.which == "tracking":
+        from .bench_tracking import bench_tracking
+
+        result = bench_tracking(args.sensors, args.targets)
     else:
         result = bench_scaling() if args.which == "scaling" else bench_criteria()
     print(json.dumps(result), flush=True)

@@ -1,11 +1,20 @@
-"""The batch engine: many tracking runs at once (noise seeds, strategies, setup variants), with
-the equations of :func:`~obslib.tracking.simulate` written as NumPy operations over runs.
+"""Section V's tracking runs on the engine (:mod:`~obslib.tracking.engine`): one run
+(:func:`simulate`), many runs of one strategy (:func:`simulate_batch`), several arms over common
+noise (:func:`simulate_many`) and Monte Carlo (:func:`monte_carlo`).
 
-Per step, in the order of :func:`~obslib.tracking.simulate`: choose and log, predict, measure
-the true position with the chosen pair, update (the batched EKF of :mod:`~obslib.tracking.kalman`,
-filterpy's equations for many filters at once), choose the next pair, move the target.
-A run does not depend on the other runs of its pass; the tests hold every run to the filterpy
-engine's run of the same seed.
+One target per run, one pair of sensors per step chosen by a strategy or criterion
+(:class:`~obslib.tracking.choosers.PairChooser`), half squared ranges, and the target on the
+circle of Section V-A or the adversary of Section V-B. All runs of a pass (noise seeds,
+strategies, setup variants) advance together; :func:`simulate` is the pass of one run.
+filterpy's ``ExtendedKalmanFilter`` is the independent reference the tests hold the engine to,
+step by step.
+
+Order within step :math:`k`: (1) choose the pair from the current estimate and covariance and
+log its bound; (2) log the error :math:`\\lVert \\hat x_k - o_k \\rVert` and
+:math:`\\operatorname{tr} \\Sigma_k`, the values *before* this step's update (step 1 logs
+0.7071 and 1.0 for the paper's circle); (3) predict, measure the true :math:`o_k` with the chosen
+pair and update; (4) choose the next pair from the posterior and move the target to
+:math:`o_{k+1}` (the ``"exact-icn"`` oracle's target moves first).
 """
 
 from __future__ import annotations
@@ -18,58 +27,22 @@ import numpy as np
 from .._validate import (
     ArgumentTypeError,
     as_choice,
-    as_float_array,
+    as_instance,
     as_int,
     as_names,
     as_noise_table,
 )
 from . import kalman
-from .adversary import adversary_moves, control_basis
 from .choosers import NAMES, PairChooser, candidates, fixed_pair_bound, pair_draws
-from .ekf import singular_update_message
+from .engine import Adversaries, FilterBank, run_steps, singular_update_message
 from .model import circle_truth, pair_index
 from .results import BatchResult, TrackingResult, derived_arrays
-from .setup import TrackingSetup, noise_table
+from .setup import TrackingSetup, noise_table, run_table, seeds_or_noise
 
-__all__ = ["simulate_many", "simulate_batch", "monte_carlo"]
+__all__ = ["simulate", "simulate_many", "simulate_batch", "monte_carlo"]
 
 #: Setup fields that may differ between the rows of one batched pass (see :func:`simulate_many`).
 _ROW_FIELDS = ("metric", "anchor", "fixed_pair", "adversary", "controls")
-
-
-class _Filters:
-    """The states of ``R`` extended Kalman filters (estimate ``xx, xy``, covariance entries
-    ``p00, p01, p10, p11``) and their step: ``kalman.predict``, then
-    ``kalman.update``."""
-
-    def __init__(self, setup: TrackingSetup, R_: int):
-        self.xx = np.full(R_, float(setup.estimate0[0]))
-        self.xy = np.full(R_, float(setup.estimate0[1]))
-        (c00, c01), (c10, c11) = setup.cov0
-        self.p00, self.p01, self.p10, self.p11 = (np.full(R_, float(c)) for c in
-                                                  (c00, c01, c10, c11))
-        self.Q, self.R = setup.Q, setup.R
-
-    def covariance(self):
-        return self.p00, self.p01, self.p10, self.p11
-
-    def step(self, s0x, s0y, s1x, s1y, z0, z1, k: int) -> None:
-        """Predict, then update with the measurements ``z0, z1`` of the sensors
-        ``(s0x, s0y)``, ``(s1x, s1y)`` (one per run) at step ``k`` (0-based)."""
-        P = kalman.predict(self.covariance(), self.Q)
-        try:
-            (self.xx, self.xy), P = kalman.update((self.xx, self.xy), P, (s0x, s0y), (s1x, s1y),
-                                                  (z0, z1), self.R)
-        except kalman.SingularInnovation as e:
-            self._singular(e.ok, k, s0x, s0y, s1x, s1y)
-        self.p00, self.p01, self.p10, self.p11 = P
-
-    def _singular(self, ok, k, s0x, s0y, s1x, s1y):
-        r = int(np.flatnonzero(~ok)[0])
-        pick = lambda a: a[r] if np.ndim(a) else a  # noqa: E731
-        x = np.array([self.xx[r], self.xy[r]])
-        ps = np.array([[pick(s0x), pick(s0y)], [pick(s1x), pick(s1y)]])
-        raise ValueError(singular_update_message(x, ps, k, run=r)) from None
 
 
 def _measure(sx, sy, i0, i1, ox, oy, noise_k, cols):
@@ -81,59 +54,30 @@ def _measure(sx, sy, i0, i1, ox, oy, noise_k, cols):
     return z0, z1
 
 
-class _Adversaries:
-    """The adversarial targets of ``R`` runs: positions over time and their moves.
+class _Circle:
+    """The circling target of Section V-A: one path for every run."""
 
-    Runs with different control sets (``barred``: each run's own set is a contiguous block of
-    ``controls``) are screened block by block, each against its own controls only: the pick
-    within a block is the one ``adversary.adversary_moves`` makes with the
-    other blocks barred, without evaluating them (notebook 06's stronger adversaries: 20 runs
-    with 9 controls next to 20 with 1801; 0.3 s against 1.7 s for their 315 moves)."""
+    def __init__(self, setup):
+        self.path = circle_truth(setup)  # (steps + 1, 2)
 
-    def __init__(self, setup, R_, nextpair, controls, barred):
-        self.truth = np.empty((setup.steps + 1, R_, 2))
-        self.truth[0] = setup.start
-        self.controls = setup.control_array if controls is None else controls
-        self.nextpair = nextpair
-        self.anynext = bool(nextpair.any())
-        if barred is None:
-            self.blocks = [(None, 0, self.controls, control_basis(self.controls))]
-        else:
-            allowed = np.asarray(barred) == 0
-            lo = allowed.argmax(axis=1)
-            hi = allowed.shape[1] - allowed[:, ::-1].argmax(axis=1)
-            if not (allowed.sum(axis=1) == hi - lo).all() or not allowed.any(axis=1).all():
-                raise ValueError("each run's controls must be one contiguous block")
-            self.blocks = []
-            for a, b in sorted(set(zip(lo.tolist(), hi.tolist()))):
-                c = self.controls[a:b]
-                self.blocks.append((np.flatnonzero((lo == a) & (hi == b)), a, c,
-                                    control_basis(c)))
+    def position(self, k):
+        return self.path[k]
 
-    def move(self, k, pair_ps, next_ps):
-        """Move every target after step ``k`` against its pair's sensors ``pair_ps``
-        ``(R, 2, 2)`` (or those of the sensors' next pair, ``next_ps``)."""
-        eval_ps = pair_ps
-        if self.anynext:
-            eval_ps = np.where(self.nextpair[:, None, None], next_ps, eval_ps)
-        o = self.truth[k]
-        if self.blocks[0][0] is None:
-            _, _, c, basis = self.blocks[0]
-            pick = adversary_moves(eval_ps, o, c, basis)
-        else:
-            pick = np.empty(o.shape[0], dtype=int)
-            for rows, a, c, basis in self.blocks:
-                pick[rows] = a + adversary_moves(eval_ps[rows], o[rows], c, basis)
-        self.truth[k + 1] = o + self.controls[pick]
+    def control(self, k):
+        return self.path[k + 1] - self.path[k]
+
+    def move(self, k, choice, nxt):
+        pass
 
 
 def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
-              barred=None, kinds=None, draws=None) -> dict:
+              barred=None, kinds=None, draws=None, single=False) -> dict:
     """``R`` runs of one shared setup, each with its own pair candidates (``cand``, ``(R, P)``),
     metric (``maha``), adversary (``nextpair``), chooser (``kinds`` and ``draws`` of
     :class:`~obslib.tracking.choosers.PairChooser`) and noise table: run ``r`` uses
     ``tables[r % B]``. An adversary's controls are ``controls`` (default: the setup's) less each
-    run's ``barred`` ones (see ``adversary.adversary_moves``).
+    run's ``barred`` ones (see ``adversary.adversary_moves``). ``single``: one run, whose errors
+    need not name it.
 
     With an ``"exact-icn"`` run in the pass, the target moves before the next choice (the
     oracle needs the control that brings it to its next position; no run of such a pass may
@@ -148,46 +92,53 @@ def _run_rows(setup: TrackingSetup, cand, maha, nextpair, tables, controls=None,
     # the logs are kept step-major ((steps, R) rows written contiguously), transposed at the end
     noise = np.ascontiguousarray(tables.transpose(1, 0, 2)).reshape(steps, B * n)
     cols = (np.arange(R_) % B) * n
-    filters = _Filters(setup, R_)
-    circle = setup.motion == "circle"
-    if circle:
-        path = circle_truth(setup)  # (steps + 1, 2), the same for every run
+    filters = FilterBank(np.broadcast_to(setup.estimate0, (R_, 2)),
+                         np.broadcast_to(setup.cov0, (R_, 2, 2)), setup.Q)
+    pair_ps = s[np.stack([ii, jj], axis=1)]  # (P, 2, 2): the sensors of each pair
+    if setup.motion == "circle":
+        motion = _Circle(setup)
     else:
-        adv = _Adversaries(setup, R_, nextpair, controls, barred)
-
-    best_log = np.empty((steps, R_), dtype=int)
-    bound = np.empty((steps, R_))
-    est = np.empty((steps, 2, R_))
-    cov = np.empty((steps, 4, R_))
+        motion = Adversaries(setup, R_, nextpair, controls, barred,
+                             lambda choice: pair_ps[choice[0]])
     chooser = PairChooser(s, cand, maha, setup.u_max**2, kinds, setup.Q, setup.R, draws)
     oracle = kinds is not None and bool((np.asarray(kinds, object) == "exact-icn").any())
     if oracle and nextpair.any():
         raise ValueError("an exact-icn run cannot face a next-pair adversary: each needs the "
                          "other's next move first")
+    best_log = np.empty((steps, R_), dtype=int)
+    bound = np.empty((steps, R_))
+    est = np.empty((steps, 2, R_))
+    cov = np.empty((steps, 4, R_))
     zero = np.zeros((R_, 2))
-    pair_ps = s[np.stack([ii, jj], axis=1)]  # (P, 2, 2): the sensors of each pair
-    best, b = chooser(filters.xx, filters.xy, *filters.covariance(), zero, 0)
-    for k in range(steps):
-        best_log[k], bound[k] = best, b
+
+    def choose(k, control):
+        u = zero if control is None else np.broadcast_to(control, (R_, 2))
+        return chooser(filters.xx, filters.xy, *filters.covariance(), u, k)
+
+    def record(k, choice):
+        best_log[k], bound[k] = choice
         est[k] = filters.xx, filters.xy
         cov[k] = filters.covariance()
+
+    def update(k, choice, position):
+        best = choice[0]
         i0, i1 = ii[best], jj[best]
-        ox, oy = path[k] if circle else (adv.truth[k, :, 0], adv.truth[k, :, 1])
+        ox, oy = position
         z0, z1 = _measure(sx, sy, i0, i1, ox, oy, noise[k], cols)
-        filters.step(sx[i0], sy[i0], sx[i1], sy[i1], z0, z1, k)
-        cur = best
-        if oracle:  # move first: the oracle knows the control that brings the target to o_{k+1}
-            if not circle:
-                adv.move(k, pair_ps[cur], None)
-            control = (path[k + 1] - path[k]) if circle else adv.truth[k + 1] - adv.truth[k]
-            best, b = chooser(filters.xx, filters.xy, *filters.covariance(),
-                              np.broadcast_to(control, (R_, 2)), k + 1)
-            continue
-        # the next choice depends only on the posterior (a "next-pair" adversary may know it)
-        best, b = chooser(filters.xx, filters.xy, *filters.covariance(), zero, k + 1)
-        if not circle:
-            adv.move(k, pair_ps[cur], pair_ps[best] if adv.anynext else None)
-    truth = path[None] if circle else np.ascontiguousarray(adv.truth.transpose(1, 0, 2))
+        P = filters.predict()
+        try:
+            filters.update_pairs(P, sx[i0], sy[i0], sx[i1], sy[i1], z0, z1, setup.R)
+        except kalman.SingularInnovation as e:
+            r = int(np.flatnonzero(~e.ok)[0])
+            x = np.array([filters.xx[r], filters.xy[r]])
+            ps = np.array([[sx[i0[r]], sy[i0[r]]], [sx[i1[r]], sy[i1[r]]]])
+            raise ValueError(singular_update_message(x, ps, k, None if single else r)) from None
+
+    best, _ = run_steps(steps, update, choose, motion, record, move_first=oracle)
+    if setup.motion == "circle":
+        truth = motion.path[None]
+    else:
+        truth = np.ascontiguousarray(motion.truth.transpose(1, 0, 2))
     return _collect(chooser, best_log, bound, est, cov, best, truth)
 
 
@@ -232,23 +183,6 @@ def _arms_iv(arms) -> dict:
             )
         as_choice(strategy, NAMES, "strategy")
     return arms
-
-
-def _seeds_iv(seeds, noise):
-    if (seeds is None) == (noise is None):
-        raise ValueError("give either seeds or noise tables")
-    if noise is not None:
-        given = as_float_array(noise, "noise")
-        if given.ndim != 3:
-            raise ValueError(f"noise must have shape (B, steps, N), got {given.shape}")
-        return (), given
-    if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
-        raise ArgumentTypeError(
-            f"seeds must be an iterable of non-negative integers, got {seeds!r}")
-    seeds = tuple(as_int(x, "each seed", 0) for x in seeds)
-    if not seeds:
-        raise ValueError("seeds is empty")
-    return seeds, None
 
 
 def _kind(strategy: str) -> str:
@@ -299,6 +233,53 @@ def _with_metric(setup: TrackingSetup, r: BatchResult) -> BatchResult:
     return dataclasses.replace(r, setup=setup, bound=bound)
 
 
+def simulate(setup: TrackingSetup, strategy: str, noise=None, seed: int = 0) -> TrackingResult:
+    """One tracking run of Section V (Figs. 4-7): the engine's pass of one run.
+
+    Parameters
+    ----------
+    setup : TrackingSetup
+        E.g. :data:`~obslib.tracking.PAPER_CIRCLE` (Figs. 4-6) or
+        :data:`~obslib.tracking.PAPER_ADVERSARIAL` (Fig. 7).
+    strategy : str
+        ``"best-pair"``, ``"best-partner"``, ``"fixed-pair"``: strategies (1), (2), (3) of
+        Section V-A (:data:`~obslib.tracking.STRATEGIES`); or a criterion beyond the paper,
+        ``"d-optimal"``, ``"a-optimal"``, ``"e-optimal"``, ``"exact-icn"``, ``"random"``
+        (:data:`~obslib.tracking.CRITERIA`, see :mod:`~obslib.tracking.choosers`). The logged
+        ``bound`` is always the paper's pair bound of the chosen pair.
+    noise : array_like, shape (steps, N), optional
+        Explicit measurement noise, entry ``[k-1, i]`` for sensor ``i`` at step ``k`` (exact
+        replay). Default: :func:`~obslib.tracking.noise_table` of ``seed``.
+    seed : int
+        Seed of the noise table when ``noise`` is not given, and of the ``"random"`` chooser's
+        draws (``choosers.pair_draws``, a separate stream) in any case.
+
+    Returns
+    -------
+    TrackingResult
+        Equal to run ``b`` of :func:`simulate_batch` with ``seeds[b] = seed`` (the same pass
+        with one run).
+
+    Examples
+    --------
+    >>> from obslib import tracking
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
+    >>> r = tracking.simulate(setup, "best-pair", seed=0)
+    >>> r.pairs[:2].tolist(), round(float(r.bound[0]), 4), r.error.shape
+    ([[3, 5], [3, 5]], 0.8736, (20,))
+    """
+    as_instance(setup, TrackingSetup, "setup")
+    as_choice(strategy, NAMES, "strategy")
+    table, used_seed = run_table(setup, noise, seed, strategy == "random")
+    cand = candidates(setup, strategy)[None]
+    draws = pair_draws(seed, setup.steps, cand.shape[1])[None] if strategy == "random" else None
+    nxt = np.array([setup.motion == "adversarial" and setup.adversary == "next-pair"])
+    res = _run_rows(setup, cand, np.array([setup.metric == "mahalanobis"]), nxt, table[None],
+                    kinds=np.array([_kind(strategy)], dtype=object), draws=draws, single=True)
+    return TrackingResult(setup=setup, strategy=strategy, seed=used_seed, noise=table,
+                          **{k: np.array(v[0]) for k, v in res.items()})
+
+
 def simulate_many(arms, seeds=None, noise=None) -> dict:
     """Several (setup, strategy) arms over the same noise realisations, batched together.
 
@@ -339,7 +320,7 @@ def simulate_many(arms, seeds=None, noise=None) -> dict:
     ((3, 30, 2), (0, 1, 2))
     """
     arms = _arms_iv(arms)
-    seeds, given = _seeds_iv(seeds, noise)
+    seeds, given = seeds_or_noise(seeds, noise)
     first: dict = {}
     for name, arm in arms.items():
         first.setdefault(_run_key(arm), name)

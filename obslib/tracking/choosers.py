@@ -55,8 +55,8 @@ noise of the pair):
 The logged bound of every run stays the paper's pair bound of the chosen pair (the setup's
 metric), so all runs compare with Fig. 6. Ties keep the first maximum in ``(i, j)`` order (the
 smallest pair). :class:`PairChooser` evaluates the choice for many runs at once without per-step
-validation, with the same arithmetic for one run or many: both engines use it, so they take the
-same decisions from the same states.
+validation, with the same arithmetic for one run or many: a run takes the same decisions alone
+(:func:`~obslib.tracking.simulate`) or batched with others.
 """
 
 from __future__ import annotations

@@ -1,14 +1,17 @@
-"""The measurement model of Section V: the half squared range, its Jacobian, the circling
-target's path, the pair bound along a run and the exact :math:`C^{-1}` the adversary minimises.
+"""The measurement models, the circling target's path, the pair bound along a run and the
+exact :math:`C^{-1}` the adversary minimises.
 
-A sensor :math:`p_i` measures
+In Section V a sensor :math:`p_i` measures
 
 .. math::
 
     z_i = h_i(o) + n_i, \\qquad h_i(o) = \\tfrac12 \\lVert p_i - o \\rVert^2,
 
 so the filter's Jacobian rows are :math:`H_i = (\\hat x - p_i)^T`, the rows of the paper's
-observability matrix :math:`O(o)` at the estimate.
+observability matrix :math:`O(o)` at the estimate. The authors' later multi-target experiment
+measures the range itself, :math:`h_i(o) = \\lVert p_i - o \\rVert`, whose Jacobian rows are
+those rows divided by their length (:func:`euclidean_range`,
+:func:`euclidean_range_jacobian`).
 """
 
 from __future__ import annotations
@@ -22,6 +25,8 @@ from ..bounds import relative_vectors
 __all__ = [
     "half_squared_range",
     "range_jacobian",
+    "euclidean_range",
+    "euclidean_range_jacobian",
     "circle_truth",
     "pair_bound_series",
     "target_objective",
@@ -49,19 +54,19 @@ def circle_truth(setup) -> np.ndarray:
     return np.asarray(setup.center) + setup.radius * np.column_stack([np.cos(a), np.sin(a)])
 
 
-def _state_iv(x, pair_sensors):
+def _state_iv(x, pair_sensors, name="pair_sensors"):
     """Finite positions ``x`` (``(2, 1)``, filterpy's column, or ``(..., 2)``) and sensors
-    ``(..., 2, 2)`` whose leading shapes broadcast."""
+    ``(..., M, 2)`` whose leading shapes broadcast."""
     x = as_float_array(x, "x")
-    ps = as_float_array(pair_sensors, "pair_sensors")
+    ps = as_float_array(pair_sensors, name)
     if x.shape != (2, 1) and (x.ndim < 1 or x.shape[-1] != 2):
         raise ValueError(f"x must have shape (2, 1) or (..., 2), got {x.shape}")
     if ps.ndim < 2 or ps.shape[-1] != 2:
-        raise ValueError(f"pair_sensors must have shape (..., M, 2), got {ps.shape}")
+        raise ValueError(f"{name} must have shape (..., M, 2), got {ps.shape}")
     if not (np.isfinite(x).all() and np.isfinite(ps).all()):
-        raise ValueError("x and pair_sensors must be finite")
+        raise ValueError(f"x and {name} must be finite")
     if x.shape != (2, 1):
-        broadcast({"x": x[..., None, :], "pair_sensors": ps})
+        broadcast({"x": x[..., None, :], name: ps})
     return x, ps
 
 
@@ -97,6 +102,43 @@ def range_jacobian(x, pair_sensors) -> np.ndarray:
     if x.shape == (2, 1):
         return x[:, 0][None, :] - ps
     return x[..., None, :] - ps
+
+
+def euclidean_range(x, sensors) -> np.ndarray:
+    """Measurement function of the range model, :math:`h(x) = \\lVert p_i - x \\rVert` for the
+    rows :math:`p_i` of ``sensors``.
+
+    ``x`` may be a filterpy column ``(2, 1)`` (returns ``(m, 1)``) or a batch ``(..., 2)`` with
+    ``sensors`` ``(..., m, 2)`` (returns ``(..., m)``).
+
+    Examples
+    --------
+    >>> euclidean_range([1.0, 2.0], [[4.0, 6.0], [1.0, 0.0]]).tolist()
+    [5.0, 2.0]
+    """
+    x, ps = _state_iv(x, sensors, "sensors")
+    if x.shape == (2, 1):
+        d = ps - x[:, 0]
+        return np.hypot(d[:, 0], d[:, 1])[:, None]
+    d = ps - x[..., None, :]
+    return np.hypot(d[..., 0], d[..., 1])
+
+
+def euclidean_range_jacobian(x, sensors) -> np.ndarray:
+    """Jacobian of :func:`euclidean_range`: rows :math:`H_i = (x - p_i)^T / \\lVert x - p_i
+    \\rVert`, ``(..., m, 2)``; a sensor on ``x`` (where it is undefined) is a ValueError.
+
+    Examples
+    --------
+    >>> euclidean_range_jacobian([1.0, 2.0], [[4.0, 6.0], [1.0, 0.0]]).tolist()
+    [[-0.6, -0.8], [0.0, 1.0]]
+    """
+    x, ps = _state_iv(x, sensors, "sensors")
+    d = x[:, 0][None, :] - ps if x.shape == (2, 1) else x[..., None, :] - ps
+    r = np.hypot(d[..., 0], d[..., 1])
+    if (r == 0).any():
+        raise ValueError("sensors: a sensor sits on x, where the range has no Jacobian")
+    return d / r[..., None]
 
 
 def pair_index(n: int):

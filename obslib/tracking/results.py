@@ -1,5 +1,7 @@
-"""What a tracking run returns: :class:`TrackingResult` (one run), :class:`BatchResult` (many
-runs of one strategy) and the quantities both derive from the logged states.
+"""What a tracking run returns: :class:`TrackingResult` (one run of Section V),
+:class:`BatchResult` (many runs of one strategy), :class:`TargetsResult` and
+:class:`TargetsBatch` (runs of many targets), and the quantities they derive from the logged
+states.
 
 Per-step arrays hold step ``k`` at index ``k - 1``; a batch adds a leading run axis.
 """
@@ -15,11 +17,11 @@ import numpy as np
 from .model import inverse_condition
 from .setup import TrackingSetup
 
-__all__ = ["TrackingResult", "BatchResult"]
+__all__ = ["TrackingResult", "BatchResult", "TargetsResult", "TargetsBatch"]
 
 
 def derived_arrays(est, cov, truth_ext) -> dict:
-    """Arrays shared by both engines, for any leading shape: errors, traces, truth, controls.
+    """Arrays every run logs, for any leading shape: errors, traces, truth, controls.
 
     ``truth_ext`` holds ``o_1 .. o_{steps+1}`` (the last is where the target moves after the
     last step).
@@ -175,3 +177,117 @@ class BatchResult(TrackingResult):
             if name in self.__dict__:
                 r.__dict__[name] = self.__dict__[name][b]
         return r
+
+
+@dataclass(frozen=True, eq=False)
+class TargetsResult:
+    """One run of many targets (:func:`~obslib.tracking.simulate_targets`); per-step arrays,
+    step ``k`` at index ``k - 1``, target ``l`` at index ``l``.
+
+    Attributes
+    ----------
+    setup : TargetsSetup
+        The parameters of the run.
+    assignment : str
+        The assignment (:data:`~obslib.tracking.ASSIGNMENTS`).
+    seed : int or None
+        The noise seed (None when an explicit noise table was given).
+    noise : (steps, N)
+        The noise table used.
+    labels : (steps, N) int
+        The target each sensor measured at each step (-1: none).
+    error : (steps, L)
+        :math:`\\lVert \\hat x_{l,k} - o_{l,k} \\rVert` before the step's update.
+    trace_cov : (steps, L)
+        :math:`\\operatorname{tr} \\Sigma_{l,k}` before the step's update.
+    truth, estimate : (steps, L, 2)
+        :math:`o_{l,k}` and :math:`\\hat x_{l,k}` (before the update).
+    cov : (steps, L, 2, 2)
+        :math:`\\Sigma_{l,k}` before the update.
+    estimate_end, cov_end : (L, 2), (L, 2, 2)
+        The filters after the last update.
+    teams : tuple
+        Per step, per target, the sorted sensors that measured it (computed on first access).
+    """
+
+    setup: object
+    assignment: str
+    seed: int | None
+    noise: np.ndarray
+    labels: np.ndarray
+    error: np.ndarray
+    trace_cov: np.ndarray
+    truth: np.ndarray
+    estimate: np.ndarray
+    cov: np.ndarray
+    estimate_end: np.ndarray
+    cov_end: np.ndarray
+
+    @property
+    def steps(self) -> int:
+        return self.labels.shape[-2]
+
+    @property
+    def n_targets(self) -> int:
+        return self.error.shape[-1]
+
+    @property
+    def team_sizes(self) -> np.ndarray:
+        """Sensors per target and step, ``(..., steps, L)``."""
+        L = self.n_targets
+        lab = self.labels
+        return (lab[..., None] == np.arange(L)).sum(axis=-2)
+
+    @property
+    def unobserved(self) -> np.ndarray:
+        """``(..., steps, L)`` bool: the target got no sensor at the step (its covariance grew
+        by :math:`Q` alone)."""
+        return self.team_sizes == 0
+
+    @cached_property
+    def teams(self) -> tuple:
+        lab = np.asarray(self.labels)
+        if lab.ndim != 2:
+            raise ValueError("teams are listed per run: take run(b) of a batch first")
+        return tuple(tuple(tuple(int(i) for i in np.flatnonzero(row == l))
+                           for l in range(self.n_targets)) for row in lab)
+
+    def summary(self) -> dict:
+        """Per-target means over the steps after the first (the first logs the initial
+        values, the same for every assignment): error, trace, and the steps without a sensor.
+
+        Examples
+        --------
+        >>> from obslib import tracking
+        >>> su = tracking.LATER_MULTI_TARGET.first(10)
+        >>> s = tracking.simulate_targets(su, "unique-pairs").summary()
+        >>> sorted(s), s["unobserved"].tolist()
+        (['mean_error', 'mean_trace', 'unobserved'], [0, 0, 0])
+        """
+        sl = slice(1, None) if self.steps > 1 else slice(None)
+        return {"mean_error": self.error[..., sl, :].mean(axis=-2),
+                "mean_trace": self.trace_cov[..., sl, :].mean(axis=-2),
+                "unobserved": self.unobserved.sum(axis=-2)}
+
+
+@dataclass(frozen=True, eq=False)
+class TargetsBatch(TargetsResult):
+    """Many runs of one assignment (:func:`~obslib.tracking.simulate_targets_batch`,
+    :func:`~obslib.tracking.simulate_targets_scenes`): the arrays of :class:`TargetsResult`
+    with a leading run axis ``(B, ...)``; ``seeds`` replaces ``seed``; ``scenes`` holds each
+    run's setup where they differ (``setup`` is then the first). ``run(b)`` gives one run."""
+
+    seeds: tuple = ()
+    scenes: tuple = ()
+
+    @property
+    def n_runs(self) -> int:
+        return self.labels.shape[0]
+
+    def run(self, b: int) -> TargetsResult:
+        """Run ``b`` as a :class:`TargetsResult`."""
+        arrays = {f.name: getattr(self, f.name)[b] for f in dataclasses.fields(TargetsResult)
+                  if f.name not in ("setup", "assignment", "seed")}
+        seed = self.seeds[b] if self.seeds else None
+        setup = self.scenes[b] if self.scenes else self.setup
+        return TargetsResult(setup=setup, assignment=self.assignment, seed=seed, **arrays)

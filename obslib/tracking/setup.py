@@ -10,14 +10,19 @@ strategy asks for it (:func:`noise_table`).
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 import numpy as np
 
 from .._validate import (
+    ArgumentTypeError,
+    as_choice,
+    as_float_array,
     as_instance,
     as_int,
     as_mapping,
+    as_noise_table,
     as_nonnegative,
     as_point,
     as_points,
@@ -26,8 +31,14 @@ from .._validate import (
     check_distinct,
     check_spd_any_scale,
 )
+from .kalman import MEASUREMENTS
 
 __all__ = [
+    "TargetsSetup",
+    "LATER_SENSORS",
+    "LATER_MULTI_TARGET",
+    "circle_paths",
+    "network_scene",
     "METRICS",
     "ADVERSARIES",
     "MOTIONS",
@@ -318,21 +329,298 @@ def setup_from_params(base: TrackingSetup, params: dict) -> TrackingSetup:
 
 
 # --------------------------------------------------------------------------------------------
+# Many targets: the record, the authors' later experiment, larger scenes
+# --------------------------------------------------------------------------------------------
+
+
+#: The eight sensors of the authors' later experiment.
+LATER_SENSORS = ((-3.0, 0.0), (-3.0, 4.0), (0.0, 0.0), (2.0, -1.0), (5.0, 0.0), (4.0, 6.0),
+                 (2.0, 7.0), (1.0, 3.0))
+
+
+def _array_field(value, name: str, ndim_tail: tuple, what: str) -> np.ndarray:
+    a = as_float_array(value, name)
+    if a.ndim != len(ndim_tail) or any(t is not None and s != t
+                                       for s, t in zip(a.shape, ndim_tail)):
+        raise ValueError(f"{name} must have shape {what}, got {a.shape}")
+    if not np.isfinite(a).all():
+        raise ValueError(f"{name} must be finite")
+    return a
+
+
+def _nested(a: np.ndarray) -> tuple:
+    if a.ndim == 1:
+        return tuple(float(v) for v in a)
+    return tuple(_nested(b) for b in a)
+
+
+@dataclass(frozen=True)
+class TargetsSetup:
+    """Parameters of a multi-target tracking experiment (a frozen, validated record).
+
+    Attributes
+    ----------
+    sensors : tuple of (x, y)
+        The ``N`` stationary sensors, distinct.
+    truth : nested tuple, shape (steps + 1, L, 2)
+        The targets' true positions :math:`o_{l,k}`, ``k = 1 .. steps + 1`` (the last is where
+        they move after the last step); ``steps`` and ``L`` are read from it.
+    estimate0 : nested tuple, shape (L, 2)
+        The filters' initial estimates.
+    cov0 : 2 x 2 matrix or number
+        Their initial covariance (a number means that multiple of :math:`I`), shared.
+    Q : 2 x 2 matrix or number
+        The filters' process noise (random-walk prediction).
+    R : float
+        The filters' measurement-noise variance, per measurement.
+    noise_std : float
+        Standard deviation of the true measurement noise (the noise tables).
+    u_max : float
+        The targets' speed bound in Theorem 4's pair bound.
+    measurement : {"range", "half-squared-range"}
+        What a sensor measures (:data:`~obslib.tracking.kalman.MEASUREMENTS`): the range, as
+        the later experiment, or Section V's half squared range.
+    metric : {"euclidean", "mahalanobis"}
+        Distances of the pair bound: Euclidean to the estimates (the later experiment) or
+        Mahalanobis in the estimates' covariances.
+    eps : float
+        The prior :math:`\\varepsilon I` of ``"logdet-teams-prior"``.
+    """
+
+    sensors: tuple
+    truth: tuple
+    estimate0: tuple
+    cov0: tuple = ((0.5, 0.0), (0.0, 0.5))
+    Q: tuple = ((0.2, 0.0), (0.0, 0.2))
+    R: float = 0.04
+    noise_std: float = 0.2
+    u_max: float = 0.1
+    measurement: str = "range"
+    metric: str = "euclidean"
+    eps: float = 1.0
+
+    def __post_init__(self):
+        put = lambda name, value: object.__setattr__(self, name, value)  # noqa: E731
+        s = as_points(as_float_array(self.sensors, "sensors"), "sensors", min_count=1)
+        if not np.isfinite(s).all():
+            raise ValueError("sensors must be finite")
+        check_distinct(s)
+        put("sensors", _nested(s))
+        t = _array_field(self.truth, "truth", (None, None, 2), "(steps + 1, L, 2)")
+        if t.shape[0] < 2 or t.shape[1] < 1:
+            raise ValueError(f"truth must hold at least 2 positions of at least 1 target, shape "
+                             f"(steps + 1, L, 2), got {t.shape}")
+        put("truth", _nested(t))
+        x0 = _array_field(self.estimate0, "estimate0", (t.shape[1], 2),
+                          f"({t.shape[1]}, 2), one per target")
+        put("estimate0", _nested(x0))
+        put("cov0", _matrix(self.cov0, "cov0"))
+        put("Q", _matrix(self.Q, "Q"))
+        put("R", as_positive(self.R, "R"))
+        put("noise_std", as_nonnegative(self.noise_std, "noise_std"))
+        put("u_max", as_nonnegative(self.u_max, "u_max"))
+        as_choice(self.measurement, MEASUREMENTS, "measurement")
+        as_choice(self.metric, METRICS, "metric")
+        put("eps", as_positive(self.eps, "eps"))
+
+    @property
+    def sensor_array(self) -> np.ndarray:
+        """The sensors, ``(N, 2)``."""
+        return np.array(self.sensors, dtype=float)
+
+    @property
+    def truth_array(self) -> np.ndarray:
+        """The true positions, ``(steps + 1, L, 2)``."""
+        return np.array(self.truth, dtype=float)
+
+    @property
+    def n_sensors(self) -> int:
+        return len(self.sensors)
+
+    @property
+    def n_targets(self) -> int:
+        return len(self.estimate0)
+
+    @property
+    def steps(self) -> int:
+        return len(self.truth) - 1
+
+    def replace(self, **changes) -> TargetsSetup:
+        """A validated copy with some fields changed (:func:`dataclasses.replace`)."""
+        return dataclasses.replace(self, **changes)
+
+    def first(self, steps: int) -> TargetsSetup:
+        """The same experiment cut to its first ``steps`` steps.
+
+        Examples
+        --------
+        >>> LATER_MULTI_TARGET.first(10).steps
+        10
+        """
+        steps = as_int(steps, "steps", 1)
+        if steps > self.steps:
+            raise ValueError(f"steps must be at most the setup's {self.steps}, got {steps}")
+        return self.replace(truth=self.truth[: steps + 1])
+
+
+def circle_paths(centers, periods, steps: int, radius: float = 1.0) -> np.ndarray:
+    """The later experiment's targets: at step 1 each stands at its centre :math:`c_l`, at step
+    :math:`k + 1` at :math:`c_l + r\\,(\\cos(k / W_l), \\sin(k / W_l))`, ``(steps + 1, L, 2)``
+    (so the first move jumps from the centre onto the circle).
+
+    Examples
+    --------
+    >>> circle_paths([[2.0, 1.0]], [10.0], 2).round(4).tolist()
+    [[[2.0, 1.0]], [[2.995, 1.0998]], [[2.9801, 1.1987]]]
+    """
+    c = as_float_array(centers, "centers")
+    if not np.isfinite(c).all():
+        raise ValueError("centers must be finite")
+    c = as_points(c, "centers", min_count=1)
+    w = as_float_array(periods, "periods")
+    if w.shape != (c.shape[0],) or not np.isfinite(w).all() or (w == 0).any():
+        raise ValueError(f"periods must be {c.shape[0]} finite non-zero numbers, one per centre")
+    steps = as_int(steps, "steps", 1)
+    radius = as_nonnegative(radius, "radius")
+    k = np.arange(1, steps + 1)[:, None]
+    a = k / w
+    out = np.empty((steps + 1, c.shape[0], 2))
+    out[0] = c
+    out[1:, :, 0] = radius * np.cos(a) + c[:, 0]
+    out[1:, :, 1] = radius * np.sin(a) + c[:, 1]
+    return out
+
+
+#: The authors' later multi-target experiment as their code runs it: 8 range sensors, 3 targets
+#: on unit circles about (2, 1), (-2, 2), (3, 4) (periods 10, 20, -30 steps per radian, each
+#: starting at its centre), initial estimates (2.5, 1.5), (-0.5, 0.5), (3.5, 4.5) with
+#: covariance 0.5 I, Q = 0.2 I, range noise of standard deviation 0.2 (R = 0.04), u_max = 0.1,
+#: Euclidean distances in the pair bound, 100 steps.
+LATER_MULTI_TARGET = TargetsSetup(
+    sensors=LATER_SENSORS,
+    truth=_nested(circle_paths([[2.0, 1.0], [-2.0, 2.0], [3.0, 4.0]], [10.0, 20.0, -30.0], 100)),
+    estimate0=((2.5, 1.5), (-0.5, 0.5), (3.5, 4.5)),
+)
+
+
+def network_scene(n_sensors: int, n_targets: int, steps: int = 100, seed: int = 0,
+                  side: float | None = None) -> TargetsSetup:
+    """A larger network of the later experiment's kind: ``N`` sensors and ``L`` targets on
+    random smooth paths, with the filter, noise and bound of :data:`LATER_MULTI_TARGET`.
+
+    The sensors are uniform in the square ``[0, side]^2``; ``side`` defaults to
+    :math:`10 \\sqrt{N / 8}`, so the sensors are as dense as the later experiment's eight in
+    its 10 x 10 field. Each target starts uniform in the square's middle ``[0.2, 0.8]`` part and
+    moves at a constant speed, uniform in ``[u_max / 3, u_max]`` (the later experiment's
+    targets move 0.1, 0.05 and 0.033 per step, u_max = 0.1), with a heading that turns
+    smoothly: :math:`\\theta_k = \\theta_0 + \\sum_{m=1}^{3} b_m \\sin(2 \\pi m k / K +
+    \\phi_m)`, :math:`b_m` uniform in :math:`\\pm 1.5 / m`, ``K`` the steps. The initial
+    estimates are the starts plus Gaussian errors of covariance ``cov0``. Everything is drawn
+    from ``numpy.random.default_rng([3, seed])``.
+
+    Examples
+    --------
+    >>> su = network_scene(200, 50, steps=20, seed=1)
+    >>> su.n_sensors, su.n_targets, su.steps
+    (200, 50, 20)
+    >>> import numpy as np
+    >>> step = np.diff(su.truth_array, axis=0)
+    >>> speed = np.hypot(step[..., 0], step[..., 1])
+    >>> bool((speed <= su.u_max * (1 + 1e-12)).all())
+    True
+    """
+    n = as_int(n_sensors, "n_sensors", 1)
+    L = as_int(n_targets, "n_targets", 1)
+    steps = as_int(steps, "steps", 1)
+    seed = as_int(seed, "seed", 0)
+    side = 10.0 * np.sqrt(n / 8.0) if side is None else as_positive(side, "side")
+    base = LATER_MULTI_TARGET
+    rng = np.random.default_rng([3, seed])
+    sensors = rng.uniform(0.0, side, size=(n, 2))
+    start = rng.uniform(0.2 * side, 0.8 * side, size=(L, 2))
+    speed = rng.uniform(base.u_max / 3, base.u_max, size=L)
+    theta0 = rng.uniform(0.0, 2 * np.pi, size=L)
+    m = np.arange(1, 4)
+    b = rng.uniform(-1.5, 1.5, size=(L, 3)) / m
+    phi = rng.uniform(0.0, 2 * np.pi, size=(L, 3))
+    k = np.arange(steps)[:, None, None]
+    theta = theta0 + (b * np.sin(2 * np.pi * m * k / steps + phi)).sum(axis=-1)  # (steps, L)
+    moves = speed[:, None] * np.stack([np.cos(theta), np.sin(theta)], axis=-1)  # (steps, L, 2)
+    truth = np.concatenate([start[None], start + np.cumsum(moves, axis=0)])
+    chol = np.linalg.cholesky(np.array(base.cov0))
+    estimate0 = start + rng.normal(size=(L, 2)) @ chol.T
+    return base.replace(sensors=_nested(sensors), truth=_nested(truth),
+                        estimate0=_nested(estimate0))
+
+
+# --------------------------------------------------------------------------------------------
 # Checks shared by the engines
 # --------------------------------------------------------------------------------------------
 
 
-def noise_table(setup: TrackingSetup, seed: int = 0) -> np.ndarray:
+def noise_table(setup, seed: int = 0) -> np.ndarray:
     """The measurement noise of one run, ``(steps, N)``: ``[k-1, i]`` is sensor ``i`` at step ``k``.
 
     Drawn once from ``numpy.random.default_rng(seed)`` as ``normal(0, noise_std)``, so every
-    strategy sees the same realisation (noise common to all strategies).
+    strategy (or assignment) sees the same realisation, whatever target a sensor serves.
+    ``setup`` is a :class:`TrackingSetup` or a :class:`~obslib.tracking.TargetsSetup`.
 
     Examples
     --------
     >>> noise_table(PAPER_CIRCLE, 0).shape
     (315, 6)
     """
-    as_instance(setup, TrackingSetup, "setup")
+    _setup_iv(setup)
     rng = np.random.default_rng(as_int(seed, "seed", 0))
     return rng.normal(0.0, setup.noise_std, size=(setup.steps, setup.n_sensors))
+
+
+def _setup_iv(setup):
+    if not isinstance(setup, (TrackingSetup, TargetsSetup)):
+        raise ValueError(f"setup must be a TrackingSetup or a TargetsSetup, got "
+                         f"{type(setup).__name__}")
+    return setup
+
+
+def run_table(setup, noise, seed, seeded: bool):
+    """The noise table of one run and the seed it records: ``noise`` checked against the
+    setup's ``(steps, N)``, or :func:`noise_table` of ``seed`` (then recorded); ``seed`` is
+    checked wherever it is used (``seeded``: it also draws the run's random choices).
+
+    Examples
+    --------
+    >>> table, used = run_table(PAPER_CIRCLE.replace(steps=3), None, 4, False)
+    >>> table.shape, used
+    ((3, 6), 4)
+    """
+    _setup_iv(setup)
+    if noise is None or seeded:
+        seed = as_int(seed, "seed", 0)
+    if noise is None:
+        return noise_table(setup, seed), seed
+    return as_noise_table(noise, (setup.steps, setup.n_sensors)), None
+
+
+def seeds_or_noise(seeds, noise):
+    """Either seeds (a non-empty iterable of integers, returned as a tuple with ``None``) or
+    noise tables (an array ``(B, steps, N)``, returned as ``()`` and the array), not both.
+
+    Examples
+    --------
+    >>> seeds_or_noise(range(3), None)
+    ((0, 1, 2), None)
+    """
+    if (seeds is None) == (noise is None):
+        raise ValueError("give either seeds or noise tables")
+    if noise is not None:
+        given = as_float_array(noise, "noise")
+        if given.ndim != 3:
+            raise ValueError(f"noise must have shape (B, steps, N), got {given.shape}")
+        return (), given
+    if isinstance(seeds, (str, bytes)) or not isinstance(seeds, Iterable):
+        raise ArgumentTypeError(
+            f"seeds must be an iterable of non-negative integers, got {seeds!r}")
+    seeds = tuple(as_int(x, "each seed", 0) for x in seeds)
+    if not seeds:
+        raise ValueError("seeds is empty")
+    return seeds, None

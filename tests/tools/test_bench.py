@@ -195,7 +195,7 @@ def test_assignment_size_options_are_checked_on_the_command_line(capsys):
         (["assignment", "--sensors", "100"], "give both"),
         (["assignment", "--sensors", "10", "--targets", "6"], "N >= 2L"),
         (["assignment", "--sensors", "10", "--targets", "0"], "at least one target"),
-        (["book", "--sensors", "10", "--targets", "5"], "assignment benchmark only"),
+        (["book", "--sensors", "10", "--targets", "5"], "and tracking benchmarks only"),
     ]:
         with pytest.raises(SystemExit) as exit_:
             parse_args(argv)

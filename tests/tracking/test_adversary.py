@@ -8,7 +8,7 @@ import pytest
 import obslib as ob
 from obslib import tracking as tr
 from obslib.controls import disc_controls
-from obslib.tracking.adversary import adversary_moves  # the kernel, tested directly
+from obslib.tracking.adversary import adversary_moves, screened_moves  # the worker too
 
 CIRCLE = tr.PAPER_CIRCLE
 ADV = tr.PAPER_ADVERSARIAL
@@ -70,10 +70,20 @@ def test_adversary_moves_by_block_equal_the_barred_union():
     barred = np.full((n, len(union)), np.inf)
     for r, b in enumerate(block):
         barred[r, edges[b] : edges[b + 1]] = 0.0
-    joint = adversary_moves(ps, o, union, barred=barred)
+    joint = screened_moves(ps, o, union, barred=barred)
     for b, c in enumerate(sets):
         rows = np.flatnonzero(block == b)
         own = adversary_moves(ps[rows], o[rows], c)
         np.testing.assert_array_equal(joint[rows], edges[b] + own)
         want = np.argmin(tr.target_objective(ps[rows], o[rows], c), axis=1)
         np.testing.assert_array_equal(own, want)
+
+
+def test_bad_adversary_arguments_are_named():
+    ps = np.array([[[0.0, 0.0], [4.0, 0.0]]])
+    with pytest.raises(ValueError, match="position must have shape"):
+        adversary_moves(ps, [[1.0, 1.0], [2.0, 2.0]], [[0.0, 0.1]])
+    with pytest.raises(ValueError, match="controls must be finite"):
+        adversary_moves(ps, [[1.0, 1.0]], [[np.nan, 0.1]])
+    with pytest.raises(ValueError, match="pair_sensors must have shape"):
+        adversary_moves(ps[0], [[1.0, 1.0]], [[0.0, 0.1]])
