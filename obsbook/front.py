@@ -15,6 +15,7 @@ of :data:`MARKERS`:
     The table of the paper's claims that do not hold as printed: each claim, its verdict with
     its caveat, and its one sentence.
 
+:func:`obsbook.report.render_front` renders them, and
 ``python -m obsbook.report --front book/_front.md`` writes the file.
 """
 
@@ -24,9 +25,7 @@ from dataclasses import dataclass, field
 
 from obslib._validate import as_mapping, as_str
 
-from .report import list_table, statement_of, typeset, verdict_line
-
-__all__ = ["MARKERS", "Headline", "HEADLINES", "render_front"]
+__all__ = ["MARKERS", "Headline", "HEADLINES", "check_headlines"]
 
 #: Marker comments around the parts of ``book/_front.md`` that the front page includes.
 MARKERS = {
@@ -69,7 +68,14 @@ HEADLINES = (
 )
 
 
-def _check(headlines, records) -> dict:
+def check_headlines(records, headlines=HEADLINES) -> dict:
+    """The records by id, once every headline's asserted statuses are the ledger's.
+
+    Raises
+    ------
+    ValueError
+        When a headline asserts a status its entry does not have, or states an unknown entry.
+    """
     by_id = {r.id: r for r in records}
     for h in headlines:
         for cid, status in h.statuses.items():
@@ -81,33 +87,3 @@ def _check(headlines, records) -> dict:
                                  f"but the ledger finds it {by_id[cid].status}; rewrite the "
                                  "headline")
     return by_id
-
-
-def render_front(records, headlines=HEADLINES) -> str:
-    """MyST of the front page's generated parts (see the module docstring).
-
-    Raises
-    ------
-    ValueError
-        When a headline asserts a status its entry does not have, or states an unknown entry.
-    """
-    by_id = _check(headlines, records)
-    lines = [MARKERS["findings"][0]]
-    for h in headlines:
-        said = " ".join(f"{statement_of(by_id[cid])} ([evidence](#{by_id[cid].label}))"
-                        for cid in h.statuses)
-        lines.append(f"- **{typeset(h.lead)}** {said}")
-    lines += [MARKERS["findings"][1], "", MARKERS["exceptions"][0]]
-    paper = [r for r in records if r.kind == "paper"]
-    bad = [r for s in ("refuted", "partly") for r in paper if r.status == s]
-    if bad:
-        lines += list_table(
-            "The paper's claims that do not hold as printed, refuted first.",
-            ["the paper says", "verdict", "what we found"],
-            [[f"[{typeset(r.title).rstrip('.')}](#claim-{r.id})", verdict_line(r),
-              statement_of(r)] for r in bad],
-            name="table-intro-exceptions", widths=(3, 2, 5))
-    else:
-        lines.append("Every claim of the paper holds as printed.")
-    lines.append(MARKERS["exceptions"][1])
-    return "\n".join(lines) + "\n"

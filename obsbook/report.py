@@ -30,7 +30,7 @@ from obslib.claims import REQUIRED_IDS, STATUSES
 
 __all__ = ["ROOT", "MARKERS", "SECTIONS", "PAPER_LABELS", "render_report", "notebook_targets",
            "typeset", "list_table", "counts_sentence", "quote_myst", "verdict_line",
-           "statement_of", "exceptions_table", "main"]
+           "statement_of", "exceptions_table", "render_front", "main"]
 
 #: The checkout the book is built from: ``notebooks/`` and ``book/`` live here.
 ROOT = Path(__file__).resolve().parents[1]
@@ -476,6 +476,41 @@ def exceptions_table(records) -> list:
                        for r in bad], widths=(3, 2, 5))
 
 
+def render_front(records, headlines=None) -> str:
+    """MyST of the front page's generated parts (:mod:`obsbook.front`): the findings, one bullet
+    per headline stating its entries' one sentences with a link to their evidence, and the table
+    of the paper's claims that do not hold as printed.
+
+    Raises
+    ------
+    ValueError
+        When a headline asserts a status its entry does not have, or states an unknown entry.
+    """
+    from . import front
+
+    headlines = front.HEADLINES if headlines is None else headlines
+    by_id = front.check_headlines(records, headlines)
+    lines = [front.MARKERS["findings"][0]]
+    for h in headlines:
+        said = " ".join(f"{statement_of(by_id[cid])} ([evidence](#{by_id[cid].label}))"
+                        for cid in h.statuses)
+        lines.append(f"- **{typeset(h.lead)}** {said}")
+    lines += [front.MARKERS["findings"][1], "", front.MARKERS["exceptions"][0]]
+    paper = [r for r in records if r.kind == "paper"]
+    bad = [r for s in ("refuted", "partly") for r in paper if r.status == s]
+    if bad:
+        lines += list_table(
+            "The paper's claims that do not hold as printed, refuted first.",
+            ["the paper says", "verdict", "what we found"],
+            [[f"[{typeset(r.title).rstrip('.')}](#claim-{r.id})", verdict_line(r),
+              statement_of(r)] for r in bad],
+            name="table-intro-exceptions", widths=(3, 2, 5))
+    else:
+        lines.append("Every claim of the paper holds as printed.")
+    lines.append(front.MARKERS["exceptions"][1])
+    return "\n".join(lines) + "\n"
+
+
 def render_report(records, profile: str = "paper", targets=None, robustness=None) -> str:
     """MyST Markdown for the report page (see the module docstring).
 
@@ -569,8 +604,6 @@ def main(argv=None) -> int:
     from obslib.claims import evaluate
     from obslib.claims import robustness as rb
     from obslib.profiles import profile_names
-
-    from .front import render_front
 
     ap = argparse.ArgumentParser(prog="python -m obsbook.report",
                                  description="Render the reproduction report from the ledger.")

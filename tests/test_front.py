@@ -19,13 +19,13 @@ def _record(id, status, kind="paper", summary="It holds.", caveat="", label=None
 def test_a_headline_must_agree_with_the_ledger():
     recs = [_record("a", "reproduced"), _record("b", "refuted", summary="It fails.")]
     ok = front.Headline("A holds, B does not.", {"a": "reproduced", "b": "refuted"})
-    text = front.render_front(recs, (ok,))
+    text = report.render_front(recs, (ok,))
     assert "- **A holds, B does not.** It holds. ([evidence](#a-evidence)) It fails." in text
     wrong = front.Headline("Both hold.", {"a": "reproduced", "b": "reproduced"})
     with pytest.raises(ValueError, match="asserts 'b' is reproduced, but the ledger finds it"):
-        front.render_front(recs, (wrong,))
+        report.render_front(recs, (wrong,))
     with pytest.raises(ValueError, match="does not hold"):
-        front.render_front(recs, (front.Headline("C.", {"c": "reproduced"}),))
+        report.render_front(recs, (front.Headline("C.", {"c": "reproduced"}),))
 
 
 def test_the_exceptions_table_lists_refuted_then_partly_with_their_sentences():
@@ -33,7 +33,7 @@ def test_the_exceptions_table_lists_refuted_then_partly_with_their_sentences():
                     caveat="Partly at the paper's values; refuted with twice $u_{\\max}$."),
             _record("b", "refuted", summary="It fails."), _record("c", "reproduced"),
             _record("d", "differs", kind="code", summary="The code differs.")]
-    text = front.render_front(recs, ())
+    text = report.render_front(recs, ())
     table = text.split(front.MARKERS["exceptions"][0])[1]
     assert table.index("claim-b") < table.index("claim-a")
     assert "claim-c" not in table and "claim-d" not in table  # only the paper's claims
@@ -74,7 +74,7 @@ def test_committed_front_fragment_is_the_ledger_at_the_paper_profile():
     from obslib.claims import robustness as rb
 
     recs = claims.evaluate("paper", caveats=rb.caveats())
-    assert (ROOT / "book" / "_front.md").read_text() == front.render_front(recs), (
+    assert (ROOT / "book" / "_front.md").read_text() == report.render_front(recs), (
         "book/_front.md is stale: run python -m obsbook.report --front book/_front.md")
 
 

@@ -152,10 +152,10 @@ class Finding:
     >>> f = Finding("reproduced", "It holds in all 10 trials.")
     >>> f.ours
     'It holds in all 10 trials.'
-    >>> Finding("reproduced", "two. sentences.")
+    >>> Finding("reproduced", "It holds. It fails.")
     Traceback (most recent call last):
     ...
-    ValueError: summary must be one sentence, got 'two. sentences.'
+    ValueError: summary must be one sentence, got 'It holds. It fails.'
     """
 
     status: str

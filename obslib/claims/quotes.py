@@ -67,8 +67,14 @@ def _window(ws) -> str:
 
 
 def fingerprint(source: str) -> list[str]:
-    """The fingerprint of a LaTeX ``source``: one hash per four-word window, in order."""
-    ws = words(source, latex=True)
+    """The fingerprint of a LaTeX ``source``: one hash per four-word window, in order.
+
+    Examples
+    --------
+    >>> len(fingerprint("one two three four five")), fingerprint("")
+    (2, [])
+    """
+    ws = words(as_str(source, "source"), latex=True)
     return [_window(ws[i:i + MIN_WORDS]) for i in range(len(ws) - MIN_WORDS + 1)]
 
 
@@ -91,7 +97,7 @@ def found(quote: str) -> bool:
     ValueError
         For fewer than :data:`MIN_WORDS` words.
     """
-    ws = words(quote)
+    ws = words(as_str(quote, "quote"))
     if len(ws) < MIN_WORDS:
         raise ValueError(f"quote must have at least {MIN_WORDS} words, got {quote!r}")
     chain, where = _chain()

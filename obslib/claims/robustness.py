@@ -285,10 +285,13 @@ def caveat(row: dict, status: str | None = None) -> str:
     ...        "variants": {"u_max": [("x0.25", "refuted"), ("x2", "reproduced")],
     ...                     "metric": [("euclidean", "refuted")],
     ...                     "size": [("n_seeds x0.5", "partly")]}}
-    >>> print(caveat(row))
-    Reproduced at the paper's values; refuted with a quarter of $u_{\\max}$ and with Euclidean \
-distances; partly with half the noise seeds.
-    >>> caveat({"id": "c2", "base": "partly", "variants": {"u_max": [("x2", "partly")]}})
+    >>> import textwrap
+    >>> print(textwrap.fill(caveat(row), 70))
+    Reproduced at the paper's values; refuted with a quarter of
+    $u_{\\max}$ and with Euclidean distances; partly with half the noise
+    seeds.
+    >>> same = {"u_max": [("x2", "partly")]}
+    >>> caveat({"id": "c2", "base": "partly", "variants": same})
     ''
     """
     (row,) = _rows_iv([row])

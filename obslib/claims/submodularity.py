@@ -12,9 +12,8 @@ from __future__ import annotations
 from .._format import count, fixed, number, setting
 from ..studies import submodularity as sm
 from ..studies.published import THEOREM7_PRINTED_WITNESS
-from ._ledger import Finding, Table, claim
+from ._ledger import Finding, Table, claim, registry
 from .assignment import NB as NB_PAIRS
-from .assignment import _thm6, _thm6_any_omega
 
 NB = "04_submodularity"
 
@@ -640,7 +639,7 @@ def _conclusion(p: dict) -> Finding:
     omega and all four measures of Theorem 8 hold as printed; partly: Theorem 6 holds (for
     omega >= 0) and some measure of Theorem 8 gives the greedy its 1/2, but not all; refuted:
     Theorem 6 fails or no measure of Theorem 8 holds."""
-    thm6, any_omega = _thm6(p[NB_PAIRS]), _thm6_any_omega(p[NB_PAIRS])
+    thm6, any_omega = (registry()[cid].check(p[NB_PAIRS]) for cid in ('thm6', 'thm6-any-omega'))
     found = _thm8_findings(p)
     bound = _thm7(p)
     good = [k for k, f in found.items() if f.status in ("reproduced", "partly")]

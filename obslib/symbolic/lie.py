@@ -39,19 +39,35 @@ MEASUREMENTS = ("half-squared", "range")
 
 def _measurement(measurement: str) -> sp.Expr:
     d2 = (P_X - O_X) ** 2 + (P_Y - O_Y) ** 2
-    if as_str(measurement, "measurement") == "half-squared":
-        return d2 / 2
-    if measurement == "range":
-        return sp.sqrt(d2)
-    raise ValueError(f"measurement must be one of {MEASUREMENTS}, got {measurement!r}")
+    return d2 / 2 if measurement == "half-squared" else sp.sqrt(d2)
 
 
-@lru_cache(maxsize=8)
 def lie_rows(n: int = 3, measurement: str = "half-squared") -> tuple:
     r"""The gradients :math:`\nabla L^k_f h`, :math:`k = 0, \dots, n - 1`, of one sensor's
     measurement along the drift :math:`f = u_o`, each a SymPy row ``(d/do_x, d/do_y)``
-    (simplified)."""
+    (simplified).
+
+    Examples
+    --------
+    >>> lie_rows(2)
+    ((o_x - p_x, o_y - p_y), (u_x, u_y))
+    >>> lie_rows(0)
+    Traceback (most recent call last):
+    ...
+    ValueError: n must be an integer >= 1, got 0
+    """
+    return _lie_rows(*_lie_rows_iv(n, measurement))
+
+
+def _lie_rows_iv(n, measurement) -> tuple:
     n = as_int(n, "n", 1)
+    if as_str(measurement, "measurement") not in MEASUREMENTS:
+        raise ValueError(f"measurement must be one of {MEASUREMENTS}, got {measurement!r}")
+    return n, measurement
+
+
+@lru_cache(maxsize=8)
+def _lie_rows(n: int, measurement: str) -> tuple:
     grad = (O_X, O_Y)
     L = _measurement(measurement)
     rows = []
@@ -63,7 +79,13 @@ def lie_rows(n: int = 3, measurement: str = "half-squared") -> tuple:
 
 
 def printed_rows(n: int = 3) -> tuple:
-    """The rows Eq. (4) prints for one sensor: ``(o - p)^T``, ``u^T``, then zero rows."""
+    """The rows Eq. (4) prints for one sensor: ``(o - p)^T``, ``u^T``, then zero rows.
+
+    Examples
+    --------
+    >>> printed_rows(3)[2]
+    (0, 0)
+    """
     n = as_int(n, "n", 1)
     rows = [(O_X - P_X, O_Y - P_Y), (U_X, U_Y)] + [(sp.S.Zero, sp.S.Zero)] * max(0, n - 2)
     return tuple(rows[:n])
@@ -71,7 +93,14 @@ def printed_rows(n: int = 3) -> tuple:
 
 def rows_match_printed(n: int = 3) -> bool:
     """Whether the derived rows (half the squared range) equal the printed ones, entry by entry
-    (differences expanded to zero)."""
+    (differences expanded to zero).
+
+    Examples
+    --------
+    >>> rows_match_printed(4)
+    True
+    """
+    n = as_int(n, "n", 1)
     return all(sp.expand(a - b) == 0
                for dr, pr in zip(lie_rows(n), printed_rows(n)) for a, b in zip(dr, pr))
 
@@ -81,6 +110,13 @@ def one_sensor_rank_condition() -> tuple[sp.Expr, sp.Expr]:
     [(o - p_i)^T; u_o^T]` (Eq. (23)), and the difference of the two sides of the condition the
     proof of Theorem 2 prints, :math:`(o_x - p_{ix}) u_{oy} - (o_y - p_{iy}) u_{ox}`. The matrix
     has full rank exactly when ``det`` is not zero; the condition is right when the two are
-    equal."""
+    equal.
+
+    Examples
+    --------
+    >>> det, printed = one_sensor_rank_condition()
+    >>> det - printed
+    0
+    """
     m = sp.Matrix([[O_X - P_X, O_Y - P_Y], [U_X, U_Y]])
     return sp.expand(m.det()), sp.expand((O_X - P_X) * U_Y - (O_Y - P_Y) * U_X)
