@@ -33,7 +33,7 @@ from .._validate import (
     as_noise_table,
 )
 from . import kalman
-from .choosers import NAMES, PairChooser, candidates, fixed_pair_bound, pair_draws
+from .choosers import NAMES, STRATEGIES, PairChooser, candidates, fixed_pair_bound, pair_draws
 from .engine import Adversaries, FilterBank, run_steps, singular_update_message
 from .model import circle_truth, pair_index
 from .results import BatchResult, TrackingResult, derived_arrays
@@ -187,7 +187,7 @@ def _arms_iv(arms) -> dict:
 
 def _kind(strategy: str) -> str:
     """The chooser kind of a strategy: ``"bound"`` for the paper's, else the criterion."""
-    return "bound" if strategy in ("best-pair", "best-partner", "fixed-pair") else strategy
+    return "bound" if strategy in STRATEGIES else strategy
 
 
 def _run_key(arm):
@@ -409,7 +409,7 @@ def simulate_batch(setup: TrackingSetup, strategy: str, seeds=None, noise=None) 
 def monte_carlo(
     setup: TrackingSetup,
     n_seeds: int = 100,
-    strategies: Iterable[str] = ("best-pair", "best-partner", "fixed-pair"),
+    strategies: Iterable[str] = STRATEGIES,
     first_seed: int = 0,
     batch: int = 1000,
 ) -> dict[str, BatchResult]:
