@@ -70,6 +70,9 @@ def _stale() -> bool:
 def book() -> Path:
     """Path of the rendered book, rendering it first (execution off, warnings as errors) if
     needed."""
+    from obsbook import front
+
+    front.write_figure(front.FIGURE)  # as make book does; unchanged when it holds the picture
     if _stale():
         if not run.EXECUTION_PAGE.exists():
             times = json.loads(run.TIMES_FILE.read_text()) if run.TIMES_FILE.exists() else {}
