@@ -222,7 +222,7 @@ def test_03_spare_sensors_recomputed_on_the_same_instances(numbers03):
 
     for key, extra in (("spare", 2), ("no_spare", 0)):
         ratios = []
-        for _, L, idx, S, T in experiments.pair_instances(60, 0, (2, 4), (0, extra)):
+        for _, _, idx, S, T in experiments.pair_instances(60, 0, (2, 4), (0, extra)):
             for k in range(len(idx)):
                 W = ob.pair_bounds(S[k], T[k], 1.0)
                 greedy, _ = _greedy_by_hand(W)

@@ -458,9 +458,10 @@ def exercise_numbers(u_max: float, d_io: float, u_rerun: float = EXERCISE_U_RERU
         ``"by_hand"``: :data:`EXERCISE_PAIR`'s :math:`S = \sqrt{1 + \alpha^4 + 2\alpha^2\cos
         2\theta}` and its bound (Eq. (9)); ``"rerun"``: the peak of Fig. 2, :math:`1/\sqrt{1 +
         q^2}`, at the chapter's speed and at ``u_rerun``, and the bound at :math:`\alpha` =
-        :data:`EXERCISE_ALPHA_UNEQUAL`, :math:`\theta = \pi/2` at both; ``"counter"``: at the angle of :data:`EXERCISE_PAIR` and
-        ``q = u_max / d_io``, the maximiser :math:`\alpha^*` and the bound there and at
-        :math:`\alpha = 1`, and the maximiser for a stationary target.
+        :data:`EXERCISE_ALPHA_UNEQUAL`, :math:`\theta = \pi/2` at both; ``"counter"``: at the
+        angle of :data:`EXERCISE_PAIR` and ``q = u_max / d_io``, the maximiser
+        :math:`\alpha^*` and the bound there and at :math:`\alpha = 1`, and the maximiser for
+        a stationary target.
     """
     e = EXERCISE_PAIR
     a, th = e["alpha"], e["theta"]
@@ -488,7 +489,8 @@ def glue_exercises(u_max: float, d_io: float, u_rerun: float = EXERCISE_U_RERUN)
         x1_alpha=setting(e["alpha"]), x1_theta=e["theta_tex"], x1_q=setting(e["q"]),
         x1_S=number(h["S"]), x1_bound=number(h["bound"]),
         x2_u=setting(u_max), x2_d=setting(d_io), x2_u_rerun=setting(u_rerun),
-        x2_alpha=setting(EXERCISE_ALPHA_UNEQUAL), x2_peak=number(r["peak"]), x2_peak_rerun=number(r["peak_rerun"]),
+        x2_alpha=setting(EXERCISE_ALPHA_UNEQUAL),
+        x2_peak=number(r["peak"]), x2_peak_rerun=number(r["peak_rerun"]),
         x2_unequal=number(r["unequal"]), x2_unequal_rerun=number(r["unequal_rerun"]),
         x3_q=setting(c["q"]), x3_star=number(c["alpha_star"]), x3_at_star=number(c["at_star"]),
         x3_at_one=number(c["at_one"]), x3_star0=number(c["alpha_star_q0"]),
