@@ -310,7 +310,18 @@ def exercise_numbers(n_instances: int, seed: int, targets_min: int, targets_max:
                      extra_max: int, u_max: float) -> dict:
     """The numbers of the chapter's exercises: the greedy and the optimum on
     :data:`EXERCISE_VALUES` and with :data:`EXERCISE_NEGATIVE`, and the random instances of the
-    chapter with and without spare sensors (``extra_max`` and 0)."""
+    chapter with and without spare sensors (``extra_max`` and 0).
+
+    Parameters
+    ----------
+    n_instances, seed : int
+        The chapter's random instances and their seed.
+    targets_min, targets_max, extra_max : int
+        Their sizes: :math:`L` from ``targets_min`` to ``targets_max``, :math:`N` from
+        :math:`2L` to :math:`2L` + ``extra_max``.
+    u_max : float
+        The speed bound of the pair values.
+    """
     out = {}
     for key, neg in (("by_hand", False), ("negative", True)):
         W = exercise_weights(neg)  # the library's greedy takes values >= 0; its kernel any
@@ -335,7 +346,18 @@ def exercise_numbers(n_instances: int, seed: int, targets_min: int, targets_max:
 
 def glue_exercises(n_instances: int, seed: int, targets_min: int, targets_max: int,
                    extra_max: int, u_max: float) -> dict:
-    """Glue the numbers of the chapter's exercises (:func:`exercise_numbers`); returns them."""
+    """Glue the numbers of the chapter's exercises (:func:`exercise_numbers`); returns them.
+
+    Parameters
+    ----------
+    n_instances, seed : int
+        The chapter's random instances and their seed.
+    targets_min, targets_max, extra_max : int
+        Their sizes: :math:`L` from ``targets_min`` to ``targets_max``, :math:`N` from
+        :math:`2L` to :math:`2L` + ``extra_max``.
+    u_max : float
+        The speed bound of the pair values.
+    """
     x = exercise_numbers(n_instances, seed, targets_min, targets_max, extra_max, u_max)
     rows = [{"pair": pair_math(i, j), "t1": number(a), "t2": number(b)}
             for (i, j), (a, b) in EXERCISE_VALUES.items()]

@@ -462,6 +462,13 @@ def exercise_numbers(u_max: float, d_io: float, u_rerun: float = EXERCISE_U_RERU
         angle of :data:`EXERCISE_PAIR` and ``q = u_max / d_io``, the maximiser
         :math:`\alpha^*` and the bound there and at :math:`\alpha = 1`, and the maximiser for
         a stationary target.
+
+    Parameters
+    ----------
+    u_max, d_io : float
+        The speed bound and the distance of sensor :math:`i` of Fig. 2.
+    u_rerun : float
+        The speed bound the rerun exercise asks about.
     """
     e = EXERCISE_PAIR
     a, th = e["alpha"], e["theta"]
@@ -481,7 +488,15 @@ def exercise_numbers(u_max: float, d_io: float, u_rerun: float = EXERCISE_U_RERU
 
 
 def glue_exercises(u_max: float, d_io: float, u_rerun: float = EXERCISE_U_RERUN) -> dict:
-    """Glue the numbers of the chapter's exercises (:func:`exercise_numbers`); returns them."""
+    """Glue the numbers of the chapter's exercises (:func:`exercise_numbers`); returns them.
+
+    Parameters
+    ----------
+    u_max, d_io : float
+        The speed bound and the distance of sensor :math:`i` of Fig. 2.
+    u_rerun : float
+        The speed bound the rerun exercise asks about.
+    """
     x = exercise_numbers(u_max, d_io, u_rerun)
     h, r, c = x["by_hand"], x["rerun"], x["counter"]
     e = EXERCISE_PAIR

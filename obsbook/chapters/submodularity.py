@@ -378,6 +378,17 @@ def exercise_numbers(P, o, eps: float, u_max: float, n_instances: int, seed: int
         audit with :data:`EXERCISE_N_SENSORS` sensors (instances not monotone, not
         submodular); ``"cross"``: :math:`\omega` of the intuition's pair ``P[:2]`` and with each
         sensor of :data:`EXERCISE_THIRDS` added.
+
+    Parameters
+    ----------
+    P, o : ndarray
+        The intuition's sensors and target.
+    eps : float
+        The prior of the log determinant.
+    u_max : float
+        The speed bound of the bound :math:`\omega`.
+    n_instances, seed, min_size : int
+        The random instances of the rerun exercise, their seed and the smallest team compared.
     """
     from obslib import lower_bound, measures
     from obslib.studies import submodularity as sm
@@ -404,7 +415,19 @@ def exercise_numbers(P, o, eps: float, u_max: float, n_instances: int, seed: int
 
 def glue_exercises(P, o, eps: float, u_max: float, n_instances: int, seed: int,
                    min_size: int) -> dict:
-    """Glue the numbers of the chapter's exercises (:func:`exercise_numbers`); returns them."""
+    r"""Glue the numbers of the chapter's exercises (:func:`exercise_numbers`); returns them.
+
+    Parameters
+    ----------
+    P, o : ndarray
+        The intuition's sensors and target.
+    eps : float
+        The prior of the log determinant.
+    u_max : float
+        The speed bound of the bound :math:`\omega`.
+    n_instances, seed, min_size : int
+        The random instances of the rerun exercise, their seed and the smallest team compared.
+    """
     x = exercise_numbers(P, o, eps, u_max, n_instances, seed, min_size)
     h, r, c = x["by_hand"], x["rerun"], x["cross"]
 
