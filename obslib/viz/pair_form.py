@@ -442,7 +442,7 @@ def plot_bound_at_a_glance(theta: float = 2 * np.pi / 5, u_over_d=GLANCE_SPEEDS,
     >>> fig = plot_bound_at_a_glance(n=37)
     >>> fig.axes[1].get_xlabel()
     'angle between the sensors (degrees)'
-    >>> round(max(fig.axes[1].lines[0].get_ydata()), 6)  # q = 0: a perfect cross
+    >>> round(float(max(fig.axes[1].lines[0].get_ydata())), 6)  # q = 0: a cross
     1.0
     """
     import matplotlib.pyplot as plt
