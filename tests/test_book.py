@@ -397,6 +397,23 @@ def test_the_front_page_opens_with_its_summary(seen):
     assert front["max_rows"] <= 25, front["max_rows"]
 
 
+def test_the_front_page_shows_the_bound_at_a_glance(book):
+    """The front page shows the idea of the bound in a numbered figure, drawn when the book is
+    built (``python -m obsbook.front``), whose caption links the bound explorer by name."""
+    from obsbook import front
+
+    html = (book / "book" / "intro.html").read_text()
+    fig = re.search(r'<figure[^>]*id="fig-front-bound".*?</figure>', html, re.S)
+    assert fig, "the front page shows no picture"
+    assert re.search(r'caption-number">Figure \d', fig.group(0))
+    assert re.search(r'href="[^"]*02_pair_closed_form\.html#explorer"[^>]*>.*?the bound explorer',
+                     fig.group(0), re.S)
+    chapter = (book / "notebooks" / "02_pair_closed_form.html").read_text()
+    assert 'id="explorer"' in chapter
+    src = re.search(r'<img[^>]*src="([^"]+)"', fig.group(0)).group(1)
+    assert (book / "book" / src).resolve().read_bytes() == front.front_figure()[0]
+
+
 # ------------------------------------------------------------------- the checks themselves can fail
 
 PNG = bytes.fromhex(
