@@ -29,7 +29,6 @@ from __future__ import annotations
 import argparse
 import os
 import stat
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -173,24 +172,14 @@ def write_figure(path=FIGURE) -> bool:
     old = p.stat() if p.is_file() else None
     if old is not None and old.st_size == len(png) and p.read_bytes() == png:
         return False
-    fd, tmp = tempfile.mkstemp(prefix=f".{p.name}.", suffix=".tmp", dir=p.parent)
+    tmp = p.with_name(f".{p.name}.{os.getpid()}.tmp")  # beside it, so the rename is atomic
     try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(png)
+        tmp.write_bytes(png)  # a new file gets the mode the umask gives
         if old is not None:
-            mode = stat.S_IMODE(old.st_mode)
-        else:
-            mask = os.umask(0)
-            os.umask(mask)
-            mode = 0o666 & ~mask
-        os.chmod(tmp, mode)
+            os.chmod(tmp, stat.S_IMODE(old.st_mode))
         os.replace(tmp, p)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
+    finally:
+        tmp.unlink(missing_ok=True)
     return True
 
 

@@ -348,15 +348,8 @@ def glue_exercises(n_instances: int, seed: int, targets_min: int, targets_max: i
                    extra_max: int, u_max: float) -> dict:
     """Glue the numbers of the chapter's exercises (:func:`exercise_numbers`); returns them.
 
-    Parameters
-    ----------
-    n_instances, seed : int
-        The chapter's random instances and their seed.
-    targets_min, targets_max, extra_max : int
-        Their sizes: :math:`L` from ``targets_min`` to ``targets_max``, :math:`N` from
-        :math:`2L` to :math:`2L` + ``extra_max``.
-    u_max : float
-        The speed bound of the pair values.
+    ``n_instances``, ``seed``, ``targets_min``, ``targets_max``, ``extra_max`` and ``u_max``
+    are those of :func:`exercise_numbers`.
     """
     x = exercise_numbers(n_instances, seed, targets_min, targets_max, extra_max, u_max)
     rows = [{"pair": pair_math(i, j), "t1": number(a), "t2": number(b)}

@@ -326,14 +326,7 @@ def _vec(v) -> str:
 def glue_exercises(sensors, target, u_max: float, u_rerun: float = EXERCISE_U_RERUN) -> dict:
     """Glue the numbers of the chapter's exercises (:func:`exercise_numbers`) and return them.
 
-    Parameters
-    ----------
-    sensors, target : ndarray
-        The running example's scene.
-    u_max : float
-        The chapter's speed bound.
-    u_rerun : float
-        The speed bound the rerun exercise asks about.
+    ``sensors``, ``target``, ``u_max`` and ``u_rerun`` are those of :func:`exercise_numbers`.
     """
     e = exercise_numbers(sensors, target, u_max, u_rerun)
     h, r, c = e["by_hand"], e["rerun"], e["counter"]

@@ -490,12 +490,7 @@ def exercise_numbers(u_max: float, d_io: float, u_rerun: float = EXERCISE_U_RERU
 def glue_exercises(u_max: float, d_io: float, u_rerun: float = EXERCISE_U_RERUN) -> dict:
     """Glue the numbers of the chapter's exercises (:func:`exercise_numbers`); returns them.
 
-    Parameters
-    ----------
-    u_max, d_io : float
-        The speed bound and the distance of sensor :math:`i` of Fig. 2.
-    u_rerun : float
-        The speed bound the rerun exercise asks about.
+    ``u_max``, ``d_io`` and ``u_rerun`` are those of :func:`exercise_numbers`.
     """
     x = exercise_numbers(u_max, d_io, u_rerun)
     h, r, c = x["by_hand"], x["rerun"], x["counter"]

@@ -417,16 +417,8 @@ def glue_exercises(P, o, eps: float, u_max: float, n_instances: int, seed: int,
                    min_size: int) -> dict:
     r"""Glue the numbers of the chapter's exercises (:func:`exercise_numbers`); returns them.
 
-    Parameters
-    ----------
-    P, o : ndarray
-        The intuition's sensors and target.
-    eps : float
-        The prior of the log determinant.
-    u_max : float
-        The speed bound of the bound :math:`\omega`.
-    n_instances, seed, min_size : int
-        The random instances of the rerun exercise, their seed and the smallest team compared.
+    ``P``, ``o``, ``eps``, ``u_max``, ``n_instances``, ``seed`` and ``min_size`` are those of
+    :func:`exercise_numbers`.
     """
     x = exercise_numbers(P, o, eps, u_max, n_instances, seed, min_size)
     h, r, c = x["by_hand"], x["rerun"], x["cross"]
