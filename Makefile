@@ -21,6 +21,7 @@ $(STAMP): requirements.txt pyproject.toml
 book: $(STAMP)
 	$(BIN)/python -m obslib.run --in-place $(if $(JOBS),--jobs $(JOBS))
 	$(BIN)/python -m obsbook.report --profile paper --write book/report.md --front book/_front.md
+	$(BIN)/python -m obsbook.front --figure book/_static/front.png
 	$(BIN)/jupyter-book build . --builder html --warningiserror --nitpick --keep-going
 
 test: $(STAMP)

@@ -17,15 +17,25 @@ of :data:`MARKERS`:
 
 :func:`obsbook.report.render_front` renders them, and
 ``python -m obsbook.report --front book/_front.md`` writes the file.
+
+The front page also shows a picture of the bound at a glance,
+:func:`obslib.viz.pair_form.plot_bound_at_a_glance`, drawn the book's way (:mod:`obsbook.figures`)
+and written by ``python -m obsbook.front --figure book/_static/front.png`` (:func:`write_figure`),
+which ``make book`` runs before the build: like every figure of the book it is made by code, never
+committed.
 """
 
 from __future__ import annotations
 
+import argparse
 from dataclasses import dataclass, field
+from pathlib import Path
 
+from obslib._io import command
 from obslib._validate import as_mapping, as_str
 
-__all__ = ["MARKERS", "Headline", "HEADLINES", "check_headlines"]
+__all__ = ["MARKERS", "Headline", "HEADLINES", "check_headlines", "FIGURE", "front_figure",
+           "write_figure", "main"]
 
 #: Marker comments around the parts of ``book/_front.md`` that the front page includes.
 MARKERS = {
@@ -87,3 +97,79 @@ def check_headlines(records, headlines=HEADLINES) -> dict:
                                  f"but the ledger finds it {by_id[cid].status}; rewrite the "
                                  "headline")
     return by_id
+
+
+
+# -------------------------------------------------------------------------------------------
+# The front page's picture
+# -------------------------------------------------------------------------------------------
+
+#: Where ``make book`` writes the front page's picture, which ``book/intro.md`` shows.
+FIGURE = Path(__file__).resolve().parent.parent / "book" / "_static" / "front.png"
+
+
+def front_figure() -> tuple[bytes, dict]:
+    """The front page's picture as PNG and its description (:func:`obsbook.figures.render`),
+    drawn with the book's figure settings.
+
+    Raises
+    ------
+    ValueError
+        When its texts overlap, are cut off or are smaller than the book allows
+        (:func:`obsbook.figures.problems`).
+    """
+    import matplotlib
+
+    matplotlib.use("agg")
+    import matplotlib.pyplot as plt
+
+    from obslib.viz.pair_form import plot_bound_at_a_glance
+
+    from . import figures
+
+    with matplotlib.rc_context(figures._rc()):
+        fig = plot_bound_at_a_glance()
+        try:
+            png, description = figures.render(fig)
+        finally:
+            plt.close(fig)
+    found = figures.problems(description)
+    if found:
+        raise ValueError("the front page's picture: " + "; ".join(found))
+    return png, description
+
+
+def write_figure(path=FIGURE) -> bool:
+    """Write :func:`front_figure`'s PNG to ``path`` atomically (:func:`obslib._io.write_output`:
+    a temporary file in the same folder, then a rename), leaving the file as it is when it
+    already holds the same image; returns whether anything was written. A failed write leaves
+    the old file as it was."""
+    from obslib._io import write_output
+
+    png, _ = front_figure()
+    return write_output(path, png)
+
+
+@command("python -m obsbook.front")
+def main(argv=None) -> int:
+    """``python -m obsbook.front --figure FILE``: draw the front page's picture and store it
+    (exit status 2 for a path that cannot be written)."""
+    from obslib._io import OutputPathError, as_output_path, write_or_report
+
+    ap = argparse.ArgumentParser(prog="python -m obsbook.front",
+                                 description="Draw the front page's picture.")
+    ap.add_argument("--figure", required=True, help="store the PNG here")
+    args = ap.parse_args(argv)
+    try:
+        path = as_output_path(args.figure)
+    except OutputPathError as exc:
+        ap.error(f"--figure {exc}")
+    png, _ = front_figure()
+    if not write_or_report("python -m obsbook.front", path, png):
+        return 1
+    print(f"{path}: the front page's picture")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -147,9 +147,9 @@ def as_input_file(path) -> Path:
     return p
 
 
-def write_output(path, text: str) -> bool:
-    """Write ``text`` to ``path`` atomically (see the module docstring); returns whether anything
-    was written.
+def write_output(path, text: str | bytes) -> bool:
+    """Write ``text`` (or bytes, such as a PNG) to ``path`` atomically (see the module
+    docstring); returns whether anything was written.
 
     Raises :class:`OSError` if the write itself fails (a full device, say), and
     :class:`OutputPathError` for a path that is not a regular file; the file is then left as it
@@ -163,7 +163,7 @@ def write_output(path, text: str) -> bool:
     (True, False, 'x\\n')
     """
     p = Path(path)
-    data = text.encode("utf-8")
+    data = text if isinstance(text, bytes) else text.encode("utf-8")
     st = _stat(p)
     if st is not None and not stat.S_ISREG(st.st_mode):
         kind = _KINDS.get(stat.S_IFMT(st.st_mode), "not a regular file")
@@ -186,7 +186,7 @@ def write_output(path, text: str) -> bool:
     return True
 
 
-def write_or_report(prog: str, path, text: str) -> bool:
+def write_or_report(prog: str, path, text: str | bytes) -> bool:
     """:func:`write_output` for a command line: a failed write is one line on standard error,
     ``<prog>: error: cannot write <path>: <reason>``, and ``False`` (the command then exits 1).
 

@@ -77,6 +77,9 @@ def _stale() -> bool:
 def book() -> Path:
     """Path of the rendered book, rendering it first (execution off, warnings as errors) if
     needed."""
+    from obsbook import front
+
+    front.write_figure(front.FIGURE)  # as make book does; unchanged when it holds the picture
     if _stale():
         if not run.EXECUTION_PAGE.exists():
             times = json.loads(run.TIMES_FILE.read_text()) if run.TIMES_FILE.exists() else {}
@@ -413,6 +416,23 @@ def test_the_front_page_opens_with_its_summary(seen):
     assert front["height"] <= 5000, front["height"]
     assert front["summary_top"] is not None and front["summary_top"] < 900, front["summary_top"]
     assert front["max_rows"] <= 25, front["max_rows"]
+
+
+def test_the_front_page_shows_the_bound_at_a_glance(book):
+    """The front page shows the idea of the bound in a numbered figure, drawn when the book is
+    built (``python -m obsbook.front``), whose caption links the bound explorer by name."""
+    from obsbook import front
+
+    html = (book / "book" / "intro.html").read_text()
+    fig = re.search(r'<figure[^>]*id="fig-front-bound".*?</figure>', html, re.S)
+    assert fig, "the front page shows no picture"
+    assert re.search(r'caption-number">Figure \d', fig.group(0))
+    assert re.search(r'href="[^"]*02_pair_closed_form\.html#explorer"[^>]*>.*?the bound explorer',
+                     fig.group(0), re.S)
+    chapter = (book / "notebooks" / "02_pair_closed_form.html").read_text()
+    assert 'id="explorer"' in chapter
+    src = re.search(r'<img[^>]*src="([^"]+)"', fig.group(0)).group(1)
+    assert (book / "book" / src).resolve().read_bytes() == front.front_figure()[0]
 
 
 # ------------------------------------------------------------------- the checks themselves can fail

@@ -285,3 +285,59 @@ def test_no_text_of_a_figure_overlaps_is_cut_off_or_is_too_small(path):
         "description obsbook.setup() gives")
     found = [f"cell {i}: {p}" for i, m in described for p in figures.problems(figures.unpack(m))]
     assert not found, f"{path.stem}:\n" + "\n".join(found)
+
+
+# ----------------------------------------------------------------------- the front page's picture
+
+def test_the_front_page_picture_passes_the_checks():
+    """The front page's picture (written by ``make book``, never committed) obeys the rules of
+    every figure: at most the column's width, no text overlapping, cut off or below 10 pt."""
+    from obsbook import front
+
+    png, d = front.front_figure()
+    assert png[:4] == b"\x89PNG"
+    assert d["size"][0] <= figures.COLUMN_PX, d["size"]
+    assert figures.problems(d) == []
+    texts = _texts(d)
+    assert "angle between the sensors (degrees)" in texts and "x (m)" in texts
+    assert min(t["pt"] for t in d["texts"]) * figures.displayed_scale(d) >= figures.MIN_PT
+
+
+def test_the_front_page_picture_is_written_whole_and_only_when_it_changes(tmp_path):
+    from obsbook import front
+
+    path = tmp_path / "front.png"
+    assert front.write_figure(path) is True
+    assert path.read_bytes() == front.front_figure()[0]
+    before = path.stat().st_mtime_ns
+    assert front.write_figure(path) is False  # the same picture: the file is left alone
+    assert path.stat().st_mtime_ns == before
+    assert [p.name for p in tmp_path.iterdir()] == ["front.png"]  # no temporary file left
+
+
+def test_a_failed_write_of_the_front_page_picture_keeps_the_old_one(tmp_path, monkeypatch):
+    import os
+
+    from obsbook import front
+
+    path = tmp_path / "front.png"
+    path.write_bytes(b"old picture")
+
+    def full_disk(*args, **kwargs):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(os, "replace", full_disk)
+    with pytest.raises(OSError):
+        front.write_figure(path)
+    assert path.read_bytes() == b"old picture"
+    assert [p.name for p in tmp_path.iterdir()] == ["front.png"]
+
+
+def test_the_front_page_picture_command_refuses_an_impossible_path(tmp_path, capsys):
+    from obsbook import front
+
+    with pytest.raises(SystemExit) as exc:
+        front.main(["--figure", str(tmp_path / "no-such-folder" / "front.png")])
+    assert exc.value.code == 2
+    assert "does not exist" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []

@@ -11,7 +11,7 @@ import numpy as np
 import pandas as pd
 
 from obslib._format import count, number, percent, setting
-from obslib.assignment import greedy_pair_assignment_literal
+from obslib.assignment import greedy_pair_assignment_literal, greedy_pairs_batch
 from obslib.claims.assignment import NEAR_THIRD
 from obslib.studies import assignment as experiments
 from obslib.studies import greedy_tightness as tightness
@@ -21,7 +21,9 @@ from ..prose import pair_math, triple_math
 from ..tables import numbered_table
 
 __all__ = ["charging_table", "glue_intuition", "glue_example", "glue_charging",
-           "glue_greedy_vs_optimum", "glue_worst", "glue_tight"]
+           "glue_greedy_vs_optimum", "glue_worst", "glue_tight", "glue_charging_audit",
+           "glue_signed", "EXERCISE_VALUES", "EXERCISE_NEGATIVE", "exercise_weights",
+           "exercise_numbers", "glue_exercises"]
 
 
 def charging_table(rounds) -> pd.DataFrame:
@@ -217,3 +219,163 @@ def glue_tight(eps: float, greedy, optimum) -> None:
         tight_opt=number(optimum.value),
         tight_ratio=number(greedy.value / optimum.value, 4),
     )
+
+
+def glue_charging_audit(audit) -> None:
+    """The charging argument run on every random instance
+    (:func:`obslib.studies.assignment.charging_audit`): the picks, how many take each number of
+    charged triples, and the steps that fail.
+
+    Parameters
+    ----------
+    audit : obslib.studies.assignment.ChargingAudit
+        The audit's result.
+    """
+    picks = audit.charges_per_pick
+    charged = sum(k * int(c) for k, c in enumerate(picks))  # optimal triples charged in all
+    glue_texts(
+        ca_instances=number(audit.n_instances),
+        ca_picks=number(audit.n_picks),
+        ca_zero=number(picks[0]), ca_one=number(picks[1]), ca_two=number(picks[2]),
+        ca_three=number(picks[3]),
+        ca_not_once=count(audit.n_not_once, of=audit.n_instances),
+        ca_heavier=count(audit.n_heavier, of=charged),
+        ca_over_three=count(audit.n_over_three, of=audit.n_picks),
+        ca_chain=count(audit.n_chain_broken, of=audit.n_instances),
+    )
+
+
+def _triples_rows(W, triples) -> list:
+    return [(triple_math(t), number(float(W[t[0], t[1], t[2]]))) for t in triples]
+
+
+def glue_signed(study, n_instances: int) -> None:
+    """Algorithm 1 on values of both signs (:func:`obslib.studies.assignment.
+    signed_weights_study`): the counts below a third, and the worst instance's picks against
+    the optimum's triples (``tab-03-signed``).
+
+    Parameters
+    ----------
+    study : obslib.studies.assignment.SignedStudy
+        The study's result.
+    n_instances : int
+        Its random instances.
+    """
+    w = study.witness
+    W = np.asarray(w["W"])
+    rows = ([("greedy, pick " + str(k + 1), *r) for k, r in
+             enumerate(_triples_rows(W, w["greedy_triples"]))]
+            + [("optimum", *r) for r in _triples_rows(W, w["optimal_triples"])])
+    negative = int(((study.greedy < 0) & (study.optimum > 0)).sum())
+    glue_texts(
+        sg_n=number(n_instances),
+        sg_below=count(int(study.below_third.sum()), of=n_instances),
+        sg_below_abs=count(int(study.below_third_abs.sum()), of=n_instances),
+        sg_negative=count(negative, of=n_instances),
+        sg_greedy=number(w["greedy"]),
+        sg_opt=number(w["optimum"]),
+        sg_sensors=number(W.shape[0]),
+        sg_targets=number(W.shape[2]),
+        tab_03_signed=numbered_table(
+            [{"who": a, "triple": b, "value": c} for a, b, c in rows],
+            "The instance of values of both signs where the greedy does worst: its picks in "
+            "order, and the optimum's triples.", "tab-03-signed",
+            columns={"": ("who", "s"), "pair and target": ("triple", "s"),
+                     r"value $\omega$": ("value", "s")}),
+    )
+
+
+#: Exercise 1: the values of the pairs of four sensors for two targets, by hand.
+EXERCISE_VALUES = {
+    (0, 1): (0.9, 0.2), (0, 2): (0.5, 0.8), (0, 3): (0.3, 0.1),
+    (1, 2): (0.3, 0.1), (1, 3): (0.2, 0.8), (2, 3): (0.1, 0.1),
+}
+#: Exercise 3: one value of :data:`EXERCISE_VALUES` made negative: ``(pair, target, value)``.
+EXERCISE_NEGATIVE = ((2, 3), 1, -0.5)
+
+
+def exercise_weights(negative: bool = False) -> np.ndarray:
+    """The values of :data:`EXERCISE_VALUES` as an array ``W[i, j, l]`` (symmetric in ``i, j``),
+    with the change of :data:`EXERCISE_NEGATIVE` when ``negative``."""
+    W = np.zeros((4, 4, 2))
+    for (i, j), v in EXERCISE_VALUES.items():
+        W[i, j] = W[j, i] = v
+    if negative:
+        (i, j), l, v = EXERCISE_NEGATIVE
+        W[i, j, l] = W[j, i, l] = v
+    return W
+
+
+def exercise_numbers(n_instances: int, seed: int, targets_min: int, targets_max: int,
+                     extra_max: int, u_max: float) -> dict:
+    """The numbers of the chapter's exercises: the greedy and the optimum on
+    :data:`EXERCISE_VALUES` and with :data:`EXERCISE_NEGATIVE`, and the random instances of the
+    chapter with and without spare sensors (``extra_max`` and 0).
+
+    Parameters
+    ----------
+    n_instances, seed : int
+        The chapter's random instances and their seed.
+    targets_min, targets_max, extra_max : int
+        Their sizes: :math:`L` from ``targets_min`` to ``targets_max``, :math:`N` from
+        :math:`2L` to :math:`2L` + ``extra_max``.
+    u_max : float
+        The speed bound of the pair values.
+    """
+    out = {}
+    for key, neg in (("by_hand", False), ("negative", True)):
+        W = exercise_weights(neg)  # the library's greedy takes values >= 0; its kernel any
+        n, n_targets = W.shape[0], W.shape[2]
+        ii, jj = np.triu_indices(n, 1)
+        picks = greedy_pairs_batch(W[None, ii, jj, :], n)[0][0]
+        P, Q = experiments.pair_assignments(n, n_targets)
+        totals = sum(W[P[:, t], Q[:, t], t] for t in range(n_targets))
+        best = int(np.argmax(totals))
+        out[key] = {"greedy": float(sum(W[i, j, t] for i, j, t in picks)),
+                    "optimum": float(totals[best]),
+                    "greedy_triples": [tuple(map(int, t)) for t in picks],
+                    "optimal_triples": [(int(P[best, t]), int(Q[best, t]), t)
+                                        for t in range(n_targets)]}
+    for key, extra in (("spare", extra_max), ("no_spare", 0)):
+        r = experiments.greedy_vs_optimal(n_instances, seed, (targets_min, targets_max),
+                                          (0, extra), u_max).ratio
+        out[key] = {"optimal": float(np.mean(r >= 1 - 1e-12)), "mean": float(r.mean()),
+                    "min": float(r.min())}
+    return out
+
+
+def glue_exercises(n_instances: int, seed: int, targets_min: int, targets_max: int,
+                   extra_max: int, u_max: float) -> dict:
+    """Glue the numbers of the chapter's exercises (:func:`exercise_numbers`); returns them.
+
+    ``n_instances``, ``seed``, ``targets_min``, ``targets_max``, ``extra_max`` and ``u_max``
+    are those of :func:`exercise_numbers`.
+    """
+    x = exercise_numbers(n_instances, seed, targets_min, targets_max, extra_max, u_max)
+    rows = [{"pair": pair_math(i, j), "t1": number(a), "t2": number(b)}
+            for (i, j), (a, b) in EXERCISE_VALUES.items()]
+    h, n = x["by_hand"], x["negative"]
+    (pi, pj), pl, pv = EXERCISE_NEGATIVE
+    glue_texts(
+        tab_03_exercise=numbered_table(
+            rows, "The values $\\omega$ of the pairs of four sensors for two targets.",
+            "tab-03-exercise", columns={"pair": ("pair", "s"), "$t_1$": ("t1", "s"),
+                                        "$t_2$": ("t2", "s")}),
+        x1_picks=" then ".join(triple_math(t) for t in h["greedy_triples"]),
+        x1_greedy=number(h["greedy"]),
+        x1_opt_triples=" and ".join(triple_math(t) for t in h["optimal_triples"]),
+        x1_opt=number(h["optimum"]),
+        x1_ratio=number(h["greedy"] / h["optimum"]),
+        x2_extra=setting(extra_max),
+        x2_opt_spare=percent(x["spare"]["optimal"]),
+        x2_opt_none=percent(x["no_spare"]["optimal"]),
+        x2_mean_spare=number(x["spare"]["mean"]),
+        x2_mean_none=number(x["no_spare"]["mean"]),
+        x2_min_spare=number(x["spare"]["min"]),
+        x2_min_none=number(x["no_spare"]["min"]),
+        x3_change=f"{triple_math((pi, pj, pl))} to {number(pv)}",
+        x3_greedy=number(n["greedy"]),
+        x3_opt=number(n["optimum"]),
+        x3_ratio=number(n["greedy"] / n["optimum"]),
+    )
+    return x

@@ -10,13 +10,16 @@ from __future__ import annotations
 import numpy as np
 
 import obslib as ob
-from obslib._format import count, number, setting, small, span
+from obslib._format import count, number, percent, setting, small, span
 
 from ..glue import glue_texts
+from ..report import list_table, typeset
 from ..tables import numbered_table
 
-__all__ = ["SCENE_KINDS", "CONDITIONS", "glue_example", "glue_scene_check", "glue_theorem1",
-           "glue_theorem2", "glue_theorem3", "glue_remark1"]
+__all__ = ["SCENE_KINDS", "CONDITIONS", "record_table", "glue_example", "glue_scene_check",
+           "glue_theorem1", "glue_theorem2", "glue_theorem3", "glue_remark1", "glue_rank",
+           "glue_squared_range", "show_lie_rows", "EXERCISE_ROWS", "EXERCISE_U_MAX",
+           "EXERCISE_U_RERUN", "EXERCISE_SHRINK", "exercise_numbers", "glue_exercises"]
 
 #: The kinds of random scene of the Theorem 1 audit, in words.
 SCENE_KINDS = {"generic": "generic positions", "collinear": "all in line with the target",
@@ -174,3 +177,180 @@ def glue_remark1(audit) -> None:
         r1_moving=small(audit.max_moving_error),
         r1_gap=small(audit.min_over_disc_gap, 1e-9),
     )
+
+
+def record_table(record, name: str) -> str:
+    """The table of an evaluated ledger entry (its :class:`obslib.claims.Table`), as a numbered
+    MyST table of the chapter named ``name``: the very cells the report shows.
+
+    Parameters
+    ----------
+    record : obslib.claims.Record
+        The entry, as :func:`obsbook.verdicts.glue_verdicts` returns it.
+    name : str
+        The table's label in the chapter (``tab-NN-...``).
+
+    Examples
+    --------
+    >>> from obslib.claims import Record, Table
+    >>> r = Record("x", "", "", "", "", "reproduced", "", {}, summary="It holds.",
+    ...            table=Table("Two rows.", ("$L$", "ratio"), [(2, 0.951), (3, "none")]))
+    >>> print(record_table(r, "tab-x").splitlines()[0])
+    :::{list-table} Two rows.
+    """
+    t = record.table
+    if t is None:
+        raise ValueError(f"entry {record.id!r} has no table")
+
+    def cell(c):
+        return typeset(c) if isinstance(c, str) else c
+
+    return "\n".join(list_table(typeset(t.caption), [cell(c) for c in t.columns],
+                                [[cell(c) for c in row] for row in t.rows], name=name))
+
+
+def show_lie_rows(rows) -> None:
+    r"""Display the gradients :math:`\nabla L^k_f h_i` (:func:`obslib.symbolic.lie.lie_rows`),
+    one aligned line each.
+
+    Parameters
+    ----------
+    rows : tuple of tuple of sympy.Expr
+        The rows, ``(d/do_x, d/do_y)`` each.
+    """
+    import sympy as sp
+    from IPython.display import Math, display
+
+    lines = [rf"\nabla L^{{{k}}}_f h_i &= \big({sp.latex(a)},\ {sp.latex(b)}\big)"
+             for k, (a, b) in enumerate(rows)]
+    display(Math(r"\begin{aligned}" + r" \\ ".join(lines) + r"\end{aligned}"))
+
+
+def glue_rank(audit) -> None:
+    """What full column rank buys, on random scenes
+    (:func:`obslib.studies.section3.rank_observability_audit`): the scenes of full rank and of
+    rank one, the smallest stretch of the output map over sigma_min, the twins' output gap.
+
+    Parameters
+    ----------
+    audit : obslib.studies.section3.RankAudit
+        The audit's result.
+    """
+    glue_texts(
+        rk_full=number(audit.n_full),
+        rk_deficient=number(audit.n_deficient),
+        rk_ratio=number(audit.min_ratio, 6),
+        rk_twin=small(audit.max_twin_gap),
+        rk_icn=small(audit.max_deficient_icn),
+        rk_span=span(*audit.icn_range),
+    )
+
+
+def glue_squared_range(audit) -> None:
+    """Half the squared range against the range
+    (:func:`obslib.studies.section3.squared_range_audit`): the scenes, the share whose best pair
+    changes, the best pair's value with the range over the one with the square.
+
+    Parameters
+    ----------
+    audit : obslib.studies.section3.SquaredRangeAudit
+        The audit's result.
+    """
+    glue_texts(
+        sq_scenes=number(audit.n_scenes),
+        sq_sensors=number(audit.n_sensors),
+        sq_same_rank=count(audit.same_rank, of=audit.n_scenes),
+        sq_differs=percent(audit.pair_differs),
+        sq_ratio=span(*audit.icn_ratio),
+    )
+
+
+#: Exercise 1: the rows :math:`o - p_i` of two sensors (m) and the speed bound (m/s).
+EXERCISE_ROWS = ((3.0, 0.0), (0.0, 4.0))
+EXERCISE_U_MAX = 1.0
+#: Exercise 2: the speed bound (m/s) at which the running example is rerun.
+EXERCISE_U_RERUN = 3.0
+#: Exercise 3: the rows before and after a change that raises C^-1(O(o)) and lowers sigma_min.
+EXERCISE_SHRINK = {"before": ((2.0, 0.0), (0.0, 1.0)), "after": ((0.4, 0.0), (0.0, 0.4))}
+
+
+def _pair_numbers(rows, u_max: float) -> dict:
+    """sigma_min, sigma_max, C^-1(O(o)) and Theorem 1's bound of the rows ``o - p_i``."""
+    rows = np.asarray(rows, dtype=float)
+    s = np.linalg.svd(rows, compute_uv=False)
+    target = np.zeros(2)
+    bound = float(ob.lower_bound(target - rows, target, u_max))  # sensors at o - row
+    return {"sigma_min": float(s[-1]), "sigma_max": float(s[0]),
+            "icn": float(s[-1] / s[0]), "bound": bound}
+
+
+def exercise_numbers(sensors, target, u_max: float, u_rerun: float = EXERCISE_U_RERUN) -> dict:
+    """The numbers of the chapter's exercises.
+
+    Parameters
+    ----------
+    sensors, target : ndarray
+        The running example's scene.
+    u_max : float
+        The chapter's speed bound.
+    u_rerun : float
+        The speed bound the rerun exercise asks about.
+
+    Returns
+    -------
+    dict
+        ``"by_hand"``: :data:`EXERCISE_ROWS` at :data:`EXERCISE_U_MAX`: ``sigma_min``,
+        ``sigma_max``, ``bound``, the worst control ``u_star`` and the exact value there;
+        ``"rerun"``: the example's bound at ``u_max`` and at ``u_rerun`` and the exact value at
+        the worst control of ``u_rerun``; ``"counter"``: :data:`EXERCISE_SHRINK` before and
+        after (``icn`` and ``bound`` at :data:`EXERCISE_U_MAX`).
+    """
+    rows = np.asarray(EXERCISE_ROWS)
+    hand = _pair_numbers(rows, EXERCISE_U_MAX)
+    u_star = ob.worst_case_control(-rows, np.zeros(2), EXERCISE_U_MAX)
+    hand["u_star"] = np.abs(u_star)  # the sign of the eigenvector is arbitrary
+    hand["exact_at_star"] = float(ob.inverse_condition_number(-rows, np.zeros(2), u_star))
+    u_worst = ob.worst_case_control(sensors, target, u_rerun)
+    rerun = {"sigma_max": float(np.linalg.svd(np.asarray(target) - sensors, compute_uv=False)[0]),
+             "bound": float(ob.lower_bound(sensors, target, u_max)),
+             "bound_rerun": float(ob.lower_bound(sensors, target, u_rerun)),
+             "exact_rerun": float(ob.inverse_condition_number(sensors, target, u_worst))}
+    counter = {k: _pair_numbers(v, EXERCISE_U_MAX) for k, v in EXERCISE_SHRINK.items()}
+    return {"by_hand": hand, "rerun": rerun, "counter": counter}
+
+
+def _vec(v) -> str:
+    return "$(" + ", ".join(setting(float(x)) for x in v) + ")$"
+
+
+def glue_exercises(sensors, target, u_max: float, u_rerun: float = EXERCISE_U_RERUN) -> dict:
+    """Glue the numbers of the chapter's exercises (:func:`exercise_numbers`) and return them.
+
+    ``sensors``, ``target``, ``u_max`` and ``u_rerun`` are those of :func:`exercise_numbers`.
+    """
+    e = exercise_numbers(sensors, target, u_max, u_rerun)
+    h, r, c = e["by_hand"], e["rerun"], e["counter"]
+    glue_texts(
+        x1_rows=" and ".join(_vec(v) for v in EXERCISE_ROWS),
+        x1_u=setting(EXERCISE_U_MAX),
+        x1_smin=number(h["sigma_min"]),
+        x1_smax=number(h["sigma_max"]),
+        x1_bound=number(h["bound"]),
+        x1_ustar=_vec(h["u_star"]),
+        x1_exact=number(h["exact_at_star"]),
+        x2_u=setting(u_max),
+        x2_u_rerun=setting(u_rerun),
+        x2_smax=number(r["sigma_max"]),
+        x2_bound=number(r["bound"]),
+        x2_bound_rerun=number(r["bound_rerun"]),
+        x2_exact_rerun=number(r["exact_rerun"]),
+        x3_before=" and ".join(_vec(v) for v in EXERCISE_SHRINK["before"]),
+        x3_after=" and ".join(_vec(v) for v in EXERCISE_SHRINK["after"]),
+        x3_icn_before=number(c["before"]["icn"]),
+        x3_icn_after=number(c["after"]["icn"]),
+        x3_smin_before=number(c["before"]["sigma_min"]),
+        x3_smin_after=number(c["after"]["sigma_min"]),
+        x3_bound_before=number(c["before"]["bound"]),
+        x3_bound_after=number(c["after"]["bound"]),
+    )
+    return e

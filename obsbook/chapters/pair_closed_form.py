@@ -12,6 +12,7 @@ import numpy as np
 
 from obslib import pair_form as pf
 from obslib._format import count, listing, number, setting, small, span
+from obslib.bounds import pair_bound_polar
 from obslib.claims.pair_form import WEYL_TEX
 
 from ..glue import glue_texts
@@ -19,7 +20,8 @@ from ..tables import numbered_table, rows_table
 
 __all__ = ["show", "show_entries", "equal", "where", "glue_thm4_symbolic", "glue_thm4_numeric",
            "glue_fig2", "glue_thm5", "glue_alpha_star", "glue_weyl", "glue_printed_matrix",
-           "glue_dtheta", "glue_halfpi", "glue_dalpha"]
+           "glue_dtheta", "glue_halfpi", "glue_dalpha", "glue_dalpha_min", "EXERCISE_PAIR",
+           "EXERCISE_U_RERUN", "EXERCISE_ALPHA_UNEQUAL", "exercise_numbers", "glue_exercises"]
 
 
 def show(lhs: str, expr) -> None:
@@ -412,3 +414,95 @@ def glue_dalpha(audit, n_rational_points: int) -> None:
         ratio_span=span(lo, hi),
         slope_min=number(audit.slope_at_alpha0_min),
     )
+
+
+def glue_dalpha_min(audit) -> None:
+    r"""Where :math:`\partial C/\partial\alpha` is smallest for a fixed angle and speed
+    (:func:`obslib.studies.pair_form.dalpha_minimum_audit`): the cases, those with the minimum
+    at a finite :math:`\alpha`, where that is, and the derivative's value at :math:`\alpha = 0`.
+
+    Parameters
+    ----------
+    audit : obslib.studies.pair_form.DalphaMinimumAudit
+        The audit's result.
+    """
+    glue_texts(
+        dm_cases=number(audit.n_cases),
+        dm_angles=number(audit.n_theta),
+        dm_interior=count(audit.n_interior_minimum, of=audit.n_cases),
+        dm_max0=count(audit.n_maximum_at_0, of=audit.n_cases),
+        dm_where=span(*audit.alpha_at_minimum),
+        dm_beyond=span(*audit.beyond_alpha_star),
+        dm_value=span(*audit.minimum),
+        dm_slope0=small(audit.slope_at_0_error),
+        dm_tail=small(audit.at_largest_alpha),
+        dm_largest=number(audit.largest_alpha),
+    )
+
+
+#: Exercise 1: a pair at equal distances (``alpha``), the angle between the sensors
+#: (``theta``, and as TeX) and the speed ``q = u_max / d_io``.
+EXERCISE_PAIR = {"alpha": 1.0, "theta": np.pi / 4, "theta_tex": r"$\pi/4$", "q": 0.5}
+#: Exercise 2: the speed bound (m/s) at which Fig. 2 is redrawn, and the distance ratio of an
+#: unequal pair at a right angle.
+EXERCISE_U_RERUN = 2.0
+EXERCISE_ALPHA_UNEQUAL = 2.0
+
+
+def exercise_numbers(u_max: float, d_io: float, u_rerun: float = EXERCISE_U_RERUN) -> dict:
+    r"""The numbers of the chapter's exercises.
+
+    Returns
+    -------
+    dict
+        ``"by_hand"``: :data:`EXERCISE_PAIR`'s :math:`S = \sqrt{1 + \alpha^4 + 2\alpha^2\cos
+        2\theta}` and its bound (Eq. (9)); ``"rerun"``: the peak of Fig. 2, :math:`1/\sqrt{1 +
+        q^2}`, at the chapter's speed and at ``u_rerun``, and the bound at :math:`\alpha` =
+        :data:`EXERCISE_ALPHA_UNEQUAL`, :math:`\theta = \pi/2` at both; ``"counter"``: at the
+        angle of :data:`EXERCISE_PAIR` and ``q = u_max / d_io``, the maximiser
+        :math:`\alpha^*` and the bound there and at :math:`\alpha = 1`, and the maximiser for
+        a stationary target.
+
+    Parameters
+    ----------
+    u_max, d_io : float
+        The speed bound and the distance of sensor :math:`i` of Fig. 2.
+    u_rerun : float
+        The speed bound the rerun exercise asks about.
+    """
+    e = EXERCISE_PAIR
+    a, th = e["alpha"], e["theta"]
+    S = float(np.sqrt(1 + a**4 + 2 * a**2 * np.cos(2 * th)))
+    q, q2 = u_max / d_io, u_rerun / d_io
+    star, star0 = float(pf.maximising_alpha(th, q)), float(pf.maximising_alpha(th, 0.0))
+    return {
+        "by_hand": {"S": S, "bound": float(pair_bound_polar(a, th, e["q"]))},
+        "rerun": {"q": q, "q_rerun": q2,
+                  "peak": float(pair_bound_polar(1.0, np.pi / 2, q)),
+                  "peak_rerun": float(pair_bound_polar(1.0, np.pi / 2, q2)),
+                  "unequal": float(pair_bound_polar(EXERCISE_ALPHA_UNEQUAL, np.pi / 2, q)),
+                  "unequal_rerun": float(pair_bound_polar(EXERCISE_ALPHA_UNEQUAL, np.pi / 2, q2))},
+        "counter": {"q": q, "alpha_star": star, "at_star": float(pair_bound_polar(star, th, q)),
+                    "at_one": float(pair_bound_polar(1.0, th, q)), "alpha_star_q0": star0},
+    }
+
+
+def glue_exercises(u_max: float, d_io: float, u_rerun: float = EXERCISE_U_RERUN) -> dict:
+    """Glue the numbers of the chapter's exercises (:func:`exercise_numbers`); returns them.
+
+    ``u_max``, ``d_io`` and ``u_rerun`` are those of :func:`exercise_numbers`.
+    """
+    x = exercise_numbers(u_max, d_io, u_rerun)
+    h, r, c = x["by_hand"], x["rerun"], x["counter"]
+    e = EXERCISE_PAIR
+    glue_texts(
+        x1_alpha=setting(e["alpha"]), x1_theta=e["theta_tex"], x1_q=setting(e["q"]),
+        x1_S=number(h["S"]), x1_bound=number(h["bound"]),
+        x2_u=setting(u_max), x2_d=setting(d_io), x2_u_rerun=setting(u_rerun),
+        x2_alpha=setting(EXERCISE_ALPHA_UNEQUAL),
+        x2_peak=number(r["peak"]), x2_peak_rerun=number(r["peak_rerun"]),
+        x2_unequal=number(r["unequal"]), x2_unequal_rerun=number(r["unequal_rerun"]),
+        x3_q=setting(c["q"]), x3_star=number(c["alpha_star"]), x3_at_star=number(c["at_star"]),
+        x3_at_one=number(c["at_one"]), x3_star0=number(c["alpha_star_q0"]),
+    )
+    return x

@@ -19,10 +19,13 @@ from obslib._format import count, fixed, number, setting
 from ..glue import glue_texts
 from ..prose import sensor_math, set_math
 from ..tables import numbered_table
+from .model_and_bound import record_table
 
 __all__ = ["MEASURE_NAMES", "neg_trace_inverse_exact", "monotone_text", "submodular_text",
            "value_table", "glue_intuition", "glue_case1", "glue_case2", "glue_witnesses",
-           "glue_lower_bound", "glue_measures", "glue_theorem8", "glue_by_hand", "glue_teams"]
+           "glue_lower_bound", "glue_measures", "glue_theorem8", "glue_by_hand", "glue_teams",
+           "glue_logdet", "glue_record_tables", "EXERCISE_ROWS", "EXERCISE_THIRDS",
+           "EXERCISE_N_SENSORS", "exercise_numbers", "glue_exercises"]
 
 #: Theorem 8's measures, in words.
 MEASURE_NAMES = {"trace": "trace", "logdet": "log det", "rank": "rank",
@@ -323,3 +326,116 @@ def glue_teams(half) -> None:
         half_median=number(float(np.median(half))),
         half_optimal=count(int(np.sum(half >= 1 - 1e-12)), of=half.size),
     )
+
+
+def glue_logdet(domains, record) -> None:
+    """Theorem 8's log determinant on its four matrices
+    (:func:`obslib.studies.submodularity.logdet_domain_audit`): the number of exhaustive checks,
+    and the ledger entry's table of the teams where it is ``-inf`` (``tab-04-logdet``).
+
+    Parameters
+    ----------
+    domains : tuple of obslib.studies.submodularity.LogdetDomain
+        The audit's result, one per matrix.
+    record : obslib.claims.Record
+        The entry ``thm8-logdet``, evaluated on the same audit.
+    """
+    glue_texts(
+        ld_checks=number(sum(d.audit.n_instances for d in domains)),
+        ld_matrices=number(len(domains)),
+        tab_04_logdet=record_table(record, "tab-04-logdet"),
+    )
+
+
+def glue_record_tables(verdicts: dict) -> None:
+    """The tables of the entries ``thm8-proof-similar`` (``tab-04-similar``) and
+    ``conclusion-constant-factor`` (``tab-04-guarantees``), from the chapter's evaluated
+    entries (:func:`obsbook.verdicts.glue_verdicts`)."""
+    glue_texts(
+        tab_04_similar=record_table(verdicts["thm8-proof-similar"], "tab-04-similar"),
+        tab_04_guarantees=record_table(verdicts["conclusion-constant-factor"],
+                                       "tab-04-guarantees"),
+    )
+
+
+#: Exercise 1: the rows ``o - p`` of three sensors ``a``, ``b``, ``c`` (the target at 0).
+EXERCISE_ROWS = {"a": (1.0, 0.0), "b": (0.0, 1.0), "c": (1.0, 1.0)}
+#: Exercise 3: third sensors added to the perfect cross of the intuition's first two sensors.
+EXERCISE_THIRDS = ((5.0, 0.0), (-2.0, -2.0), (0.0, -1.0))
+#: Exercise 2: the number of sensors per random instance of the rerun.
+EXERCISE_N_SENSORS = 4
+
+
+def exercise_numbers(P, o, eps: float, u_max: float, n_instances: int, seed: int,
+                     min_size: int) -> dict:
+    r"""The numbers of the chapter's exercises.
+
+    Returns
+    -------
+    dict
+        ``"by_hand"``: the gains of ``c`` (:data:`EXERCISE_ROWS`) at ``{a}`` and ``{a, b}`` in
+        :math:`\log\det(O^T O + \varepsilon I)` and in the trace; ``"rerun"``: the lower bound
+        audit with :data:`EXERCISE_N_SENSORS` sensors (instances not monotone, not
+        submodular); ``"cross"``: :math:`\omega` of the intuition's pair ``P[:2]`` and with each
+        sensor of :data:`EXERCISE_THIRDS` added.
+
+    Parameters
+    ----------
+    P, o : ndarray
+        The intuition's sensors and target.
+    eps : float
+        The prior of the log determinant.
+    u_max : float
+        The speed bound of the bound :math:`\omega`.
+    n_instances, seed, min_size : int
+        The random instances of the rerun exercise, their seed and the smallest team compared.
+    """
+    from obslib import lower_bound, measures
+    from obslib.studies import submodularity as sm
+
+    rows = {k: np.asarray(v) for k, v in EXERCISE_ROWS.items()}
+    target = np.zeros(2)
+
+    def f(names, m):
+        return float(measures.measure(np.array([target - rows[k] for k in names]), target, m,
+                                      eps=eps))
+
+    by_hand = {m: {"at_a": f("ac", m) - f("a", m), "at_ab": f("abc", m) - f("ab", m)}
+               for m in ("logdet", "trace")}
+    lb = sm.lower_bound_audit(n_instances, EXERCISE_N_SENSORS, seed, u_max, min_size)
+    pair = np.asarray(P, dtype=float)[:2]
+    cross = {"pair": float(lower_bound(pair, o, u_max)),
+             "with": [float(lower_bound(np.vstack([pair, t]), o, u_max))
+                      for t in EXERCISE_THIRDS]}
+    return {"by_hand": by_hand,
+            "rerun": {"n": lb.n_instances, "not_monotone": lb.n_not_increasing,
+                      "not_submodular": lb.n_not_submodular},
+            "cross": cross}
+
+
+def glue_exercises(P, o, eps: float, u_max: float, n_instances: int, seed: int,
+                   min_size: int) -> dict:
+    r"""Glue the numbers of the chapter's exercises (:func:`exercise_numbers`); returns them.
+
+    ``P``, ``o``, ``eps``, ``u_max``, ``n_instances``, ``seed`` and ``min_size`` are those of
+    :func:`exercise_numbers`.
+    """
+    x = exercise_numbers(P, o, eps, u_max, n_instances, seed, min_size)
+    h, r, c = x["by_hand"], x["rerun"], x["cross"]
+
+    def vec(v):
+        return "$(" + ", ".join(setting(float(t)) for t in v) + ")$"
+
+    glue_texts(
+        x1_a=vec(EXERCISE_ROWS["a"]), x1_b=vec(EXERCISE_ROWS["b"]), x1_c=vec(EXERCISE_ROWS["c"]),
+        x1_eps=setting(eps),
+        x1_ld_a=number(h["logdet"]["at_a"]), x1_ld_ab=number(h["logdet"]["at_ab"]),
+        x1_tr_a=number(h["trace"]["at_a"]), x1_tr_ab=number(h["trace"]["at_ab"]),
+        x2_n=setting(EXERCISE_N_SENSORS),
+        x2_mono=count(r["not_monotone"], of=r["n"]),
+        x2_sub=count(r["not_submodular"], of=r["n"]),
+        x3_pair=number(c["pair"]), x3_u=setting(u_max),
+        x3_thirds=", ".join(vec(t) for t in EXERCISE_THIRDS),
+        x3_with=", ".join(number(v) for v in c["with"]),
+    )
+    return x

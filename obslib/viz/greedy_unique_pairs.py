@@ -1,5 +1,6 @@
 """Figures of greedy unique pairs (Section IV-A, Algorithm 1 and Theorem 6): maps of the greedy's
-and the optimum's pairs side by side, and the greedy's ratio to the optimum on random instances.
+and the optimum's pairs side by side, the greedy's ratio to the optimum on random instances, and
+the greedy's picks by the number of optimal triples charged to them (Theorem 6's proof).
 """
 
 from __future__ import annotations
@@ -12,7 +13,7 @@ from ..assignment import PairAssignment
 from ._checks import as_series
 from .style import as_figsize, look, sensor_label, target_label
 
-__all__ = ["plot_greedy_and_optimum", "plot_ratio_histogram"]
+__all__ = ["plot_greedy_and_optimum", "plot_ratio_histogram", "plot_charges_per_pick"]
 
 
 def _place_labels(ax, P, labels, dist=10):
@@ -115,4 +116,30 @@ def plot_ratio_histogram(ratio):
     ax.set_ylabel("instances (log scale)")
     ax.set_yscale("log")
     ax.legend(loc="upper left")
+    return fig
+
+
+def plot_charges_per_pick(charges):
+    """The greedy's picks on random instances by the number of optimal triples charged to them
+    in Theorem 6's charging argument, ``charges[k]`` picks with ``k`` triples (``k`` = 0 to 3),
+    as bars with their counts.
+
+    Examples
+    --------
+    >>> fig = plot_charges_per_pick([10, 30, 8, 2])
+    >>> [t.get_text() for t in fig.axes[0].get_xticklabels()]
+    ['0', '1', '2', '3']
+    """
+    import matplotlib.pyplot as plt
+
+    charges = as_series(charges, "charges", 4)
+    if (charges < 0).any():
+        raise ValueError("charges must be counts >= 0")
+    fig, ax = plt.subplots(figsize=(7.5, 3.2))
+    bars = ax.bar(range(4), charges, color=look("greedy").color, width=0.6)
+    ax.bar_label(bars, labels=[number(int(c), math=False) for c in charges], padding=2)
+    ax.set_xticks(range(4), [str(k) for k in range(4)])
+    ax.set_xlabel("optimal triples charged to the pick")
+    ax.set_ylabel("greedy picks")
+    ax.set_ylim(0, 1.15 * max(float(charges.max()), 1.0))
     return fig

@@ -1,6 +1,7 @@
 """Figures of the pair closed form (Theorems 4 and 5): two sensors seen from the target, the
-geometry of Fig. 1, the four panels of Fig. 2, the maximising distance ratio, and the printed
-derivative at :math:`\\theta_{ji} = \\pi/2`."""
+geometry of Fig. 1, the four panels of Fig. 2, the maximising distance ratio, the printed
+derivative at :math:`\\theta_{ji} = \\pi/2`, the derivative in :math:`\\alpha` at a fixed
+angle, and the bound at a glance (the front page's picture)."""
 
 from __future__ import annotations
 
@@ -8,12 +9,13 @@ import numpy as np
 
 from .._validate import as_float_array, as_int, as_nonnegative, as_positive, as_real, as_str
 from ..bounds import pair_bound_polar
-from ..pair_form import maximising_alpha, maximising_alpha_closed
+from ..pair_form import dbound_dalpha, maximising_alpha, maximising_alpha_closed
 from .model_and_bound import draw_rows
 from .style import OKABE_ITO, SEQUENTIAL, as_axes, look
 
 __all__ = ["INTUITION_PAIRS", "plot_pair_intuition", "plot_fig1", "plot_fig2",
-           "plot_maximising_alpha", "plot_halfpi_derivative"]
+           "plot_maximising_alpha", "plot_halfpi_derivative", "plot_dalpha_minimum",
+           "GLANCE_SPEEDS", "plot_bound_at_a_glance"]
 
 #: The three pairs of the intuition: ``(alpha, theta_ji, theta_ji in TeX)``, by name.
 INTUITION_PAIRS = {
@@ -380,4 +382,120 @@ def plot_halfpi_derivative(alpha_max: float = 4.0, n: int = 801):
     ax1.set_ylabel(r"$\partial C/\partial\alpha$")
     ax1.legend(loc="lower right")
     ax1.set_title(r"derivative at $\theta = \pi/2$, $q = 1$")
+    return fig
+
+
+def plot_dalpha_minimum(theta: float = np.pi / 4, u_over_d=(0.0, 1.0), n: int = 800):
+    r"""The derivative :math:`\partial C/\partial\alpha` of the pair bound over
+    :math:`\alpha \in [10^{-2}, 10^{2}]` (``n`` points spaced evenly in :math:`\log\alpha`) at
+    the angle ``theta``, one curve per speed :math:`q = u_{\max}/d_{io}` of ``u_over_d``: a dot
+    where it crosses zero, at the maximiser :math:`\alpha^*` of the bound, and a cross at its
+    smallest value on the grid.
+
+    Examples
+    --------
+    >>> fig = plot_dalpha_minimum(n=200)
+    >>> [t.get_text() for t in fig.axes[0].get_legend().get_texts()][:2]
+    ['$q = 0$', '$q = 1$']
+    """
+    import matplotlib.pyplot as plt
+
+    theta = as_real(theta, "theta")
+    qs = as_float_array(u_over_d, "u_over_d")
+    if qs.ndim != 1 or qs.size == 0 or not np.isfinite(qs).all() or (qs < 0).any():
+        raise ValueError("u_over_d must be a non-empty list of finite non-negative speeds")
+    a = np.geomspace(1e-2, 1e2, as_int(n, "n", 2))
+    fig, ax = plt.subplots(figsize=(7.5, 3.8))
+    for k, q in enumerate(qs.tolist()):
+        d = dbound_dalpha(a, theta, q)
+        colour = list(OKABE_ITO.values())[k % len(OKABE_ITO)]
+        ax.semilogx(a, d, color=colour, label=f"$q = {q:g}$")
+        star = float(maximising_alpha(theta, q))
+        ax.plot(star, 0.0, "o", color=colour, ms=7)
+        j = int(np.argmin(d))
+        ax.plot(a[j], d[j], "x", color=colour, ms=9, mew=2)
+    ax.axhline(0, color="0.6", lw=0.8)
+    ax.plot([], [], "ko", ms=6, label=r"$\alpha^*$: $C$ largest")
+    ax.plot([], [], "kx", ms=7, mew=2, label=r"$\partial C/\partial\alpha$ smallest")
+    ax.set_xlabel(r"$\alpha = d_{jo}/d_{io}$")
+    ax.set_ylabel(r"$\partial C/\partial\alpha$")
+    ax.legend(loc="upper right")
+    return fig
+
+
+#: The speeds :math:`q = u_{\max}/d_{io}` of the front page's bound-against-angle panel.
+GLANCE_SPEEDS = (0.0, 0.5, 1.0, 2.0)
+
+
+def plot_bound_at_a_glance(theta: float = 2 * np.pi / 5, u_over_d=GLANCE_SPEEDS,
+                           n: int = 361):
+    r"""The idea of the bound at a glance. Left: a target with two range sensors at the same
+    distance, the angle ``theta`` between them as the target sees them, and the disc of
+    velocities the target may have, :math:`\lVert u_o\rVert \le u_{\max}` (drawn for
+    :math:`q = 1`), with the worst one along the direction the sensors see best. Right: the
+    pair bound (Theorem 4, :math:`\alpha = 1`) against the angle between the sensors for each
+    speed :math:`q = u_{\max}/d_{io}` of ``u_over_d``, largest, :math:`1/\sqrt{1 + q^2}`, at a
+    right angle (``n`` angles from 0 to 180 degrees).
+
+    Examples
+    --------
+    >>> fig = plot_bound_at_a_glance(n=37)
+    >>> fig.axes[1].get_xlabel()
+    'angle between the sensors (degrees)'
+    >>> round(float(max(fig.axes[1].lines[0].get_ydata())), 6)  # q = 0: a cross
+    1.0
+    """
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Arc, Circle
+
+    theta = as_real(theta, "theta")
+    if not 0 < theta < np.pi:
+        raise ValueError(f"theta must lie in (0, pi), got {theta}")
+    qs = as_float_array(u_over_d, "u_over_d")
+    if qs.ndim != 1 or qs.size == 0 or not np.isfinite(qs).all() or (qs < 0).any():
+        raise ValueError("u_over_d must be a non-empty list of finite non-negative speeds")
+    n = as_int(n, "n", 3)
+    fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(7.5, 3.6),
+                                   gridspec_kw={"width_ratios": (1.0, 1.25)})
+    # left: the scene, two sensors at distance 1 seen at the angle theta from the target
+    o = np.zeros(2)
+    half = theta / 2
+    sensors = np.array([[-np.cos(half), np.sin(half)], [-np.cos(half), -np.sin(half)]])
+    radius = 0.45  # the disc of velocities, drawn to the scale of the scene
+    ax0.add_patch(Circle(o, radius, color=OKABE_ITO["orange"], alpha=0.25, lw=0))
+    ax0.add_patch(Circle(o, radius, fill=False, ls="--", color=OKABE_ITO["vermillion"], lw=1.2))
+    draw_rows(ax0, sensors, o)
+    rows = o - sensors
+    v = np.linalg.eigh(rows.T @ rows)[1][:, -1]  # the direction the sensors see best
+    v = v * (np.sign(v[0]) or 1.0)
+    ax0.annotate("", radius * v, o, arrowprops=dict(arrowstyle="->", lw=1.8,
+                                                    color=OKABE_ITO["vermillion"]))
+    ax0.add_patch(Arc(o, 1.3, 1.3, theta1=180 - np.degrees(half), theta2=180 + np.degrees(half),
+                      color="0.3", lw=1.0))
+    ax0.text(-0.72, 0.0, r"$\theta_{ji}$", va="center", ha="right")
+    ax0.text(0.62, 0.62, "unknown\nvelocity\n" + r"$|u_o| \leq u_{\max}$", ha="center",
+             va="bottom", color=OKABE_ITO["vermillion"])
+    for k, p in enumerate(sensors):
+        ax0.text(*(1.18 * p), f"$s_{k + 1}$", ha="center", va="center")
+    ax0.set_xlim(-1.25, 1.15)
+    ax0.set_ylim(-1.1, 1.3)
+    ax0.set_aspect("equal")
+    ax0.set_xlabel("x (m)")
+    ax0.set_ylabel("y (m)")
+    ax0.set_title("two range sensors, one target")
+    # right: the bound against the angle, equal distances
+    ang = np.linspace(0.0, np.pi, n)
+    for k, q in enumerate(qs.tolist()):
+        colour = list(OKABE_ITO.values())[k % len(OKABE_ITO)]
+        ax1.plot(np.degrees(ang), pair_bound_polar(1.0, ang, q), color=colour,
+                 label=f"$q = {q:g}$")
+        ax1.plot(90.0, 1 / np.sqrt(1 + q * q), "o", color=colour, ms=5)
+    ax1.axvline(90.0, color="0.6", ls=":", lw=1.0)
+    ax1.set_xticks([0, 45, 90, 135, 180])
+    ax1.set_xlim(0, 180)
+    ax1.set_ylim(0, 1.05)
+    ax1.set_xlabel("angle between the sensors (degrees)")
+    ax1.set_ylabel(r"bound on $C^{-1}$")
+    ax1.set_title("the pair bound, equal distances")
+    ax1.legend(title=r"$q = u_{\max}/d_{io}$", loc="upper right", fontsize=10)
     return fig
