@@ -16,9 +16,10 @@ does not depend on the parameter at all.
 :func:`describe` says, per claim and dimension, over which range its verdict holds; the report
 renders that as a table and the command line prints :func:`robustness_table`. The result is
 stored as data (:func:`write_json`, :func:`read_json`) by
-``python -m obslib.claims --robustness --write book/data/robustness.json`` and read by the
-report, since recomputing it takes longer than the rest of the report. Only claims of the paper
-(kind ``"paper"``) have verdicts to vary; the book's own questions are not among them.
+``python -m obslib.claims --robustness --write obslib/data/robustness.json`` (:data:`DATA`) and
+read by the report and the chapters, whose verdicts carry its caveats (:func:`caveats`). Only
+claims of the paper (kind ``"paper"``) have verdicts to vary; the other kinds are not among
+them.
 """
 
 from __future__ import annotations

@@ -654,8 +654,10 @@ class DalphaMinimumAudit:
     minimum: tuple  #: smallest and largest value of the minimum (negative: C falls there)
     #: smallest and largest ratio of the alpha of the minimum to the maximiser alpha* of C
     beyond_alpha_star: tuple
-    slope_at_0_error: float  #: largest |derivative at 0 - |sin theta| / sqrt(1 + q^2)|
-    at_largest_alpha: float  #: largest |derivative| at the grid's largest alpha (tends to 0)
+    #: largest error of the slope at 0 against its closed form sin(theta) / sqrt(1 + q^2)
+    slope_at_0_error: float
+    #: largest size of the derivative at the grid's largest alpha (it tends to 0)
+    at_largest_alpha: float
     largest_alpha: float  #: the grid's largest alpha
     bound_at_ends: float  #: largest bound C at alpha = 0 and at the largest alpha
 
