@@ -492,20 +492,27 @@ def render_front(records, headlines=None) -> str:
     by_id = front.check_headlines(records, headlines)
     lines = [front.MARKERS["findings"][0]]
     for h in headlines:
-        said = " ".join(f"{statement_of(by_id[cid])} ([evidence](#{by_id[cid].label}))"
-                        for cid in h.statuses)
-        lines.append(f"- **{typeset(h.lead)}** {said}")
+        said = " ".join(statement_of(by_id[cid]) for cid in h.states)
+        links = ", ".join(f"[{typeset(by_id[cid].title).rstrip('.')}](#{by_id[cid].label})"
+                          for cid in h.statuses)
+        lines.append(f"- **{typeset(h.lead)}** {said} (The evidence: {links}.)")
     lines += [front.MARKERS["findings"][1], "", front.MARKERS["exceptions"][0]]
     paper = [r for r in records if r.kind == "paper"]
-    bad = [r for s in ("refuted", "partly") for r in paper if r.status == s]
-    if bad:
+    refuted = [r for r in paper if r.status == "refuted"]
+    partly = [r for r in paper if r.status == "partly"]
+    if refuted:
         lines += list_table(
-            "The paper's claims that do not hold as printed, refuted first.",
-            ["the paper says", "verdict", "what we found"],
-            [[f"[{typeset(r.title).rstrip('.')}](#claim-{r.id})", verdict_line(r),
-              statement_of(r)] for r in bad],
-            name="table-intro-exceptions", widths=(3, 2, 5))
-    else:
+            "The paper's claims that the evidence refutes as printed.",
+            ["the paper says", "what we found"],
+            [[f"[{typeset(r.title).rstrip('.')}](#claim-{r.id})", statement_of(r)]
+             for r in refuted],
+            name="table-intro-exceptions", widths=(2, 5))
+    if partly:
+        lines += ["", f"{count(len(partly)).capitalize()} more "
+                  + ("claim holds" if len(partly) == 1 else "claims hold")
+                  + " only in part: the [report](#report-exceptions) lists them with what holds "
+                  "instead."]
+    if not refuted and not partly:
         lines.append("Every claim of the paper holds as printed.")
     lines.append(front.MARKERS["exceptions"][1])
     return "\n".join(lines) + "\n"
@@ -571,7 +578,8 @@ def render_report(records, profile: str = "paper", targets=None, robustness=None
                         ["claim", "verdict", "evidence"],
                         [[title(r), verdict_line(r), evidence(r)] for r in paper],
                         name="tab-report-claims", widths=(5, 2, 3)) + [""]
-    lines += ["## What does not hold as printed", "", MARKERS["exceptions"][0]]
+    lines += ["(report-exceptions)=", "## What does not hold as printed", "",
+              MARKERS["exceptions"][0]]
     lines += exceptions_table(records)
     lines += [MARKERS["exceptions"][1], "", "## The claims one by one", ""]
     for r in paper:

@@ -20,7 +20,13 @@ def test_a_headline_must_agree_with_the_ledger():
     recs = [_record("a", "reproduced"), _record("b", "refuted", summary="It fails.")]
     ok = front.Headline("A holds, B does not.", {"a": "reproduced", "b": "refuted"})
     text = report.render_front(recs, (ok,))
-    assert "- **A holds, B does not.** It holds. ([evidence](#a-evidence)) It fails." in text
+    assert ("- **A holds, B does not.** It holds. It fails. (The evidence: [Claim a](#a-evidence), "
+            "[Claim b](#b-evidence).)") in text
+    one = front.Headline("B does not hold.", {"a": "reproduced", "b": "refuted"}, ("b",))
+    assert "- **B does not hold.** It fails. (The evidence: [Claim a]" in report.render_front(
+        recs, (one,))
+    with pytest.raises(ValueError, match="states an entry it asserts nothing of"):
+        front.Headline("C.", {"a": "reproduced"}, ("c",))
     wrong = front.Headline("Both hold.", {"a": "reproduced", "b": "reproduced"})
     with pytest.raises(ValueError, match="asserts 'b' is reproduced, but the ledger finds it"):
         report.render_front(recs, (wrong,))
@@ -28,18 +34,21 @@ def test_a_headline_must_agree_with_the_ledger():
         report.render_front(recs, (front.Headline("C.", {"c": "reproduced"}),))
 
 
-def test_the_exceptions_table_lists_refuted_then_partly_with_their_sentences():
+def test_the_front_lists_the_refuted_claims_and_counts_the_partly_ones():
     recs = [_record("a", "partly", summary="Only in part.",
                     caveat="Partly at the paper's values; refuted with twice $u_{\\max}$."),
             _record("b", "refuted", summary="It fails."), _record("c", "reproduced"),
-            _record("d", "differs", kind="code", summary="The code differs.")]
+            _record("d", "differs", kind="code", summary="The code differs."),
+            _record("e", "partly", summary="Also in part.")]
     text = report.render_front(recs, ())
-    table = text.split(front.MARKERS["exceptions"][0])[1]
+    part = text.split(front.MARKERS["exceptions"][0])[1]
+    assert "[Claim b](#claim-b)" in part and "It fails." in part
+    assert "claim-a" not in part and "claim-c" not in part and "claim-d" not in part
+    assert "2 more claims hold only in part" in part and "(#report-exceptions)" in part
+    # the report itself tabulates every claim that does not hold, with its caveat
+    table = "\n".join(report.exceptions_table(recs))
     assert table.index("claim-b") < table.index("claim-a")
-    assert "claim-c" not in table and "claim-d" not in table  # only the paper's claims
-    assert ("**partly** (partly at the paper's values; refuted with twice $u_{\\max}$)"
-            in table)
-    assert "Only in part. Partly at the paper's values; refuted with twice" in table
+    assert "**partly** (partly at the paper's values; refuted with twice $u_{\\max}$)" in table
 
 
 def test_a_box_is_the_entry_s_sentence_with_its_caveat_and_link():
