@@ -15,6 +15,11 @@ of :data:`MARKERS`:
     The table of the paper's claims that do not hold as printed: each claim, its verdict with
     its caveat, and its one sentence.
 
+The same file holds, between the markers of :data:`CODE_MARKERS`, what the ledger finds about the
+authors' code and saved runs (:func:`render_code_notes`), which the notes on the original code
+(``book/original_code.md``) include: so that page, too, states each finding only through its
+entry's one sentence.
+
 ``python -m obsbook.report --front book/_front.md`` writes the file.
 """
 
@@ -26,13 +31,18 @@ from obslib._validate import as_mapping, as_str
 
 from .report import list_table, statement_of, typeset, verdict_line
 
-__all__ = ["MARKERS", "Headline", "HEADLINES", "render_front"]
+__all__ = ["MARKERS", "CODE_MARKERS", "Headline", "HEADLINES", "render_code_notes",
+           "render_front"]
 
 #: Marker comments around the parts of ``book/_front.md`` that the front page includes.
 MARKERS = {
     "findings": ("% findings: start", "% findings: end"),
     "exceptions": ("% exceptions: start", "% exceptions: end"),
 }
+
+#: Marker comments around the findings about the authors' code in ``book/_front.md``, which the
+#: notes on the original code include.
+CODE_MARKERS = ("% code: start", "% code: end")
 
 
 @dataclass(frozen=True)
@@ -83,8 +93,36 @@ def _check(headlines, records) -> dict:
     return by_id
 
 
+def render_code_notes(records) -> str:
+    """MyST of the findings about the authors' code: one bullet per entry of kind ``code``, in
+    the ledger's order, with its title linking to its entry of the report, its status (with its
+    caveat), its one sentence and the link to the section that shows its evidence; between the
+    markers of :data:`CODE_MARKERS`.
+
+    Examples
+    --------
+    >>> from obslib.claims import Record
+    >>> r = Record("c", "", "", "", "", "differs", "", {}, title="The code does X.",
+    ...            label="c-evidence", kind="code", summary="It does Y.")
+    >>> print(render_code_notes([r]))
+    % code: start
+    - [The code does X](#claim-c): **differs**. It does Y. ([evidence](#c-evidence))
+    % code: end
+    <BLANKLINE>
+    """
+    lines = [CODE_MARKERS[0]]
+    code = [r for r in records if r.kind == "code"]
+    lines += [f"- [{typeset(r.title).rstrip('.')}](#claim-{r.id}): {verdict_line(r)}. "
+              f"{statement_of(r)} ([evidence](#{r.label}))" for r in code]
+    if not code:
+        lines.append("The book records no finding about the authors' code.")
+    lines.append(CODE_MARKERS[1])
+    return "\n".join(lines) + "\n"
+
+
 def render_front(records, headlines=HEADLINES) -> str:
-    """MyST of the front page's generated parts (see the module docstring).
+    """MyST of the front page's generated parts and of the findings about the authors' code
+    (:func:`render_code_notes`), as ``book/_front.md`` holds them (see the module docstring).
 
     Raises
     ------
@@ -109,5 +147,5 @@ def render_front(records, headlines=HEADLINES) -> str:
             name="table-intro-exceptions", widths=(3, 2, 5))
     else:
         lines.append("Every claim of the paper holds as printed.")
-    lines.append(MARKERS["exceptions"][1])
-    return "\n".join(lines) + "\n"
+    lines += [MARKERS["exceptions"][1], ""]
+    return "\n".join(lines) + "\n" + render_code_notes(records)
