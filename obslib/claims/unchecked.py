@@ -148,7 +148,6 @@ def _footnote1(p: dict) -> Finding:
     paper="Eq. (4) derived, Eq. (5) \"rewritten\"; Theorem 1 on Eq. (5).",
     quote=r"This equation can be rewritten as,",
     notebook=NOTEBOOK,
-    label="eq4-collapse-evidence",
 )
 def _eq5_collapse(p: dict) -> Finding:
     """The derived matrix has O_d^T O_d = O(o)^T O(o) + N u u^T, Eq. (5) has u u^T. reproduced:
