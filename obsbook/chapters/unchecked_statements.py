@@ -266,8 +266,9 @@ def glue_code_link(commits) -> None:
             for commit, date, author in reversed(commits)]
     glue_texts(
         tab_code_link=rows_table(
-            rows, f"The commits of `{CODE_REPOSITORY}`, oldest first, with their authors.",
-            "tab-code-link", headers=("date", "commit", "author")),
+            rows, "The commits of the repository that holds the code and the saved runs today, "
+            "oldest first, with their authors.", "tab-code-link",
+            headers=("date", "commit", "author")),
         code_printed=f"`{CODE_URL_PRINTED}`",
         code_account=f"`{CODE_ACCOUNT_PRINTED}`",
         code_found=f"`{CODE_REPOSITORY}`",

@@ -355,13 +355,13 @@ FIGURE_RESOLUTION = 0.01
     notebook=NOTEBOOK,
 )
 def _problem3(p: dict) -> Finding:
-    """Both relaxations on Fig. 8's instances (:func:`obslib.studies.unchecked.
-    problem3_relaxations`). agrees: the two values coincide on every instance (then the figure
-    shows Problem 3 whichever was solved); differs: the ordered one, the code's, is larger on some
-    instance, a looser bound than the printed Problem 3; the finding says whether that changes
-    what the figure shows (a plotted mean moving by :data:`FIGURE_RESOLUTION` of the largest one
-    or more). An
-    unordered value above the ordered one would be a solver error and raises."""
+    """Both relaxations on Fig. 8's instances
+    (:func:`obslib.studies.unchecked.problem3_relaxations`). agrees: the two values coincide on
+    every instance (then the figure shows Problem 3 whichever was solved); differs: the ordered
+    one, the code's, is larger on some instance, a looser bound than the printed Problem 3; the
+    finding says whether that changes what the figure shows (a plotted mean moving by
+    :data:`FIGURE_RESOLUTION` of the largest one or more). An unordered value above the ordered
+    one would be a solver error and raises."""
     r = uc.problem3_relaxations(p["problem3_L"], p["problem3_trials"], p["seed"], p["u_max"])
     rel, ordr, gap = r["relaxed"], r["relaxed_ordered"], r["excess"]
     if (gap < -1e-12).any():
