@@ -254,8 +254,9 @@ def glue_jitter(ratios, fractions, margin: dict, n_jitter: int) -> None:
 
 
 def glue_code_link(commits) -> None:
-    """Every commit of the repository that holds the code and the saved runs today, with its
-    date and author (``tab-code-link``), and the two addresses.
+    """Every change recorded in the history of the repository that holds the code and the saved
+    runs today (its commits), with its date and author (``tab-code-link``), and the two
+    addresses.
 
     Parameters
     ----------
@@ -266,9 +267,9 @@ def glue_code_link(commits) -> None:
             for commit, date, author in reversed(commits)]
     glue_texts(
         tab_code_link=rows_table(
-            rows, "The commits of the repository that holds the code and the saved runs today, "
-            "oldest first, with their authors.", "tab-code-link",
-            headers=("date", "commit", "author")),
+            rows, "The changes recorded in the history of the repository that holds the code "
+            "and the saved runs today, oldest first, with their authors.", "tab-code-link",
+            headers=("date", "identifier", "author")),
         code_printed=f"`{CODE_URL_PRINTED}`",
         code_account=f"`{CODE_ACCOUNT_PRINTED}`",
         code_found=f"`{CODE_REPOSITORY}`",

@@ -547,13 +547,13 @@ def _code_link(p: dict) -> Finding:
     exact = all(rp.compare_replay(n).matches for n in ("best-pair", "best-partner", "adversarial"))
     if status == "agrees":
         summary = (f"The printed address names the account `{CODE_ACCOUNT_PRINTED}`, which made "
-                   f"{count(by_printed, of=len(commits))} commits ({first} to {last}) of the "
-                   f"repository of the simulations now found under `{owner}`, so the code is "
-                   "where the paper points, under a new name.")
+                   f"{count(by_printed, of=len(commits))} changes ({first} to {last}) in the "
+                   f"history of the repository of the simulations now found under `{owner}`, so "
+                   "the code is where the paper points, under a new name.")
     else:
-        summary = (f"Only {count(by_printed, of=len(commits))} commits of the repository now "
-                   f"found under `{owner}` were made by the account the printed address names, "
-                   f"`{CODE_ACCOUNT_PRINTED}`.")
+        summary = (f"Only {count(by_printed, of=len(commits))} changes in the history of the "
+                   f"repository now found under `{owner}` were made by the account the printed "
+                   f"address names, `{CODE_ACCOUNT_PRINTED}`.")
     ours = summary + (" Its saved runs are those of the published figures: the experiments' "
                       "model replays them exactly." if exact else
                       " Its saved runs do not all replay.")
@@ -567,7 +567,8 @@ def _code_link(p: dict) -> Finding:
                                [("address printed in the paper", f"`{CODE_URL_PRINTED}`"),
                                 ("repository holding the code and saved runs today",
                                  f"`{CODE_REPOSITORY}`"),
-                                ("its commits", f"{number(len(commits))}, {first} to {last}"),
+                                ("changes in its history",
+                                 f"{number(len(commits))}, {first} to {last}"),
                                 ("their authors", listing([f"`{a}`" for a in authors])),
                                 ("published runs replayed exactly from the saved data",
                                  "3 of 4 (strategy (3)'s run cannot be)" if exact else
