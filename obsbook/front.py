@@ -15,7 +15,10 @@ of :data:`MARKERS`:
     The table of the paper's claims that the evidence refutes as printed, each with its one
     sentence, and how many more hold only in part (the report lists them all).
 
-:func:`obsbook.report.render_front` renders them, and
+The same file holds, between the markers of :data:`CODE_MARKERS`, what the ledger finds about the
+authors' code and saved runs, which the notes on the original code (``book/original_code.md``)
+include: so that page, too, states each finding only through its entry's one sentence.
+:func:`obsbook.report.render_front` renders them all, and
 ``python -m obsbook.report --front book/_front.md`` writes the file.
 
 The front page also shows a picture of the bound at a glance,
@@ -34,14 +37,18 @@ from pathlib import Path
 from obslib._io import command
 from obslib._validate import as_mapping, as_str
 
-__all__ = ["MARKERS", "Headline", "HEADLINES", "check_headlines", "FIGURE", "front_figure",
-           "write_figure", "main"]
+__all__ = ["MARKERS", "CODE_MARKERS", "Headline", "HEADLINES", "check_headlines", "FIGURE",
+           "front_figure", "write_figure", "main"]
 
 #: Marker comments around the parts of ``book/_front.md`` that the front page includes.
 MARKERS = {
     "findings": ("% findings: start", "% findings: end"),
     "exceptions": ("% exceptions: start", "% exceptions: end"),
 }
+
+#: Marker comments around the findings about the authors' code in ``book/_front.md``, which the
+#: notes on the original code include.
+CODE_MARKERS = ("% code: start", "% code: end")
 
 
 @dataclass(frozen=True)

@@ -30,7 +30,7 @@ from obslib.claims import REQUIRED_IDS, STATUSES
 
 __all__ = ["ROOT", "MARKERS", "SECTIONS", "PAPER_LABELS", "render_report", "notebook_targets",
            "typeset", "list_table", "counts_sentence", "quote_myst", "verdict_line",
-           "statement_of", "exceptions_table", "render_front", "main"]
+           "statement_of", "exceptions_table", "render_front", "render_code_notes", "main"]
 
 #: The checkout the book is built from: ``notebooks/`` and ``book/`` live here.
 ROOT = Path(__file__).resolve().parents[1]
@@ -476,6 +476,35 @@ def exceptions_table(records) -> list:
                        for r in bad], widths=(3, 2, 5))
 
 
+def render_code_notes(records) -> str:
+    """MyST of the findings about the authors' code: one bullet per entry of kind ``code``, in
+    the ledger's order, with its title linking to its entry of the report, its status (with its
+    caveat), its one sentence and the link to the section that shows its evidence; between the
+    markers of :data:`obsbook.front.CODE_MARKERS`.
+
+    Examples
+    --------
+    >>> from obslib.claims import Record
+    >>> r = Record("c", "", "", "", "", "differs", "", {}, title="The code does X.",
+    ...            label="c-evidence", kind="code", summary="It does Y.")
+    >>> print(render_code_notes([r]))
+    % code: start
+    - [The code does X](#claim-c): **differs**. It does Y. ([evidence](#c-evidence))
+    % code: end
+    <BLANKLINE>
+    """
+    from .front import CODE_MARKERS
+
+    lines = [CODE_MARKERS[0]]
+    code = [r for r in records if r.kind == "code"]
+    lines += [f"- [{typeset(r.title).rstrip('.')}](#claim-{r.id}): {verdict_line(r)}. "
+              f"{statement_of(r)} ([evidence](#{r.label}))" for r in code]
+    if not code:
+        lines.append("The book records no finding about the authors' code.")
+    lines.append(CODE_MARKERS[1])
+    return "\n".join(lines) + "\n"
+
+
 def render_front(records, headlines=None) -> str:
     """MyST of the front page's generated parts (:mod:`obsbook.front`): the findings, one bullet
     per headline stating its entries' one sentences with a link to their evidence, and the table
@@ -515,7 +544,7 @@ def render_front(records, headlines=None) -> str:
     if not refuted and not partly:
         lines.append("Every claim of the paper holds as printed.")
     lines.append(front.MARKERS["exceptions"][1])
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines) + "\n\n" + render_code_notes(records)
 
 
 def render_report(records, profile: str = "paper", targets=None, robustness=None) -> str:

@@ -97,3 +97,47 @@ def test_the_front_page_states_no_claim_of_its_own():
         assert not re.search(rf"\b{word}\b", own), word
     for start, end in front.MARKERS.values():
         assert f'"{start}"' in text and f'"{end}"' in text
+
+
+def test_the_code_notes_state_each_code_entry_through_its_sentence():
+    recs = [_record("a", "reproduced"),
+            _record("b", "differs", kind="code", summary="The code does less.",
+                    caveat="Differs at the paper's values; agrees with half the seeds."),
+            _record("c", "agrees", kind="code", summary="The code does it.")]
+    text = report.render_code_notes(recs)
+    start, end = front.CODE_MARKERS
+    assert text.startswith(start + "\n") and text.endswith(end + "\n")
+    bullets = text.splitlines()[1:-1]
+    assert bullets == [
+        "- [Claim b](#claim-b): **differs** (differs at the paper's values; agrees with half the "
+        "seeds). The code does less. Differs at the paper's values; agrees with half the seeds. "
+        "([evidence](#b-evidence))",
+        "- [Claim c](#claim-c): **agrees**. The code does it. ([evidence](#c-evidence))"]
+    assert "claim-a" not in text  # a claim of the paper is not a finding about the code
+    assert text in report.render_front(recs, ())
+
+
+def test_committed_code_notes_are_the_ledger_s_code_entries():
+    from obslib.claims import robustness as rb
+
+    recs = claims.evaluate("paper", caveats=rb.caveats())
+    start, end = front.CODE_MARKERS
+    committed = (ROOT / "book" / "_front.md").read_text()
+    part = committed[committed.index(start):committed.index(end) + len(end)] + "\n"
+    assert part == report.render_code_notes(recs), (
+        "book/_front.md is stale: run python -m obsbook.report --front book/_front.md")
+    code = [r for r in recs if r.kind == "code"]
+    assert code and all(f"(#claim-{r.id}): " in part and report.statement_of(r) in part
+                        for r in code)
+
+
+def test_the_notes_on_the_code_state_no_finding_of_their_own():
+    """Outside the included findings, the notes on the original code give settings only: no
+    status word and no share or count the ledger computes."""
+    text = (ROOT / "book" / "original_code.md").read_text()
+    start, end = front.CODE_MARKERS
+    assert f'"{start}"' in text and f'"{end}"' in text
+    own = re.sub(r"```\{include\}.*?```", "", text, flags=re.S)
+    for word in ("agrees", "differs", "reproduced", "refuted", "partly"):
+        assert not re.search(rf"\b{word}\b", own), word
+    assert not re.search(r"\d\s*(%|per ?cent)", own)

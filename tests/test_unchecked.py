@@ -416,9 +416,9 @@ def test_unchecked_statuses_follow_the_evidence():
         "sec5d-logdet-measure"}
     for r in recs.values():
         assert r.notebook == "11_unchecked_statements"
-    # the old id of the derived matrix's entry is gone; its evidence section keeps its target
+    # the old id of the derived matrix's entry is gone, and so is its old target
     assert "eq4-collapse" not in claims.registry()
-    assert recs["eq5-collapse"].label == "eq4-collapse-evidence"
+    assert recs["eq5-collapse"].label == "eq5-collapse-evidence"
 
 
 # --------------------------------------------------------------------------------------------

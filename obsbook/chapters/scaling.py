@@ -68,7 +68,8 @@ def glue_intuition(ceiling: dict, lit_N: int = 2000, lit_L: int = 1000) -> None:
 
 def glue_work(counts: dict) -> None:
     """The pair bounds evaluated on one instance of each size (``tab-09-work``): one pass over
-    all weights, the greedy, their ratio and the literal Algorithm 1.
+    all weights, the greedy, their ratio, the relaxed matching and the literal Algorithm 1; and
+    from which size on the relaxed matching evaluates more than the greedy.
 
     Parameters
     ----------
@@ -76,13 +77,21 @@ def glue_work(counts: dict) -> None:
         :func:`obslib.tools.bench.evaluation_counts`: ``{algorithm: (N, counts)}``.
     """
     lit_counts = dict(zip(*counts["literal Algorithm 1"]))
+    rel_counts = {int(n): int(c) for n, c in zip(*counts["relaxed matching"])}
     n_g, c_g = counts["greedy (geometry)"]
     one = np.array([n * (n - 1) // 2 * (n // 2) for n in n_g])
+    greedy = {int(n): int(c) for n, c in zip(n_g, c_g)}
+    both = sorted(set(rel_counts) & set(greedy))
+    # the smallest size from which on the matching evaluates more bounds than the greedy
+    more = [n for k, n in enumerate(both) if all(rel_counts[m] > greedy[m] for m in both[k:])]
+    n_rel = both[-1]
     rows = pd.DataFrame(
         {"$L$": [number(int(n // 2)) for n in n_g],
          "one pass": [number(int(x)) for x in one],
          "greedy": [number(int(x)) for x in c_g],
          "greedy / one pass": [number(float(x)) for x in c_g / one],
+         "relaxed matching": [number(rel_counts[int(n)]) if int(n) in rel_counts else "\u2013"
+                              for n in n_g],
          "literal Algorithm 1": [number(int(lit_counts[n])) if n in lit_counts else "\u2013"
                                  for n in n_g]},
         index=pd.Index(n_g, name="$N$"),
@@ -94,6 +103,10 @@ def glue_work(counts: dict) -> None:
         frac_big=percent(float(c_g[-1] / one[-1])),
         small_ratio=number(float(c_g[0] / one[0])),
         n_small=number(int(n_g[0])),
+        rel_from=number(more[0]) if more else "no size",
+        n_rel=number(n_rel),
+        rel_over_greedy=number(rel_counts[n_rel] / greedy[n_rel]),
+        rel_frac=percent(rel_counts[n_rel] / (n_rel * (n_rel - 1) // 2 * (n_rel // 2))),
     )
 
 
@@ -120,6 +133,7 @@ def glue_wall_time(measured: dict) -> None:
     """
     t = measured["times"]
     g = dict(zip(t["greedy (geometry)"]["N"], t["greedy (geometry)"]["seconds"]))
+    rel = dict(zip(t["relaxed matching"]["N"], t["relaxed matching"]["seconds"]))
     lit = dict(zip(t["literal Algorithm 1"]["N"], t["literal Algorithm 1"]["seconds"]))
     opt = dict(zip(t["exact optimum"]["N"], t["exact optimum"]["seconds"]))
     n_cmp = max(set(g) & set(lit))
@@ -134,4 +148,7 @@ def glue_wall_time(measured: dict) -> None:
         t_max=number(float(g[max(g)])),
         n_opt=number(int(max(opt))),
         t_opt=number(float(opt[max(opt)])),
+        n_rel_t=number(int(max(rel))),
+        t_rel=number(float(rel[max(rel)])),
+        t_rel_g=number(float(g[max(rel)])),
     )

@@ -1,9 +1,11 @@
-r"""The numbers and tables of the chapter on what the paper states but does not check.
+r"""The numbers and tables of the chapter on what the paper states but does not check, what the
+authors' code does, and one question of the book.
 
 Each ``glue_*`` function formats the result of one check of the chapter (the studies of
 :mod:`obslib.studies.unchecked`, :mod:`obslib.studies.eq4`, :mod:`obslib.studies.replay`,
-:mod:`obslib.studies.hardness` and others) and glues it under the names the chapter's prose
-uses.
+:mod:`obslib.studies.hardness` and others, called with the arguments the ledger's checks use, so
+that the chapter and the ledger share one computation) and glues it under the names the chapter's
+prose uses.
 """
 
 from __future__ import annotations
@@ -11,21 +13,25 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from obslib._format import count, number, percent, setting, small, span
-from obslib.claims.unchecked import N_SPREAD
+from obslib._format import count, listing, number, percent, setting, small, span
+from obslib.claims.assignment import NEAR_THIRD
+from obslib.claims.teams import direction_words
+from obslib.claims.unchecked import MISPRINTS, N_SPREAD
 from obslib.profiles import params
-from obslib.studies import greedy_tightness, replay, teams
-from obslib.studies.published import CODE_REPOSITORY, CODE_URL_PRINTED
+from obslib.studies import greedy_tightness, teams
+from obslib.studies.fig9_measure import FIG9_U_MAX
+from obslib.studies.published import CODE_ACCOUNT_PRINTED, CODE_REPOSITORY, CODE_URL_PRINTED
+from obslib.studies.replay import compare_replay
 from obslib.studies.tracking import FIGURE_TOLERANCE
 
 from ..glue import glue_texts
 from ..prose import PUBLISHED_RUNS, pair_math
-from ..tables import numbered_table
+from ..tables import numbered_table, rows_table
 
-__all__ = ["glue_team_constraint", "glue_one_sensor", "glue_typos", "glue_eq4_example",
-           "glue_eq4", "glue_metric", "glue_jitter", "glue_code_link", "glue_replays",
-           "glue_typicality", "glue_control_ball", "glue_reduction", "glue_reach",
-           "glue_problem3", "glue_fig9_measures"]
+__all__ = ["glue_team_constraint", "glue_one_sensor", "glue_misprints", "glue_typos",
+           "glue_eq4_example", "glue_eq4", "glue_units", "glue_metric", "glue_jitter",
+           "glue_code_link", "glue_replays", "glue_typicality", "glue_control_ball",
+           "glue_reduction", "glue_reach", "glue_problem3", "glue_fig9_measures"]
 
 
 def glue_team_constraint(constraint: dict, fig9: dict) -> None:
@@ -54,9 +60,6 @@ def glue_team_constraint(constraint: dict, fig9: dict) -> None:
             "constraint of Problem 2 against every sensor on every target; totals of "
             "$\\log\\det(O^T O + \\varepsilon I)$ over the targets.", "tab-team-constraint"),
         tc_most=number(int(max(constraint["targets_per_sensor"]))),
-        tc_n=number(int(fig9["compare_N"][-1])),
-        tc_con=number(float(constraint["constrained"][-1])),
-        tc_unc=number(float(constraint["unconstrained"][-1])),
     )
 
 
@@ -78,6 +81,19 @@ def glue_one_sensor(one: dict, n_geometries: int) -> None:
     )
 
 
+def glue_misprints() -> None:
+    """The paper's misprints, as printed and as the book reads them, in the order of the paper
+    (``tab-paper-typos``, the rows of :data:`obslib.claims.unchecked.MISPRINTS`), and how many
+    there are."""
+    glue_texts(
+        tab_paper_typos=rows_table(
+            MISPRINTS, "The misprints of notation, indexing and wording, in the order of the "
+            "paper, and how the book reads them.", "tab-paper-typos",
+            headers=("printed", "read as")),
+        typo_count=number(len(MISPRINTS)),
+    )
+
+
 def glue_typos(chosen) -> None:
     """Algorithm 1's pairs on an instance with a sensor too many, target by target.
 
@@ -89,12 +105,12 @@ def glue_typos(chosen) -> None:
     glue_texts(
         typo_pairs=" ".join(f"$t_{{{l + 1}}}$ gets {pair_math(i, j)};" for i, j, l in
                             sorted(chosen.triples, key=lambda t: t[2]))[:-1],
-        typo_n=count(len(chosen.triples)),
     )
 
 
 def glue_eq4_example(printed: float, derived: float, worst: float) -> None:
-    """The matrix as derived against Eq. (4) on two perpendicular sensors: Theorem 1's bound,
+    """The matrix as derived (Eq. (4)) against Eq. (5) on two perpendicular sensors: Theorem 1's
+    bound,
     the derived matrix's worst case in closed form and on a grid of the disc.
 
     Parameters
@@ -134,6 +150,42 @@ def glue_eq4(audit: dict, below: int, n_geometries: int, n_refine: int, u_max: f
         eq4_below=count(int(below), of=n_refine),
         eq4_min1=number(float(audit[1.0].min())),
         eq4_med100=number(float(np.median(audit[100.0]))),
+    )
+
+
+def glue_units(u: dict) -> None:
+    """The experiments' bound in two units of length (``tab-units``): at step 1 of the published
+    circle run, and the share of its logged steps whose best pair changes with the unit.
+
+    Parameters
+    ----------
+    u : dict
+        :func:`obslib.studies.experiment_details.unit_dependence`.
+    """
+    f = setting(u["factor"])
+
+    def pair(p):
+        return f"$(s_{{{p[0] + 1}}}, s_{{{p[1] + 1}}})$"
+
+    rows = [
+        ("best pair's bound at step 1, lengths as logged", number(u["first_bound"])),
+        (f"the same, every length multiplied by {f}", number(u["first_bound_scaled"])),
+        ("best pair at step 1, lengths as logged and multiplied",
+         f"{pair(u['first_pair'])} and {pair(u['first_pair_scaled'])}"),
+        ("logged steps whose best pair changes with the unit", percent(u["changed"])),
+        ("largest change of a Euclidean bound with the unit", small(u["euclidean_gap"], 1e-12)),
+    ]
+    glue_texts(
+        tab_units=rows_table(
+            rows, "The experiments' bound (Mahalanobis lengths) at the logged estimates of the "
+            f"published circle run of strategy (1), as logged and with the sensors, the "
+            f"estimates and $u_{{\\max}}$ multiplied by {f} and the covariances by "
+            f"{setting(u['factor'] ** 2)}: the same scene in another unit of length.",
+            "tab-units"),
+        units_factor=f,
+        units_first=number(u["first_bound"]),
+        units_first_scaled=number(u["first_bound_scaled"]),
+        units_changed=percent(u["changed"]),
     )
 
 
@@ -179,7 +231,8 @@ def glue_jitter(ratios, fractions, margin: dict, n_jitter: int) -> None:
         The copies per jitter.
     """
     jitter = greedy_tightness.jitter_summary(ratios, fractions)
-    thinned = jitter[max(len(jitter) - 2, 0)]  # the second largest jitter: the layouts thin out
+    # the smallest jitter that lifts the greedy above half the optimum in most copies
+    lifted = next((r for r in jitter if r["below_half"] < 0.5), jitter[-1])
     rows = [{
         "jitter (fraction of the spread)": setting(r["fraction"]),
         "median greedy / optimum": number(r["median"]),
@@ -192,33 +245,34 @@ def glue_jitter(ratios, fractions, margin: dict, n_jitter: int) -> None:
             pd.DataFrame(rows), f"Greedy over optimum for {number(n_jitter)} jittered copies of "
             "the near-tight layout at each size of the jitter.", "tab-jitter"),
         t6_ratio=number(float(margin["ratio"])),
+        t6_near=setting(NEAR_THIRD),
         t6_margin=number(float(margin["relative_margin"])),
         t6_small=setting(fractions[0]),
-        t6_pct_jitter=setting(thinned["fraction"]),
-        t6_pct_below=percent(thinned["below_half"]),
+        t6_pct_jitter=percent(lifted["fraction"]),
+        t6_pct_below=percent(lifted["below_half"]),
     )
 
 
-def glue_code_link(exact: int) -> None:
-    """Where the code and the saved runs are (``tab-code-link``), and how many published runs
-    are replayed exactly.
+def glue_code_link(commits) -> None:
+    """Every change recorded in the history of the repository that holds the code and the saved
+    runs today (its commits), with its date and author (``tab-code-link``), and the two
+    addresses.
 
     Parameters
     ----------
-    exact : int
-        The published runs replayed exactly from the saved data.
+    commits : tuple
+        :func:`obslib.studies.published.code_commits`, newest first.
     """
-    rows = [
-        {"what": "printed in the paper", "where": f"`{CODE_URL_PRINTED}`"},
-        {"what": "the code and saved runs the book reads", "where": f"`{CODE_REPOSITORY}`"},
-        {"what": "published runs replayed exactly from the saved data",
-         "where": f"{count(int(exact), of=len(replay.RUN_NAMES))}"},
-    ]
+    rows = [(date[:10], f"`{commit[:7]}`", f"`{author}`")
+            for commit, date, author in reversed(commits)]
     glue_texts(
-        tab_code_link=numbered_table(
-            pd.DataFrame(rows), "Where the code and the saved runs of the simulations are.",
-            "tab-code-link"),
-        code_exact=count(int(exact), of=len(replay.RUN_NAMES)),
+        tab_code_link=rows_table(
+            rows, "The changes recorded in the history of the repository that holds the code "
+            "and the saved runs today, oldest first, with their authors.", "tab-code-link",
+            headers=("date", "identifier", "author")),
+        code_printed=f"`{CODE_URL_PRINTED}`",
+        code_account=f"`{CODE_ACCOUNT_PRINTED}`",
+        code_found=f"`{CODE_REPOSITORY}`",
     )
 
 
@@ -250,7 +304,7 @@ def glue_replays(comparison: dict, checks: dict) -> None:
                "the largest difference from the log.")
     glue_texts(
         tab_replay=numbered_table(pd.DataFrame(rows), caption, "tab-replay"),
-        replay_fixed_steps=number(replay.compare_replay("fixed-pair").steps),
+        replay_fixed_steps=number(compare_replay("fixed-pair").steps),
         replay_largest=small(max(c.largest for c in comparison.values()), 1e-10),
     )
 
@@ -357,7 +411,6 @@ def glue_reach(exact: dict, time_budget: float) -> None:
             pd.DataFrame(rows), "The exact optimum of Problem 1 on one random Fig. 8 instance "
             "per size, with the greedy's value and the relaxed upper bound Fig. 8 plots.",
             "tab-reach"),
-        np_upto=f"up to $L$ = {number(top)}" if top else "at none of the sizes tried",
         np_reach=reach_text,
     )
 
@@ -369,13 +422,15 @@ def glue_problem3(sweep: dict, unordered: float, ordered: float, trials: int) ->
     Parameters
     ----------
     sweep : dict
-        :func:`obslib.studies.greedy_vs_relaxed.fig8_sweep`.
+        :func:`obslib.studies.unchecked.problem3_relaxations`.
     unordered, ordered : float
         The example's two relaxed values.
     trials : int
         The instances per size.
     """
-    excess = sweep["relaxed_ordered"] / sweep["relaxed"] - 1
+    excess = sweep["excess"]
+    means, means_ordered = sweep["relaxed"].mean(axis=1), sweep["relaxed_ordered"].mean(axis=1)
+    shift = float(np.abs(means_ordered - means).max())  # what Fig. 8 plots: the means per L
     rows = [{
         "$L$": number(int(L)),
         "Problem 3 (mean)": number(float(sweep["relaxed"][a].mean())),
@@ -390,49 +445,60 @@ def glue_problem3(sweep: dict, unordered: float, ordered: float, trials: int) ->
         p3_unordered=number(float(unordered)),
         p3_ordered=number(float(ordered)),
         p3_excess_top=percent(float(excess[-1].max())),
+        p3_shift=number(shift),
+        p3_shift_pct=percent(shift / float(means.max())),
         p3_L_top=number(int(sweep["L"][-1])),
     )
 
 
-def glue_fig9_measures(counts: dict, N, fig9: dict) -> None:
-    """Greedy teams on Fig. 9's instances with four measures: the share of the sensors on
-    target 1 and the evenness of the counts (``tab-fig9-measures``).
+def glue_fig9_measures(sweeps: dict, fig9: dict) -> None:
+    """Greedy teams on Fig. 9's instances with every measure compared: the text's with a
+    control row in each direction tried, the code's with each rule for undefined gains, and the
+    book's prior; the share of the sensors on target 1 and the evenness of the counts
+    (``tab-fig9-measures``).
 
     Parameters
     ----------
-    counts : dict
-        Measure -> the sweep's counts, shape ``(len(N), trials, L)``.
-    N : ndarray
-        The numbers of sensors.
+    sweeps : dict
+        :func:`obslib.studies.fig9_measure.fig9_measure_sweeps`.
     fig9 : dict
         Fig. 9's parameters.
     """
-    measures = {
-        "control": "the text's, $\\log\\det(O^T O + u_o u_o^T)$, $\\lVert u_o \\rVert = 1$",
-        "skipped": "the code's, $\\log\\det(O^T O)$, undefined gains skipped",
-        "first": "the code's, $\\log\\det(O^T O)$, the first undefined gain wins",
-        "prior": "the book's, $\\log\\det(O^T O + \\varepsilon I)$, "
-                 f"$\\varepsilon = {fig9['eps']:g}$",
-    }
-    evenness = {name: teams.evenness(C, N, fig9["n_targets"]).relative
-                for name, C in counts.items()}
-    share = {name: float(C[..., 0].sum() / C.sum()) for name, C in counts.items()}
-    rows = [{
-        "measure": text,
-        "share of the sensors on target 1": percent(share[name]),
-        "spread within a trial over random": span(float(evenness[name].min()),
-                                                  float(evenness[name].max())),
-    } for name, text in measures.items()]
+    N, L = range(fig9["N_min"], fig9["N_max"] + 1), fig9["n_targets"]
+    u = setting(FIG9_U_MAX)
+    measures = [(rf"the text's, $\log\det(O^T O + u_o u_o^T)$, $\lVert u_o \rVert = {u}$, "
+                 f"{direction_words(d)}", C) for d, C in sweeps["text"].items()]
+    measures += [
+        (r"the code's, $\log\det(O^T O)$, undefined gains skipped", sweeps["code"]),
+        (r"the code's, $\log\det(O^T O)$, the first undefined gain taken",
+         sweeps["code-first"]),
+        (rf"the book's, $\log\det(O^T O + \varepsilon I)$, "
+         rf"$\varepsilon = {setting(fig9['eps'])}$", sweeps["prior"]),
+    ]
+
+    def spread(C):
+        return teams.evenness(C, N, L).relative
+
+    def share(C):
+        return float(C[..., 0].sum() / C.sum())
+
+    rows = [(name, percent(share(C)), span(float(spread(C).min()), float(spread(C).max())))
+            for name, C in measures]
+    text_max = max(float(spread(C).max()) for C in sweeps["text"].values())
+    code = spread(sweeps["code"])
     glue_texts(
-        tab_fig9_measures=numbered_table(
-            pd.DataFrame(rows), f"Greedy teams on Fig. 9's instances "
-            f"($L = {fig9['n_targets']}$, $N$ from {fig9['N_min']} to {fig9['N_max']}, "
-            f"{fig9['trials']} trials each) with four measures; the spread is the standard "
-            "deviation of the five counts within a trial over that of a uniformly random "
-            "assignment (below 1: more even than chance).", "tab-fig9-measures"),
-        f9_lit_share=percent(share["skipped"]),
-        f9_control_spread=span(float(evenness["control"].min()),
-                               float(evenness["control"].max())),
-        f9_code_spread=span(float(evenness["skipped"].min()),
-                            float(evenness["skipped"].max())),
+        tab_fig9_measures=rows_table(
+            rows, f"Greedy teams on Fig. 9's instances ($L = {L}$, $N$ from {fig9['N_min']} to "
+            f"{fig9['N_max']}, {number(fig9['trials'])} trials each) with each measure; the "
+            f"spread is the standard deviation of the {number(L)} counts within a trial over "
+            "that of a uniformly random assignment (below 1: more even than chance).",
+            "tab-fig9-measures",
+            headers=("measure", "share of the sensors on target 1",
+                     "spread within a trial over random")),
+        f9_u=u,
+        f9_dirs=listing([f"{number(int(round(np.degrees(d))))}°" for d in sweeps["text"]
+                         if d is not None]),
+        f9_lit_share=percent(share(sweeps["code"])),
+        f9_text_max=number(text_max),
+        f9_code_spread=span(float(code.min()), float(code.max())),
     )

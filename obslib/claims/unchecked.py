@@ -148,7 +148,6 @@ def _footnote1(p: dict) -> Finding:
     paper="Eq. (4) derived, Eq. (5) \"rewritten\"; Theorem 1 on Eq. (5).",
     quote=r"This equation can be rewritten as,",
     notebook=NOTEBOOK,
-    label="eq4-collapse-evidence",
 )
 def _eq5_collapse(p: dict) -> Finding:
     """The derived matrix has O_d^T O_d = O(o)^T O(o) + N u u^T, Eq. (5) has u u^T. reproduced:
@@ -356,13 +355,13 @@ FIGURE_RESOLUTION = 0.01
     notebook=NOTEBOOK,
 )
 def _problem3(p: dict) -> Finding:
-    """Both relaxations on Fig. 8's instances (:func:`obslib.studies.unchecked.
-    problem3_relaxations`). agrees: the two values coincide on every instance (then the figure
-    shows Problem 3 whichever was solved); differs: the ordered one, the code's, is larger on some
-    instance, a looser bound than the printed Problem 3; the finding says whether that changes
-    what the figure shows (a plotted mean moving by :data:`FIGURE_RESOLUTION` of the largest one
-    or more). An
-    unordered value above the ordered one would be a solver error and raises."""
+    """Both relaxations on Fig. 8's instances
+    (:func:`obslib.studies.unchecked.problem3_relaxations`). agrees: the two values coincide on
+    every instance (then the figure shows Problem 3 whichever was solved); differs: the ordered
+    one, the code's, is larger on some instance, a looser bound than the printed Problem 3; the
+    finding says whether that changes what the figure shows (a plotted mean moving by
+    :data:`FIGURE_RESOLUTION` of the largest one or more). An unordered value above the ordered
+    one would be a solver error and raises."""
     r = uc.problem3_relaxations(p["problem3_L"], p["problem3_trials"], p["seed"], p["u_max"])
     rel, ordr, gap = r["relaxed"], r["relaxed_ordered"], r["excess"]
     if (gap < -1e-12).any():
@@ -548,13 +547,13 @@ def _code_link(p: dict) -> Finding:
     exact = all(rp.compare_replay(n).matches for n in ("best-pair", "best-partner", "adversarial"))
     if status == "agrees":
         summary = (f"The printed address names the account `{CODE_ACCOUNT_PRINTED}`, which made "
-                   f"{count(by_printed, of=len(commits))} recorded changes ({first} to {last}) "
-                   f"of the repository of the simulations now found under `{owner}`, so the code "
-                   "is where the paper points, under a new name.")
+                   f"{count(by_printed, of=len(commits))} changes ({first} to {last}) in the "
+                   f"history of the repository of the simulations now found under `{owner}`, so "
+                   "the code is where the paper points, under a new name.")
     else:
-        summary = (f"Only {count(by_printed, of=len(commits))} recorded changes of the repository "
-                   f"now found under `{owner}` were made by the account the printed address names, "
-                   f"`{CODE_ACCOUNT_PRINTED}`.")
+        summary = (f"Only {count(by_printed, of=len(commits))} changes in the history of the "
+                   f"repository now found under `{owner}` were made by the account the printed "
+                   f"address names, `{CODE_ACCOUNT_PRINTED}`.")
     ours = summary + (" Its saved runs are those of the published figures: the experiments' "
                       "model replays them exactly." if exact else
                       " Its saved runs do not all replay.")
@@ -568,7 +567,7 @@ def _code_link(p: dict) -> Finding:
                                [("address printed in the paper", f"`{CODE_URL_PRINTED}`"),
                                 ("repository holding the code and saved runs today",
                                  f"`{CODE_REPOSITORY}`"),
-                                ("its recorded changes",
+                                ("changes in its history",
                                  f"{number(len(commits))}, {first} to {last}"),
                                 ("their authors", listing([f"`{a}`" for a in authors])),
                                 ("published runs replayed exactly from the saved data",

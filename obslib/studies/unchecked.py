@@ -166,8 +166,9 @@ def _team_constraint(N_values, trials, seed, n_targets, eps, side) -> dict:
 
 def problem3_relaxations(L_values, trials: int, seed: int = 0, u_max: float = 1.0) -> dict:
     """The relaxed optimum of Fig. 8 with unordered pairs (Problem 3 as printed) and with ordered
-    pairs (the authors' code), on Fig. 8's instances (:func:`obslib.studies.greedy_vs_relaxed.
-    fig8_sweep`), computed once per arguments (cached) for the chapter and the ledger.
+    pairs (the authors' code), on Fig. 8's instances
+    (:func:`obslib.studies.greedy_vs_relaxed.fig8_sweep`), computed once per arguments (cached)
+    for the chapter and the ledger.
 
     Returns
     -------
