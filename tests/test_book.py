@@ -427,10 +427,10 @@ def test_the_front_page_shows_the_bound_at_a_glance(book):
     fig = re.search(r'<figure[^>]*id="fig-front-bound".*?</figure>', html, re.S)
     assert fig, "the front page shows no picture"
     assert re.search(r'caption-number">Figure \d', fig.group(0))
-    assert re.search(r'href="[^"]*02_pair_closed_form\.html#explorer"[^>]*>.*?the bound explorer',
+    assert re.search(r'href="[^"]*02_pair_closed_form\.html#explore-the-bound"[^>]*>.*?the bound explorer',
                      fig.group(0), re.S)
     chapter = (book / "notebooks" / "02_pair_closed_form.html").read_text()
-    assert 'id="explorer"' in chapter
+    assert 'id="explore-the-bound"' in chapter
     src = re.search(r'<img[^>]*src="([^"]+)"', fig.group(0)).group(1)
     assert (book / "book" / src).resolve().read_bytes() == front.front_figure()[0]
 
@@ -1053,22 +1053,23 @@ def test_api_pages_contents_do_not_clip(server, browser):
 def test_the_explorer_is_in_the_contents_of_its_chapter(book, server, browser):
     """The explorer's section is an entry of the chapter's contents (the right-hand column at
     1400 px), and has the stable label ``explorer``, which any page can link by name
-    (``{ref}`the bound explorer <explorer>```): its anchor is at the section's heading, and the
+    (``{ref}`the bound explorer <explore-the-bound>```): its anchor is at the section's heading, and the
     section holds the explorer."""
     from selenium.webdriver.support.ui import WebDriverWait
     from sphinx.util.inventory import InventoryFile
 
     with open(book / "objects.inv", "rb") as fh:
         labels = InventoryFile.load(fh, "", lambda base, uri: uri)["std:label"]
-    assert labels["explorer"][2] == f"{EXPLORER_PAGE}#explorer", labels["explorer"]
-    assert labels["explorer"][3] == "Explore the bound"
+    assert labels["explore-the-bound"][2] == f"{EXPLORER_PAGE}#explore-the-bound", \
+        labels["explore-the-bound"]
+    assert labels["explore-the-bound"][3] == "Explore the bound"
     browser.set_window_size(WIDTH, 1600)
     browser.get(f"{server}/{EXPLORER_PAGE}")
     WebDriverWait(browser, 20).until(lambda d: d.execute_script(
         "return !!document.querySelector('.bd-sidebar-secondary')"))
     r = browser.execute_script("""
         const a = document.querySelector('.bd-sidebar-secondary a[href="#explore-the-bound"]');
-        const label = document.getElementById('explorer');
+        const label = document.getElementById('explore-the-bound');
         const section = label && label.closest('section');
         return {entry: a ? a.textContent.trim() : null, shown: !!a && a.offsetParent !== null,
                 section: section ? section.id : null,
