@@ -237,9 +237,21 @@ def glue_measures(within_m: dict, example: dict, compare_N, eps: float,
         | {f"one trial at $N = {compare_N[-1]}$": {names[k]: listing([int(c) for c in v])
                                                    for k, v in example.items()}}
     ).rename_axis("measure")
-    glue_texts(tab_measures=numbered_table(
-        table, f"Spread of the counts within a trial (mean over {count(compare_trials)} trials) "
-        "for each measure, and the five targets' counts in one trial.", "tab-08-measures"))
+    # at which sizes each measure spreads the sensors most evenly
+    evenest = [min(within_m, key=lambda m: within_m[m][a]) for a in range(len(compare_N))]
+
+    def sizes(name):
+        ns = [int(n) for n, m in zip(compare_N, evenest) if m == name]
+        return f"$N$ = {listing(ns)}" if ns else "no size compared"
+
+    glue_texts(
+        tab_measures=numbered_table(
+            table, f"Spread of the counts within a trial (mean over {count(compare_trials)} "
+            "trials) for each measure, and the five targets' counts in one trial.",
+            "tab-08-measures"),
+        evenest_nti=sizes("neg_trace_inverse"),
+        evenest_logdet=sizes("logdet"),
+    )
 
 
 def glue_optimum(ratio) -> None:
