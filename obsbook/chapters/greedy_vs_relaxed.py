@@ -19,7 +19,7 @@ from obslib import (
     pair_bounds,
     relaxed_pair_assignment,
 )
-from obslib._format import count, fixed, number, percent, setting, small, span
+from obslib._format import count, fixed, listing, number, percent, setting, small, span
 from obslib.studies.greedy_vs_relaxed import fig8_instance, fig8_summary, fig8_sweep
 from obslib.studies.published import FIG8_PUBLISHED_L20
 
@@ -318,7 +318,7 @@ def hand_instance(seed: int, side: float, u_max: float, n_trials: int = 30) -> t
 def glue_exercise_hand(seed: int, side: float, u_max: float) -> tuple:
     """The numbers of the exercise that solves an instance of :func:`hand_instance` by hand:
     its twelve weights (``tab-07-exercise``), the greedy's two picks, the six assignments of
-    Problem 1 (``tab-07-exercise-six``), the optimum and the relaxed matching.
+    Problem 1 and their totals, the optimum and the relaxed matching.
 
     Parameters
     ----------
@@ -345,10 +345,8 @@ def glue_exercise_hand(seed: int, side: float, u_max: float) -> tuple:
             weights, f"The bounds $\\omega(s_i, s_j, t_l)$ of trial {trial} of Fig. 8 with two "
             "targets, four sensors.", "tab-07-exercise",
             headers=("pair", "target $t_1$", "target $t_2$")),
-        tab_ex07_six=rows_table(
-            [(pair_math(*a), pair_math(*b), number(v)) for (a, b), v in six],
-            "The six assignments of Problem 1 on the instance of the exercise.",
-            "tab-07-exercise-six", headers=("pair for $t_1$", "pair for $t_2$", "total")),
+        exh_six=listing([f"{pair_math(*a)} for $t_1$ with {pair_math(*b)} for $t_2$, {number(v)}"
+                         for (a, b), v in six]),
         exh_first=triple_math(g1),
         exh_first_w=number(float(W[g1])),
         exh_second=triple_math(g2),
