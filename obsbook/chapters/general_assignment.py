@@ -51,9 +51,9 @@ def join_gains(seed: int, side: float, eps_values, eps: float, n_join: int = 10,
     return gains, gains[eps] if eps in gains else median_gains(eps)
 
 
-def glue_intuition(base, eps: float, eps_values) -> None:
+def glue_intuition(base, eps: float, eps_values, gains: dict) -> None:
     """The gains of the first, second, third and last sensor to join a team, at the prior
-    ``eps``, and the largest prior compared.
+    ``eps`` and at the largest prior compared, and that prior.
 
     Parameters
     ----------
@@ -63,7 +63,10 @@ def glue_intuition(base, eps: float, eps_values) -> None:
         The chapter's prior.
     eps_values : list of float
         The priors compared.
+    gains : dict
+        Prior of ``eps_values`` -> its gains (:func:`join_gains`).
     """
+    big = gains[max(eps_values)]
     glue_texts(
         p_eps=setting(eps),
         gain_1=number(float(base[0])),
@@ -71,6 +74,9 @@ def glue_intuition(base, eps: float, eps_values) -> None:
         gain_3=number(float(base[2])),
         gain_10=number(float(base[-1])),
         eps_big=setting(max(eps_values)),
+        big_1=number(float(big[0])),
+        big_10=number(float(big[-1])),
+        n_join=number(len(base)),
     )
 
 
