@@ -12,6 +12,8 @@ import numpy as np
 
 from obslib import tracking as tr
 from obslib._format import count, listing, number, percent, setting, small
+from obslib.controls import disc_controls
+from obslib.published_runs import published_run
 from obslib.studies import experiment_details as details
 from obslib.studies import tracking as study
 from obslib.studies.published import PUBLISHED_ADVERSARIAL
@@ -19,12 +21,17 @@ from obslib.viz.adversarial_target import ADVERSARY_LABELS
 from obslib.viz.tracking import STRATEGY_LABELS as LABEL
 
 from ..glue import glue_texts
-from ..prose import PUBLISHED_RUNS, point, share
+from ..prose import PUBLISHED_RUNS, point, sensor_math, share
 from ..tables import rows_table
 from .two_sensors_tracking import replay_gap
 
 __all__ = ["glue_intuition", "glue_settings", "glue_one_run", "glue_replay", "glue_entrapment",
-           "glue_monte_carlo", "glue_mechanism", "glue_strong", "glue_metric"]
+           "glue_monte_carlo", "glue_mechanism", "full_step_share", "glue_strong", "glue_metric",
+           "valley_steps", "glue_exercise_valley", "glue_exercise_slow"]
+
+#: The exact :math:`C^{-1}` below which the exercise on the fixed pair's valley counts the target
+#: as having reached the valley.
+VALLEY_LEVEL = 0.01
 
 
 def _n_ring(setup) -> int:
@@ -80,6 +87,7 @@ def glue_settings(setup) -> None:
             "tab-06-settings", headers=("setting", "value")),
         n_controls=number(len(setup.control_array)),
         reach=number(float(setup.steps * setup.u_max)),
+        n_moves=number(setup.steps),
         n_transitions=number(setup.steps - 1),
     )
 
@@ -274,6 +282,25 @@ def glue_mechanism(mech: dict, n_seeds: int) -> None:
     )
 
 
+def full_step_share(n_radii: int, n_angles: int) -> float:
+    r"""Along the published adversarial run, the share of its steps at which the best control of
+    a polar grid of the whole disc (the adversary's objective,
+    :func:`obslib.tracking.target_objective`, at its smallest; the first such control) is a
+    full step, of norm :math:`u_{\max}`.
+
+    Parameters
+    ----------
+    n_radii, n_angles : int
+        The polar grid of the disc (:func:`obslib.controls.disc_controls`).
+    """
+    run = published_run("adversarial")
+    setup = tr.PAPER_ADVERSARIAL
+    grid = disc_controls(setup.u_max, n_radii, n_angles)
+    obj = tr.target_objective(setup.sensor_array[run.pairs], run.truth, grid)
+    best = grid[obj.argmin(axis=-1)]
+    return float(np.mean(np.isclose(np.hypot(*best.T), setup.u_max, rtol=1e-9)))
+
+
 def glue_strong(strong: dict, setup, variants: dict, worst: str, lowest: float,
                 n_radii: int, n_angles: int) -> None:
     """The stronger adversaries against the best pair (``tab-06-strong``), the worst of them,
@@ -310,6 +337,10 @@ def glue_strong(strong: dict, setup, variants: dict, worst: str, lowest: float,
         strong_all=share(lowest, n_strong, "runs"),
         disc_entrapped=share(float(strong["disc"]["entrapped"]), n_strong, "runs"),
         disc_gap=small(float(gap_disc["gap"].max()), floor=1e-12),
+        disc_full=share(full_step_share(n_radii, n_angles), len(gap_disc["gap"]), "steps"),
+        next_icn=number(float(strong["next-pair"]["icn_mean"])),
+        paper_icn=number(float(strong["paper"]["icn_mean"])),
+        next_switches=number(float(strong["next-pair"]["switches"])),
         tab_strong=rows_table(
             rows, f"The adversaries against the best pair, {number(n_strong)} runs each: means"
             " over the runs; farthest and smallest: over all runs.", "tab-06-strong",
@@ -344,3 +375,123 @@ def glue_metric(choices: dict) -> None:
         logged_all="every" if all(m["logged_match"] == 1 for m in choices.values())
         else "not every",
     )
+
+
+# ---------------------------------------------------------------------------------------------
+# Exercises
+# ---------------------------------------------------------------------------------------------
+
+
+def valley_steps(setup) -> dict:
+    r"""How far the adversarial target starts from the valley of strategy (3)'s pair, the line
+    through its two sensors, and how many moves of at most :math:`u_{\max}` it needs at least
+    to reach it: the distance :math:`|n^T (o_1 - p)|` of its start :math:`o_1` from the line
+    (:math:`n` a unit normal, :math:`p` either sensor), over :math:`u_{\max}`, rounded up.
+
+    Parameters
+    ----------
+    setup : obslib.tracking.TrackingSetup
+        The adversarial experiment.
+
+    Returns
+    -------
+    dict
+        ``distance``, ``moves`` (the least number of moves) and ``normal``.
+
+    Examples
+    --------
+    >>> from obslib.tracking import PAPER_ADVERSARIAL
+    >>> v = valley_steps(PAPER_ADVERSARIAL)
+    >>> round(v["distance"] ** 2, 9), v["moves"]  # (10 / sqrt(13))^2 and 0.1 per move
+    (7.692307692, 28)
+    """
+    s = setup.sensor_array
+    a, b = s[setup.fixed_pair[0]], s[setup.fixed_pair[1]]
+    d = (b - a) / np.hypot(*(b - a))
+    n = np.array([-d[1], d[0]])
+    dist = abs(float(n @ (np.array(setup.start) - a)))
+    return {"distance": dist, "moves": int(np.ceil(dist / setup.u_max - 1e-12)), "normal": n}
+
+
+def glue_exercise_valley(setup, run) -> dict:
+    """The numbers of the exercise on the fixed pair's valley: the pair and the target's start,
+    the least number of moves to the valley (:func:`valley_steps`), and the first step at which
+    the exact :math:`C^{-1}` the fixed pair faces in ``run`` falls below :data:`VALLEY_LEVEL`.
+
+    Parameters
+    ----------
+    setup : obslib.tracking.TrackingSetup
+        The adversarial experiment.
+    run : obslib.tracking.TrackingResult
+        The adversary against strategy (3), the fixed pair.
+
+    Returns
+    -------
+    dict
+        :func:`valley_steps`, with ``first`` (the step, 1-based, or ``None``).
+    """
+    v = valley_steps(setup)
+    below = np.flatnonzero(run.true_icn[1:] < VALLEY_LEVEL)
+    v["first"] = int(below[0]) + 2 if below.size else None
+    i, j = setup.fixed_pair
+    s = setup.sensor_array
+    glue_texts(
+        ex_pair=f"{sensor_math(i)} = {point(s[i])} and {sensor_math(j)} = {point(s[j])}",
+        ex_start=point(setup.start),
+        ex_u=setting(setup.u_max),
+        ex_level=setting(VALLEY_LEVEL),
+        ex_normal=point(v["normal"], 3),
+        ex_dist=number(v["distance"]),
+        ex_moves=number(v["moves"]),
+        ex_first=(f"at step {number(v['first'])}" if v["first"] is not None else
+                  f"at none of the {number(run.steps)} steps"),
+    )
+    return v
+
+
+def glue_exercise_slow(setup, n_seeds: int, seed: int) -> dict:
+    """The numbers of the exercise that slows the target to a quarter of its speed: the best
+    pair against the paper's adversary at the chapter's speed bound and at a quarter of it,
+    over the same noise seeds (:func:`obslib.studies.tracking.adversary_runs`, what a rerun
+    with that value computes).
+
+    Parameters
+    ----------
+    setup : obslib.tracking.TrackingSetup
+        The adversarial experiment.
+    n_seeds, seed : int
+        The noise seeds: ``seed, ..., seed + n_seeds - 1``.
+
+    Returns
+    -------
+    dict
+        Speed bound -> :func:`obslib.studies.tracking.entrapment_summary` of the best pair's runs.
+    """
+    out = {u: study.entrapment_summary(
+        study.adversary_runs(setup.replace(u_max=u), n_seeds, seed)["best-pair"])
+        for u in (setup.u_max, setup.u_max / 4)}
+    full, slow = out[setup.u_max], out[setup.u_max / 4]
+    frac = tr.ENTRAPMENT_CRITERIA["reach_fraction"]
+    # each condition of entrapment alone (the others switched off: every run meets them)
+    alone = {"reach": {"bound_mean": 0.0, "icn_min": 0.0},
+             "bound": {"reach_fraction": 1.0, "icn_min": 0.0},
+             "icn": {"reach_fraction": 1.0, "bound_mean": 0.0}}
+    fails = {k: sum(not tr.is_entrapped(e, **off) for e in slow["runs"])
+             for k, off in alone.items()}
+    glue_texts(
+        ex_fail_reach=count(fails["reach"], of=n_seeds),
+        ex_fail_bound=count(fails["bound"], of=n_seeds),
+        ex_fail_icn=count(fails["icn"], of=n_seeds),
+        ex_u_slow=setting(setup.u_max / 4),
+        ex_entrapped_slow=share(slow["entrapped"], n_seeds, "runs"),
+        ex_reach_slow=number(slow["reach"]),
+        ex_radius_slow=number(frac * slow["reach"]),
+        ex_radius_full=number(frac * full["reach"]),
+        ex_far_slow=number(slow["max_from_start"]),
+        ex_far_full=number(full["max_from_start"]),
+        ex_icn_slow=number(slow["icn_min"]),
+        ex_icn_full=number(full["icn_min"]),
+        ex_bound_slow=number(slow["bound_mean"]),
+        ex_bound_full=number(full["bound_mean"]),
+    )
+    return out

@@ -19,16 +19,40 @@ from obslib import (
     pair_bounds,
     relaxed_pair_assignment,
 )
-from obslib._format import count, fixed, number, percent, span
-from obslib.studies.greedy_vs_relaxed import fig8_instance
+from obslib._format import count, fixed, listing, number, percent, setting, small, span
+from obslib.studies.greedy_vs_relaxed import fig8_instance, fig8_summary, fig8_sweep
 from obslib.studies.published import FIG8_PUBLISHED_L20
 
 from ..glue import glue_texts
-from ..prose import sensor_math, triple_math
-from ..tables import numbered_table
+from ..prose import pair_math, sensor_math, triple_math
+from ..tables import numbered_table, rows_table
 
 __all__ = ["example", "glue_parameters", "glue_example", "glue_fig8", "glue_optimum",
-           "glue_ordered", "glue_extended"]
+           "glue_problem3", "glue_ordered", "glue_extended", "hand_instance",
+           "glue_exercise_hand", "loose_instance", "glue_exercise_loose", "glue_exercise_speed"]
+
+
+def _two_target_trials(seed: int, side: float, u_max: float, n_trials: int):
+    """Fig. 8's first ``n_trials`` trials with two targets: ``(trial, sensors, targets, W,
+    assignments)``, the assignments of the greedy, the optimum and the relaxed matching by
+    name."""
+    for trial in range(n_trials):
+        S, T = fig8_instance(2, trial, seed, side)
+        W = pair_bounds(S, T, u_max)
+        yield trial, S, T, W, {"greedy": greedy_pair_assignment(W),
+                               "optimal": optimal_pair_assignment(W),
+                               "relaxed": relaxed_pair_assignment(W)}
+
+
+def _example_trial(seed: int, side: float, u_max: float, n_trials: int) -> tuple:
+    """The trial of :func:`example` and its instance."""
+    best = None
+    for trial, S, T, W, res in _two_target_trials(seed, side, u_max, n_trials):
+        margin = min(res["optimal"].value - res["greedy"].value,
+                     res["relaxed"].value - res["optimal"].value)
+        if best is None or margin > best[0]:
+            best = (margin, trial, S, T, W, res)
+    return best[1:]
 
 
 def example(seed: int, side: float, u_max: float, n_trials: int = 30) -> tuple:
@@ -42,17 +66,7 @@ def example(seed: int, side: float, u_max: float, n_trials: int = 30) -> tuple:
         ``(sensors, targets, W, assignments)``: the instance, its pair weights, and the greedy,
         optimal and relaxed assignments by name.
     """
-    best = None
-    for trial in range(n_trials):
-        S, T = fig8_instance(2, trial, seed, side)
-        W = pair_bounds(S, T, u_max)
-        res = {"greedy": greedy_pair_assignment(W), "optimal": optimal_pair_assignment(W),
-               "relaxed": relaxed_pair_assignment(W)}
-        margin = min(res["optimal"].value - res["greedy"].value,
-                     res["relaxed"].value - res["optimal"].value)
-        if best is None or margin > best[0]:
-            best = (margin, S, T, W, res)
-    return best[1:]
+    return _example_trial(seed, side, u_max, n_trials)[1:]
 
 
 def glue_parameters(L_max: int, trials: int, optimum_max_L: int) -> None:
@@ -159,12 +173,37 @@ def glue_optimum(summary, sweep: dict, L_max: int, optimum_max_L: int) -> None:
     if k >= 2:
         texts["gopt_lo"] = number(float((mean["greedy"][1:k] / mean["optimum"][1:k]).min()))
         texts["ropt_hi"] = number(float((mean["relaxed"][1:k] / mean["optimum"][1:k]).max()))
+        # of the distance between the relaxed and the greedy means, the part above the optimum
+        loose = ((mean["relaxed"][1:k] - mean["optimum"][1:k])
+                 / (mean["relaxed"][1:k] - mean["greedy"][1:k]))
+        texts["loose_lo"] = percent(float(loose.min()))
     if L_max >= 2 and optimum_max_L >= 2:  # the trials with two targets, one by one
         g2, o2, r2 = (sweep[key][1] for key in ("greedy", "optimum", "relaxed"))
         texts |= {"n2": number(len(g2)),
                   "n2_greedy_opt": count(int(np.sum(g2 >= o2 - 1e-12)), of=len(g2)),
                   "n2_rel_above": count(int(np.sum(r2 > o2 + 1e-12)), of=len(g2))}
     glue_texts(**texts)
+
+
+def glue_problem3(upper, matching) -> None:
+    """The relaxed matching against Problem 1's optimum and against a 0-1 program of Problem 3
+    on the instances where the optimum is computed: the numbers of the ledger's entries
+    ``problem3-upper-bound`` and ``problem3-matching``, formatted as they format them.
+
+    Parameters
+    ----------
+    upper, matching : obslib.claims.Record
+        The two entries, evaluated with the chapter's parameters.
+    """
+    ev = upper.evidence
+    n = int(ev.get("n_instances", 0))
+    glue_texts(
+        p3_n=number(n),
+        p3_below=count(int(ev.get("below", 0)), of=n),
+        p3_equal=percent(float(ev.get("share_equal", 0.0))),
+        p3_excess=percent(float(ev.get("largest_excess", 0.0))),
+        p3_diff=small(float(matching.evidence.get("largest_relative_difference", 0.0))),
+    )
 
 
 def glue_ordered(summary, sweep: dict, trials: int) -> None:
@@ -193,7 +232,11 @@ def glue_ordered(summary, sweep: dict, trials: int) -> None:
         index=pd.Index(L[sel], name="$L$"),
     )
     gap = np.max(np.abs(mean["relaxed_ordered"] - mean["relaxed"]) / mean["relaxed"])
+    larger = [int(np.sum(ordd[a] > rel[a] + 1e-12)) for a in sel]
+    most = int(np.argmax(larger))
     glue_texts(
+        ordered_most=count(larger[most], of=trials),
+        ordered_most_L=number(int(L[sel][most])),
         tab_ordered=numbered_table(
             rows, "The relaxation as printed (unordered pairs) and as the authors' code solves "
             f"it (ordered pairs), {count(trials)} trials for each $L$.", "tab-07-ordered"),
@@ -221,7 +264,13 @@ def glue_extended(ext: dict, trials_extended: int, summary) -> None:
          "greedy / relaxed": [number(x) for x in g_ext / r_ext]},
         index=pd.Index(ext["L"], name="$L$"),
     )
+    ratio = g_ext / r_ext
+    steady = len(ratio) > 1 and bool(np.all(np.diff(ratio) > 0)) and ratio[0] > summary.ratio[-1]
     glue_texts(
+        ext_trend="keeps growing" if steady else "does not grow steadily",
+        short_L20=percent(float(1 - summary.ratio[-1])),
+        short_last=percent(float(1 - ratio[-1])),
+        L20=number(int(summary.L[-1])),
         tab_ext=numbered_table(
             rows, f"The greedy and the relaxed matching on larger instances, "
             f"{count(trials_extended)} trials each.", "tab-07-extended"),
@@ -229,3 +278,189 @@ def glue_extended(ext: dict, trials_extended: int, summary) -> None:
         ext_L_last=number(int(ext["L"][-1])),
         ratio_L20=number(float(summary.ratio[-1])),
     )
+
+
+# ---------------------------------------------------------------------------------------------
+# Exercises
+# ---------------------------------------------------------------------------------------------
+
+
+def hand_instance(seed: int, side: float, u_max: float, n_trials: int = 30) -> tuple:
+    """An instance of Fig. 8 with two targets to solve by hand: of the first ``n_trials``
+    trials, the first other than :func:`example`'s in which the greedy is not optimal (else the
+    first other than it).
+
+    Parameters
+    ----------
+    seed, side, u_max : as in :func:`example`
+        Fig. 8's seed, the side of its square and the speed bound of the pair bounds.
+    n_trials : int
+        The trials looked at (at least two).
+
+    Returns
+    -------
+    tuple
+        ``(trial, W, assignments)``, as in :func:`example`.
+    """
+    skip = _example_trial(seed, side, u_max, n_trials)[0]
+    first = None
+    for trial, _, _, W, res in _two_target_trials(seed, side, u_max, n_trials):
+        if trial == skip:
+            continue
+        if res["greedy"].value < res["optimal"].value * (1 - 1e-12):
+            return trial, W, res
+        first = first or (trial, W, res)
+    if first is None:
+        raise ValueError("n_trials must be at least 2")
+    return first
+
+
+def glue_exercise_hand(seed: int, side: float, u_max: float) -> tuple:
+    """The numbers of the exercise that solves an instance of :func:`hand_instance` by hand:
+    its twelve weights (``tab-07-exercise``), the greedy's two picks, the six assignments of
+    Problem 1 and their totals, the optimum and the relaxed matching.
+
+    Parameters
+    ----------
+    seed, side, u_max : as in :func:`example`
+        Fig. 8's seed, the side of its square and the speed bound of the pair bounds.
+
+    Returns
+    -------
+    tuple
+        :func:`hand_instance`, and the six assignments as ``((pair 1, pair 2), total)``.
+    """
+    trial, W, res = hand_instance(seed, side, u_max)
+    pairs = [(i, j) for i in range(4) for j in range(i + 1, 4)]
+    weights = [(pair_math(i, j), number(float(W[i, j, 0])), number(float(W[i, j, 1])))
+               for i, j in pairs]
+    six = []
+    for a in pairs:
+        b = tuple(k for k in range(4) if k not in a)
+        six.append(((a, b), float(W[a[0], a[1], 0] + W[b[0], b[1], 1])))
+    g1, g2 = res["greedy"].triples
+    shared = set(res["relaxed"].triples[0][:2]) & set(res["relaxed"].triples[1][:2])
+    glue_texts(
+        tab_ex07=rows_table(
+            weights, f"The bounds $\\omega(s_i, s_j, t_l)$ of trial {trial} of Fig. 8 with two "
+            "targets, four sensors.", "tab-07-exercise",
+            headers=("pair", "target $t_1$", "target $t_2$")),
+        exh_six=listing([f"{pair_math(*a)} for $t_1$ with {pair_math(*b)} for $t_2$, {number(v)}"
+                         for (a, b), v in six]),
+        exh_first=triple_math(g1),
+        exh_first_w=number(float(W[g1])),
+        exh_second=triple_math(g2),
+        exh_second_w=number(float(W[g2])),
+        exh_g=number(res["greedy"].value),
+        exh_o=number(res["optimal"].value),
+        exh_opt=" and ".join(triple_math(t) for t in res["optimal"].triples),
+        exh_r=number(res["relaxed"].value),
+        exh_rel=" and ".join(triple_math(t) for t in res["relaxed"].triples),
+        exh_shared=(f"shares {sensor_math(min(shared))} between the two targets, which Problem 1 "
+                    "forbids" if shared else "shares no sensor, so it is also an assignment of "
+                    "Problem 1"),
+    )
+    return (trial, W, res), six
+
+
+def loose_instance(n_targets: int) -> tuple:
+    """Weights on which the relaxed matching is ``n_targets`` times the optimum of Problem 1:
+    ``N = 2 L`` sensors, and each target ``l`` values only the pair of sensor 0 with sensor
+    ``l + 1`` (weight 1; every other weight 0), so the pairs of Problem 3 can all share sensor 0
+    and those of Problem 1 cannot.
+
+    Parameters
+    ----------
+    n_targets : int
+        The number of targets ``L`` (at least 2).
+
+    Returns
+    -------
+    tuple
+        ``(W, assignments)``, the greedy, optimal and relaxed assignments by name.
+
+    Examples
+    --------
+    >>> W, res = loose_instance(3)
+    >>> [round(res[k].value, 12) for k in ("greedy", "optimal", "relaxed")]
+    [1.0, 1.0, 3.0]
+    """
+    if isinstance(n_targets, bool) or not isinstance(n_targets, int) or n_targets < 2:
+        raise ValueError(f"n_targets must be an integer of at least 2, got {n_targets!r}")
+    W = np.zeros((2 * n_targets, 2 * n_targets, n_targets))
+    for l in range(n_targets):
+        W[0, l + 1, l] = W[l + 1, 0, l] = 1.0
+    return W, {"greedy": greedy_pair_assignment(W), "optimal": optimal_pair_assignment(W),
+               "relaxed": relaxed_pair_assignment(W)}
+
+
+def glue_exercise_loose(sweep: dict, n_targets: int = 4) -> tuple:
+    """The numbers of the exercise that looks for a greedy below a third of the relaxed
+    matching: the totals on :func:`loose_instance`, and the smallest ratio of the greedy to the
+    relaxed matching over Fig. 8's instances.
+
+    Parameters
+    ----------
+    sweep : dict
+        :func:`obslib.studies.greedy_vs_relaxed.fig8_sweep` of the chapter.
+    n_targets : int
+        The number of targets of the constructed instance.
+
+    Returns
+    -------
+    tuple
+        :func:`loose_instance`, and the smallest ratio on Fig. 8's instances.
+    """
+    W, res = loose_instance(n_targets)
+    ratio = sweep["greedy"] / sweep["relaxed"]
+    a, t = np.unravel_index(np.argmin(ratio), ratio.shape)
+    glue_texts(
+        exl_L=number(n_targets),
+        exl_N=number(2 * n_targets),
+        exl_last=sensor_math(n_targets),
+        exl_g=number(res["greedy"].value),
+        exl_o=number(res["optimal"].value),
+        exl_r=number(res["relaxed"].value),
+        exl_ratio=number(res["greedy"].value / res["relaxed"].value),
+        exl_min=number(float(ratio[a, t])),
+        exl_min_L=number(int(sweep["L"][a])),
+        exl_n=number(int(ratio.size)),
+    )
+    return (W, res), float(ratio[a, t])
+
+
+def glue_exercise_speed(summary, L_max: int, trials: int, seed: int, u_max: float, side: float,
+                        factor: float = 10.0) -> dict:
+    """The numbers of the exercise that reruns Fig. 8 with ``factor`` times the speed bound:
+    the greedy over the relaxed matching at ``L = 2`` and at ``L = L_max``, with the chapter's
+    speed bound and with the larger one (what a rerun with that value computes at these sizes:
+    :func:`obslib.studies.greedy_vs_relaxed.fig8_sweep` gives each size the same instances,
+    whichever sizes it is asked for).
+
+    Parameters
+    ----------
+    summary : obslib.studies.greedy_vs_relaxed.Fig8Summary
+        The chapter's Fig. 8.
+    L_max, trials, seed, u_max, side : as in the chapter
+        Fig. 8's sizes, seed, speed bound and square.
+    factor : float
+        How many times the speed bound.
+
+    Returns
+    -------
+    dict
+        ``L`` -> (the ratio at the chapter's speed bound, the ratio at the larger one).
+    """
+    sizes = sorted({2, int(L_max)})
+    fast = fig8_summary(fig8_sweep(sizes, trials, seed, factor * u_max, side))
+    out = {L: (float(summary.ratio[list(summary.L).index(L)]), float(r))
+           for L, r in zip(sizes, fast.ratio)}
+    glue_texts(
+        exs_u=setting(factor * u_max),
+        exs_2=number(out[2][1]),
+        exs_20=number(out[2][0]),
+        exs_last=number(out[sizes[-1]][1]),
+        exs_last0=number(out[sizes[-1]][0]),
+        exs_L=number(sizes[-1]),
+    )
+    return out

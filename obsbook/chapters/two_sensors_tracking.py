@@ -23,10 +23,11 @@ from ..glue import glue_texts
 from ..prose import point, sensor_math, share
 from ..tables import numbered_table, rows_table
 
-__all__ = ["printed", "replay_gap", "glue_settings", "glue_first_steps", "glue_replay",
-           "glue_switches", "glue_largest", "glue_vs_paper", "glue_monte_carlo", "glue_wins",
-           "glue_monte_carlo_claims", "glue_lost", "glue_correlations", "glue_k50",
-           "glue_partners", "glue_metric"]
+__all__ = ["printed", "replay_gap", "ledger_table", "glue_settings", "glue_first_steps",
+           "glue_replay", "glue_switches", "glue_largest", "glue_vs_paper", "glue_typicality",
+           "glue_monte_carlo", "glue_wins", "glue_monte_carlo_claims", "glue_lost",
+           "glue_correlations", "glue_k50", "glue_partners", "glue_speed", "glue_metric",
+           "baseline_approach", "glue_exercise_baseline", "glue_exercise_noise"]
 
 #: The strategies' short names in the glued names: s1, s2, s3.
 SHORT = dict(zip(tr.STRATEGIES, ("s1", "s2", "s3")))
@@ -43,6 +44,24 @@ def printed(key: str, v: float) -> str:
         Its value.
     """
     return fixed(v, PRINTED_DECIMALS[key])
+
+
+def ledger_table(record, name: str) -> str:
+    """The table of a ledger entry (its :class:`obslib.claims.Table`) as a numbered table of the
+    chapter: the numbers of the entry's one computation, formatted once, as the report shows them.
+
+    Parameters
+    ----------
+    record : obslib.claims.Record
+        The evaluated entry (from :func:`obsbook.verdicts.glue_verdicts`).
+    name : str
+        The table's label in the chapter.
+    """
+    table = record.table
+    if table is None:
+        raise ValueError(f"the entry {record.id!r} has no table")
+    rows = [tuple(c if isinstance(c, str) else number(c) for c in row) for row in table.rows]
+    return rows_table(rows, table.caption, name, headers=table.columns)
 
 
 def glue_settings(setup) -> None:
@@ -86,7 +105,8 @@ def glue_settings(setup) -> None:
     ]
     glue_texts(
         n_pairs=number(setup.n_sensors * (setup.n_sensors - 1) // 2),
-        speed=setting(rad * 2 * np.sin(rate / 2)),
+        speed=number(study.circle_speed(setup)),
+        rate=setting(rate),
         tab_settings=rows_table(rows, "The settings of the published runs of Figs. 4-6.",
                                 "tab-05-settings", headers=("setting", "value")),
     )
@@ -240,6 +260,27 @@ def glue_vs_paper(runs: dict, seed: int) -> None:
     )
 
 
+def glue_typicality(batch) -> None:
+    """How the published run of strategy (3), which cannot be replayed, sits among our runs of
+    it (:func:`obslib.studies.tracking.fixed_pair_typicality`): the share of runs like it, and
+    the shares of runs with a higher mean error and trace than it.
+
+    Parameters
+    ----------
+    batch : obslib.tracking.BatchResult
+        Strategy (3)'s runs over the noise seeds.
+    """
+    t = study.fixed_pair_typicality(batch)
+    pct = t["percentile"]  # the percentage of our runs below the published run's value
+    glue_texts(
+        like3=percent(t["share_like"]),
+        fig_tol=percent(study.FIGURE_TOLERANCE),
+        pub3_below_error=percent(1 - pct["mean_error"] / 100),
+        pub3_below_trace=percent(1 - pct["mean_trace"] / 100),
+        n_seeds=number(batch.n_runs),
+    )
+
+
 def glue_monte_carlo(stats: dict, n_seeds: int, steps: int) -> None:
     """The strategies over many noise seeds (``tab-05-mc``): means and standard deviations of
     the bound, the error and the trace, and the pair changes per run.
@@ -296,8 +337,7 @@ def glue_wins(cmp: dict) -> None:
 def glue_monte_carlo_claims(cmp: dict, mc: dict, n_seeds: int) -> None:
     """The Monte Carlo numbers the prose reads the paper's observations with: the shares of
     steps and runs strategy (1) wins, the stretches where strategy (2)'s trace is not clearly
-    above, the means, the steps with a higher mean bound, and how many runs of strategy (3) are
-    like the published one.
+    above, the means and the steps with a higher mean bound.
 
     Parameters
     ----------
@@ -326,28 +366,28 @@ def glue_monte_carlo_claims(cmp: dict, mc: dict, n_seeds: int) -> None:
     b1 = mc["best-pair"].bound[:, 1:]
     higher = {o: float(tr.clearly_lower(mc[o].bound[:, 1:].mean(0), b1.mean(0)).mean())
               for o in tr.STRATEGIES[1:]}
-    # strategy (3): how many of our runs are like the published one (all four numbers within 15 %)
-    r3 = mc["fixed-pair"]
-    per_run3 = {"switches": r3.switches, "mean_bound": r3.bound.mean(axis=1),
-                "mean_error": r3.error.mean(axis=1), "mean_trace": r3.trace_cov.mean(axis=1)}
-    like = np.all([study.near_published(per_run3[key], v)
-                   for key, v in PUBLISHED_CIRCLE["fixed-pair"].items()], axis=0)
     glue_texts(
         **texts,
         run_wins=share(float(study.least_run_wins(cmp)), n_seeds, "runs"),
-        n_seeds=number(n_seeds),
         tie_rtol=setting(tr.TIE_RTOL),
         s2_spans=listing(spans) if spans else "none",
         higher_2=share(higher["best-partner"], steps - 1, "steps"),
         higher_3=share(higher["fixed-pair"], steps - 1, "steps"),
-        like3=percent(float(like.mean())),
-        fig_tol=percent(study.FIGURE_TOLERANCE),
     )
 
 
-def glue_lost(batch, loss: dict, lost_above: float, dist, kmin: int, run) -> None:
+def _flip_span(loss: dict) -> str:
+    """Where the lost runs of :func:`obslib.tracking.track_loss` flip, in words."""
+    fs = loss["flip_step"][loss["lost"]]
+    return (f"between {number(int(fs.min()))} and {number(int(fs.max()))}" if fs.size else
+            "nowhere")
+
+
+def glue_lost(batch, loss: dict, lost_above: float, dist, kmin: int, run, figure_data) -> None:
     """Strategy (3)'s lost runs: how many, how many end at the mirror image, where the estimate
-    flips, and the geometry where the target passes closest to the fixed pair's baseline.
+    flips, the geometry where the target passes closest to the fixed pair's baseline, and the
+    median run's mean error over all its steps, as the figure data average a run (the number
+    of the ledger's entry on the published run's figure data, formatted as it formats it).
 
     Parameters
     ----------
@@ -363,21 +403,22 @@ def glue_lost(batch, loss: dict, lost_above: float, dist, kmin: int, run) -> Non
         The step where it is smallest (1-based).
     run : obslib.tracking.TrackingResult
         Strategy (3)'s single run.
+    figure_data : obslib.claims.Record
+        The ledger's entry ``fig6-figure-data``, evaluated with the chapter's parameters.
     """
     lost = loss["lost"]
-    fs = loss["flip_step"][lost]
     frac_m = float(loss["mirrored"][lost].mean()) if lost.any() else 0.0
     glue_texts(
         n_lost=count(int(lost.sum()), of=batch.n_runs),
         mirrored="all of them" if frac_m == 1 else f"{percent(frac_m)} of them",
-        flip_span=f"between {number(int(fs.min()))} and {number(int(fs.max()))}"
-        if lost.any() else "nowhere",
+        flip_span=_flip_span(loss),
         lost_above=setting(lost_above),
         k_closest=number(kmin),
         dist_closest=number(float(dist.min())),
         bound_closest=number(float(batch.bound[:, kmin - 1].mean())),
         bound_avg3=number(float(batch.bound.mean())),
-        s3_median_error=number(float(np.median(batch.error.mean(axis=1)))),
+        s3_median_error=number(figure_data.evidence["fixed_pair"]["median"]["mean_error"]),
+        n_steps=number(batch.steps),
         pub_s3_error=printed("mean_error", PUBLISHED_CIRCLE["fixed-pair"]["mean_error"]),
         one_s3_error=number(float(run.error.mean())),
     )
@@ -449,7 +490,8 @@ def glue_k50(rate, one, back: float, n_seeds: int, seed: int) -> None:
     )
 
 
-def glue_partners(ps: dict, best: dict, best_bound: int, n_seeds: int) -> None:
+def glue_partners(ps: dict, best: dict, best_bound: int, n_seeds: int, steps: int,
+                  lost_above: float) -> None:
     """Strategy (3) with each partner of the fixed sensor (``tab-05-partner``), and the partners
     that are best by each measure.
 
@@ -462,8 +504,10 @@ def glue_partners(ps: dict, best: dict, best_bound: int, n_seeds: int) -> None:
         the mean bound.
     best_bound : int
         The partner with the highest mean bound.
-    n_seeds : int
-        The noise seeds.
+    n_seeds, steps : int
+        The noise seeds, and the steps of each run.
+    lost_above : float
+        The run-mean error above which a run is lost (:func:`obslib.tracking.track_loss`).
     """
     rows = [(sensor_math(j), number(float(d["mean_bound"])), number(float(d["mean_trace"])),
              number(float(d["mean_error"])), number(float(d["median_error"])),
@@ -471,17 +515,43 @@ def glue_partners(ps: dict, best: dict, best_bound: int, n_seeds: int) -> None:
     measure = {"mean_trace": "mean trace", "mean_error": "mean error",
                "median_error": "median error", "lost": "share of lost runs"}
     s1_best = [measure[key] for key, j in best.items() if j == 0]
-    caption = (f"Strategy (3) with each partner of $s_2$, over {number(n_seeds)} noise seeds."
-               " Mean error: the mean over the runs of the run-mean error; median: that of the"
-               " median run; lost: the share of runs that end at the mirror image.")
+    caption = (f"Strategy (3) with each partner of $s_2$, over {number(n_seeds)} noise seeds, "
+               f"steps 2 to {number(steps)}. Mean error: the mean over the runs of the run-mean "
+               "error; median: that of the median run; lost: the share of runs whose mean error "
+               f"over all steps exceeds {setting(lost_above)}.")
     glue_texts(
         tab_partner=rows_table(
             rows, caption, "tab-05-partner",
             headers=("partner of s₂", "mean bound", "mean trace Σ (length unit²)",
                      "mean error ε (length unit)", "median error (length unit)", "runs lost")),
         s1_best_by=listing(s1_best) if s1_best else "no measure",
+        s1_best_n=count(len(s1_best), of=len(measure)),
         partner_best_error=sensor_math(best["mean_error"]),
         partner_best_bound=sensor_math(best_bound),
+    )
+
+
+def glue_speed(mc: dict, at_speed: dict, record) -> None:
+    """The comparison of the strategies with the paper's speed bound and with the target's own
+    speed in the sensors' bound (``tab-05-speed``, the ledger's table of ``sec5a-umax-speed``),
+    how loose the paper's bound is, and how often strategy (1) chooses the same pair with both.
+
+    Parameters
+    ----------
+    mc, at_speed : dict
+        Strategy -> its runs (:class:`obslib.tracking.BatchResult`) with the paper's speed
+        bound, and with the target's speed, over the same noise seeds.
+    record : obslib.claims.Record
+        The ledger's entry ``sec5a-umax-speed``, evaluated with the chapter's parameters.
+    """
+    ev = record.evidence
+    same = (mc["best-pair"].pairs == at_speed["best-pair"].pairs).all(axis=-1)
+    glue_texts(
+        tab_speed=ledger_table(record, "tab-05-speed"),
+        speed_ratio=number(ev["ratio"]),
+        speed_same_pairs=percent(float(same.mean())),
+        speed_bound_paper=number(ev["paper_u_max"]["mean_bound"]["best-pair"]),
+        speed_bound_true=number(ev["true_speed"]["mean_bound"]["best-pair"]),
     )
 
 
@@ -524,3 +594,133 @@ def glue_metric(by_metric: dict, agree: float, least_wins: float, back: dict,
         other_wins=share(float(least_wins), n_seeds, "runs"),
         **each,
     )
+
+
+# ---------------------------------------------------------------------------------------------
+# Exercises
+# ---------------------------------------------------------------------------------------------
+
+
+def baseline_approach(setup) -> dict:
+    r"""Where the circle of the experiment comes closest to the baseline of strategy (3)'s pair,
+    the line through its two sensors, by hand: with :math:`n` a unit normal of the baseline and
+    :math:`h = n^T (c - p_a)` the signed distance of the circle's centre :math:`c`, the circle
+    comes within :math:`|h| - \rho` of the line, at the point :math:`c - \rho\,\mathrm{sign}(h)\,n`,
+    reached at the angle :math:`\varphi` of :math:`-\mathrm{sign}(h)\,n` from the start, so at
+    step :math:`k = 1 + \varphi / \omega` (the nearer of the two steps around it).
+
+    Parameters
+    ----------
+    setup : obslib.tracking.TrackingSetup
+        A circle experiment whose circle does not cross the baseline.
+
+    Returns
+    -------
+    dict
+        ``center_distance`` (:math:`|h|`), ``closest`` (:math:`|h| - \rho`), ``angle``
+        (:math:`\varphi`, rad, in :math:`[0, 2\pi)`), ``step`` (1-based) and ``normal``.
+
+    Examples
+    --------
+    >>> from obslib.tracking import PAPER_CIRCLE
+    >>> a = baseline_approach(PAPER_CIRCLE)
+    >>> round(a["center_distance"] ** 2, 9), round(a["closest"], 3), a["step"]
+    (13.0, 0.606, 207)
+    """
+    s = setup.sensor_array
+    a, b = s[setup.fixed_pair[0]], s[setup.fixed_pair[1]]
+    d = (b - a) / np.hypot(*(b - a))
+    n = np.array([-d[1], d[0]])
+    c, rho, omega = np.array(setup.center), setup.radius, setup.rate
+    h = float(n @ (c - a))
+    if abs(h) <= rho:
+        raise ValueError("the circle crosses the baseline of the fixed pair")
+    toward = -np.sign(h) * n
+    angle = float(np.arctan2(toward[1], toward[0]) % (2 * np.pi))
+    ks = np.array([np.floor(angle / omega), np.ceil(angle / omega)]) + 1
+    pts = c + rho * np.column_stack([np.cos(omega * (ks - 1)), np.sin(omega * (ks - 1))])
+    step = int(ks[np.argmin(np.abs((pts - a) @ n))])
+    return {"center_distance": abs(h), "closest": abs(h) - rho, "angle": angle, "step": step,
+            "normal": n}
+
+
+def glue_exercise_baseline(setup, loss: dict) -> dict:
+    """The numbers of the exercise on the fixed pair's baseline (:func:`baseline_approach`):
+    the pair's sensors, the distances, the angle and the step.
+
+    Parameters
+    ----------
+    setup : obslib.tracking.TrackingSetup
+        The circle experiment.
+    loss : dict
+        :func:`obslib.tracking.track_loss` of strategy (3)'s runs (where they flip).
+
+    Returns
+    -------
+    dict
+        :func:`baseline_approach`.
+    """
+    a = baseline_approach(setup)
+    i, j = setup.fixed_pair
+    s = setup.sensor_array
+    k = a["step"]
+    glue_texts(
+        ex_pair=f"{sensor_math(i)} = {point(s[i])} and {sensor_math(j)} = {point(s[j])}",
+        ex_center=point(setup.center),
+        ex_radius=setting(setup.radius),
+        ex_normal=point(a["normal"], 3),
+        ex_hdist=number(a["center_distance"]),
+        ex_closest=number(a["closest"]),
+        ex_angle=number(a["angle"]),
+        ex_step=number(k),
+        ex_step_real=fixed(1 + a["angle"] / setup.rate, 1),
+        ex_when=(f"the lost runs of strategy (3) flip {_flip_span(loss)}, around that step"
+                 if k <= setup.steps else
+                 f"after the last of this run's {number(setup.steps)} steps, so this run never "
+                 "gets there"),
+    )
+    return a
+
+
+def glue_exercise_noise(setup, n_seeds: int, seed: int, lost_above: float) -> dict:
+    """The numbers of the exercise that halves the range noise: strategy (3)'s lost runs and
+    the strategies' mean errors with the chapter's noise and with half of it, over the same
+    seeds (:func:`obslib.studies.tracking.circle_runs`, what a rerun with half the noise
+    computes).
+
+    Parameters
+    ----------
+    setup : obslib.tracking.TrackingSetup
+        The circle experiment.
+    n_seeds, seed : int
+        The noise seeds: ``seed, ..., seed + n_seeds - 1``.
+    lost_above : float
+        The run-mean error above which a run is lost.
+
+    Returns
+    -------
+    dict
+        Noise level -> ``{"lost", "mean_error", "run_wins"}`` (lost runs of strategy (3), the
+        strategies' mean errors, strategy (1)'s least share of runs won).
+    """
+    out = {}
+    for sd in (setup.noise_std, setup.noise_std / 2):
+        mc = study.circle_runs(setup.replace(noise_std=sd), n_seeds, seed)["mc"]
+        cmp = tr.compare_strategies(mc)
+        out[sd] = {"lost": int(tr.track_loss(mc["fixed-pair"], lost_above)["lost"].sum()),
+                   "mean_error": {s: float(d["mean_error"]) for s, d in
+                                  cmp["strategies"].items()},
+                   "run_wins": float(study.least_run_wins(cmp))}
+    full, half = out[setup.noise_std], out[setup.noise_std / 2]
+    glue_texts(
+        ex_noise=setting(setup.noise_std),
+        ex_half=setting(setup.noise_std / 2),
+        ex_lost=count(full["lost"], of=n_seeds),
+        ex_lost_half=count(half["lost"], of=n_seeds),
+        ex_err1=number(full["mean_error"]["best-pair"]),
+        ex_err1_half=number(half["mean_error"]["best-pair"]),
+        ex_err3=number(full["mean_error"]["fixed-pair"]),
+        ex_err3_half=number(half["mean_error"]["fixed-pair"]),
+        ex_wins_half=share(half["run_wins"], n_seeds, "runs"),
+    )
+    return out

@@ -321,7 +321,7 @@ def _fig6_correlation(p: dict) -> Finding:
              for s, d in med.items()}
     n = sum(holds.values())
     status = "reproduced" if n == 3 else ("partly" if n else "refuted")
-    which = listing([STRATEGY_NAMES[s] for s, h in holds.items() if h])
+    which = listing([STRATEGY_NAMES[s] for s, h in holds.items() if h]) if n else ""
     weakest = max(med, key=lambda s: med[s]["error"])
     pooled = corr["pooled"]["error"]
     if status == "reproduced":
@@ -650,10 +650,14 @@ def _fig7_switch(p: dict) -> Finding:
     """Pooled over ``n_seeds`` runs (:func:`obslib.studies.tracking.pooled_switch_mechanism`).
     reproduced: the pair switches after >= 90 % of the moves that bring the target closer to a
     sensor of the pair AND >= 90 % of switches give the sensors a higher C^-1 than the target
-    aimed at; partly: only the first; refuted: not the first."""
+    aimed at; partly: only the first; refuted: not the first; untestable: the target never
+    moves closer to a sensor of the pair (a fast target that flees), so the mechanism cannot
+    arise."""
     m = study.pooled_switch_mechanism(_adversary(p)["best-pair"])
     sw_closer, raised, gain = m["switch_if_closer"], m["raised"], m["mean_gain"]
-    if sw_closer >= 0.9 and raised >= 0.9:
+    if np.isnan(sw_closer):
+        status = "untestable"
+    elif sw_closer >= 0.9 and raised >= 0.9:
         status = "reproduced"
     else:
         status = "partly" if sw_closer >= 0.9 else "refuted"
@@ -666,17 +670,26 @@ def _fig7_switch(p: dict) -> Finding:
                    "a sensor of the pair, but a switch leaves the sensors a higher $C^{-1}$ than "
                    f"the target aimed at in only {percent(raised)} of the cases, so a switch "
                    r"does not reliably increase $C^{-1}$.")
-    else:
+    elif status == "refuted":
         summary = (f"The pair switches after only {percent(sw_closer)} of the target's moves "
                    "toward a sensor of the pair.")
+    else:
+        summary = ("The target never moves closer to a sensor of the pair that has just "
+                   "measured it, so the caption's mechanism does not arise.")
     ours = summary + (f" The pair switches at {percent(m['switch_fraction'])} of all "
                       "transitions, closer or not.")
+
+    def rate(x, none):  # a rate over no event (no move closer, no switch) is NaN
+        return none if np.isnan(x) else percent(x)
+
     rows = [("transitions where the target gets closer to a sensor of the pair",
              percent(m["closer_fraction"])),
-            ("of those, transitions where the pair then switches", percent(sw_closer)),
+            ("of those, transitions where the pair then switches", rate(sw_closer, "none")),
             ("transitions with a switch, all of them", percent(m["switch_fraction"])),
-            (r"switches leaving a higher $C^{-1}$ than the target aimed at", percent(raised)),
-            (r"mean change of $C^{-1}$ at a switch", number(gain))]
+            (r"switches leaving a higher $C^{-1}$ than the target aimed at",
+             rate(raised, "no switch")),
+            (r"mean change of $C^{-1}$ at a switch", "no switch" if np.isnan(gain) else
+             number(gain))]
     ev = {"n_seeds": p["n_seeds"], "closer_fraction": m["closer_fraction"],
           "switch_if_closer": sw_closer, "switch_fraction": m["switch_fraction"],
           "raised": raised, "mean_gain": gain}

@@ -13,7 +13,7 @@ from .._format import setting
 from .._validate import as_float_array, as_instance, as_int, as_mapping
 from ..studies.teams import Evenness
 from ._checks import as_series
-from .style import SEQUENTIAL, look
+from .style import OKABE_ITO, SEQUENTIAL, look
 
 __all__ = ["plot_join_gains", "plot_fig9", "plot_evenness", "plot_optimum_ratio"]
 
@@ -100,9 +100,11 @@ def plot_fig9(counts, N_values):
     return fig
 
 
-def plot_evenness(even, N_values, n_targets: int):
+def plot_evenness(even, N_values, n_targets: int, text=None):
     """How evenly the greedy spreads the sensors: the spread of the counts within a trial
-    against :math:`N/L`, for the greedy and for a uniformly random assignment.
+    against :math:`N/L`, for the greedy with the prior, for a uniformly random assignment and,
+    when ``text`` is given, for the greedy with the measure the text of Section V-D names (an
+    :class:`~obslib.studies.teams.Evenness` of its counts, with the control row).
 
     Examples
     --------
@@ -116,9 +118,15 @@ def plot_evenness(even, N_values, n_targets: int):
 
     even = as_instance(even, Evenness, "even")
     N = as_series(N_values, "N_values", len(even.within))
+    if text is not None and len(as_instance(text, Evenness, "text").within) != len(N):
+        raise ValueError(f"text must have one spread per N ({len(N)}), got {len(text.within)}")
     fair = N / as_int(n_targets, "n_targets", 1)
     fig, ax = plt.subplots(figsize=(7.5, 3.6))
     ax.plot(fair, even.within, **look("logdet").kw(ms=4, label="greedy, log det with prior"))
+    if text is not None:
+        ax.plot(fair, text.within, **look("logdet").kw(
+            color=OKABE_ITO["orange"], marker="v", linestyle="--", ms=4,
+            label="greedy, log det with control row"))
     ax.plot(fair, even.baseline, **look("random").kw(ms=4, label="uniformly random assignment"))
     ax.set_xlabel("$N/L$ (sensors per target)")
     ax.set_ylabel("spread of the counts in a trial")

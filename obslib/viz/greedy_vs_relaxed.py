@@ -1,5 +1,6 @@
 """Figures of the greedy against the relaxed matching (Section V-C, Fig. 8): the three
-assignments of one instance, and Fig. 8's mean totals.
+assignments of one instance, Fig. 8's mean totals, and the relaxed matching against Problem 1's
+optimum instance by instance.
 """
 
 from __future__ import annotations
@@ -9,10 +10,10 @@ import numpy as np
 from .._format import number
 from .._validate import as_instance, as_int, as_mapping, as_points, as_positive
 from ..assignment import PairAssignment
-from ..studies.greedy_vs_relaxed import Fig8Summary
+from ..studies.greedy_vs_relaxed import Fig8Summary, Problem3Audit
 from .style import look
 
-__all__ = ["plot_three_assignments", "plot_fig8"]
+__all__ = ["plot_three_assignments", "plot_fig8", "plot_problem3"]
 
 _KEYS = ("greedy", "optimal", "relaxed")
 
@@ -109,4 +110,35 @@ def plot_fig8(summary, optimum_max_L: int):
     h, lab = ax.get_legend_handles_labels()
     order = (2, 3, 1, 0)  # relaxed, greedy, optimum, a third
     ax.legend([h[k] for k in order], [lab[k] for k in order], loc="upper left")
+    return fig
+
+
+def plot_problem3(audit):
+    """The relaxed matching over Problem 1's exact optimum, instance by instance, one box per
+    number of targets ``L`` of a :class:`~obslib.studies.greedy_vs_relaxed.Problem3Audit`, with
+    the line of equality: a box below it would be an instance where the relaxation is no upper
+    bound.
+
+    Examples
+    --------
+    >>> from obslib.studies.greedy_vs_relaxed import problem3_audit
+    >>> fig = plot_problem3(problem3_audit(3, trials=4, seed=0, optimum_max_L=3))
+    >>> fig.axes[0].get_ylabel()
+    'relaxed matching / optimum'
+    """
+    import matplotlib.pyplot as plt
+
+    audit = as_instance(audit, Problem3Audit, "audit")
+    fig, ax = plt.subplots(figsize=(7.5, 3.4))
+    ax.axhline(1.0, **look("optimal").kw(marker="", lw=1, linestyle="--",
+                                          label="equal to the optimum"))
+    if audit.matching.size:
+        ratio = audit.matching / audit.optimum
+        ax.boxplot(list(ratio), positions=audit.L, widths=0.5,
+                   medianprops={"color": look("relaxed").color},
+                   flierprops={"marker": look("relaxed").marker, "markersize": 4})
+        ax.set_xticks(audit.L, [str(int(L)) for L in audit.L])
+    ax.set_xlabel("number of targets $L$ ($N = 2L$ sensors)")
+    ax.set_ylabel("relaxed matching / optimum")
+    ax.legend(loc="upper left")
     return fig
