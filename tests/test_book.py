@@ -427,7 +427,8 @@ def test_the_front_page_shows_the_bound_at_a_glance(book):
     fig = re.search(r'<figure[^>]*id="fig-front-bound".*?</figure>', html, re.S)
     assert fig, "the front page shows no picture"
     assert re.search(r'caption-number">Figure \d', fig.group(0))
-    assert re.search(r'href="[^"]*02_pair_closed_form\.html#explore-the-bound"[^>]*>.*?the bound explorer',
+    assert re.search(r'href="[^"]*02_pair_closed_form\.html#explore-the-bound"[^>]*>.*?'
+                     r'the bound explorer',
                      fig.group(0), re.S)
     chapter = (book / "notebooks" / "02_pair_closed_form.html").read_text()
     assert 'id="explore-the-bound"' in chapter
@@ -1052,9 +1053,9 @@ def test_api_pages_contents_do_not_clip(server, browser):
 
 def test_the_explorer_is_in_the_contents_of_its_chapter(book, server, browser):
     """The explorer's section is an entry of the chapter's contents (the right-hand column at
-    1400 px), and has the stable label ``explorer``, which any page can link by name
-    (``{ref}`the bound explorer <explore-the-bound>```): its anchor is at the section's heading, and the
-    section holds the explorer."""
+    1400 px), and has the stable label ``explore-the-bound``, which any page can link by name
+    (``{ref}`the bound explorer <explore-the-bound>```): its anchor is at the section's
+    heading, and the section holds the explorer."""
     from selenium.webdriver.support.ui import WebDriverWait
     from sphinx.util.inventory import InventoryFile
 

@@ -287,10 +287,10 @@ def caveat(row: dict, status: str | None = None) -> str:
     ...                     "metric": [("euclidean", "refuted")],
     ...                     "size": [("n_seeds x0.5", "partly")]}}
     >>> import textwrap
-    >>> print(textwrap.fill(caveat(row), 70))
+    >>> print(textwrap.fill(caveat(row), 60))
     Reproduced at the paper's values; refuted with a quarter of
-    $u_{\\max}$ and with Euclidean distances; partly with half the noise
-    seeds.
+    $u_{\\max}$ and with Euclidean distances; partly with half
+    the noise seeds.
     >>> same = {"u_max": [("x2", "partly")]}
     >>> caveat({"id": "c2", "base": "partly", "variants": same})
     ''

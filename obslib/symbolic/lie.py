@@ -54,7 +54,7 @@ def lie_rows(n: int = 3, measurement: str = "half-squared") -> tuple:
     >>> lie_rows(0)
     Traceback (most recent call last):
     ...
-    ValueError: n must be an integer >= 1, got 0
+    ValueError: n must be at least 1, got 0
     """
     return _lie_rows(*_lie_rows_iv(n, measurement))
 
