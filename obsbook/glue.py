@@ -1,6 +1,6 @@
 """Numbers glued into the prose as the book prints them, for ``{glue:md}`` and ``{glue:text}``.
 
-A number is formatted once, by :func:`obslib._format.number` (or its siblings :func:`count`,
+A number is formatted once, by :func:`obslib.formatting.number` (or its siblings :func:`count`,
 :func:`percent`, ...), and glued as that text: the page never rounds it again, and the text is
 the same on every machine. The glued object carries two forms: MyST (``$...$`` math for powers
 of ten) for ``{glue:md}`name:myst``` (the ``:myst`` makes its math render; without it the
@@ -10,7 +10,7 @@ without the quotes a glued ``str`` would get.
 
 from __future__ import annotations
 
-from obslib._format import number
+from obslib.formatting import number
 
 __all__ = ["Formatted", "glue_text", "glue_texts", "glue_number"]
 
@@ -40,16 +40,17 @@ class Formatted:
 
 
 def glue_text(name: str, text: str, plain: str | None = None) -> Formatted:
-    """Glue ``text``, already formatted (``obsbook.number(x)``, ``obsbook.count(n)``, ...), as
-    ``name``, not displayed in the cell; ``plain`` is the form ``{glue:text}`` shows (by
-    default ``text`` itself, so give it when ``text`` holds math). Returns the glued object.
+    """Glue ``text``, already formatted (``number(x)``, ``count(n)``, ... of
+    :mod:`obslib.formatting`), as ``name``, not displayed in the cell; ``plain`` is the form
+    ``{glue:text}`` shows (by default ``text`` itself, so give it when ``text`` holds math).
+    Returns the glued object.
 
     Examples
     --------
     In a notebook: ``glue_text("n_trials", count(20000))``, then ``{glue:md}`n_trials:myst```
     in the prose. Outside a notebook the object is made all the same:
 
-    >>> from obsbook import count
+    >>> from obslib.formatting import count
     >>> glue_text("n_trials", count(20000))
     20,000
     """
@@ -77,7 +78,7 @@ def glue_texts(**texts: str) -> dict:
 
     Examples
     --------
-    >>> from obsbook import count, number
+    >>> from obslib.formatting import count, number
     >>> glued = glue_texts(n_runs=count(200), ratio=number(0.48488))
     >>> list(glued), glued["ratio"]
     (['n_runs', 'ratio'], 0.485)
@@ -87,7 +88,7 @@ def glue_texts(**texts: str) -> dict:
 
 def glue_number(name: str, x, sig: int = 3) -> Formatted:
     """Glue the number ``x`` under ``name`` as the book prints it
-    (:func:`obslib._format.number` with ``sig`` significant digits): MyST for ``{glue:md}``,
+    (:func:`obslib.formatting.number` with ``sig`` significant digits): MyST for ``{glue:md}``,
     plain for ``{glue:text}``.
 
     Examples

@@ -8,7 +8,7 @@ tables; the figures name them in plain text with :func:`obslib.viz.style.sensor_
 
 from __future__ import annotations
 
-from obslib._format import number, percent, setting
+from obslib.formatting import number, percent, setting
 
 __all__ = ["PUBLISHED_RUNS", "sensor_math", "pair_math", "triple_math", "set_math", "point",
            "share"]
@@ -82,8 +82,8 @@ def point(x, sig: int | None = None) -> str:
     x : array_like
         The point's two coordinates.
     sig : int, optional
-        Significant digits (:func:`obslib._format.number`); by default each coordinate is
-        written as a setting (:func:`obslib._format.setting`), with the digits it has.
+        Significant digits (:func:`obslib.formatting.number`); by default each coordinate is
+        written as a setting (:func:`obslib.formatting.setting`), with the digits it has.
 
     Examples
     --------

@@ -24,9 +24,9 @@ import re
 from collections import Counter
 from pathlib import Path
 
-from obslib._format import count, number
 from obslib._io import command
 from obslib.claims import REQUIRED_IDS, STATUSES
+from obslib.formatting import count, number
 
 __all__ = ["ROOT", "MARKERS", "SECTIONS", "PAPER_LABELS", "render_report", "notebook_targets",
            "typeset", "list_table", "counts_sentence", "quote_myst", "verdict_line",
@@ -260,7 +260,7 @@ def _cell(value) -> str:
 def list_table(caption: str, columns, rows, name: str | None = None, widths=None) -> list:
     """Lines of a MyST ``{list-table}``: caption above, one header row, ``name`` for a number.
 
-    Cells are MyST text (used as given) or real numbers (:func:`obslib._format.number`).
+    Cells are MyST text (used as given) or real numbers (:func:`obslib.formatting.number`).
 
     Examples
     --------

@@ -51,6 +51,8 @@ claims
     The claims ledger: one record per claim of the paper, re-checked with ``studies``.
 
 The experiments' parameters: ``profiles`` (named parameter sets of the notebooks and the ledger).
+How a number reads in the book's prose and tables, for the ledger, the figures and the book:
+``formatting``.
 Repository tooling: ``tools`` (the papermill runner behind ``make book`` and the benchmarks, with
 the command lines ``python -m obslib.run`` and ``python -m obslib.bench``). What only the book
 needs (the figure and table settings every notebook applies, each chapter's glue and tables) is
@@ -100,7 +102,7 @@ __all__ = [
 #: Submodules imported on first attribute access (``obslib.claims.evaluate(...)`` works after a
 #: bare ``import obslib``) rather than at import time, since they pull in SymPy, papermill etc.
 _LAZY = ("claims", "profiles", "tools", "symbolic", "pair_form", "controls", "scenes",
-         "studies", "viz", "sweep")
+         "studies", "viz", "sweep", "formatting")
 
 
 def __getattr__(name):

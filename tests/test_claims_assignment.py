@@ -201,6 +201,6 @@ def test_practice_wording_follows_the_numbers(records):
                               (0, p["extra_max"]), p["u_max"])
     share = float(np.mean(st.ratio >= 1 - 1e-12))
     assert r.evidence["fraction_optimal"] == share
-    assert ob._format.percent(share) in r.summary
+    assert ob.formatting.percent(share) in r.summary
     for word in ("usually", "rarely", "most ", "almost"):
         assert word not in r.summary

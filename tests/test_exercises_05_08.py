@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from obslib import tracking as tr
-from obslib._format import count, number, span
+from obslib.formatting import count, number, span
 
 # ---------------------------------------------------------------- capture what a chapter glues
 

@@ -89,10 +89,10 @@ def test_glued_numbers_read_as_the_formatter_writes_them(monkeypatch):
     for x in (10000, 0.48488, 1.234e-5, 3.0):
         g = obsbook.glue_number("x", x)
         assert glued["x"] is g
-        assert g._repr_markdown_() == obslib._format.number(x)
-        assert repr(g) == obslib._format.number(x, math=False)
+        assert g._repr_markdown_() == obslib.formatting.number(x)
+        assert repr(g) == obslib.formatting.number(x, math=False)
         assert not repr(g).startswith(("'", '"'))  # shown without quotes by {glue:text}
-    obsbook.glue_text("n", obsbook.count(0))
+    obsbook.glue_text("n", obslib.formatting.count(0))
     assert repr(glued["n"]) == "none"
     with pytest.raises(ValueError, match="str"):
         obsbook.glue_text("n", 3)

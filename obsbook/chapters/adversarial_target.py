@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 
 from obslib import tracking as tr
-from obslib._format import count, listing, number, percent, setting, small
 from obslib.controls import disc_controls
+from obslib.formatting import count, listing, number, percent, setting, small
 from obslib.published_runs import published_run
 from obslib.studies import experiment_details as details
 from obslib.studies import tracking as study

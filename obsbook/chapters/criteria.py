@@ -13,7 +13,7 @@ import json
 import numpy as np
 import pandas as pd
 
-from obslib._format import count, number, percent, setting, small, span
+from obslib.formatting import count, number, percent, setting, small, span
 from obslib.studies import criteria
 
 from ..glue import glue_texts

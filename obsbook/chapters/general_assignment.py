@@ -10,8 +10,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from obslib._format import count, fixed, listing, number, percent, setting, span
 from obslib.claims.teams import FIG9_PUBLISHED_STD, direction_words
+from obslib.formatting import count, fixed, listing, number, percent, setting, span
 from obslib.measures import measure, measure_from_vectors
 from obslib.studies import fig9_measure, teams
 

@@ -10,9 +10,9 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from obslib._format import count, number, percent, setting
 from obslib.assignment import greedy_pair_assignment_literal, greedy_pairs_batch
 from obslib.claims.assignment import NEAR_THIRD
+from obslib.formatting import count, number, percent, setting
 from obslib.studies import assignment as experiments
 from obslib.studies import greedy_tightness as tightness
 

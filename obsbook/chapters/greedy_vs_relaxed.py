@@ -19,7 +19,7 @@ from obslib import (
     pair_bounds,
     relaxed_pair_assignment,
 )
-from obslib._format import count, fixed, listing, number, percent, setting, small, span
+from obslib.formatting import count, fixed, listing, number, percent, setting, small, span
 from obslib.studies.greedy_vs_relaxed import fig8_instance, fig8_summary, fig8_sweep
 from obslib.studies.published import FIG8_PUBLISHED_L20
 

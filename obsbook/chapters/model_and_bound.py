@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 import obslib as ob
-from obslib._format import count, number, percent, setting, small, span
+from obslib.formatting import count, number, percent, setting, small, span
 
 from ..glue import glue_texts
 from ..report import list_table, typeset

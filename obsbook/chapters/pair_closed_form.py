@@ -11,9 +11,9 @@ from __future__ import annotations
 import numpy as np
 
 from obslib import pair_form as pf
-from obslib._format import count, listing, number, setting, small, span
 from obslib.bounds import pair_bound_polar
 from obslib.claims.pair_form import WEYL_TEX
+from obslib.formatting import count, listing, number, setting, small, span
 
 from ..glue import glue_texts
 from ..tables import numbered_table, rows_table

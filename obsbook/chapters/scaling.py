@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 
 from obslib import pair_bounds
-from obslib._format import count, listing, number, percent
+from obslib.formatting import count, listing, number, percent
 from obslib.tools.bench import literal_count
 
 from ..glue import glue_texts

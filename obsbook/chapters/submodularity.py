@@ -14,7 +14,7 @@ from fractions import Fraction
 import numpy as np
 import pandas as pd
 
-from obslib._format import count, fixed, number, setting
+from obslib.formatting import count, fixed, number, setting
 
 from ..glue import glue_texts
 from ..prose import sensor_math, set_math

@@ -12,8 +12,8 @@ from __future__ import annotations
 import numpy as np
 
 from obslib import tracking as tr
-from obslib._format import count, fixed, listing, number, percent, setting, small
 from obslib.claims.tracking import PRINTED_DECIMALS
+from obslib.formatting import count, fixed, listing, number, percent, setting, small
 from obslib.studies import tracking as study
 from obslib.studies.published import PUBLISHED_CIRCLE
 from obslib.viz.style import pair_label

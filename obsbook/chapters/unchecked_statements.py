@@ -13,10 +13,10 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from obslib._format import count, listing, number, percent, setting, small, span
 from obslib.claims.assignment import NEAR_THIRD
 from obslib.claims.teams import direction_words
 from obslib.claims.unchecked import MISPRINTS, N_SPREAD
+from obslib.formatting import count, listing, number, percent, setting, small, span
 from obslib.profiles import params
 from obslib.studies import greedy_tightness, teams
 from obslib.studies.fig9_measure import FIG9_U_MAX

@@ -104,7 +104,7 @@ class Table:
 
     ``caption`` is one sentence (MyST) saying what the table shows; ``columns`` the column
     headers, units included (MyST); ``rows`` one tuple per row, each cell MyST text or a real
-    number (printed by :func:`obslib._format.number`).
+    number (printed by :func:`obslib.formatting.number`).
 
     Examples
     --------

@@ -6,8 +6,8 @@ from dataclasses import asdict
 
 import numpy as np
 
-from .._format import count, number, percent, setting, small
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
+from ..formatting import count, number, percent, setting, small
 from ..studies import assignment as sa
 from ..studies import greedy_tightness as gt
 from ..studies.unchecked import NOTEBOOK as UNCHECKED

@@ -9,7 +9,7 @@ better than assignments by information gain or at random? The evidence is comput
 
 from __future__ import annotations
 
-from .._format import count, listing, number, percent, setting, small
+from ..formatting import count, listing, number, percent, setting, small
 from ..studies import criteria as cs
 from ._ledger import Finding, Table, claim
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._format import count, fixed, number, percent, small
+from ..formatting import count, fixed, number, percent, small
 from ..studies import greedy_vs_relaxed as gvr
 from ..studies.published import FIG8_PUBLISHED_L20
 from ._ledger import Finding, Table, claim

@@ -8,7 +8,7 @@ from dataclasses import asdict
 
 import numpy as np
 
-from .._format import count, listing, number, setting, small, span
+from ..formatting import count, listing, number, setting, small, span
 from ..studies import pair_form as spf
 from ._ledger import Finding, Table, claim
 

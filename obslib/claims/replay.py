@@ -5,7 +5,7 @@ Registered after the tracking claims of Sections V-A and V-B, which it sharpens.
 
 from __future__ import annotations
 
-from .._format import count, number, small
+from ..formatting import count, number, small
 from ..studies import experiment_details as ed
 from ..studies import replay as rp
 from ..studies.unchecked import NOTEBOOK

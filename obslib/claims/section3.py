@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import asdict
 
-from .._format import count, number, percent, small, span
+from ..formatting import count, number, percent, small, span
 from ..studies import section3 as bc
 from ._ledger import Finding, Table, claim
 

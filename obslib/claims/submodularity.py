@@ -9,7 +9,7 @@ Sec. IV-B's "the proof is similar" are judged from the same checks.
 
 from __future__ import annotations
 
-from .._format import count, fixed, number, setting
+from ..formatting import count, fixed, number, setting
 from ..studies import submodularity as sm
 from ..studies.published import THEOREM7_PRINTED_WITNESS
 from ._ledger import Finding, Table, claim, registry

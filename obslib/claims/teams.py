@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._format import fixed, number, percent, setting, span
+from ..formatting import fixed, number, percent, setting, span
 from ..studies import fig9_measure as fm
 from ..studies import teams as ts
 from ._ledger import Finding, Table, claim

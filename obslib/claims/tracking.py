@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import tracking as tr
-from .._format import count, fixed, listing, number, percent, setting
+from ..formatting import count, fixed, listing, number, percent, setting
 from ..studies import replay as rp
 from ..studies import tracking as study
 from ..studies.published import PUBLISHED_ADVERSARIAL, PUBLISHED_CIRCLE

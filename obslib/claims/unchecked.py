@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._format import count, listing, number, percent, setting, small, span
 from ..assignment import relaxed_pair_assignment
+from ..formatting import count, listing, number, percent, setting, small, span
 from ..studies import eq4
 from ..studies import experiment_details as ed
 from ..studies import fig9_measure as fm

@@ -9,8 +9,8 @@ import itertools
 
 import numpy as np
 
-from .._format import setting
 from .._validate import as_float_array, as_instance, as_int, as_mapping
+from ..formatting import setting
 from ..studies.teams import Evenness
 from ._checks import as_series
 from .style import OKABE_ITO, SEQUENTIAL, look

@@ -7,9 +7,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._format import number
 from .._validate import as_float_array, as_instance, as_points
 from ..assignment import PairAssignment
+from ..formatting import number
 from ._checks import as_series
 from .style import as_figsize, look, sensor_label, target_label
 

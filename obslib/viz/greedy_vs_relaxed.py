@@ -7,9 +7,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._format import number
 from .._validate import as_instance, as_int, as_mapping, as_points, as_positive
 from ..assignment import PairAssignment
+from ..formatting import number
 from ..studies.greedy_vs_relaxed import Fig8Summary, Problem3Audit
 from .style import look
 

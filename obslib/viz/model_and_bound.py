@@ -11,10 +11,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._format import number
 from .._validate import as_ints, as_point, as_points, as_positive
 from ..bounds import lower_bound, worst_case_control
 from ..controls import disc_controls, disc_mesh
+from ..formatting import number
 from ..observability import inverse_condition_number
 from .style import OKABE_ITO, as_axes, look
 

@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._format import number
 from .._validate import as_eps, as_point, as_points
+from ..formatting import number
 from ..measures import measure
 from ..observability import inverse_condition_number
 from .style import look, sensor_label

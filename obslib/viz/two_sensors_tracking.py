@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._format import number
 from .._validate import (
     as_instance,
     as_int,
@@ -22,6 +21,7 @@ from .._validate import (
     as_positive,
 )
 from ..bounds import lower_bound
+from ..formatting import number
 from ..published_runs import PublishedRun
 from ..tracking import STRATEGIES, BatchResult, TrackingResult, mirror_point, switch_rate
 from ._checks import as_run, as_runs, as_series

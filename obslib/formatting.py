@@ -22,8 +22,9 @@ text for figure labels and printed tables (``1.23e-05`` is never produced: ``1.2
 from __future__ import annotations
 
 import math
-import math as _math
 import numbers
+
+from ._validate import ArgumentTypeError, as_bool, as_int, as_str
 
 __all__ = ["number", "count", "small", "percent", "span", "setting", "listing", "fixed"]
 
@@ -32,11 +33,24 @@ _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 def _real(x, name: str = "x") -> float:
     if isinstance(x, bool) or not isinstance(x, numbers.Real):
-        raise ValueError(f"{name} must be a real number, got {x!r}")
+        raise ArgumentTypeError(f"{name} must be a real number, got {x!r}")
     x = float(x)
     if math.isnan(x):
         raise ValueError(f"{name} is NaN")
     return x
+
+
+def _number(x, name: str) -> int | float:
+    """A value to print: an ``int`` for an integer (Python or NumPy), which keeps every digit,
+    else a real number (not NaN)."""
+    if isinstance(x, numbers.Integral) and not isinstance(x, bool):
+        return int(x)
+    return _real(x, name)
+
+
+def _digits(sig, math_) -> tuple[int, bool]:
+    """The significant digits (at least one) and the flag for MyST math."""
+    return as_int(sig, "sig", 1), as_bool(math_, "math")
 
 
 def _power(mantissa: str, exponent: int, math_: bool) -> str:
@@ -66,10 +80,11 @@ def number(x, sig: int = 3, *, math: bool = True) -> str:
     >>> number(1.234e-5), number(-2.5e7, math=False)
     ('$1.23 \\\\times 10^{-5}$', '-2.50×10⁷')
     """
-    if isinstance(x, numbers.Integral) and not isinstance(x, bool):
-        return f"{int(x):,}"
-    x = _real(x)
-    if x in (_math.inf, -_math.inf):
+    x = _number(x, "x")
+    sig, math = _digits(sig, math)
+    if isinstance(x, int):
+        return f"{x:,}"
+    if abs(x) == float("inf"):
         return ("$\\infty$" if math else "∞") if x > 0 else ("$-\\infty$" if math else "-∞")
     if x == 0:
         return "0"
@@ -104,8 +119,10 @@ def count(n, zero: str = "none", *, of: int | None = None) -> str:
         if isinstance(n, numbers.Real) and float(n).is_integer():
             n = int(n)
         else:
-            raise ValueError(f"a count must be an integer, got {n!r}")
-    n = int(n)
+            raise ArgumentTypeError(f"n, a count, must be an integer, got {n!r}")
+    n, zero = int(n), as_str(zero, "zero")
+    if of is not None:
+        of = as_int(of, "of", 0)
     if of is None:
         return zero if n == 0 else f"{n:,}"
     if n == 0:
@@ -125,6 +142,7 @@ def small(x, floor: float = 1e-12, sig: int = 3, *, math: bool = True) -> str:
     """
     x = _real(x)
     floor = _real(floor, "floor")
+    sig, math = _digits(sig, math)
     if not floor > 0:
         raise ValueError(f"floor must be positive, got {floor!r}")
     if abs(x) < floor:
@@ -144,6 +162,7 @@ def percent(fraction, decimals: int = 1) -> str:
     zero reads ``< 0.1%``, one that is not one but rounds to 100 reads ``> 99.9%``.
     """
     f = _real(fraction, "fraction")
+    decimals = as_int(decimals, "decimals", 0)
     if not 0 <= f <= 1:
         raise ValueError(f"fraction must lie in [0, 1], got {f!r}")
     p = round(100 * f, decimals)
@@ -158,6 +177,7 @@ def percent(fraction, decimals: int = 1) -> str:
 
 def span(lo, hi, sig: int = 3, *, math: bool = True) -> str:
     """A range in words: ``span(3.0, 1420.8) == "between 3.00 and 1,421"``; equal ends read once."""
+    lo, hi = _number(lo, "lo"), _number(hi, "hi")
     a, b = number(lo, sig, math=math), number(hi, sig, math=math)
     return a if a == b else f"between {a} and {b}"
 
@@ -170,9 +190,9 @@ def setting(x, *, math: bool = True) -> str:
     >>> setting(0.25), setting(1.0), setting(2), setting(20000), setting(1e-6)
     ('0.25', '1', '2', '20,000', '$10^{-6}$')
     """
-    if isinstance(x, numbers.Integral) and not isinstance(x, bool):
-        return number(x)
-    x = _real(x)
+    x, math = _number(x, "x"), as_bool(math, "math")
+    if isinstance(x, int) or abs(x) == float("inf"):
+        return number(x, math=math)
     if x == 0:
         return "0"
     if float(x).is_integer() and abs(x) < 1e6:
@@ -209,7 +229,10 @@ def listing(items, conjunction: str = "and") -> str:
     >>> listing([0.25, 0.5, 1.0, 2.0]), listing(["D", "A"], "or"), listing([3])
     ('0.25, 0.5, 1 and 2', 'D or A', '3')
     """
-    words = [x if isinstance(x, str) else setting(x) for x in items]
+    if isinstance(items, (str, bytes)) or not hasattr(items, "__iter__"):
+        raise ArgumentTypeError(f"items must be a sequence of text or numbers, got {items!r}")
+    conjunction = as_str(conjunction, "conjunction")
+    words = [x if isinstance(x, str) else setting(_number(x, "items")) for x in items]
     if not words:
-        raise ValueError("nothing to list")
+        raise ValueError("items: nothing to list")
     return words[0] if len(words) == 1 else ", ".join(words[:-1]) + f" {conjunction} " + words[-1]
