@@ -83,7 +83,7 @@ def setup() -> None:
     - ``axes.titley = 1.0``: a title sits just above its axes. Matplotlib's default (``None``)
       lifts it over tick labels on top of the axes, which costs measuring every tick label at
       each draw (about 15 % of the book's drawing time); no 2-D axes of the book has top tick
-      labels. 3-D axes keep the default (:func:`obslib.viz.pair_form.plot_fig2`).
+      labels. 3-D axes keep the default (:func:`obslib.viz.pair_closed_form.plot_fig2`).
     - ``gc.freeze()``: the modules and tables imported so far live as long as the kernel; moved
       to the collector's permanent generation, Python's full collections stop walking them
       (notebook 02: 0.44 s of full collections against 0.14 s frozen). Nothing is computed

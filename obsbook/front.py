@@ -22,9 +22,10 @@ include: so that page, too, states each finding only through its entry's one sen
 ``python -m obsbook.report --front book/_front.md`` writes the file.
 
 The front page also shows a picture of the bound at a glance,
-:func:`obslib.viz.pair_form.plot_bound_at_a_glance`, drawn the book's way (:mod:`obsbook.figures`)
-and written by ``python -m obsbook.front --figure book/_static/front.png`` (:func:`write_figure`),
-which ``make book`` runs before the build: like every figure of the book it is made by code, never
+:func:`obslib.viz.pair_closed_form.plot_bound_at_a_glance`, drawn the book's way
+(:mod:`obsbook.figures`) and written by
+``python -m obsbook.front --figure book/_static/front.png`` (:func:`write_figure`), which
+``make book`` runs before the build: like every figure of the book it is made by code, never
 committed.
 """
 
@@ -138,7 +139,7 @@ def front_figure() -> tuple[bytes, dict]:
     matplotlib.use("agg")
     import matplotlib.pyplot as plt
 
-    from obslib.viz.pair_form import plot_bound_at_a_glance
+    from obslib.viz.pair_closed_form import plot_bound_at_a_glance
 
     from . import figures
 

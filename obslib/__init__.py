@@ -40,12 +40,12 @@ sweep
 On top of the core, one module per section of the paper in each of:
 
 studies
-    The paper's audits and experiments (``studies.section3``, ``studies.pair_form``,
+    The paper's audits and experiments (``studies.model_and_bound``, ``studies.pair_closed_form``,
     ``studies.assignment``, ``studies.submodularity``, ``studies.greedy_vs_relaxed``,
     ``studies.teams``, ...) and the published numbers (``studies.published``).
 viz
     Every matplotlib figure, one module per chapter of the book (``viz.model_and_bound``,
-    ``viz.pair_form``, ``viz.two_sensors_tracking``, ...) and the drawings they share
+    ``viz.pair_closed_form``, ``viz.two_sensors_tracking``, ...) and the drawings they share
     (``viz.style``, ``viz.tracking``).
 claims
     The claims ledger: one record per claim of the paper, re-checked with ``studies``.

@@ -2,8 +2,8 @@ r"""Numerics of the pair closed form (Theorems 4-5): the bound on grids of :math
 its maximiser :math:`\alpha^*`, and Weyl's inequalities for 2x2 matrices.
 
 The symbolic side lives in :mod:`obslib.symbolic`; the audits that compare the two, and the
-published figure's grid, in :mod:`obslib.studies.pair_form`; the figures in
-:mod:`obslib.viz.pair_form`.
+published figure's grid, in :mod:`obslib.studies.pair_closed_form`; the figures in
+:mod:`obslib.viz.pair_closed_form`.
 """
 
 from __future__ import annotations

@@ -15,7 +15,7 @@ can lose accuracy:
 
 :func:`random_scenes` draws scene by scene (a list of :class:`Scene`);
 :func:`random_scene_batch` draws the same kinds array by array into one padded
-:class:`SceneBatch`, for the vectorised audits of :mod:`obslib.studies.section3`.
+:class:`SceneBatch`, for the vectorised audits of :mod:`obslib.studies.model_and_bound`.
 """
 
 from __future__ import annotations

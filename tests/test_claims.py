@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 import obslib as ob
-import obslib.studies.section3 as bc
 from obslib import claims
+from obslib.studies import model_and_bound
 from obslib.tools.run import NOTEBOOK_DIR, ROOT
 
 
@@ -84,7 +84,7 @@ def test_a_caveat_is_attached_only_at_the_base_parameters():
     assert r.caveat == cav["remark1"]
 
 
-def test_section3_statuses(records):
+def test_model_and_bound_statuses(records):
     expected = {
         "eq4-lie-rows": "reproduced", "sec3-rank-observability": "reproduced",
         "thm2-proof-rank": "reproduced", "sec3-squared-range": "partly",
@@ -116,7 +116,8 @@ def test_thm1_evidence_recomputed(records):
 
 def test_thm1_check_can_fail(monkeypatch):
     """A wrong bound (ignoring u_max) must make the check report 'refuted'."""
-    monkeypatch.setattr(bc, "lower_bounds", lambda rows, u: ob.bounds.lower_bounds(rows, 0.0))
+    monkeypatch.setattr(model_and_bound, "lower_bounds",
+                        lambda rows, u: ob.bounds.lower_bounds(rows, 0.0))
     p = {**claims.resolve("thm1", "quick"), "seed": 12345}  # a fresh computation, not a cached one
     f = claims.registry()["thm1"].check(p)
     assert f.status == "refuted" and f.evidence["n_violations"] > 0
@@ -196,7 +197,7 @@ def test_rank_audit_twins_and_stretch(records):
 
 
 def test_squared_range_pairs_recounted_by_brute_force():
-    from obslib.studies.section3 import squared_range_audit
+    from obslib.studies.model_and_bound import squared_range_audit
 
     a = squared_range_audit(40, seed=3)
     rng = np.random.default_rng(3)

@@ -61,8 +61,8 @@ def _examples(doc: str) -> str:
 def test_the_functions_are_found():
     # the collection reaches every package named above, through re-exports and submodules
     for expected in ("obslib.bounds.lower_bound", "obslib.tracking.batch.simulate",
-                     "obslib.symbolic.theorem4.theorem4_bound", "obslib.viz.pair_form",
-                     "obslib.studies.pair_form"):
+                     "obslib.symbolic.theorem4.theorem4_bound", "obslib.viz.pair_closed_form",
+                     "obslib.studies.pair_closed_form"):
         assert any(k.startswith(expected) for k in FUNCTIONS), expected
     assert len(FUNCTIONS) > 150
 

@@ -9,7 +9,7 @@ from scipy.optimize import minimize_scalar
 import obslib as ob
 from obslib import pair_form as pf
 from obslib import symbolic as sy
-from obslib.studies.pair_form import paper_grid
+from obslib.studies.pair_closed_form import paper_grid
 
 
 def test_fine_grid_contains_the_special_points_exactly():

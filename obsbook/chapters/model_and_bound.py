@@ -2,7 +2,7 @@ r"""The numbers and tables of the chapter on the model and the lower bound (Sect
 
 Each ``glue_*`` function formats the results of one check of the chapter and glues them under
 the names its prose uses. The checks themselves are the
-audits of :mod:`obslib.studies.section3`, called in the chapter's visible cells.
+audits of :mod:`obslib.studies.model_and_bound`, called in the chapter's visible cells.
 """
 
 from __future__ import annotations
@@ -89,7 +89,7 @@ def glue_theorem1(audit, n_controls: int) -> None:
 
     Parameters
     ----------
-    audit : obslib.studies.section3.Theorem1Audit
+    audit : obslib.studies.model_and_bound.Theorem1Audit
         The audit's result.
     n_controls : int
         Random controls per scene.
@@ -115,8 +115,8 @@ def glue_theorem2(audit) -> None:
 
     Parameters
     ----------
-    audit : obslib.studies.section3.Theorem2Audit
-        Theorem 2's audit (:func:`obslib.studies.section3.theorem2_audit`).
+    audit : obslib.studies.model_and_bound.Theorem2Audit
+        Theorem 2's audit (:func:`obslib.studies.model_and_bound.theorem2_audit`).
     """
     glue_texts(
         thm2_scenes=count(audit.n_scenes, of=audit.n_scenes),
@@ -133,7 +133,7 @@ def glue_theorem3(audit) -> None:
 
     Parameters
     ----------
-    audit : obslib.studies.section3.Theorem3Audit
+    audit : obslib.studies.model_and_bound.Theorem3Audit
         The audit's result.
     """
     rows = [{"condition": text, "met": number(audit.counts[key][0]),
@@ -168,7 +168,7 @@ def glue_remark1(audit) -> None:
 
     Parameters
     ----------
-    audit : obslib.studies.section3.Remark1Audit
+    audit : obslib.studies.model_and_bound.Remark1Audit
         The audit of the bound at a stationary and at a moving target, scene by scene.
     """
     glue_texts(
@@ -228,12 +228,13 @@ def show_lie_rows(rows) -> None:
 
 def glue_rank(audit) -> None:
     """What full column rank buys, on random scenes
-    (:func:`obslib.studies.section3.rank_observability_audit`): the scenes of full rank and of
-    rank one, the smallest stretch of the output map over sigma_min, the twins' output gap.
+    (:func:`obslib.studies.model_and_bound.rank_observability_audit`): the scenes of full rank
+    and of rank one, the smallest stretch of the output map over sigma_min, the twins' output
+    gap.
 
     Parameters
     ----------
-    audit : obslib.studies.section3.RankAudit
+    audit : obslib.studies.model_and_bound.RankAudit
         The audit's result.
     """
     glue_texts(
@@ -248,12 +249,12 @@ def glue_rank(audit) -> None:
 
 def glue_squared_range(audit) -> None:
     """Half the squared range against the range
-    (:func:`obslib.studies.section3.squared_range_audit`): the scenes, the share whose best pair
-    changes, the best pair's value with the range over the one with the square.
+    (:func:`obslib.studies.model_and_bound.squared_range_audit`): the scenes, the share whose best
+    pair changes, the best pair's value with the range over the one with the square.
 
     Parameters
     ----------
-    audit : obslib.studies.section3.SquaredRangeAudit
+    audit : obslib.studies.model_and_bound.SquaredRangeAudit
         The audit's result.
     """
     glue_texts(

@@ -2,18 +2,19 @@ r"""The formulas, numbers and tables of the chapter on the bound of a pair of se
 and 5).
 
 :func:`show` and :func:`show_entries` display SymPy's results in the chapter's visible cells;
-each ``glue_*`` function formats the result of one audit of :mod:`obslib.studies.pair_form` and
-glues it under the names the chapter's prose uses.
+each ``glue_*`` function formats the result of one audit of
+:mod:`obslib.studies.pair_closed_form` (or :mod:`obslib.studies.theorem5_proof`,
+:mod:`obslib.studies.weyl`) and glues it under the names the chapter's prose uses.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from obslib import pair_form as pf
 from obslib.bounds import pair_bound_polar
-from obslib.claims.pair_form import WEYL_TEX
+from obslib.claims.pair_closed_form import WEYL_TEX
 from obslib.formatting import count, listing, number, setting, small, span
+from obslib.pair_form import maximising_alpha
 
 from ..glue import glue_texts
 from ..tables import numbered_table, rows_table
@@ -36,9 +37,9 @@ def show(lhs: str, expr) -> None:
     """
     from IPython.display import Math, display
 
-    from obslib import symbolic as sy
+    from obslib import symbolic
 
-    display(Math(sy.latex_eq(lhs, expr)))
+    display(Math(symbolic.latex_eq(lhs, expr)))
 
 
 def show_entries(lhs: str, M) -> None:
@@ -127,7 +128,7 @@ def glue_thm4_numeric(audit) -> None:
 
     Parameters
     ----------
-    audit : obslib.studies.pair_form.Theorem4Audit
+    audit : obslib.studies.pair_closed_form.Theorem4Audit
         The audit's result.
     """
     points = f"{number(audit.n_rational_points)} rational points, {number(audit.digits)} digits"
@@ -158,8 +159,8 @@ def glue_fig2(paper, fine, u_max: float, d_io: float, alpha_max: float, paper_st
 
     Parameters
     ----------
-    paper, fine : obslib.studies.pair_form.Fig2Grid
-        The paper's grid and the fine grid (:func:`obslib.studies.pair_form.fig2_grids`).
+    paper, fine : obslib.studies.pair_closed_form.Fig2Grid
+        The paper's grid and the fine grid (:func:`obslib.studies.pair_closed_form.fig2_grids`).
     u_max, d_io, alpha_max, paper_step : float
         Fig. 2's speed bound, distance of sensor :math:`i`, largest :math:`\alpha` and step.
     """
@@ -192,7 +193,7 @@ def glue_thm5(audit) -> None:
 
     Parameters
     ----------
-    audit : obslib.studies.pair_form.Theorem5Audit
+    audit : obslib.studies.pair_closed_form.Theorem5Audit
         The audit's result.
     """
     rows = [{"q": setting(q), "max": number(m, 6), "peak": number(e, 6), "at": where(pts)}
@@ -220,13 +221,13 @@ def glue_alpha_star(audit, u_over_d_curves) -> None:
 
     Parameters
     ----------
-    audit : obslib.studies.pair_form.AlphaStarAudit
+    audit : obslib.studies.pair_closed_form.AlphaStarAudit
         The audit's result.
     u_over_d_curves : list of float
         The speeds :math:`q = u_{\max}/d_{io}` of the table.
     """
     angles = {r"$\pi/4$": np.pi / 4, r"$\pi/8$": np.pi / 8}
-    rows = [{"q": setting(q), **{a: number(pf.maximising_alpha(t, q), 4)
+    rows = [{"q": setting(q), **{a: number(maximising_alpha(t, q), 4)
                                  for a, t in angles.items()}} for q in u_over_d_curves]
     columns = {"$q$": ("q", "s"),
                **{rf"$\alpha^*$ at $\theta_{{ji}} =$ {a}": (a, "s") for a in angles}}
@@ -248,7 +249,7 @@ def glue_alpha_star(audit, u_over_d_curves) -> None:
             rows_check, rf"The maximiser $\alpha^*$ at {number(audit.n_theta)} angles and $q$ = "
             f"{listing(audit.u_over_d)}: closed form, numerical root and dense search.",
             "tab-02-alpha-star-check"),
-        alpha_star_q1=number(pf.maximising_alpha(np.pi / 4, 1.0)),
+        alpha_star_q1=number(maximising_alpha(np.pi / 4, 1.0)),
         alpha_star_gap=number(audit.min_distance_from_1),
         alpha_star_q0=small(audit.alpha_star_at_q0),
         alpha_star_closed=small(audit.max_closed_vs_numeric, 1e-13),
@@ -300,7 +301,7 @@ def glue_printed_matrix(audit) -> None:
 
     Parameters
     ----------
-    audit : obslib.studies.pair_form.PrintedMatrixAudit
+    audit : obslib.studies.pair_closed_form.PrintedMatrixAudit
         The audit's result.
     """
     w = audit.witness
@@ -324,9 +325,9 @@ def glue_dtheta(audit, n_rational_points: int) -> None:
 
     Parameters
     ----------
-    audit : obslib.studies.pair_form.ThetaDerivativeAudit
+    audit : obslib.studies.theorem5_proof.ThetaDerivativeAudit
         The audit of :math:`\partial C/\partial\theta`
-        (:func:`obslib.studies.pair_form.theta_derivative_audit`).
+        (:func:`obslib.studies.theorem5_proof.theta_derivative_audit`).
     n_rational_points : int
         The rational points :math:`(\alpha, q)` it samples.
     """
@@ -358,9 +359,9 @@ def glue_halfpi(audit, theorem5, n_rational_points: int) -> None:
 
     Parameters
     ----------
-    audit : obslib.studies.pair_form.AlphaDerivativeAudit
+    audit : obslib.studies.theorem5_proof.AlphaDerivativeAudit
         The audit's result.
-    theorem5 : obslib.studies.pair_form.Theorem5Audit
+    theorem5 : obslib.studies.pair_closed_form.Theorem5Audit
         Theorem 5's audit (the printed maximum at :math:`\theta = \pi/2`).
     n_rational_points : int
         The points sampled.
@@ -390,7 +391,7 @@ def glue_dalpha(audit, n_rational_points: int) -> None:
 
     Parameters
     ----------
-    audit : obslib.studies.pair_form.AlphaDerivativeAudit
+    audit : obslib.studies.theorem5_proof.AlphaDerivativeAudit
         The audit of the derivatives in :math:`\alpha`.
     n_rational_points : int
         How many points :math:`(\alpha, \theta, q)` it compares the two at.
@@ -418,12 +419,13 @@ def glue_dalpha(audit, n_rational_points: int) -> None:
 
 def glue_dalpha_min(audit) -> None:
     r"""Where :math:`\partial C/\partial\alpha` is smallest for a fixed angle and speed
-    (:func:`obslib.studies.pair_form.dalpha_minimum_audit`): the cases, those with the minimum
-    at a finite :math:`\alpha`, where that is, and the derivative's value at :math:`\alpha = 0`.
+    (:func:`obslib.studies.theorem5_proof.dalpha_minimum_audit`): the cases, those with the
+    minimum at a finite :math:`\alpha`, where that is, and the derivative's value at
+    :math:`\alpha = 0`.
 
     Parameters
     ----------
-    audit : obslib.studies.pair_form.DalphaMinimumAudit
+    audit : obslib.studies.theorem5_proof.DalphaMinimumAudit
         The audit's result.
     """
     glue_texts(
@@ -474,7 +476,7 @@ def exercise_numbers(u_max: float, d_io: float, u_rerun: float = EXERCISE_U_RERU
     a, th = e["alpha"], e["theta"]
     S = float(np.sqrt(1 + a**4 + 2 * a**2 * np.cos(2 * th)))
     q, q2 = u_max / d_io, u_rerun / d_io
-    star, star0 = float(pf.maximising_alpha(th, q)), float(pf.maximising_alpha(th, 0.0))
+    star, star0 = float(maximising_alpha(th, q)), float(maximising_alpha(th, 0.0))
     return {
         "by_hand": {"S": S, "bound": float(pair_bound_polar(a, th, e["q"]))},
         "rerun": {"q": q, "q_rerun": q2,

@@ -1,6 +1,6 @@
 """Audits of the Weyl step of Theorem 1's proof for 2x2 symmetric matrices: Eqs. (18)-(19) and the
 appendix's range of the dual Weyl inequality (notebook 02, claims of
-:mod:`obslib.claims.pair_form`)."""
+:mod:`obslib.claims.pair_closed_form`)."""
 
 from __future__ import annotations
 
@@ -69,10 +69,10 @@ def weyl_audit(n_pairs: int, seed: int) -> WeylAudit:
 def _weyl_audit(n_pairs, seed):
     import sympy as sp
 
-    from .. import symbolic as sy
+    from .. import symbolic
 
     n = as_int(n_pairs, "n_pairs", 1)
-    sym = {k: bool(sp.expand(s - t) == 0) for k, (s, t) in sy.weyl_2x2_slacks().items()}
+    sym = {k: bool(sp.expand(s - t) == 0) for k, (s, t) in symbolic.weyl_2x2_slacks().items()}
     X = random_symmetric_2x2(n, seed)
     Y = random_symmetric_2x2(n, seed + 1)
     norm = np.abs(np.linalg.eigvalsh(X)).max(axis=-1) + np.abs(np.linalg.eigvalsh(Y)).max(axis=-1)

@@ -38,9 +38,10 @@ remainders), not by the heuristic ``sympy.simplify``: an expansion that returns 
 
 Examples
 --------
->>> from obslib import symbolic as sy
->>> (sy.theorem4_residuals()["ratio"], sy.max_value_exact(),
-...  sy.closed_forms_hold()["dalpha"])
+>>> from obslib.symbolic import (closed_forms_hold, max_value_exact,
+...                              theorem4_residuals)
+>>> (theorem4_residuals()["ratio"], max_value_exact(),
+...  closed_forms_hold()["dalpha"])
 (0, 0, True)
 """
 

@@ -39,11 +39,12 @@ def lambdify_expr(expr, args, modules: str = "numpy", cse: bool = False):
     Theorem 4's bound for two sensors at right angles and equal distances, static target:
 
     >>> import numpy as np
-    >>> from obslib import symbolic as sy
-    >>> f = sy.lambdify_expr(sy.theorem4_bound(), sy.RATIO_ARGS)
+    >>> from obslib.symbolic import (ALPHA, Q, RATIO_ARGS, lambdify_expr,
+    ...                              theorem4_bound)
+    >>> f = lambdify_expr(theorem4_bound(), RATIO_ARGS)
     >>> round(float(f(1.0, np.pi / 2, 0.0)), 12)
     1.0
-    >>> sy.lambdify_expr(sy.ALPHA + sy.Q, [sy.ALPHA])
+    >>> lambdify_expr(ALPHA + Q, [ALPHA])
     Traceback (most recent call last):
     ...
     ValueError: expression has free symbols not in args: ['q']
@@ -69,8 +70,8 @@ def latex_eq(lhs: str, expr) -> str:
 
     Examples
     --------
-    >>> from obslib import symbolic as sy
-    >>> sy.latex_eq("C^{-1}", sy.ALPHA / 2)
+    >>> from obslib.symbolic import ALPHA, latex_eq
+    >>> latex_eq("C^{-1}", ALPHA / 2)
     'C^{-1} = \\frac{\\alpha}{2}'
     """
     return f"{as_str(lhs, 'lhs')} = {sp.latex(as_expr(expr, 'expr'))}"
@@ -120,10 +121,10 @@ def max_difference_at_rational_points(
     Examples
     --------
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
+    >>> from obslib.symbolic import THETA
     >>> from obslib.symbolic.evaluation import max_difference_at_rational_points
-    >>> expr = sp.sin(sy.THETA)**2 + sp.cos(sy.THETA)**2
-    >>> d = max_difference_at_rational_points(expr, 1, {sy.THETA: (0.0, 3.0)},
+    >>> expr = sp.sin(THETA)**2 + sp.cos(THETA)**2
+    >>> d = max_difference_at_rational_points(expr, 1, {THETA: (0.0, 3.0)},
     ...                                       n_points=5)
     >>> d < 1e-40
     True

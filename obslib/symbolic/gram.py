@@ -41,8 +41,8 @@ def relative_rows() -> sp.Matrix:
 
     Examples
     --------
-    >>> from obslib import symbolic as sy
-    >>> sy.relative_rows()
+    >>> from obslib.symbolic import relative_rows
+    >>> relative_rows()
     Matrix([
     [o_x - p_ix, o_y - p_iy],
     [o_x - p_jx, o_y - p_jy]])
@@ -58,8 +58,8 @@ def cartesian_gram() -> sp.Matrix:
     --------
     The diagonal holds the squared x and y offsets of both sensors, and the matrix is symmetric:
 
-    >>> from obslib import symbolic as sy
-    >>> g = sy.cartesian_gram()
+    >>> from obslib.symbolic import cartesian_gram
+    >>> g = cartesian_gram()
     >>> g[0, 0]
     (o_x - p_ix)**2 + (o_x - p_jx)**2
     >>> g[0, 1] == g[1, 0]
@@ -83,8 +83,8 @@ def printed_cartesian_gram() -> sp.Matrix:
     The printed diagonal lacks the second sensor's term of the derived one
     (:func:`cartesian_gram`):
 
-    >>> from obslib import symbolic as sy
-    >>> (sy.cartesian_gram() - sy.printed_cartesian_gram())[0, 0]
+    >>> from obslib.symbolic import cartesian_gram, printed_cartesian_gram
+    >>> (cartesian_gram() - printed_cartesian_gram())[0, 0]
     (o_x - p_jx)**2
     """
     return sp.Matrix(
@@ -101,8 +101,8 @@ def polar_substitution() -> dict:
 
     Examples
     --------
-    >>> from obslib import symbolic as sy
-    >>> sy.polar_substitution()[sy.PIX]
+    >>> from obslib.symbolic import PIX, polar_substitution
+    >>> polar_substitution()[PIX]
     d_io*cos(theta_i) + o_x
     """
     return {
@@ -121,8 +121,8 @@ def polar_gram() -> sp.Matrix:
     --------
     The target's position drops out:
 
-    >>> from obslib import symbolic as sy
-    >>> sy.polar_gram()[0, 0]
+    >>> from obslib.symbolic import polar_gram
+    >>> polar_gram()[0, 0]
     d_io**2*cos(theta_i)**2 + d_jo**2*cos(theta_j)**2
     """
     return cartesian_gram().subs(polar_substitution()).applyfunc(sp.expand)
@@ -136,8 +136,8 @@ def printed_polar_gram() -> sp.Matrix:
     It equals the derived :func:`polar_gram` entry by entry:
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> [sp.expand(e) for e in sy.polar_gram() - sy.printed_polar_gram()]
+    >>> from obslib.symbolic import polar_gram, printed_polar_gram
+    >>> [sp.expand(e) for e in polar_gram() - printed_polar_gram()]
     [0, 0, 0, 0]
     """
     ci, si, cj, sj = sp.cos(THETA_I), sp.sin(THETA_I), sp.cos(THETA_J), sp.sin(THETA_J)
@@ -178,10 +178,10 @@ def eigenvalues(m: sp.Matrix) -> tuple[sp.Expr, sp.Expr]:
     Examples
     --------
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> sy.eigenvalues(sp.Matrix([[2, 1], [1, 2]]))
+    >>> from obslib.symbolic import eigenvalues
+    >>> eigenvalues(sp.Matrix([[2, 1], [1, 2]]))
     (1, 3)
-    >>> sy.eigenvalues(sp.Matrix([[1, 2], [0, 1]]))
+    >>> eigenvalues(sp.Matrix([[1, 2], [0, 1]]))
     Traceback (most recent call last):
     ...
     ValueError: matrix is not symmetric: m[0, 1] != m[1, 0]
@@ -200,9 +200,9 @@ def cartesian_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
     Their sum is the trace, the sum of the squared distances to the two sensors:
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> lmin, lmax = sy.cartesian_eigenvalues()
-    >>> sp.expand(lmin + lmax - sy.cartesian_gram().trace())
+    >>> from obslib.symbolic import cartesian_eigenvalues, cartesian_gram
+    >>> lmin, lmax = cartesian_eigenvalues()
+    >>> sp.expand(lmin + lmax - cartesian_gram().trace())
     0
     """
     return eigenvalues(cartesian_gram())
@@ -223,8 +223,8 @@ def polar_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
     They are Eq. (33) as printed (:func:`printed_eigenvalues`):
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> pairs = zip(sy.polar_eigenvalues(), sy.printed_eigenvalues())
+    >>> from obslib.symbolic import polar_eigenvalues, printed_eigenvalues
+    >>> pairs = zip(polar_eigenvalues(), printed_eigenvalues())
     >>> [sp.expand(a - b) for a, b in pairs]
     [0, 0]
     """
@@ -252,12 +252,12 @@ def pythagorean_remainder(expr: sp.Expr) -> sp.Expr:
     Examples
     --------
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> t = sy.THETA_I
-    >>> sy.pythagorean_remainder(sp.cos(2 * t) - 1 + 2 * sp.sin(t) ** 2)
+    >>> from obslib.symbolic import THETA_I, THETA_J, U, pythagorean_remainder
+    >>> t = THETA_I
+    >>> pythagorean_remainder(sp.cos(2 * t) - 1 + 2 * sp.sin(t) ** 2)
     0
-    >>> t = sy.THETA_J
-    >>> sy.pythagorean_remainder(sp.sin(t) ** 2 + sp.cos(t) ** 2 - 1 + sy.U)
+    >>> t = THETA_J
+    >>> pythagorean_remainder(sp.sin(t) ** 2 + sp.cos(t) ** 2 - 1 + U)
     u
     """
     ci, si, cj, sj = sp.symbols("c_i s_i c_j s_j", real=True)
@@ -278,10 +278,11 @@ def printed_eigenvalues() -> tuple[sp.Expr, sp.Expr]:
     Their product is the determinant :math:`d_{io}^2 d_{jo}^2 \sin^2\theta_{ji}`:
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> lmin, lmax = sy.printed_eigenvalues()
-    >>> det = (sy.D_IO * sy.D_JO * sp.sin(sy.THETA_J - sy.THETA_I)) ** 2
-    >>> sy.pythagorean_remainder(lmin * lmax - det)
+    >>> from obslib.symbolic import (D_IO, D_JO, THETA_I, THETA_J,
+    ...                              printed_eigenvalues, pythagorean_remainder)
+    >>> lmin, lmax = printed_eigenvalues()
+    >>> det = (D_IO * D_JO * sp.sin(THETA_J - THETA_I)) ** 2
+    >>> pythagorean_remainder(lmin * lmax - det)
     0
     """
     root = sp.sqrt(D_IO**4 + D_JO**4 + 2 * D_IO**2 * D_JO**2 * sp.cos(2 * (THETA_J - THETA_I)))
@@ -300,8 +301,8 @@ def discriminant_cartesian() -> tuple[sp.Expr, sp.Expr]:
 
     Examples
     --------
-    >>> from obslib import symbolic as sy
-    >>> disc, paper = sy.discriminant_cartesian()
+    >>> from obslib.symbolic import discriminant_cartesian
+    >>> disc, paper = discriminant_cartesian()
     >>> disc - paper
     0
     """

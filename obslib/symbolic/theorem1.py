@@ -29,8 +29,8 @@ def weyl_2x2_slacks() -> dict[str, tuple[sp.Expr, sp.Expr]]:
     Examples
     --------
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> slacks = sy.weyl_2x2_slacks()
+    >>> from obslib.symbolic import weyl_2x2_slacks
+    >>> slacks = weyl_2x2_slacks()
     >>> len(slacks), all(sp.expand(s - t) == 0 for s, t in slacks.values())
     (6, True)
     """

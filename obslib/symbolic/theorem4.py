@@ -65,8 +65,8 @@ def bound_from_eigenvalues(lmin, lmax, u=U) -> sp.Expr:
     Examples
     --------
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> sy.bound_from_eigenvalues(sp.Integer(1), 3, u=1)
+    >>> from obslib.symbolic import bound_from_eigenvalues
+    >>> bound_from_eigenvalues(sp.Integer(1), 3, u=1)
     1/2
     """
     lmin, lmax, u = as_expr(lmin, "lmin"), as_expr(lmax, "lmax"), as_expr(u, "u")
@@ -79,8 +79,8 @@ def ratio_substitution() -> dict:
 
     Examples
     --------
-    >>> from obslib import symbolic as sy
-    >>> sy.ratio_substitution()[sy.D_JO]
+    >>> from obslib.symbolic import D_JO, ratio_substitution
+    >>> ratio_substitution()[D_JO]
     alpha*d_io
     """
     return {D_JO: ALPHA * D_IO, THETA_J: THETA_I + THETA, U: Q * D_IO}
@@ -93,8 +93,8 @@ def pull_out_of_roots(expr: sp.Expr) -> sp.Expr:
     Examples
     --------
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> sy.pull_out_of_roots(sp.sqrt(sy.D_IO**4 + sy.D_IO**4 * sy.ALPHA**2))
+    >>> from obslib.symbolic import ALPHA, D_IO, pull_out_of_roots
+    >>> pull_out_of_roots(sp.sqrt(D_IO**4 + D_IO**4 * ALPHA**2))
     d_io**2*sqrt(alpha**2 + 1)
     """
     return as_expr(expr, "expr").replace(
@@ -112,8 +112,8 @@ def polar_ratio() -> sp.Expr:
 
     Examples
     --------
-    >>> from obslib import symbolic as sy
-    >>> sorted(str(s) for s in sy.polar_ratio().free_symbols)
+    >>> from obslib.symbolic import polar_ratio
+    >>> sorted(str(s) for s in polar_ratio().free_symbols)
     ['alpha', 'q', 'theta']
     """
     lmin, lmax = polar_eigenvalues()
@@ -146,10 +146,11 @@ def cartesian_ratio_values(point: dict, digits: int | None = None) -> dict:
     --------
     Target at the origin, sensors at :math:`(1, 0)` and :math:`(0, 2)`, speed 1:
 
-    >>> from obslib import symbolic as sy
-    >>> point = dict(zip(sy.CARTESIAN_ARGS, [0, 0, 1, 0, 0, 2, 1]))
-    >>> v = sy.cartesian_ratio_values(point)
-    >>> v[sy.ALPHA], v[sy.THETA], v[sy.Q]
+    >>> from obslib.symbolic import (ALPHA, CARTESIAN_ARGS, Q, THETA,
+    ...                              cartesian_ratio_values)
+    >>> point = dict(zip(CARTESIAN_ARGS, [0, 0, 1, 0, 0, 2, 1]))
+    >>> v = cartesian_ratio_values(point)
+    >>> v[ALPHA], v[THETA], v[Q]
     (2, pi/2, 1)
     """
     point = as_mapping(point, "point")
@@ -196,8 +197,8 @@ def theorem4_residuals() -> dict[str, sp.Expr]:
 
     Examples
     --------
-    >>> from obslib import symbolic as sy
-    >>> r = sy.theorem4_residuals()
+    >>> from obslib.symbolic import theorem4_residuals
+    >>> r = theorem4_residuals()
     >>> r["polar matrix"], r["ratio"], r["cartesian discriminant"]
     ((0, 0, 0, 0), 0, 0)
     """
@@ -227,8 +228,8 @@ def theorem4_radicand() -> sp.Expr:
     At :math:`\theta = \pi/2` it is a perfect square, :math:`S = |1 - \alpha^2|`:
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> sp.factor(sy.theorem4_radicand().subs(sy.THETA, sp.pi / 2))
+    >>> from obslib.symbolic import THETA, theorem4_radicand
+    >>> sp.factor(theorem4_radicand().subs(THETA, sp.pi / 2))
     (alpha - 1)**2*(alpha + 1)**2
     """
     return 1 + ALPHA**4 + 2 * ALPHA**2 * _COS2
@@ -247,8 +248,9 @@ def theorem4_bound(squared: bool = False) -> sp.Expr:
     Two sensors at right angles and equal distances from a static target: :math:`C^{-1} = 1`.
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> sy.theorem4_bound().subs({sy.ALPHA: 1, sy.THETA: sp.pi / 2, sy.Q: 0})
+    >>> from obslib.symbolic import ALPHA, Q, THETA, theorem4_bound
+    >>> at = {ALPHA: 1, THETA: sp.pi / 2, Q: 0}
+    >>> theorem4_bound().subs(at)
     1
     """
     return _theorem4_bound(as_bool(squared, "squared"))
@@ -286,11 +288,11 @@ def vanishes_with_radicals(expr: sp.Expr, radicals) -> bool:
     Examples
     --------
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> r = sp.sqrt(1 + sy.ALPHA**2)
-    >>> sy.vanishes_with_radicals(1 / (r - sy.ALPHA) - (r + sy.ALPHA), [r])
+    >>> from obslib.symbolic import ALPHA, vanishes_with_radicals
+    >>> r = sp.sqrt(1 + ALPHA**2)
+    >>> vanishes_with_radicals(1 / (r - ALPHA) - (r + ALPHA), [r])
     True
-    >>> sy.vanishes_with_radicals(r - sy.ALPHA - 1, [r])
+    >>> vanishes_with_radicals(r - ALPHA - 1, [r])
     False
     """
     if isinstance(radicals, (str, bytes)) or not isinstance(radicals, (list, tuple)):

@@ -34,8 +34,8 @@ def max_value_exact() -> sp.Expr:
 
     Examples
     --------
-    >>> from obslib import symbolic as sy
-    >>> sy.max_value_exact()
+    >>> from obslib.symbolic import max_value_exact
+    >>> max_value_exact()
     0
     """
     at = theorem4_bound().subs({ALPHA: 1, THETA: sp.pi / 2})
@@ -52,8 +52,8 @@ def dbound_dtheta() -> sp.Expr:
     It vanishes at :math:`\theta = \pi/2` when :math:`\alpha \ne 1`:
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> sy.dbound_dtheta().subs({sy.ALPHA: 2, sy.THETA: sp.pi / 2, sy.Q: 1})
+    >>> from obslib.symbolic import ALPHA, Q, THETA, dbound_dtheta
+    >>> dbound_dtheta().subs({ALPHA: 2, THETA: sp.pi / 2, Q: 1})
     0
     """
     return sp.diff(theorem4_bound(), THETA)
@@ -78,8 +78,8 @@ def dbound_dtheta_closed(abbreviate: bool = False) -> sp.Expr:
 
     Examples
     --------
-    >>> from obslib import symbolic as sy
-    >>> sy.dbound_dtheta_closed(abbreviate=True)
+    >>> from obslib.symbolic import dbound_dtheta_closed
+    >>> dbound_dtheta_closed(abbreviate=True)
     2*alpha**2*(alpha**2 + q**2 + 1)*sin(2*theta)/(C*D**2*S)
     """
     S, C, D = _parts(abbreviate)
@@ -99,11 +99,12 @@ def dbound_dtheta_at_zero() -> sp.Expr:
     :math:`\theta = 0` agrees:
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> sy.dbound_dtheta_at_zero().subs({sy.ALPHA: 1, sy.Q: 0})
+    >>> from obslib.symbolic import (ALPHA, Q, THETA, dbound_dtheta,
+    ...                              dbound_dtheta_at_zero)
+    >>> dbound_dtheta_at_zero().subs({ALPHA: 1, Q: 0})
     1/2
-    >>> at = {sy.ALPHA: 1, sy.Q: 0, sy.THETA: sp.Rational(1, 10**6)}
-    >>> round(float(sy.dbound_dtheta().subs(at)), 6)
+    >>> at = {ALPHA: 1, Q: 0, THETA: sp.Rational(1, 10**6)}
+    >>> round(float(dbound_dtheta().subs(at)), 6)
     0.5
     """
     return ALPHA / sp.sqrt((1 + ALPHA**2) * (1 + ALPHA**2 + Q**2))
@@ -119,9 +120,9 @@ def dbound_dalpha() -> sp.Expr:
     (:func:`bound_halfpi_piecewise`), so the slope is 1:
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> at = {sy.ALPHA: sp.Rational(1, 2), sy.THETA: sp.pi / 2, sy.Q: 0}
-    >>> sp.nsimplify(sy.dbound_dalpha().subs(at))
+    >>> from obslib.symbolic import ALPHA, Q, THETA, dbound_dalpha
+    >>> at = {ALPHA: sp.Rational(1, 2), THETA: sp.pi / 2, Q: 0}
+    >>> sp.nsimplify(dbound_dalpha().subs(at))
     1
     """
     return sp.diff(theorem4_bound(), ALPHA)
@@ -139,8 +140,8 @@ def stationarity_alpha(abbreviate: bool = False) -> sp.Expr:
 
     Examples
     --------
-    >>> from obslib import symbolic as sy
-    >>> sy.stationarity_alpha(abbreviate=True)
+    >>> from obslib.symbolic import stationarity_alpha
+    >>> stationarity_alpha(abbreviate=True)
     q**2*(S - alpha**2 - cos(2*theta)) + (1 - alpha**2)*(1 - cos(2*theta))
     """
     S = _parts(abbreviate)[0]
@@ -157,8 +158,8 @@ def stationarity_alpha_at_1() -> sp.Expr:
 
     Examples
     --------
-    >>> from obslib import symbolic as sy
-    >>> sy.stationarity_alpha_at_1()
+    >>> from obslib.symbolic import stationarity_alpha_at_1
+    >>> stationarity_alpha_at_1()
     2*q**2*(-cos(theta)**2 + Abs(cos(theta)))
     """
     return sp.factor(sp.expand(sp.expand_trig(stationarity_alpha().subs(ALPHA, 1))))
@@ -174,8 +175,8 @@ def closed_forms_hold() -> dict[str, bool]:
 
     Examples
     --------
-    >>> from obslib import symbolic as sy
-    >>> sy.closed_forms_hold()
+    >>> from obslib.symbolic import closed_forms_hold
+    >>> closed_forms_hold()
     {'dtheta': True, 'dalpha': True}
     """
     radicals = [theorem4_bound(), _S]
@@ -196,9 +197,9 @@ def dbound_dalpha_closed(abbreviate: bool = False) -> sp.Expr:
     The same slope 1 as :func:`dbound_dalpha` at :math:`\alpha = 1/2, \theta = \pi/2, q = 0`:
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> at = {sy.ALPHA: sp.Rational(1, 2), sy.THETA: sp.pi / 2, sy.Q: 0}
-    >>> sp.nsimplify(sy.dbound_dalpha_closed().subs(at))
+    >>> from obslib.symbolic import ALPHA, Q, THETA, dbound_dalpha_closed
+    >>> at = {ALPHA: sp.Rational(1, 2), THETA: sp.pi / 2, Q: 0}
+    >>> sp.nsimplify(dbound_dalpha_closed().subs(at))
     1
     """
     S, C, D = _parts(abbreviate)
@@ -213,8 +214,8 @@ def printed_stationarity_alpha() -> sp.Expr:
     It is the derived numerator :func:`stationarity_alpha`:
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> sp.expand(sy.printed_stationarity_alpha() - sy.stationarity_alpha())
+    >>> from obslib.symbolic import printed_stationarity_alpha, stationarity_alpha
+    >>> sp.expand(printed_stationarity_alpha() - stationarity_alpha())
     0
     """
     c = sp.cos(2 * THETA)
@@ -233,9 +234,10 @@ def printed_dbound_dalpha() -> sp.Expr:
     Not the derivative, but of the same sign (a positive factor apart):
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> at = {sy.ALPHA: sp.Rational(1, 2), sy.THETA: sp.pi / 3, sy.Q: 1}
-    >>> ratio = sy.printed_dbound_dalpha() / sy.dbound_dalpha_closed()
+    >>> from obslib.symbolic import (ALPHA, Q, THETA, dbound_dalpha_closed,
+    ...                              printed_dbound_dalpha)
+    >>> at = {ALPHA: sp.Rational(1, 2), THETA: sp.pi / 3, Q: 1}
+    >>> ratio = printed_dbound_dalpha() / dbound_dalpha_closed()
     >>> float(ratio.subs(at)) > 0
     True
     """
@@ -252,9 +254,9 @@ def printed_dbound_dalpha_halfpi() -> sp.Expr:
     (:func:`dbound_dalpha`): the sign is right, the value is not.
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
+    >>> from obslib.symbolic import ALPHA, Q, printed_dbound_dalpha_halfpi
     >>> half = sp.Rational(1, 2)
-    >>> sy.printed_dbound_dalpha_halfpi().subs({sy.ALPHA: half, sy.Q: 0})
+    >>> printed_dbound_dalpha_halfpi().subs({ALPHA: half, Q: 0})
     3*sqrt(2)/64
     """
     return ALPHA * (1 - ALPHA**2) / (
@@ -272,9 +274,10 @@ def printed_max_halfpi() -> sp.Expr:
     It agrees with :func:`bound_halfpi_piecewise` on both sides of :math:`\alpha = 1`:
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> diff = sy.printed_max_halfpi() - sy.bound_halfpi_piecewise()
-    >>> [sp.simplify(diff.subs({sy.ALPHA: a, sy.Q: sp.Rational(1, 3)}))
+    >>> from obslib.symbolic import (ALPHA, Q, bound_halfpi_piecewise,
+    ...                              printed_max_halfpi)
+    >>> diff = printed_max_halfpi() - bound_halfpi_piecewise()
+    >>> [sp.simplify(diff.subs({ALPHA: a, Q: sp.Rational(1, 3)}))
     ...  for a in (sp.Rational(1, 2), 3)]
     [0, 0]
     """
@@ -292,10 +295,12 @@ def bound_halfpi_piecewise() -> sp.Expr:
     At :math:`\alpha = 2, q = 0` it is :math:`1/2`, as Eq. (9) gives (:func:`theorem4_bound`):
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> sy.bound_halfpi_piecewise().subs({sy.ALPHA: 2, sy.Q: 0})
+    >>> from obslib.symbolic import (ALPHA, Q, THETA, bound_halfpi_piecewise,
+    ...                              theorem4_bound)
+    >>> bound_halfpi_piecewise().subs({ALPHA: 2, Q: 0})
     1/2
-    >>> sy.theorem4_bound().subs({sy.ALPHA: 2, sy.THETA: sp.pi / 2, sy.Q: 0})
+    >>> at = {ALPHA: 2, THETA: sp.pi / 2, Q: 0}
+    >>> theorem4_bound().subs(at)
     1/2
     """
     return sp.Piecewise(
@@ -325,8 +330,8 @@ def alpha_star_squared() -> sp.Expr:
     --------
     For a static target (:math:`q = 0`) the maximiser is :math:`\alpha^* = 1`:
 
-    >>> from obslib import symbolic as sy
-    >>> sy.alpha_star_squared().subs(sy.Q, 0)
+    >>> from obslib.symbolic import Q, alpha_star_squared
+    >>> alpha_star_squared().subs(Q, 0)
     1
     """
     t = sp.Symbol("t", positive=True)
@@ -362,8 +367,8 @@ def alpha_star_closed() -> sp.Expr:
     Its square is :func:`alpha_star_squared`:
 
     >>> import sympy as sp
-    >>> from obslib import symbolic as sy
-    >>> sp.cancel(sp.expand(sy.alpha_star_closed() ** 2 - sy.alpha_star_squared()))
+    >>> from obslib.symbolic import alpha_star_closed, alpha_star_squared
+    >>> sp.cancel(sp.expand(alpha_star_closed() ** 2 - alpha_star_squared()))
     0
     """
     r = sp.sqrt(1 + Q**2)

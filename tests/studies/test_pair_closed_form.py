@@ -1,18 +1,18 @@
-"""Audits of the pair closed form (obslib.studies.pair_form): Fig. 2's grids, the printed Weyl
-range and Theorem 4's audit against a straightforward loop."""
+"""Audits of the pair closed form (obslib.studies.pair_closed_form): Fig. 2's grids, the printed
+Weyl range and Theorem 4's audit against a straightforward loop."""
 
 import numpy as np
 import pytest
 
 import obslib as ob
-from obslib import symbolic as sy
+from obslib import symbolic
 from obslib.pair_form import bound_surface, fine_grid, grid_maximum
 from obslib.scenes import random_scenes
-from obslib.studies import pair_form as spf
+from obslib.studies import pair_closed_form, weyl
 
 
 def test_paper_grid_is_51_by_63_and_misses_half_pi():
-    a, t = spf.paper_grid()
+    a, t = pair_closed_form.paper_grid()
     assert a.size == 51 and t.size == 63
     assert a[0] == 0 and a[-1] == pytest.approx(5.0) and a[10] == 1.0
     assert t[0] == -np.pi and t[-1] <= np.pi
@@ -21,13 +21,13 @@ def test_paper_grid_is_51_by_63_and_misses_half_pi():
 
 def test_paper_grid_validation():
     with pytest.raises(ValueError, match="alpha_max"):
-        spf.paper_grid(-1.0)
+        pair_closed_form.paper_grid(-1.0)
     with pytest.raises(ValueError, match="step"):
-        spf.paper_grid(5.0, 0.0)
+        pair_closed_form.paper_grid(5.0, 0.0)
 
 
 def test_fig2_maxima_paper_grid_versus_fine_grid():
-    a, t = spf.paper_grid()
+    a, t = pair_closed_form.paper_grid()
     m = grid_maximum(a, t, bound_surface(a, t, 1.0, 1.0))
     assert m.value < 1 / np.sqrt(2) - 1e-3
     assert len(m.points) == 1 and m.points[0][0] == 1.0
@@ -35,8 +35,9 @@ def test_fig2_maxima_paper_grid_versus_fine_grid():
 
 
 def test_fig2_grids_are_the_bound_on_both_grids():
-    g = spf.fig2_grids(1.0, 1.0, 5.0, 0.1, 20, 30)
-    for name, (a, t) in (("paper", spf.paper_grid(5.0, 0.1)), ("fine", fine_grid(5.0, 20, 30))):
+    g = pair_closed_form.fig2_grids(1.0, 1.0, 5.0, 0.1, 20, 30)
+    for name, (a, t) in (("paper", pair_closed_form.paper_grid(5.0, 0.1)),
+                         ("fine", fine_grid(5.0, 20, 30))):
         np.testing.assert_array_equal(g[name].alpha, a)
         np.testing.assert_array_equal(g[name].theta, t)
         A, T = np.meshgrid(a, t)
@@ -47,23 +48,23 @@ def test_fig2_grids_are_the_bound_on_both_grids():
 
 
 def test_printed_dual_weyl_range_admits_index_zero():
-    rng = spf.dual_weyl_printed_range(2)
+    rng = weyl.dual_weyl_printed_range(2)
     assert (1, 1, 0) in rng
     assert [t for t in rng if t[2] >= 1] == [(1, 2, 1), (2, 1, 1), (2, 2, 2)]
     with pytest.raises(ValueError):
-        spf.dual_weyl_printed_range(0)
+        weyl.dual_weyl_printed_range(0)
 
 
 def test_theorem4_audit_numerics_match_a_per_scene_loop():
     """The audit evaluates the scenes in arrays; the straightforward loop gives the same errors."""
     import mpmath
 
-    a = spf.theorem4_audit(5, 60, 3, 30)
-    cmin, cmax = sy.cartesian_eigenvalues()
-    f_cart = sy.bound_from_eigenvalues(cmin, cmax)
-    f_mp = sy.lambdify_expr(f_cart, sy.CARTESIAN_ARGS, "mpmath")
-    f_np = sy.lambdify_expr(f_cart, sy.CARTESIAN_ARGS, "numpy")
-    t_mp = sy.lambdify_expr(sy.theorem4_bound(), sy.RATIO_ARGS, "mpmath")
+    a = pair_closed_form.theorem4_audit(5, 60, 3, 30)
+    cmin, cmax = symbolic.cartesian_eigenvalues()
+    f_cart = symbolic.bound_from_eigenvalues(cmin, cmax)
+    f_mp = symbolic.lambdify_expr(f_cart, symbolic.CARTESIAN_ARGS, "mpmath")
+    f_np = symbolic.lambdify_expr(f_cart, symbolic.CARTESIAN_ARGS, "numpy")
+    t_mp = symbolic.lambdify_expr(symbolic.theorem4_bound(), symbolic.RATIO_ARGS, "mpmath")
     err_pb = err_np = err_polar = 0.0
     rng = np.random.default_rng(3 + 1)
     with mpmath.workdps(30):
@@ -89,7 +90,7 @@ def test_theorem4_audit_numerics_match_a_per_scene_loop():
 def test_theorem5_audit_grids_match_bound_surface_per_ratio():
     """The audit evaluates every q in one broadcast call; bound_surface per q gives the same."""
     qs = (0.0, 0.3, 1.0, 2.5)
-    a5 = spf.theorem5_audit(qs, 3.0, 8, 6, 3)
+    a5 = pair_closed_form.theorem5_audit(qs, 3.0, 8, 6, 3)
     alpha, theta = fine_grid(3.0, 8, 6)
     on_zero = np.isclose(np.abs(np.sin(theta)), 0.0, atol=1e-15)
     zero_lines = 0.0

@@ -1,5 +1,5 @@
 """Audits of Section III's Theorems 1-3 and Remark 1 on seeded random scenes (notebook 01, claims of
-:mod:`obslib.claims.section3`).
+:mod:`obslib.claims.model_and_bound`).
 
 Each audit draws seeded random scenes (:mod:`obslib.scenes`), computes the quantity a claim
 is about in two independent ways, and returns the counts and extremes that decide it. The

@@ -1,10 +1,12 @@
-"""Audits of the pair closed form (Theorems 4-5, Fig. 2, the Weyl step of Theorem 1) against SymPy
-and brute force (notebook 02, claims of :mod:`obslib.claims.pair_form`).
+"""Audits of the pair closed form (Theorems 4-5, Fig. 2) against SymPy and brute force (notebook
+02, claims of :mod:`obslib.claims.pair_closed_form`).
 
 The symbolic side lives in :mod:`obslib.symbolic` and the numerics in :mod:`obslib.pair_form`;
 this module compares them with :func:`obslib.pair_bounds` and :func:`obslib.pair_bound_polar`
 and packages the evidence that notebook ``02_pair_closed_form`` prints and the ledger judges.
-Every audit is a pure function of its arguments and is cached.
+The steps of Theorem 5's proof are audited in :mod:`obslib.studies.theorem5_proof` and the Weyl
+step of Theorem 1 in :mod:`obslib.studies.weyl`. Every audit is a pure function of its arguments
+and is cached.
 """
 
 from __future__ import annotations
@@ -14,7 +16,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._validate import as_int, as_nonnegative, as_positive, as_sequence
+from .._validate import as_int, as_nonnegative, as_nonnegatives, as_positive, as_sequence
 from ..bounds import pair_bound_polar, pair_bounds
 from ..pair_form import (
     GridMax,
@@ -25,15 +27,9 @@ from ..pair_form import (
     maximising_alpha_closed,
 )
 
-# the audits of notebook 02 are read here
-from .weyl import WeylAudit, dual_weyl_printed_range, weyl_audit
-
-__all__ = ["audit_ratios",  "paper_grid", "Fig2Grid",
-           "fig2_grids", "dual_weyl_printed_range", "Theorem4Audit", "theorem4_audit",
-           "PrintedMatrixAudit", "printed_matrix_audit", "Theorem5Audit", "theorem5_audit",
-           "ThetaDerivativeAudit", "theta_derivative_audit", "AlphaDerivativeAudit",
-           "alpha_derivative_audit", "alpha_star_thetas", "AlphaStarAudit", "alpha_star_audit",
-           "WeylAudit", "weyl_audit", "DalphaMinimumAudit", "dalpha_minimum_audit"]
+__all__ = ["audit_ratios", "paper_grid", "Fig2Grid", "fig2_grids", "Theorem4Audit",
+           "theorem4_audit", "PrintedMatrixAudit", "printed_matrix_audit", "Theorem5Audit",
+           "theorem5_audit", "alpha_star_thetas", "AlphaStarAudit", "alpha_star_audit"]
 
 
 def audit_ratios(u_max: float, d_io: float, u_over_d_curves) -> tuple:
@@ -196,12 +192,12 @@ def theorem4_audit(
 def _theorem4_audit(n_rational_points, n_random_points, seed, digits):
     import mpmath
 
-    from .. import symbolic as sy
-    from ..symbolic.evaluation import max_difference_at_rational_points as mdiff
+    from .. import symbolic
+    from ..symbolic.evaluation import max_difference_at_rational_points
 
     n_rat = as_int(n_rational_points, "n_rational_points", 1)
     n_rand = as_int(n_random_points, "n_random_points", 1)
-    res = sy.theorem4_residuals()
+    res = symbolic.theorem4_residuals()
     polar_ok = all(e == 0 for e in res["polar matrix"])
     eig_ok = all(
         res[k] == 0 for k in ("lambda_min", "lambda_max", "trace (mod cos^2 + sin^2 = 1)",
@@ -209,18 +205,19 @@ def _theorem4_audit(n_rational_points, n_random_points, seed, digits):
     )
     ratio_ok = res["ratio"] == 0
     disc_ok = res["cartesian discriminant"] == 0
-    cmin, cmax = sy.cartesian_eigenvalues()
-    f_cart = sy.bound_from_eigenvalues(cmin, cmax)
-    ranges = {s: (-3.0, 3.0) for s in sy.CARTESIAN_ARGS[:-1]}
-    ranges[sy.U] = (0.0, 2.0)
-    cart_diff = mdiff(
-        f_cart, sy.theorem4_bound(), ranges, n_rat, seed, digits,
-        point_map=lambda pt: sy.cartesian_ratio_values(pt, digits + 10),
+    cmin, cmax = symbolic.cartesian_eigenvalues()
+    f_cart = symbolic.bound_from_eigenvalues(cmin, cmax)
+    ranges = {s: (-3.0, 3.0) for s in symbolic.CARTESIAN_ARGS[:-1]}
+    ranges[symbolic.U] = (0.0, 2.0)
+    cart_diff = max_difference_at_rational_points(
+        f_cart, symbolic.theorem4_bound(), ranges, n_rat, seed, digits,
+        point_map=lambda pt: symbolic.cartesian_ratio_values(pt, digits + 10),
     )
 
-    f_mp = sy.lambdify_expr(f_cart, sy.CARTESIAN_ARGS, "mpmath", cse=True)
-    f_np = sy.lambdify_expr(f_cart, sy.CARTESIAN_ARGS, "numpy")
-    t_mp = sy.lambdify_expr(sy.theorem4_bound(), sy.RATIO_ARGS, "mpmath", cse=True)
+    f_mp = symbolic.lambdify_expr(f_cart, symbolic.CARTESIAN_ARGS, "mpmath", cse=True)
+    f_np = symbolic.lambdify_expr(f_cart, symbolic.CARTESIAN_ARGS, "numpy")
+    t_mp = symbolic.lambdify_expr(symbolic.theorem4_bound(), symbolic.RATIO_ARGS, "mpmath",
+                                  cse=True)
     scenes = _random_pair_scenes(n_rand, seed)
     w = np.array([pair_bounds(sen, tgt[None, :], u)[0, 1, 0] for sen, tgt, u in scenes])
     args = np.array([(*tgt, *sen[0], *sen[1], u) for sen, tgt, u in scenes])  # (n, 7)
@@ -274,20 +271,22 @@ def printed_matrix_audit() -> PrintedMatrixAudit:
     """
     import sympy as sp
 
-    from .. import symbolic as sy
+    from .. import symbolic
 
-    true = sy.cartesian_gram()
-    printed = sy.printed_cartesian_gram()
+    true = symbolic.cartesian_gram()
+    printed = symbolic.printed_cartesian_gram()
     wrong = tuple(
         (r, c) for r in range(2) for c in range(2) if sp.expand(printed[r, c] - true[r, c]) != 0
     )
-    witness = {sy.OX: 0, sy.OY: 0, sy.PIX: 1, sy.PIY: 2, sy.PJX: 3, sy.PJY: 1}
+    witness = {symbolic.OX: 0, symbolic.OY: 0, symbolic.PIX: 1, symbolic.PIY: 2,
+               symbolic.PJX: 3, symbolic.PJY: 1}
     t_w = true.subs(witness)
     p_w = printed.subs(witness)
     eig = tuple(float(x) for x in sorted(np.linalg.eigvalsh(np.array(p_w, dtype=float))))
-    sub = sy.polar_substitution()
+    sub = symbolic.polar_substitution()
     consistent = all(  # remainder modulo cos^2 + sin^2 = 1: 0 iff the identity holds
-        sy.pythagorean_remainder(e) == 0 for e in (printed.subs(sub) - sy.printed_polar_gram())
+        symbolic.pythagorean_remainder(e) == 0
+        for e in (printed.subs(sub) - symbolic.printed_polar_gram())
     )
     return PrintedMatrixAudit(
         wrong,
@@ -315,16 +314,6 @@ class Theorem5Audit:
     n_theta: int
 
 
-def _ratios_iv(u_over_d) -> tuple:
-    """The values of ``q = u_max / d_io`` of a Theorem 5 audit, a non-empty tuple of floats."""
-    if isinstance(u_over_d, np.ndarray):
-        u_over_d = u_over_d.tolist()
-    qs = tuple(as_nonnegative(q, "u_over_d") for q in as_sequence(u_over_d, "u_over_d"))
-    if not qs:
-        raise ValueError("u_over_d must list at least one value")
-    return qs
-
-
 def theorem5_audit(u_over_d: tuple, alpha_max: float, alpha_per_unit: int, theta_quarter: int,
                    n_rational_points: int = 50) -> Theorem5Audit:
     """Locate the maximum and the zeros of the bound on :func:`fine_grid` for each ``q``.
@@ -343,7 +332,8 @@ def theorem5_audit(u_over_d: tuple, alpha_max: float, alpha_per_unit: int, theta
     >>> a.symbolic_max_exact
     True
     """
-    return _theorem5_audit(_ratios_iv(u_over_d), as_positive(alpha_max, "alpha_max"),
+    return _theorem5_audit(as_nonnegatives(u_over_d, "u_over_d"),
+                           as_positive(alpha_max, "alpha_max"),
                            as_int(alpha_per_unit, "alpha_per_unit", 1),
                            as_int(theta_quarter, "theta_quarter", 1),
                            as_int(n_rational_points, "n_rational_points", 1))
@@ -353,8 +343,8 @@ def theorem5_audit(u_over_d: tuple, alpha_max: float, alpha_per_unit: int, theta
 def _theorem5_audit(u_over_d, alpha_max, alpha_per_unit, theta_quarter, n_rational_points):
     import sympy as sp
 
-    from .. import symbolic as sy
-    from ..symbolic.evaluation import max_difference_at_rational_points as mdiff
+    from .. import symbolic
+    from ..symbolic.evaluation import max_difference_at_rational_points
 
     qs = u_over_d
     alpha, theta = fine_grid(alpha_max, alpha_per_unit, theta_quarter)
@@ -374,183 +364,15 @@ def _theorem5_audit(u_over_d, alpha_max, alpha_per_unit, theta_quarter, n_ration
         pred.append(1.0 / np.sqrt(1.0 + q * q))
         zero_lines = max(zero_lines, float(Z[on_zero].max()), float(Z[:, alpha == 0].max()))
         large = max(large, float(pair_bound_polar(1e6, theta, q).max()))
-    f = sy.theorem4_bound()
-    exact = sy.max_value_exact() == 0
-    printed = mdiff(
-        sy.printed_max_halfpi(), f.subs(sy.THETA, sp.pi / 2),
-        {sy.ALPHA: (0.01, 5.0), sy.Q: (0.0, 3.0)}, n_rational_points, 0, 30,
+    f = symbolic.theorem4_bound()
+    exact = symbolic.max_value_exact() == 0
+    printed = max_difference_at_rational_points(
+        symbolic.printed_max_halfpi(), f.subs(symbolic.THETA, sp.pi / 2),
+        {symbolic.ALPHA: (0.01, 5.0), symbolic.Q: (0.0, 3.0)}, n_rational_points, 0, 30,
     )
     return Theorem5Audit(
         qs, tuple(gmax), tuple(argm), tuple(pred), exact, zero_lines, large, printed,
         alpha.size, theta.size,
-    )
-
-
-@dataclass(frozen=True)
-class ThetaDerivativeAudit:
-    """The proof's ``d C^-1/d theta = 0 => alpha^2 sin 2 theta = 0`` and its second derivatives."""
-
-    closed_form_equal: bool  #: SymPy's derivative - our factored form vanishes identically
-    slope_at_zero: str  #: right-hand slope at theta = 0 (a formula; the left one is its negative)
-    #: largest :math:`|\partial C / \partial\theta (\pm 10^{-12}) \mp \mathrm{slope}|` over the
-    #: points
-    slope_at_zero_error: float
-    #: smallest slope over those points (positive, so a corner, not a stationary point)
-    slope_at_zero_min: float
-    #: smallest :math:`\partial^2 (C^2) / \partial\theta^2` at :math:`\theta = 0` (positive)
-    square_second_derivative_zero: float
-    #: its largest value at :math:`\theta = \pi/2`, :math:`\alpha \ne 1` (negative)
-    square_second_derivative_halfpi: float
-    corner_halfpi_slopes: tuple  #: (left, right) slopes in theta at alpha = 1, theta = pi/2, q = 1
-
-
-def theta_derivative_audit(n_rational_points: int, seed: int) -> ThetaDerivativeAudit:
-    """Check the theta part of the proof of Theorem 5 symbolically (see
-    :func:`obslib.symbolic.dbound_dtheta_closed`).
-
-    Examples
-    --------
-    >>> a = theta_derivative_audit(n_rational_points=3, seed=0)
-    >>> a.closed_form_equal, a.slope_at_zero_min > 0
-    (True, True)
-    """
-    return _theta_derivative_audit(
-        as_int(n_rational_points, "n_rational_points", 1), as_int(seed, "seed", 0)
-    )
-
-
-@lru_cache(maxsize=4)
-def _theta_derivative_audit(n_rational_points, seed):
-    import mpmath
-    import sympy as sp
-
-    from .. import symbolic as sy
-
-    n = as_int(n_rational_points, "n_rational_points", 1)
-    a, th, q = sy.ALPHA, sy.THETA, sy.Q
-    closed_ok = sy.closed_forms_hold()["dtheta"]
-    deriv = sy.lambdify_expr(sy.dbound_dtheta_closed(), sy.RATIO_ARGS, "mpmath", cse=True)
-    slope = sy.lambdify_expr(sy.dbound_dtheta_at_zero(), (a, q), "mpmath")
-    rng0 = np.random.default_rng(seed + 7)
-    slope_err, slope_min = 0.0, np.inf
-    with mpmath.workdps(60):
-        tiny = mpmath.mpf(10) ** -12
-        for _ in range(n):
-            av = mpmath.mpf(int(rng0.integers(1, 4985))) / 997
-            qv = mpmath.mpf(int(rng0.integers(0, 2991))) / 997
-            right = deriv(av, tiny, qv)
-            left = deriv(av, -tiny, qv)
-            s0 = slope(av, qv)
-            slope_err = max(slope_err, float(abs(right - s0)), float(abs(left + s0)))
-            slope_min = min(slope_min, float(s0))
-    square = sy.theorem4_bound(squared=True)
-    d2 = sy.lambdify_expr(sp.diff(sp.diff(square, th), th), sy.RATIO_ARGS, "mpmath", cse=True)
-    rng = np.random.default_rng(seed)
-    vals0, valsh = [], []
-    with mpmath.workdps(30):
-        for _ in range(n):
-            k = int(rng.integers(1, 5000))
-            qv = mpmath.mpf(int(rng.integers(0, 3000))) / 997
-            if k == 997:  # alpha = 1: S = 0 at theta = pi/2
-                continue
-            av = mpmath.mpf(k) / 997
-            vals0.append(float(d2(av, 0, qv)))
-            valsh.append(float(d2(av, mpmath.pi / 2, qv)))
-    # alpha = 1, q = 1: one-sided slopes at theta = pi/2 (exactly +-(2 + q^2) / (2 (1 + q^2)^1.5));
-    # S^2 = 4 cos^2 theta loses 2 log10(1/h) digits to cancellation, O(h) from the limit
-    with mpmath.workdps(60):
-        h = mpmath.mpf(10) ** -15
-        left = float(deriv(1, mpmath.pi / 2 - h, 1))
-        right = float(deriv(1, mpmath.pi / 2 + h, 1))
-    return ThetaDerivativeAudit(
-        closed_ok, str(sy.dbound_dtheta_at_zero()), slope_err, slope_min, min(vals0), max(valsh),
-        (left, right),
-    )
-
-
-@dataclass(frozen=True)
-class AlphaDerivativeAudit:
-    """The proof's ``d C^-1 / d alpha`` at ``theta = +-pi/2`` and at a general fixed ``theta``."""
-
-    closed_form_equal: bool  #: SymPy's derivative - our factored form vanishes identically
-    numerator_equals_eq36: bool  #: our numerator g - the printed Eq. (34) expands to 0
-    printed_ratio_spread: tuple  #: (min, max) of true / printed derivative over rational points
-    #: largest :math:`|\partial C/\partial\alpha (0^+) - |\sin\theta| / \sqrt{1 + q^2}|`
-    slope_at_alpha0: float
-    #: smallest slope at :math:`\alpha = 0^+` (positive, so :math:`\alpha = 0` is not stationary)
-    slope_at_alpha0_min: float
-    #: at :math:`\theta = \pi/2`, :math:`q = 1`, the slope on :math:`(0, 1)` and left and right of
-    #: :math:`\alpha = 1`
-    halfpi_true_slopes: tuple
-    halfpi_printed_at_1: float  #: the printed derivative at alpha = 1 (0)
-    #: largest :math:`|` printed :math:`-` true derivative :math:`|` at :math:`\theta = \pi/2` on
-    #: :math:`(0, 1)`
-    halfpi_printed_vs_true: float
-    #: largest :math:`|\partial^2 C/\partial\alpha^2|` on :math:`(0, 1)`, :math:`\theta = \pi/2` (0)
-    halfpi_second_derivative_below_1: float
-
-
-def alpha_derivative_audit(n_rational_points: int, seed: int) -> AlphaDerivativeAudit:
-    """Check the alpha part of the proof of Theorem 5 (see
-    :func:`obslib.symbolic.dbound_dalpha_closed`, :func:`obslib.symbolic.printed_dbound_dalpha`).
-
-    Examples
-    --------
-    >>> a = alpha_derivative_audit(n_rational_points=3, seed=0)
-    >>> a.closed_form_equal, a.numerator_equals_eq36, a.halfpi_printed_at_1
-    (True, True, 0.0)
-    """
-    return _alpha_derivative_audit(
-        as_int(n_rational_points, "n_rational_points", 1), as_int(seed, "seed", 0)
-    )
-
-
-@lru_cache(maxsize=4)
-def _alpha_derivative_audit(n_rational_points, seed):
-    import mpmath
-    import sympy as sp
-
-    from .. import symbolic as sy
-
-    n = as_int(n_rational_points, "n_rational_points", 1)
-    a, q = sy.ALPHA, sy.Q
-    closed_ok = sy.closed_forms_hold()["dalpha"]
-    num_ok = sp.expand(sy.stationarity_alpha() - sy.printed_stationarity_alpha()) == 0
-    true_f = sy.lambdify_expr(sy.dbound_dalpha_closed(), sy.RATIO_ARGS, "mpmath", cse=True)
-    printed_f = sy.lambdify_expr(sy.printed_dbound_dalpha(), sy.RATIO_ARGS, "mpmath", cse=True)
-    rng = np.random.default_rng(seed)
-    ratios, slope_err, slopes = [], 0.0, []
-    with mpmath.workdps(60):
-        for _ in range(n):
-            av = mpmath.mpf(int(rng.integers(1, 4900))) / 997
-            tv = mpmath.mpf(int(rng.integers(50, 1520))) / 997  # theta in (0.05, 1.52)
-            qv = mpmath.mpf(int(rng.integers(1, 3000))) / 997
-            p = printed_f(av, tv, qv)
-            if abs(p) > mpmath.mpf(10) ** -20:
-                ratios.append(float(true_f(av, tv, qv) / p))
-            s0 = true_f(mpmath.mpf(10) ** -10, tv, qv)  # O(alpha^2) from the limit
-            slopes.append(float(s0))
-            expected = abs(mpmath.sin(tv)) / mpmath.sqrt(1 + qv**2)
-            slope_err = max(slope_err, float(abs(s0 - expected)))
-    # theta = pi/2: the bound is alpha/sqrt(1+q^2) on (0, 1] and 1/sqrt(alpha^2+q^2) on [1, inf)
-    pw = sy.bound_halfpi_piecewise().subs(q, 1)
-    lo_branch, hi_branch = pw.args[0][0], pw.args[1][0]
-    below = float(sp.diff(lo_branch, a).subs(a, sp.Rational(1, 2)))
-    left = float(sp.diff(lo_branch, a).subs(a, 1))
-    right = float(sp.diff(hi_branch, a).subs(a, 1))
-    printed_h = sy.printed_dbound_dalpha_halfpi().subs(q, 1)
-    at1 = float(printed_h.subs(a, 1))
-    grid = np.arange(1, 50) / 50.0  # alpha = k/50 in (0, 1)
-    d_lo = sp.diff(lo_branch, a)
-
-    def on_grid(expr):
-        return np.broadcast_to(sy.lambdify_expr(expr, (a,))(grid), grid.shape)
-
-    vs_true = float(np.abs(on_grid(printed_h) - on_grid(d_lo)).max())
-    second = float(np.abs(on_grid(sp.diff(lo_branch, a, 2))).max())
-    return AlphaDerivativeAudit(
-        closed_ok, num_ok, (min(ratios), max(ratios)), slope_err, min(slopes),
-        (below, left, right), at1, vs_true, second,
     )
 
 
@@ -598,7 +420,7 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
     >>> a.max_closed_vs_numeric < 1e-12, a.min_distance_from_1 > 0
     (True, True)
     """
-    return _alpha_star_audit(_ratios_iv(u_over_d), as_int(n_theta, "n_theta", 1),
+    return _alpha_star_audit(as_nonnegatives(u_over_d, "u_over_d"), as_int(n_theta, "n_theta", 1),
                              as_int(n_rational_points, "n_rational_points", 1))
 
 
@@ -606,8 +428,8 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
 def _alpha_star_audit(u_over_d, n_theta, n_rational_points):
     import sympy as sp
 
-    from .. import symbolic as sy
-    from ..symbolic.evaluation import max_difference_at_rational_points as mdiff
+    from .. import symbolic
+    from ..symbolic.evaluation import max_difference_at_rational_points
 
     qs = u_over_d
     theta = alpha_star_thetas(n_theta)
@@ -630,93 +452,10 @@ def _alpha_star_audit(u_over_d, n_theta, n_rational_points):
             min_dist = min(min_dist, float((num - 1.0).min()))
         else:
             q0 = max(q0, float(np.abs(num - 1.0).max()))
-    root = mdiff(
-        sy.stationarity_alpha().subs(sy.ALPHA, sp.sqrt(sy.alpha_star_squared())), 0,
-        {sy.THETA: (0.02, 3.12), sy.Q: (0.0, 3.0)}, n_rational_points, 0, 40,
+    root = max_difference_at_rational_points(
+        symbolic.stationarity_alpha().subs(symbolic.ALPHA,
+                                           sp.sqrt(symbolic.alpha_star_squared())), 0,
+        {symbolic.THETA: (0.02, 3.12), symbolic.Q: (0.0, 3.0)}, n_rational_points, 0, 40,
     )
-    at1 = sy.stationarity_alpha_at_1()
+    at1 = symbolic.stationarity_alpha_at_1()
     return AlphaStarAudit(qs, int(theta.size), closed_vs_num, gap, min_dist, q0, root, str(at1))
-
-
-@dataclass(frozen=True)
-class DalphaMinimumAudit:
-    r"""Where :math:`\partial C/\partial\alpha` is smallest for a fixed :math:`\theta_{ji}`
-    (:func:`dalpha_minimum_audit`)."""
-
-    u_over_d: tuple
-    n_theta: int
-    n_cases: int  #: pairs (q, theta) examined
-    #: cases where the derivative's minimum lies at a finite alpha > 0, below its values at
-    #: alpha = 0 and at the largest alpha of the grid
-    n_interior_minimum: int
-    n_maximum_at_0: int  #: cases where the derivative is largest at alpha = 0
-    alpha_at_minimum: tuple  #: smallest and largest alpha of the minimum over the cases
-    minimum: tuple  #: smallest and largest value of the minimum (negative: C falls there)
-    #: smallest and largest ratio of the alpha of the minimum to the maximiser alpha* of C
-    beyond_alpha_star: tuple
-    #: largest error of the slope at 0 against its closed form sin(theta) / sqrt(1 + q^2)
-    slope_at_0_error: float
-    #: largest size of the derivative at the grid's largest alpha (it tends to 0)
-    at_largest_alpha: float
-    largest_alpha: float  #: the grid's largest alpha
-    bound_at_ends: float  #: largest bound C at alpha = 0 and at the largest alpha
-
-
-def dalpha_minimum_audit(u_over_d: tuple, n_theta: int) -> DalphaMinimumAudit:
-    r"""Locate the minimum over :math:`\alpha` of :math:`\partial C/\partial\alpha`
-    (:func:`obslib.pair_form.dbound_dalpha`) for fixed :math:`\theta_{ji}` and :math:`q`.
-
-    The proof of Theorem 5 says that for :math:`\theta_{ji} \ne 0, \pm\pi/2, \pi`,
-    :math:`\partial C/\partial\alpha` "also reaches its minimum at :math:`\alpha = 0` or
-    :math:`\alpha \to \infty`". For every ``q`` in ``u_over_d`` and the angles of
-    :func:`alpha_star_thetas` ``(n_theta)``, the derivative is evaluated on :math:`\alpha = 0`
-    and 4,001 points spaced evenly in :math:`\log\alpha` over :math:`[10^{-4}, 10^{4}]`, and
-    its minimum refined by a bounded scalar search between the grid's neighbours. Cached on the
-    arguments.
-
-    Examples
-    --------
-    >>> a = dalpha_minimum_audit((0.0, 1.0), n_theta=9)
-    >>> a.n_interior_minimum == a.n_cases, a.n_maximum_at_0 == a.n_cases
-    (True, True)
-    """
-    return _dalpha_minimum_audit(_ratios_iv(u_over_d), as_int(n_theta, "n_theta", 1))
-
-
-@lru_cache(maxsize=8)
-def _dalpha_minimum_audit(u_over_d, n_theta):
-    from scipy.optimize import minimize_scalar
-
-    from ..pair_form import dbound_dalpha, maximising_alpha
-
-    theta = alpha_star_thetas(n_theta)
-    grid = np.r_[0.0, np.geomspace(1e-4, 1e4, 4001)]
-    n_int = n_max0 = 0
-    where, lows, beyond = [], [], []
-    slope_err = tail = ends = 0.0
-    for q in u_over_d:
-        d = dbound_dalpha(grid[None, :], theta[:, None], q)  # (theta, alpha)
-        star = maximising_alpha(theta, q)
-        for k, th in enumerate(theta):
-            row = d[k]
-            j = int(np.argmin(row))
-            lo, hi = grid[max(j - 1, 0)], grid[min(j + 1, grid.size - 1)]
-            best = minimize_scalar(lambda a, th=th: float(dbound_dalpha(a, th, q)),
-                                   bounds=(lo, hi), method="bounded",
-                                   options={"xatol": 1e-10 * max(1.0, hi)})
-            a_min, v_min = (best.x, best.fun) if best.fun <= row[j] else (grid[j], row[j])
-            n_int += bool(0 < j < grid.size - 1 and v_min < min(row[0], row[-1]))
-            n_max0 += bool(row[0] >= row.max())
-            where.append(a_min)
-            lows.append(v_min)
-            beyond.append(a_min / star[k])
-            expected = abs(np.sin(th)) / np.sqrt(1 + q * q)
-            slope_err = max(slope_err, abs(row[0] - expected))
-            tail = max(tail, abs(row[-1]))
-            ends = max(ends, float(pair_bound_polar(grid[[0, -1]], th, q).max()))
-    return DalphaMinimumAudit(
-        tuple(u_over_d), int(theta.size), len(where), n_int, n_max0,
-        (float(min(where)), float(max(where))), (float(min(lows)), float(max(lows))),
-        (float(min(beyond)), float(max(beyond))), float(slope_err), float(tail),
-        float(grid[-1]), ends)
-

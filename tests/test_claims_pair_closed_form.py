@@ -1,4 +1,4 @@
-"""The ledger records of notebook 02 (obslib.claims.pair_form) at the quick profile.
+"""The ledger records of notebook 02 (obslib.claims.pair_closed_form) at the quick profile.
 
 Each status is asserted against evidence recomputed here independently of obslib.pair_form and
 obslib.symbolic: plain NumPy/SciPy on the paper's printed formulas and on O^T O.
@@ -12,7 +12,7 @@ import pytest
 from scipy.optimize import minimize, minimize_scalar
 
 import obslib as ob
-import obslib.claims.pair_form as cp
+import obslib.claims.pair_closed_form as cp
 from obslib.claims import evaluate, registry
 from obslib.claims.quotes import found
 

@@ -321,7 +321,7 @@ def plot_maximising_alpha(n_theta: int, u_over_d):
     r"""The distance ratio :math:`\alpha^*` that maximises the bound for a fixed angle
     :math:`\theta_{ji}`, for a stationary target and for each speed :math:`q = u_{\max}/d_{io}`
     of ``u_over_d``: the numerical root of Eq. (34) as lines, the closed form as dots, on the
-    ``n_theta`` angles of :func:`obslib.studies.pair_form.alpha_star_thetas`.
+    ``n_theta`` angles of :func:`obslib.studies.pair_closed_form.alpha_star_thetas`.
 
     Examples
     --------
@@ -331,7 +331,7 @@ def plot_maximising_alpha(n_theta: int, u_over_d):
     """
     import matplotlib.pyplot as plt
 
-    from ..studies.pair_form import alpha_star_thetas
+    from ..studies.pair_closed_form import alpha_star_thetas
 
     theta_c = alpha_star_thetas(n_theta)  # the angles of the audit
     curves = as_float_array(u_over_d, "u_over_d")
@@ -362,13 +362,13 @@ def plot_halfpi_derivative(alpha_max: float = 4.0, n: int = 801):
     import matplotlib.pyplot as plt
     import sympy as sp
 
-    from .. import symbolic as sy
+    from .. import symbolic
 
     alpha_line = np.linspace(0, as_positive(alpha_max, "alpha_max"), as_int(n, "n", 2))
-    dC = sp.diff(sy.bound_halfpi_piecewise(), sy.ALPHA).subs(sy.Q, 1)
-    true_d = sy.lambdify_expr(dC, (sy.ALPHA,))(alpha_line)
-    printed = sy.printed_dbound_dalpha_halfpi().subs(sy.Q, 1)
-    printed_d = sy.lambdify_expr(printed, (sy.ALPHA,))(alpha_line)
+    dC = sp.diff(symbolic.bound_halfpi_piecewise(), symbolic.ALPHA).subs(symbolic.Q, 1)
+    true_d = symbolic.lambdify_expr(dC, (symbolic.ALPHA,))(alpha_line)
+    printed = symbolic.printed_dbound_dalpha_halfpi().subs(symbolic.Q, 1)
+    printed_d = symbolic.lambdify_expr(printed, (symbolic.ALPHA,))(alpha_line)
     fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(7.5, 3.6))
     ax0.plot(alpha_line, pair_bound_polar(alpha_line, np.pi / 2, 1.0))
     ax0.axvline(1, color="0.6", ls=":")

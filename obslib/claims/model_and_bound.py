@@ -5,16 +5,17 @@ from __future__ import annotations
 from dataclasses import asdict
 
 from ..formatting import count, number, percent, small, span
-from ..studies import section3 as bc
+from ..studies.model_and_bound import (  # cached: several claims read the same audit
+    rank_observability_audit,
+    remark1_audit,
+    squared_range_audit,
+    theorem1_audit,
+    theorem2_audit,
+    theorem3_audit,
+)
 from ._ledger import Finding, Table, claim
 
 NB = "01_model_and_bound"
-
-# Several claims read the same audit; each audit is cached on its arguments in the study.
-_theorem3_audit = bc.theorem3_audit
-_remark1_audit = bc.remark1_audit
-_rank_audit = bc.rank_observability_audit
-_squared_audit = bc.squared_range_audit
 
 
 def sp_latex(expr) -> str:
@@ -82,7 +83,7 @@ def _rank_observability(p: dict) -> Finding:
     rates (the smallest stretch of the output map is at least sigma_min of its Jacobian, to
     rounding), where it has rank one an exact twin position exists, and C^-1 stays in [0, 1],
     zero on the singular ones; refuted otherwise."""
-    a = _rank_audit(p["n_scenes"], p["seed"])
+    a = rank_observability_audit(p["n_scenes"], p["seed"])
     lo, hi = a.icn_range
     ok = (a.min_ratio > 1 - 1e-4 and a.max_twin_gap < 1e-12 and a.max_deficient_icn < 1e-12
           and lo >= 0 and hi <= 1)
@@ -161,7 +162,7 @@ def _squared_range(p: dict) -> Finding:
     reproduced: the same rank and the same best pair in every scene (the square changes nothing
     the paper uses); partly: the same rank, but the best pair differs in some scenes; refuted:
     the rank differs."""
-    a = _squared_audit(p["n_scenes"], p["seed"])
+    a = squared_range_audit(p["n_scenes"], p["seed"])
     lo, hi = a.icn_ratio
     if a.same_rank < a.n_scenes:
         status = "refuted"
@@ -210,7 +211,7 @@ def _squared_range(p: dict) -> Finding:
     notebook=NB,
 )
 def _thm1(p: dict) -> Finding:
-    a = bc.theorem1_audit(p["n_scenes"], p["n_controls"], p["seed"])
+    a = theorem1_audit(p["n_scenes"], p["n_controls"], p["seed"])
     ok = a.n_violations == 0
     where = (f"{count(a.n_violations, of=a.n_evaluations)} evaluations over "
              f"{number(a.n_scenes)} random scenes")
@@ -243,7 +244,7 @@ def _thm1(p: dict) -> Finding:
     notebook=NB,
 )
 def _thm1_tight(p: dict) -> Finding:
-    a = _remark1_audit(p["n_scenes"], p["seed"])
+    a = remark1_audit(p["n_scenes"], p["seed"])
     ok = a.max_moving_error < 1e-12 and a.min_over_disc_gap >= -1e-12
     return Finding(
         "reproduced" if ok else "refuted",
@@ -280,7 +281,7 @@ def _thm1_tight(p: dict) -> Finding:
     notebook=NB,
 )
 def _thm2(p: dict) -> Finding:
-    a = bc.theorem2_audit(p["n_scenes"], p["seed"])
+    a = theorem2_audit(p["n_scenes"], p["seed"])
     ok = a.max_bound < 1e-7 and a.max_relative_lambda_min < 1e-14
     lo, hi = a.exact_range
     return Finding(
@@ -333,7 +334,7 @@ def _theorem3_table(a) -> Table:
     notebook=NB,
 )
 def _thm3(p: dict) -> Finding:
-    a = _theorem3_audit(p["n_trials_thm3"], p["seed"])
+    a = theorem3_audit(p["n_trials_thm3"], p["seed"])
     n, bad = a.counts["stated"]
     return Finding(
         "reproduced" if bad == 0 else "refuted",
@@ -359,7 +360,7 @@ def _thm3(p: dict) -> Finding:
     notebook=NB,
 )
 def _thm3_proof(p: dict) -> Finding:
-    a = _theorem3_audit(p["n_trials_thm3"], p["seed"])
+    a = theorem3_audit(p["n_trials_thm3"], p["seed"])
     n_printed, bad_printed = a.counts["printed"]
     n_stated, _ = a.counts["stated"]
     ok = a.printed_implies_stated and bad_printed == 0 and n_printed < n_stated
@@ -393,7 +394,7 @@ def _thm3_proof(p: dict) -> Finding:
     notebook=NB,
 )
 def _remark1(p: dict) -> Finding:
-    a = _remark1_audit(p["n_scenes"], p["seed"])
+    a = remark1_audit(p["n_scenes"], p["seed"])
     ok = a.max_stationary_error < 1e-12
     return Finding(
         "reproduced" if ok else "refuted",
@@ -420,7 +421,7 @@ def _remark1(p: dict) -> Finding:
     notebook=NB,
 )
 def _remark2(p: dict) -> Finding:
-    a = _theorem3_audit(p["n_trials_thm3"], p["seed"])
+    a = theorem3_audit(p["n_trials_thm3"], p["seed"])
     n, bad = a.counts["remark 2"]
     ok = bad == 0 and a.remark2_necessary_violations == 0
     return Finding(

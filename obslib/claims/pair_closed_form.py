@@ -9,7 +9,20 @@ from dataclasses import asdict
 import numpy as np
 
 from ..formatting import count, listing, number, setting, small, span
-from ..studies import pair_form as spf
+from ..studies.pair_closed_form import (
+    alpha_star_audit,
+    audit_ratios,
+    fig2_grids,
+    printed_matrix_audit,
+    theorem4_audit,
+    theorem5_audit,
+)
+from ..studies.theorem5_proof import (
+    alpha_derivative_audit,
+    dalpha_minimum_audit,
+    theta_derivative_audit,
+)
+from ..studies.weyl import weyl_audit
 from ._ledger import Finding, Table, claim
 
 NB = "02_pair_closed_form"
@@ -21,8 +34,8 @@ TOL_EXACT_DIGITS = 10
 
 
 def _qs(p: dict) -> tuple:
-    """The values of u_max / d_io audited (:func:`obslib.studies.pair_form.audit_ratios`)."""
-    return spf.audit_ratios(p["u_max"], p["d_io"], p["u_over_d_curves"])
+    """The values of u_max / d_io audited (:func:`obslib.studies.pair_closed_form.audit_ratios`)."""
+    return audit_ratios(p["u_max"], p["d_io"], p["u_over_d_curves"])
 
 
 def _exact(flag: bool) -> str:
@@ -55,7 +68,7 @@ def _thm4(p: dict) -> Finding:
     (Eq. (9)) exactly, and the closed form agrees with the bound from the positions at rational
     points (to all but 10 of the working digits) and at random points (to 1e-10); refuted
     otherwise."""
-    a = spf.theorem4_audit(p["n_rational_points"], p["n_random_points"], p["seed"], p["digits"])
+    a = theorem4_audit(p["n_rational_points"], p["n_random_points"], p["seed"], p["digits"])
     symbolic = (
         a.polar_matrix_printed_equal and a.eigenvalues_printed_equal and a.theorem4_ratio_equal
         and a.cartesian_discriminant_equal
@@ -112,7 +125,7 @@ def _fig2_max(p: dict) -> Finding:
     only at (1, +-pi/2), and on the paper's own grid it sits at the grid points nearest to
     (1, +-pi/2); refuted otherwise."""
     q = p["u_max"] / p["d_io"]
-    grids = spf.fig2_grids(p["u_max"], p["d_io"], p["alpha_max"], p["paper_step"],
+    grids = fig2_grids(p["u_max"], p["d_io"], p["alpha_max"], p["paper_step"],
                           p["fine_alpha_per_unit"], p["fine_theta_quarter"])
     a_p, t_p, mp = grids["paper"].alpha, grids["paper"].theta, grids["paper"].maximum
     a_f, t_f, mf = grids["fine"].alpha, grids["fine"].theta, grids["fine"].maximum
@@ -173,7 +186,7 @@ def _thm5(p: dict) -> Finding:
     (1, +-pi/2), SymPy gives that value exactly at the peak, and the bound is 0 on
     theta = 0, pi and alpha = 0 and below 1e-5 at alpha = 1e6; refuted otherwise."""
     qs = _qs(p)
-    a = spf.theorem5_audit(
+    a = theorem5_audit(
         qs,
         p["alpha_max"],
         p["fine_alpha_per_unit"],
@@ -238,7 +251,7 @@ def _thm5_alpha(p: dict) -> Finding:
     q = 0 is not among them; refuted: the closed form disagrees with the numerics or the
     maximiser is 1 for some q > 0."""
     qs = _qs(p)
-    a = spf.alpha_star_audit(qs, p["n_theta_curve"])
+    a = alpha_star_audit(qs, p["n_theta_curve"])
     consistent = a.max_closed_vs_numeric < TOL_FLOAT and a.max_brute_force_gap < TOL_FLOAT
     moving_ok = a.min_distance_from_1 > 0
     stationary_is_1 = 0.0 in qs and a.alpha_star_at_q0 < TOL_FLOAT
@@ -313,7 +326,7 @@ def _weyl(p: dict) -> Finding:
     """reproduced: SymPy shows each of the six inequalities to be a triangle inequality in the
     plane, and none of them nor Eq. (19) is violated beyond rounding (a relative slack below
     -1e-14, and -1e-12 for Eq. (19)) in the random pairs; refuted otherwise."""
-    a = spf.weyl_audit(p["n_weyl"], p["seed"])
+    a = weyl_audit(p["n_weyl"], p["seed"])
     sym_ok = all(a.symbolic_triangle_equal.values())
     num_ok = min(a.min_relative_slack.values()) >= -1e-14 and a.min_ratio_slack >= -1e-12
     ok = sym_ok and num_ok
@@ -362,7 +375,7 @@ def _weyl_range(p: dict) -> Finding:
     """partly: the three dual inequalities the proof uses hold in the random pairs, but the
     printed range admits index pairs with i + j - r < 1; reproduced: the range admits none;
     refuted: a dual inequality the proof uses is violated."""
-    a = spf.weyl_audit(p["n_weyl"], p["seed"])
+    a = weyl_audit(p["n_weyl"], p["seed"])
     bad = a.invalid_indices
     dual = ("l1 <= l1+l2", "l1 <= l2+l1", "l2 <= l2+l2")
     holds_on_valid = min(a.min_relative_slack[k] for k in dual) >= -1e-14
@@ -407,7 +420,7 @@ def _weyl_range(p: dict) -> Finding:
 def _matrix(p: dict) -> Finding:
     """refuted: some entry of the printed matrix differs from the true O_ij^T O_ij (SymPy);
     reproduced: all four agree."""
-    a = spf.printed_matrix_audit()
+    a = printed_matrix_audit()
     status = "refuted" if a.wrong_entries else "reproduced"
     true_eig = np.linalg.eigvalsh(np.array(a.true_at_witness, dtype=float))
     w = a.witness
@@ -460,7 +473,7 @@ def _dtheta(p: dict) -> Finding:
     extremes found are right, but C itself has a corner (no derivative) at theta = 0 or at
     (alpha, theta) = (1, pi/2); reproduced: no corner; refuted: the closed form or the signs
     disagree."""
-    a = spf.theta_derivative_audit(p["n_rational_points"], p["seed"])
+    a = theta_derivative_audit(p["n_rational_points"], p["seed"])
     kink = a.slope_at_zero_min > 0 and a.slope_at_zero_error < 1e-20
     corner = a.corner_halfpi_slopes[0] > 0 > a.corner_halfpi_slopes[1]
     square_ok = a.square_second_derivative_zero > 0 > a.square_second_derivative_halfpi
@@ -527,7 +540,7 @@ def _dalpha_halfpi(p: dict) -> Finding:
     """refuted: at theta = pi/2 the true derivative never vanishes (positive on (0, 1),
     negative beyond, with a jump at 1), the printed expression differs from it by more than
     1e-3 and the second derivative on (0, 1) is 0, not positive; reproduced otherwise."""
-    a = spf.alpha_derivative_audit(p["n_rational_points"], p["seed"])
+    a = alpha_derivative_audit(p["n_rational_points"], p["seed"])
     below, left, right = a.halfpi_true_slopes
     never_zero = below > 0 and left > 0 > right
     wrong = (
@@ -582,7 +595,7 @@ def _dalpha(p: dict) -> Finding:
     (SymPy), but the ratio of true to printed derivative is not constant or the slope at
     alpha = 0 is positive; reproduced: printed and true agree up to a constant; refuted: the
     numerator or the closed form disagrees."""
-    a = spf.alpha_derivative_audit(p["n_rational_points"], p["seed"])
+    a = alpha_derivative_audit(p["n_rational_points"], p["seed"])
     lo, hi = a.printed_ratio_spread
     not_constant = hi / lo > 1 + 1e-6
     nonzero_at_0 = a.slope_at_alpha0_min > 0 and a.slope_at_alpha0 < 1e-12
@@ -646,7 +659,7 @@ def _dalpha_min(p: dict) -> Finding:
     alpha is at alpha = 0 or at the largest alpha of the grid (10^4, where it tends to 0);
     refuted: for some (q, theta) it is smallest at a finite alpha, below both end values."""
     qs = _qs(p)
-    a = spf.dalpha_minimum_audit(qs, p["n_theta_curve"])
+    a = dalpha_minimum_audit(qs, p["n_theta_curve"])
     refuted = a.n_interior_minimum > 0
     lo, hi = a.alpha_at_minimum
     where = count(a.n_interior_minimum, of=a.n_cases)

@@ -1,5 +1,5 @@
-"""Section III's audits (obslib.studies.section3) against scene-by-scene loops over the public
-functions."""
+"""Section III's audits (obslib.studies.model_and_bound) against scene-by-scene loops over the
+public functions."""
 
 import numpy as np
 import pytest
@@ -8,7 +8,7 @@ import obslib as ob
 from obslib.controls import disc_controls
 from obslib.observability import relative_rows
 from obslib.scenes import SCENE_KINDS, random_scene_batch
-from obslib.studies import section3 as bc
+from obslib.studies import model_and_bound
 
 
 def _unit_disc_draws(n_scenes, n_controls, seed):
@@ -22,7 +22,7 @@ def test_theorem1_audit_equals_a_scene_by_scene_loop():
     """The batched audit against lower_bound / worst_case_control / inverse_condition_number per
     scene."""
     n, m, seed = 300, 16, 4
-    a = bc.theorem1_audit(n, m, seed)
+    a = model_and_bound.theorem1_audit(n, m, seed)
     batch = random_scene_batch(n, seed)
     r, phi = _unit_disc_draws(n, m, seed)
     n_viol, worst, attain, slack = 0, -np.inf, 0.0, {}
@@ -33,23 +33,23 @@ def test_theorem1_audit_equals_a_scene_by_scene_loop():
         u = np.vstack([np.column_stack([rad * np.cos(phi[k]), rad * np.sin(phi[k])]),
                        ob.worst_case_control(sc.sensors, sc.target, sc.u_max)])
         excess = bound - ob.inverse_condition_number(sc.sensors, sc.target, u)
-        n_viol += int((excess > bc.ATOL).sum())
+        n_viol += int((excess > model_and_bound.ATOL).sum())
         worst = max(worst, excess.max())
         attain = max(attain, abs(excess[-1]))
         slack[sc.kind] = min(slack.get(sc.kind, np.inf), (-excess).min())
     # Both paths share the closed form of C^-1; summed in another order they agree to rounding
     # (~1e-14 for nearly isotropic O^T O), far inside the audit's decision tolerance.
     assert a.n_scenes == n and a.n_evaluations == n * (m + 1) and a.n_violations == n_viol == 0
-    assert a.worst_excess == pytest.approx(worst, abs=bc.ATOL)
-    assert a.max_attainment_error == pytest.approx(attain, abs=bc.ATOL)
+    assert a.worst_excess == pytest.approx(worst, abs=model_and_bound.ATOL)
+    assert a.max_attainment_error == pytest.approx(attain, abs=model_and_bound.ATOL)
     assert list(a.min_slack_by_kind) == list(SCENE_KINDS)
     for kind, v in slack.items():
-        assert a.min_slack_by_kind[kind] == pytest.approx(v, abs=bc.ATOL)
+        assert a.min_slack_by_kind[kind] == pytest.approx(v, abs=model_and_bound.ATOL)
 
 
 def test_theorem2_audit_equals_a_scene_by_scene_loop():
     n, seed = 300, 5
-    a = bc.theorem2_audit(n, seed)
+    a = model_and_bound.theorem2_audit(n, seed)
     batch = random_scene_batch(n, seed, n_sensors=(1, 1), kinds=("generic", "spread"))
     rng = np.random.default_rng(seed + 2)
     mag, ang = rng.uniform(size=n), rng.uniform(0, 2 * np.pi, size=n)
@@ -71,7 +71,7 @@ def test_theorem3_audit_equals_a_trial_by_trial_loop():
     """The same draws as theorem3_audit, decided one trial at a time from relative_rows and
     eigvalsh."""
     n, seed = 3000, 6
-    a = bc.theorem3_audit(n, seed)
+    a = model_and_bound.theorem3_audit(n, seed)
     rng = np.random.default_rng(seed)
     counts_n = rng.integers(2, 5, size=(n, 2))
     scale = 10.0 ** rng.uniform(-1, 1, size=(n, 2))
@@ -111,7 +111,7 @@ def test_theorem3_audit_equals_a_trial_by_trial_loop():
 
 def test_remark1_audit_equals_a_scene_by_scene_loop():
     n, seed = 200, 7
-    a = bc.remark1_audit(n, seed, n_radii=4, n_angles=16)
+    a = model_and_bound.remark1_audit(n, seed, n_radii=4, n_angles=16)
     batch = random_scene_batch(n, seed, kinds=("generic", "spread"))
     stat, moving, gap = 0.0, 0.0, np.inf
     for k in range(n):
