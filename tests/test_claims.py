@@ -323,7 +323,7 @@ def test_statuses_do_not_depend_on_the_profile(records, paper_records):
 
 
 def test_thm6_tight_rests_on_the_stored_witness(records, paper_records):
-    from obslib.claims.assignment import NEAR_THIRD
+    from obslib.claims.greedy_unique_pairs import NEAR_THIRD
 
     for recs in (records, paper_records):
         ev = recs["thm6-tight"].evidence

@@ -218,11 +218,11 @@ def test_03_the_exercises_show_what_their_solutions_say(numbers03):
 
 
 def test_03_spare_sensors_recomputed_on_the_same_instances(numbers03):
-    from obslib.studies import assignment as experiments
+    from obslib.studies import greedy_unique_pairs
 
     for key, extra in (("spare", 2), ("no_spare", 0)):
         ratios = []
-        for _, _, idx, S, T in experiments.pair_instances(60, 0, (2, 4), (0, extra)):
+        for _, _, idx, S, T in greedy_unique_pairs.pair_instances(60, 0, (2, 4), (0, extra)):
             for k in range(len(idx)):
                 W = ob.pair_bounds(S[k], T[k], 1.0)
                 greedy, _ = _greedy_by_hand(W)

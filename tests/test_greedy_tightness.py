@@ -95,7 +95,7 @@ def test_stored_witness_ratio_against_brute_force():
     from itertools import permutations
 
     from obslib import pair_bounds
-    from obslib.claims.assignment import NEAR_THIRD
+    from obslib.claims.greedy_unique_pairs import NEAR_THIRD
 
     S, T = gt.tight_witness()
     W = pair_bounds(S, T, gt.TIGHT_U_MAX)

@@ -255,7 +255,7 @@ import itertools  # noqa: E402
 
 import obslib as ob  # noqa: E402
 from obslib.claims import unchecked as cu  # noqa: E402
-from obslib.studies import assignment as sa  # noqa: E402
+from obslib.studies import batch_optimum  # noqa: E402
 from obslib.studies import hardness as hd  # noqa: E402
 
 
@@ -273,7 +273,7 @@ def test_reduction_matching_iff_optimum_reaches_q():
         ts = hd.random_3dm(q, int(rng.integers(q, 3 * q + 1)), rng)
         W = hd.three_dm_weights(q, ts)
         # the optimum by the exact DP (brute force over assignments), not the branch and bound
-        opt = float(sa.optimal_values(W[None])[0])
+        opt = float(batch_optimum.optimal_values(W[None])[0])
         m = hd.has_perfect_matching(q, ts)
         assert m == (opt >= q - 1e-9)
         seen.add(m)
@@ -519,7 +519,7 @@ def test_control_row_bad_input():
 
 def test_exact_ratio_spread_against_brute_force():
     from obslib import greedy_pair_assignment, pair_bounds
-    from obslib.studies.assignment import pair_assignments
+    from obslib.studies.batch_optimum import pair_assignments
 
     r = hd.exact_ratio_spread(3, 3, time_budget=30.0, seed=2)
     for k in range(3):

@@ -11,10 +11,11 @@ import numpy as np
 import pandas as pd
 
 from obslib.assignment import greedy_pair_assignment_literal, greedy_pairs_batch
-from obslib.claims.assignment import NEAR_THIRD
+from obslib.claims.greedy_unique_pairs import NEAR_THIRD
 from obslib.formatting import count, number, percent, setting
-from obslib.studies import assignment as experiments
-from obslib.studies import greedy_tightness as tightness
+from obslib.studies import greedy_tightness
+from obslib.studies.batch_optimum import pair_assignments
+from obslib.studies.greedy_unique_pairs import charging, greedy_vs_optimal
 
 from ..glue import glue_texts
 from ..prose import pair_math, triple_math
@@ -33,7 +34,7 @@ def charging_table(rounds) -> pd.DataFrame:
     Parameters
     ----------
     rounds : list of dict
-        :func:`obslib.studies.assignment.charging`.
+        :func:`obslib.studies.greedy_unique_pairs.charging`.
     """
     rows = []
     for k, r in enumerate(rounds, start=1):
@@ -62,7 +63,7 @@ def glue_intuition(W, greedy, optimum) -> None:
     greedy, optimum : obslib.PairAssignment
         The greedy's and the optimum's assignments of ``W``.
     """
-    first = experiments.charging(W, greedy.triples, optimum.triples)[0]
+    first = charging(W, greedy.triples, optimum.triples)[0]
     glue_texts(
         i_pick=number(first["w"]),
         i_blocked=" and ".join(number(w) for w in first["charged_w"]),
@@ -111,7 +112,7 @@ def glue_charging(charges, greedy) -> None:
     Parameters
     ----------
     charges : list of dict
-        :func:`obslib.studies.assignment.charging` of the greedy against the optimum.
+        :func:`obslib.studies.greedy_unique_pairs.charging` of the greedy against the optimum.
     greedy : obslib.PairAssignment
         The greedy's assignment.
     """
@@ -132,7 +133,7 @@ def glue_greedy_vs_optimum(study, targets_min: int, targets_max: int, extra_max:
 
     Parameters
     ----------
-    study : obslib.studies.assignment.GreedyStudy
+    study : obslib.studies.greedy_unique_pairs.GreedyStudy
         The study's result.
     targets_min, targets_max, extra_max : int
         The sizes drawn: :math:`L` from ``targets_min`` to ``targets_max``, :math:`N` from
@@ -180,10 +181,10 @@ def glue_worst(W, greedy, optimum, worst_ratio: float, search_sensors: int, sear
     search_sensors, search_targets, n_starts, n_steps : int
         The search's sizes: sensors and targets of the layouts, restarts and moves per restart.
     """
-    charges = experiments.charging(W, greedy.triples, optimum.triples)
+    charges = charging(W, greedy.triples, optimum.triples)
     # the layout the search finds at the paper's sizes, kept so that every rerun judges the same
-    S0, T0 = tightness.tight_witness()
-    margin = tightness.first_pick_margin(S0, T0, tightness.TIGHT_U_MAX)
+    S0, T0 = greedy_tightness.tight_witness()
+    margin = greedy_tightness.first_pick_margin(S0, T0, greedy_tightness.TIGHT_U_MAX)
     glue_texts(
         n_starts=number(n_starts),
         n_steps=number(n_steps),
@@ -223,12 +224,12 @@ def glue_tight(eps: float, greedy, optimum) -> None:
 
 def glue_charging_audit(audit) -> None:
     """The charging argument run on every random instance
-    (:func:`obslib.studies.assignment.charging_audit`): the picks, how many take each number of
-    charged triples, and the steps that fail.
+    (:func:`obslib.studies.greedy_unique_pairs.charging_audit`): the picks, how many take each
+    number of charged triples, and the steps that fail.
 
     Parameters
     ----------
-    audit : obslib.studies.assignment.ChargingAudit
+    audit : obslib.studies.greedy_unique_pairs.ChargingAudit
         The audit's result.
     """
     picks = audit.charges_per_pick
@@ -250,13 +251,13 @@ def _triples_rows(W, triples) -> list:
 
 
 def glue_signed(study, n_instances: int) -> None:
-    """Algorithm 1 on values of both signs (:func:`obslib.studies.assignment.
+    """Algorithm 1 on values of both signs (:func:`obslib.studies.greedy_unique_pairs.
     signed_weights_study`): the counts below a third, and the worst instance's picks against
     the optimum's triples (``tab-03-signed``).
 
     Parameters
     ----------
-    study : obslib.studies.assignment.SignedStudy
+    study : obslib.studies.greedy_unique_pairs.SignedStudy
         The study's result.
     n_instances : int
         Its random instances.
@@ -328,7 +329,7 @@ def exercise_numbers(n_instances: int, seed: int, targets_min: int, targets_max:
         n, n_targets = W.shape[0], W.shape[2]
         ii, jj = np.triu_indices(n, 1)
         picks = greedy_pairs_batch(W[None, ii, jj, :], n)[0][0]
-        P, Q = experiments.pair_assignments(n, n_targets)
+        P, Q = pair_assignments(n, n_targets)
         totals = sum(W[P[:, t], Q[:, t], t] for t in range(n_targets))
         best = int(np.argmax(totals))
         out[key] = {"greedy": float(sum(W[i, j, t] for i, j, t in picks)),
@@ -337,8 +338,8 @@ def exercise_numbers(n_instances: int, seed: int, targets_min: int, targets_max:
                     "optimal_triples": [(int(P[best, t]), int(Q[best, t]), t)
                                         for t in range(n_targets)]}
     for key, extra in (("spare", extra_max), ("no_spare", 0)):
-        r = experiments.greedy_vs_optimal(n_instances, seed, (targets_min, targets_max),
-                                          (0, extra), u_max).ratio
+        r = greedy_vs_optimal(n_instances, seed, (targets_min, targets_max),
+                              (0, extra), u_max).ratio
         out[key] = {"optimal": float(np.mean(r >= 1 - 1e-12)), "mean": float(r.mean()),
                     "min": float(r.min())}
     return out

@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from obslib.claims.assignment import NEAR_THIRD
+from obslib.claims.greedy_unique_pairs import NEAR_THIRD
 from obslib.claims.teams import direction_words
 from obslib.claims.unchecked import MISPRINTS, N_SPREAD
 from obslib.formatting import count, listing, number, percent, setting, small, span

@@ -44,7 +44,7 @@ from ._ledger import (
 # isort: off
 from . import model_and_bound  # noqa: E402,F401  Sec. II-III: Theorems 1-3, Remarks 1-2
 from . import pair_closed_form  # noqa: E402,F401  Sec. III (pair): Theorems 4-5, Fig. 2, errata
-from . import assignment  # noqa: E402,F401  Sec. IV-A: Algorithm 1, Theorem 6
+from . import greedy_unique_pairs  # noqa: E402,F401  Sec. IV-A: Algorithm 1, Theorem 6
 from . import submodularity  # noqa: E402,F401  Sec. IV-B: Theorems 7-8
 from . import tracking  # noqa: E402,F401  Sec. V-A/B: Figs. 4-7
 from . import greedy_vs_relaxed  # noqa: E402,F401  Sec. V-C: Fig. 8

@@ -126,7 +126,7 @@ def _fig2_max(p: dict) -> Finding:
     (1, +-pi/2); refuted otherwise."""
     q = p["u_max"] / p["d_io"]
     grids = fig2_grids(p["u_max"], p["d_io"], p["alpha_max"], p["paper_step"],
-                          p["fine_alpha_per_unit"], p["fine_theta_quarter"])
+                       p["fine_alpha_per_unit"], p["fine_theta_quarter"])
     a_p, t_p, mp = grids["paper"].alpha, grids["paper"].theta, grids["paper"].maximum
     a_f, t_f, mf = grids["fine"].alpha, grids["fine"].theta, grids["fine"].maximum
     exact = 1.0 / np.sqrt(1.0 + q * q)

@@ -13,7 +13,7 @@ from ..formatting import count, fixed, number, setting
 from ..studies import submodularity as sm
 from ..studies.published import THEOREM7_PRINTED_WITNESS
 from ._ledger import Finding, Table, claim, registry
-from .assignment import NB as NB_PAIRS
+from .greedy_unique_pairs import NB as NB_PAIRS
 
 NB = "04_submodularity"
 

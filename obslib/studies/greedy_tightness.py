@@ -1,7 +1,7 @@
 """How tight Theorem 6's 1/3 is on geometric instances, and how fragile the tight geometry is.
 
-On random instances Algorithm 1 is near-optimal (notebook 03), but a local search over sensor
-and target positions (:func:`obslib.studies.assignment.worst_instance_search`) finds geometries
+On random instances Algorithm 1 is near-optimal (notebook 03), but a local search over sensor and
+target positions (:func:`obslib.studies.greedy_unique_pairs.worst_instance_search`) finds geometries
 where it collects only about 0.34 of the optimum, close to the 1/3 guarantee. There the greedy's
 first pick outweighs each of the three optimal triples it blocks by a small relative margin
 (:func:`first_pick_margin`). :func:`jitter_ratios` measures how fragile this is: it moves every
@@ -18,7 +18,8 @@ import numpy as np
 from .._validate import as_float_array, as_int, as_nonnegative, as_points
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..bounds import pair_bounds
-from . import assignment as sa
+from .batch_optimum import batch_pair_bounds, greedy_values, optimal_values
+from .greedy_unique_pairs import charging, worst_instance_search
 
 __all__ = ["tight_geometry", "TIGHT_SENSORS", "TIGHT_TARGETS", "TIGHT_U_MAX", "tight_witness",
            "spread", "first_pick_margin", "jitter_ratios", "witness_jitter_ratios",
@@ -45,9 +46,8 @@ def tight_witness():
 
     Examples
     --------
-    >>> from obslib.studies import greedy_tightness as gt
-    >>> S, T = gt.tight_witness()
-    >>> round(gt.first_pick_margin(S, T, gt.TIGHT_U_MAX)["ratio"], 3)
+    >>> S, T = tight_witness()
+    >>> round(first_pick_margin(S, T, TIGHT_U_MAX)["ratio"], 3)
     0.342
     """
     return np.array(TIGHT_SENSORS), np.array(TIGHT_TARGETS)
@@ -76,7 +76,7 @@ def tight_geometry(n_sensors: int = 6, n_targets: int = 3, seed: int = 0, n_star
     seed, u_max = as_int(seed, "seed", 0), as_nonnegative(u_max, "u_max")
     if n_sensors < 2 * n_targets:
         raise ValueError(f"need n_sensors >= 2 n_targets, got {n_sensors} and {n_targets}")
-    r, S, T = sa.worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
+    r, S, T = worst_instance_search(n_sensors, n_targets, seed, n_starts, n_steps, u_max)
     return r, S.copy(), T.copy()
 
 
@@ -121,7 +121,7 @@ def first_pick_margin(sensors, targets, u_max: float = 1.0) -> dict:
     """
     W = pair_bounds(sensors, targets, u_max)
     g, o = greedy_pair_assignment(W), optimal_pair_assignment(W)
-    rounds = sa.charging(W, g.triples, o.triples)
+    rounds = charging(W, g.triples, o.triples)
     first = rounds[0]
     top = max(first["charged_w"]) if first["charged_w"] else 0.0
     return {
@@ -135,10 +135,10 @@ def first_pick_margin(sensors, targets, u_max: float = 1.0) -> dict:
 
 
 def _ratio_batch(S, T, u_max):
-    W, valid = sa.batch_pair_bounds(S, T, u_max)
+    W, valid = batch_pair_bounds(S, T, u_max)
     W[~valid] = 0.0
-    opt = sa.optimal_values(W)
-    g = sa.greedy_values(W)
+    opt = optimal_values(W)
+    g = greedy_values(W)
     ok = valid & (opt > 0)
     return np.where(ok, g / np.where(ok, opt, 1.0), np.nan)
 

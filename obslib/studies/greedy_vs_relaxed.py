@@ -26,7 +26,7 @@ from ..assignment import (
 )
 from ..bounds import pair_bounds
 from ..sweep import run_sweep
-from .assignment import MAX_DP_SENSORS, batch_pair_bounds, greedy_values, optimal_values
+from .batch_optimum import MAX_DP_SENSORS, batch_pair_bounds, greedy_values, optimal_values
 
 __all__ = [
     "FIG8_KEYS",
@@ -84,7 +84,7 @@ def _dense_values(W, with_optimum: bool) -> dict:
     ``(K, N, N, L)`` at hand: the greedy in one batched call (each instance's rounds are
     independent of the others'), each relaxed matching from its ``W``, the optimum (NaN unless
     ``with_optimum``) by the dynamic program in one batched call up to
-    :data:`~obslib.studies.assignment.MAX_DP_SENSORS` sensors, else by the exact solver."""
+    :data:`~obslib.studies.batch_optimum.MAX_DP_SENSORS` sensors, else by the exact solver."""
     relaxed = {key: np.array([relaxed_pair_assignment(w, ordered).value for w in W])
                for key, ordered in (("relaxed", False), ("relaxed_ordered", True))}
     out = {"greedy": greedy_values(W), **relaxed, "optimum": np.full(len(W), np.nan)}
@@ -133,7 +133,7 @@ def _fig8_block(n_targets: int, first: int, stop: int, seed: int, u_max: float, 
     array of their values, each equal bit for bit to :func:`fig8_trial`'s.
 
     Small instances are solved together: the weights by
-    :func:`obslib.studies.assignment.batch_pair_bounds` (bit for bit :func:`obslib.pair_bounds`),
+    :func:`obslib.studies.batch_optimum.batch_pair_bounds` (bit for bit :func:`obslib.pair_bounds`),
     then the values as one trial computes them, for the whole block at once. The 600 trials of the
     notebook's sweep (``L = 1 .. 20``, 30 trials, optimum up to ``L = 6``) took 1.2 to 1.7 s one
     trial per task and take 0.5 to 0.7 s this way, measured side by side (the greedy had run 600

@@ -1,12 +1,12 @@
-"""Section IV-A's studies (obslib.studies.assignment): the batch optimum against HiGHS's 0-1
-program, the charging argument, the tight weights, the ledger."""
+"""Section IV-A's studies (obslib.studies.greedy_unique_pairs, obslib.studies.batch_optimum): the
+batch optimum against HiGHS's 0-1 program, the charging argument, the tight weights, the ledger."""
 
 import numpy as np
 import pytest
 
 import obslib as ob
 from obslib import claims
-from obslib.studies import assignment as sa
+from obslib.studies import batch_optimum, greedy_unique_pairs
 
 
 def test_enumerated_optimum_equals_milp():
@@ -18,17 +18,17 @@ def test_enumerated_optimum_equals_milp():
                 for _ in range(5)
             ]
         )
-        for W, v in zip(Ws, sa.optimal_values(Ws)):
+        for W, v in zip(Ws, batch_optimum.optimal_values(Ws)):
             assert v == pytest.approx(ob.optimal_pair_assignment(W).value, abs=1e-12)
 
 
 def test_pair_assignments_count():
     # N!/(2^L (N-2L)!) ordered choices of L disjoint pairs
     for n, L, count in [(4, 2, 6), (6, 3, 90), (8, 3, 2520), (5, 1, 10)]:
-        P, Q = sa.pair_assignments(n, L)
+        P, Q = batch_optimum.pair_assignments(n, L)
         assert P.shape == (count, L) and np.all(P < Q)
     with pytest.raises(ValueError, match="N >= 2L"):
-        sa.pair_assignments(3, 2)
+        batch_optimum.pair_assignments(3, 2)
 
 
 def test_charging_covers_the_optimum_within_three_times_each_pick():
@@ -36,20 +36,20 @@ def test_charging_covers_the_optimum_within_three_times_each_pick():
     for _ in range(100):
         W = ob.pair_bounds(rng.uniform(0, 100, (8, 2)), rng.uniform(0, 100, (3, 2)), 1.0)
         g, o = ob.greedy_pair_assignment(W), ob.optimal_pair_assignment(W)
-        rounds = sa.charging(W, g.triples, o.triples)
+        rounds = greedy_unique_pairs.charging(W, g.triples, o.triples)
         assert sum(len(r["charged"]) for r in rounds) == len(o.triples)
         for r in rounds:
             assert len(r["charged"]) <= 3 and all(w <= r["w"] + 1e-12 for w in r["charged_w"])
 
 
 def test_tight_weights_give_one_third():
-    W = sa.tight_weights(1e-6)
+    W = greedy_unique_pairs.tight_weights(1e-6)
     ratio = ob.greedy_pair_assignment(W).value / ob.optimal_pair_assignment(W).value
     assert ratio == pytest.approx((1 + 1e-6) / 3)
 
 
 def test_search_result_is_what_it_claims():
-    r, S, T = sa.worst_instance_search(6, 3, seed=3, n_starts=2, n_steps=50)
+    r, S, T = greedy_unique_pairs.worst_instance_search(6, 3, seed=3, n_starts=2, n_steps=50)
     W = ob.pair_bounds(S, T, 1.0)
     assert r == pytest.approx(
         ob.greedy_pair_assignment(W).value / ob.optimal_pair_assignment(W).value
@@ -75,11 +75,11 @@ def test_dynamic_programming_optimum_equals_enumeration_exactly():
     rng = np.random.default_rng(4)
     for n, L in [(2, 1), (5, 1), (4, 2), (7, 2), (6, 3), (9, 3), (8, 4), (10, 4), (10, 5)]:
         S, T = rng.uniform(0, 100, (20, n, 2)), rng.uniform(0, 100, (20, L, 2))
-        W, valid = sa.batch_pair_bounds(S, T, 1.0)
+        W, valid = batch_optimum.batch_pair_bounds(S, T, 1.0)
         assert valid.all()
-        P, Q = sa.pair_assignments(n, L)
+        P, Q = batch_optimum.pair_assignments(n, L)
         by_enumeration = W[:, P, Q, np.arange(L)[None, :]].sum(axis=2).max(axis=1)
-        np.testing.assert_array_equal(sa.optimal_values(W), by_enumeration)
+        np.testing.assert_array_equal(batch_optimum.optimal_values(W), by_enumeration)
 
 
 def test_batch_greedy_and_weights_equal_the_single_instance_functions():
@@ -88,12 +88,12 @@ def test_batch_greedy_and_weights_equal_the_single_instance_functions():
         S, T = rng.uniform(0, 100, (30, n, 2)), rng.uniform(0, 100, (30, L, 2))
         S[0, 1] = S[0, 0]  # two sensors coincide
         S[1, 0] = T[1, 0]  # a sensor on a target
-        W, valid = sa.batch_pair_bounds(S, T, 2.5)
+        W, valid = batch_optimum.batch_pair_bounds(S, T, 2.5)
         assert valid.tolist() == [False, False] + [True] * 28
         for k in range(2, 30):
             np.testing.assert_array_equal(W[k], ob.pair_bounds(S[k], T[k], 2.5))
         np.testing.assert_array_equal(
-            sa.greedy_values(W[2:]), [ob.greedy_pair_assignment(w).value for w in W[2:]]
+            batch_optimum.greedy_values(W[2:]), [ob.greedy_pair_assignment(w).value for w in W[2:]]
         )
 
 
@@ -104,24 +104,25 @@ def test_batch_weights_do_not_depend_on_the_unit(c):
     rng = np.random.default_rng(8)
     S, T = rng.uniform(0, 1, (4, 5, 2)), rng.uniform(0, 1, (4, 2, 2))
     with np.errstate(all="raise"):
-        W, valid = sa.batch_pair_bounds(S * c, T * c, 0.7 * c)
+        W, valid = batch_optimum.batch_pair_bounds(S * c, T * c, 0.7 * c)
     assert valid.all()
-    np.testing.assert_allclose(W, sa.batch_pair_bounds(S, T, 0.7)[0], rtol=1e-12, atol=1e-15)
+    np.testing.assert_allclose(W, batch_optimum.batch_pair_bounds(S, T, 0.7)[0], rtol=1e-12,
+                               atol=1e-15)
     for k in range(4):
         np.testing.assert_array_equal(W[k], ob.pair_bounds(S[k] * c, T[k] * c, 0.7 * c))
 
 
 def test_batch_functions_reject_bad_input():
     with pytest.raises(ValueError, match="N >= 2L"):
-        sa.optimal_values(np.zeros((1, 3, 3, 2)))
+        batch_optimum.optimal_values(np.zeros((1, 3, 3, 2)))
     with pytest.raises(ValueError, match="too many"):
-        sa.optimal_values(np.zeros((1, 18, 18, 2)))
+        batch_optimum.optimal_values(np.zeros((1, 18, 18, 2)))
     with pytest.raises(ValueError, match="shape"):
-        sa.greedy_values(np.zeros((3, 3, 2)))
+        batch_optimum.greedy_values(np.zeros((3, 3, 2)))
     with pytest.raises(ValueError, match="finite"):
-        sa.batch_pair_bounds(np.full((1, 2, 2), np.nan), np.zeros((1, 1, 2)), 1.0)
+        batch_optimum.batch_pair_bounds(np.full((1, 2, 2), np.nan), np.zeros((1, 1, 2)), 1.0)
     with pytest.raises(ValueError, match="u_max"):
-        sa.batch_pair_bounds(np.zeros((1, 2, 2)), np.ones((1, 1, 2)), -1.0)
+        batch_optimum.batch_pair_bounds(np.zeros((1, 2, 2)), np.ones((1, 1, 2)), -1.0)
 
 
 def test_search_equals_the_sequential_local_search():
@@ -132,7 +133,7 @@ def test_search_equals_the_sequential_local_search():
 
     def ratio(S, T):
         W = ob.pair_bounds(S, T, 1.0)
-        P, Q = sa.pair_assignments(n, L)
+        P, Q = batch_optimum.pair_assignments(n, L)
         opt = W[P, Q, np.arange(L)[None, :]].sum(axis=1).max()
         return ob.greedy_pair_assignment(W).value / opt
 
@@ -154,7 +155,7 @@ def test_search_equals_the_sequential_local_search():
                 S, T, r = S2, T2, r2
         if r < best[0]:
             best = (r, S, T)
-    r, S, T = sa.worst_instance_search(n, L, seed, starts, steps)
+    r, S, T = greedy_unique_pairs.worst_instance_search(n, L, seed, starts, steps)
     assert r == best[0]
     np.testing.assert_array_equal(S, best[1])
     np.testing.assert_array_equal(T, best[2])
@@ -165,9 +166,9 @@ def test_optimal_assignments_are_optimal_and_equal_the_values():
     for n, L in [(2, 1), (5, 2), (6, 3), (8, 4), (9, 3)]:
         W = rng.uniform(-1, 1, (15, n, n, L))
         W = W + W.transpose(0, 2, 1, 3)  # symmetric, both signs
-        values, triples = sa.optimal_assignments(W)
-        np.testing.assert_array_equal(values, sa.optimal_values(W))
-        P, Q = sa.pair_assignments(n, L)
+        values, triples = batch_optimum.optimal_assignments(W)
+        np.testing.assert_array_equal(values, batch_optimum.optimal_values(W))
+        P, Q = batch_optimum.pair_assignments(n, L)
         np.testing.assert_array_equal(values, W[:, P, Q, np.arange(L)].sum(axis=2).max(axis=1))
         for k in range(15):
             i, j, l = triples[k].T
@@ -177,19 +178,19 @@ def test_optimal_assignments_are_optimal_and_equal_the_values():
 
 
 def test_studies_are_cached_and_read_only():
-    a = sa.greedy_vs_optimal(30, seed=2)
-    b = sa.greedy_vs_optimal(30, 2, (2, 4), (0, 2), 1.0, 100.0)
+    a = greedy_unique_pairs.greedy_vs_optimal(30, seed=2)
+    b = greedy_unique_pairs.greedy_vs_optimal(30, 2, (2, 4), (0, 2), 1.0, 100.0)
     assert a is b  # one computation for the chapter and the ledger
     with pytest.raises(ValueError, match="read-only"):
         a.greedy[0] = 0.0
-    r, S, _ = sa.worst_instance_search(4, 2, seed=0, n_starts=2, n_steps=5)
-    assert sa.worst_instance_search(4, 2, 0, 2, 5, 1.0, 100.0)[1] is S
+    r, S, _ = greedy_unique_pairs.worst_instance_search(4, 2, seed=0, n_starts=2, n_steps=5)
+    assert greedy_unique_pairs.worst_instance_search(4, 2, 0, 2, 5, 1.0, 100.0)[1] is S
     with pytest.raises(ValueError, match="read-only"):
         S[0, 0] = 1.0
 
 
 def test_signed_and_charging_studies_reject_bad_input():
     with pytest.raises(ValueError, match="n_instances"):
-        sa.signed_weights_study(0, seed=0)
+        greedy_unique_pairs.signed_weights_study(0, seed=0)
     with pytest.raises(ValueError, match="targets"):
-        sa.charging_audit(5, seed=0, targets=(3, 2))
+        greedy_unique_pairs.charging_audit(5, seed=0, targets=(3, 2))

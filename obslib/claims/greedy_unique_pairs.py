@@ -8,24 +8,37 @@ import numpy as np
 
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..formatting import count, number, percent, setting, small
-from ..studies import assignment as sa
-from ..studies import greedy_tightness as gt
+from ..studies.greedy_tightness import (
+    TIGHT_U_MAX,
+    first_pick_margin,
+    jitter_summary,
+    tight_witness,
+    witness_jitter_ratios,
+)
+from ..studies.greedy_unique_pairs import (
+    GreedyStudy,
+    charging_audit,
+    greedy_vs_optimal,
+    signed_weights_study,
+    tight_weights,
+    worst_instance_search,
+)
 from ..studies.unchecked import NOTEBOOK as UNCHECKED
 from ._ledger import Finding, Table, claim
 
 NB = "03_greedy_unique_pairs"
 
 
-def _study(p: dict) -> sa.GreedyStudy:
+def _study(p: dict) -> GreedyStudy:
     """The greedy against the exact optimum on notebook 03's random instances."""
-    return sa.greedy_vs_optimal(p["n_instances"], p["seed"], (p["targets_min"], p["targets_max"]),
-                                (0, p["extra_max"]), p["u_max"])
+    return greedy_vs_optimal(p["n_instances"], p["seed"], (p["targets_min"], p["targets_max"]),
+                             (0, p["extra_max"]), p["u_max"])
 
 
 def _worst(p: dict) -> float:
     """Greedy / optimum at the worst layout notebook 03's local search finds."""
-    return sa.worst_instance_search(p["search_sensors"], p["search_targets"], p["seed"],
-                                    p["n_starts"], p["n_steps"], p["u_max"])[0]
+    return worst_instance_search(p["search_sensors"], p["search_targets"], p["seed"],
+                                 p["n_starts"], p["n_steps"], p["u_max"])[0]
 
 
 def _sizes(p: dict, n: int) -> str:
@@ -57,7 +70,7 @@ def _thm6(p: dict) -> Finding:
     on every random instance and at the worst layout the local search finds; refuted
     otherwise. The hand-made weights are shown, not judged."""
     study, worst_ratio = _study(p), _worst(p)
-    W = sa.tight_weights(1e-3)
+    W = tight_weights(1e-3)
     tight = greedy_pair_assignment(W).value / optimal_pair_assignment(W).value
     ratios = study.ratio
     lowest = float(ratios.min())
@@ -112,8 +125,8 @@ def _thm6_any_omega(p: dict) -> Finding:
     with the absolute values (the guarantee needs omega >= 0, which the last step of the proof
     uses: n_k w_k <= 3 w_k only for w_k >= 0); reproduced: it never falls below a third;
     refuted: it falls below a third with non-negative values too."""
-    st = sa.signed_weights_study(p["n_instances"], p["seed"], (p["targets_min"],
-                                                               p["targets_max"]))
+    st = signed_weights_study(p["n_instances"], p["seed"], (p["targets_min"],
+                                                            p["targets_max"]))
     n = st.greedy.size
     bad, bad_abs = int(st.below_third.sum()), int(st.below_third_abs.sum())
     negative = int(((st.greedy < 0) & (st.optimum > 0)).sum())
@@ -174,8 +187,8 @@ def _thm6_charging(p: dict) -> Finding:
     program): reproduced when every optimal triple is charged exactly once, none is heavier than
     its pick, no pick takes more than three, and OPT <= sum n_k w_k <= 3 GREEDY on every
     instance; refuted when any step fails."""
-    a = sa.charging_audit(p["n_instances"], p["seed"], (p["targets_min"], p["targets_max"]),
-                          (0, p["extra_max"]), p["u_max"])
+    a = charging_audit(p["n_instances"], p["seed"], (p["targets_min"], p["targets_max"]),
+                       (0, p["extra_max"]), p["u_max"])
     fails = a.n_not_once + a.n_heavier + a.n_over_three + a.n_chain_broken
     picks = a.charges_per_pick
     return Finding(
@@ -287,12 +300,12 @@ def _thm6_tight(p: dict) -> Finding:
     at the profile's sizes and the fragility of the witness (every point jittered by a fraction
     of the spread) are reported, not judged."""
     q = p[NB]
-    S, T = gt.tight_witness()
-    margin = gt.first_pick_margin(S, T, gt.TIGHT_U_MAX)
+    S, T = tight_witness()
+    margin = first_pick_margin(S, T, TIGHT_U_MAX)
     ratio = margin["ratio"]
     searched = _worst(q)
     fr = p["jitter_fractions"]
-    rows = gt.jitter_summary(gt.witness_jitter_ratios(fr, p["n_jitter"], p["seed"]), fr)
+    rows = jitter_summary(witness_jitter_ratios(fr, p["n_jitter"], p["seed"]), fr)
     answered = ratio <= NEAR_THIRD
     lifted = next((r for r in rows if r["below_half"] < 0.5), None)
     if lifted is None:

@@ -1,5 +1,5 @@
-"""Ledger records of Sections IV-A and V-C (obslib.claims.assignment, .greedy_vs_relaxed) against
-evidence recomputed here by enumeration and by hand, without the library's solvers."""
+"""Ledger records of Sections IV-A and V-C (obslib.claims.greedy_unique_pairs, .greedy_vs_relaxed)
+against evidence recomputed here by enumeration and by hand, without the library's solvers."""
 
 import json
 from dataclasses import asdict
@@ -12,7 +12,7 @@ import obslib as ob
 from obslib import claims
 from obslib.claims.quotes import found
 from obslib.profiles import params
-from obslib.studies import assignment as sa
+from obslib.studies import greedy_unique_pairs
 from obslib.studies import greedy_vs_relaxed as gvr
 
 IDS = ["thm6", "thm6-any-omega", "thm6-proof-charging", "thm6-practice", "thm6-tight",
@@ -86,7 +86,7 @@ def test_signed_witness_recomputed(records):
 
 
 def test_signed_study_counts_against_enumeration():
-    st = sa.signed_weights_study(40, seed=3, targets=(2, 3))
+    st = greedy_unique_pairs.signed_weights_study(40, seed=3, targets=(2, 3))
     rng = np.random.default_rng(3)  # the documented draws: the L's, then each instance's values
     Ls = rng.integers(2, 4, size=40)
     for k, L in enumerate(Ls.tolist()):
@@ -105,8 +105,8 @@ def test_charging_by_hand_on_the_ledgers_instances(records):
     """Theorem 6's charging redone by hand (greedy and optimum by enumeration) on the first
     instances of notebook 03's draws; the counts of picks by charges equal the study's."""
     p = params("03_greedy_unique_pairs", "quick")
-    groups = sa.pair_instances(15, p["seed"], (p["targets_min"], p["targets_max"]),
-                               (0, p["extra_max"]))
+    groups = greedy_unique_pairs.pair_instances(15, p["seed"], (p["targets_min"], p["targets_max"]),
+                                                (0, p["extra_max"]))
     per_pick = np.zeros(5, dtype=int)
     for _, _, _, S, T in groups:
         for s, t in zip(S, T):
@@ -122,8 +122,8 @@ def test_charging_by_hand_on_the_ledgers_instances(records):
                 per_pick[min(len(hit), 4)] += 1
                 total += len(hit) * W[i, j, l]
             assert not left and opt <= total + 1e-12 <= 3 * greedy + 2e-12
-    a = sa.charging_audit(15, p["seed"], (p["targets_min"], p["targets_max"]),
-                          (0, p["extra_max"]), p["u_max"])
+    a = greedy_unique_pairs.charging_audit(15, p["seed"], (p["targets_min"], p["targets_max"]),
+                                           (0, p["extra_max"]), p["u_max"])
     assert tuple(per_pick) == a.charges_per_pick
     ev = records["thm6-proof-charging"].evidence
     assert ev["n_not_once"] == ev["n_heavier"] == ev["n_over_three"] == 0
@@ -132,7 +132,7 @@ def test_charging_by_hand_on_the_ledgers_instances(records):
 
 def test_charging_check_can_fail(monkeypatch):
     """A charging that loses a triple (patched in) must make the entry refuted."""
-    real = sa.charging
+    real = greedy_unique_pairs.charging
 
     def lossy(W, greedy_triples, optimal_triples):
         rounds = real(W, greedy_triples, optimal_triples)
@@ -140,14 +140,15 @@ def test_charging_check_can_fail(monkeypatch):
             rounds[0]["charged"] = rounds[0]["charged"][1:]
         return rounds
 
-    monkeypatch.setattr(sa, "charging", lossy)
-    sa._charging_audit.cache_clear()  # private: the audit is cached on its arguments
+    monkeypatch.setattr(greedy_unique_pairs, "charging", lossy)
+    # private: the audit is cached on its arguments
+    greedy_unique_pairs._charging_audit.cache_clear()
     try:
         rec = claims.recheck("thm6-proof-charging", profile="quick")
         assert rec.status == "refuted" and rec.evidence["n_not_once"] > 0
     finally:
         monkeypatch.undo()
-        sa._charging_audit.cache_clear()
+        greedy_unique_pairs._charging_audit.cache_clear()
 
 
 def test_problem3_by_enumeration():
@@ -181,7 +182,7 @@ def test_problem3_without_exact_instances_is_untestable():
 
 
 def test_thm6_tight_is_answered_by_the_stored_witness(records):
-    from obslib.claims.assignment import NEAR_THIRD
+    from obslib.claims.greedy_unique_pairs import NEAR_THIRD
 
     ev = records["thm6-tight"].evidence
     from obslib.studies.greedy_tightness import tight_witness
@@ -197,8 +198,9 @@ def test_practice_wording_follows_the_numbers(records):
     'usually'; the share is recomputed from the study."""
     r = records["thm6-practice"]
     p = params("03_greedy_unique_pairs", "quick")
-    st = sa.greedy_vs_optimal(p["n_instances"], p["seed"], (p["targets_min"], p["targets_max"]),
-                              (0, p["extra_max"]), p["u_max"])
+    st = greedy_unique_pairs.greedy_vs_optimal(p["n_instances"], p["seed"],
+                                               (p["targets_min"], p["targets_max"]),
+                                               (0, p["extra_max"]), p["u_max"])
     share = float(np.mean(st.ratio >= 1 - 1e-12))
     assert r.evidence["fraction_optimal"] == share
     assert ob.formatting.percent(share) in r.summary
