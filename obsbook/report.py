@@ -441,7 +441,7 @@ def _entry(r, evidence: str, label: str) -> list:
 
 def robustness_section(records, robustness: dict) -> list:
     """Lines of the section "How robust are the verdicts?" from the stored robustness data."""
-    from obslib.claims import robustness as rb
+    from obslib.claims.robustness import DIMENSIONS, HEADERS, describe
 
     have = {r.id: r for r in records if r.kind == "paper"}
     rows = [row for row in robustness["rows"] if row["id"] in have]
@@ -454,12 +454,12 @@ def robustness_section(records, robustness: dict) -> list:
     body = []
     for row in rows:
         r = have[row["id"]]
-        verdict, cells = rb.describe(row, r.status)
+        verdict, cells = describe(row, r.status)
         body.append([f"[{typeset(r.title)}](#claim-{r.id})", verdict] + cells)
     return (["(report-robustness)=", "## How robust are the verdicts?", "",
              " ".join(intro.split()), ""]
             + list_table("Each verdict with one parameter of its experiment changed at a time.",
-                         ["claim", "verdict"] + [rb.HEADERS[d] for d in rb.DIMENSIONS], body,
+                         ["claim", "verdict"] + [HEADERS[d] for d in DIMENSIONS], body,
                          name="tab-report-robustness") + [""])
 
 
@@ -638,8 +638,7 @@ def main(argv=None) -> int:
     page's generated parts, :mod:`obsbook.front`), print it or store it (exit status 2 for a bad
     profile or path, or a missing robustness file; 1, after one line, if a write fails)."""
     from obslib._io import OutputPathError, as_input_file, as_output_path, write_or_report
-    from obslib.claims import evaluate
-    from obslib.claims import robustness as rb
+    from obslib.claims import evaluate, robustness
     from obslib.profiles import profile_names
 
     ap = argparse.ArgumentParser(prog="python -m obsbook.report",
@@ -647,7 +646,7 @@ def main(argv=None) -> int:
     ap.add_argument("--profile", default="paper", choices=profile_names())
     ap.add_argument("--write", help="store the page here (default: print it)")
     ap.add_argument("--front", help="also store the front page's generated parts here")
-    ap.add_argument("--robustness", default=str(rb.DATA),
+    ap.add_argument("--robustness", default=str(robustness.DATA),
                     help="the stored robustness data (default: obslib/data/robustness.json)")
     ap.add_argument("--notebooks", default=str(ROOT / "notebooks"),
                     help="the notebooks whose section labels the evidence links go to")
@@ -661,12 +660,12 @@ def main(argv=None) -> int:
     if not Path(args.notebooks).is_dir():
         ap.error(f"--notebooks {args.notebooks}: not a directory")
     try:
-        robustness = rb.read_json(as_input_file(args.robustness))
+        stored = robustness.read_json(as_input_file(args.robustness))
     except ValueError as exc:  # missing, not a regular file, or not robustness data
         ap.error(f"--robustness {exc}")
-    caveats = rb.caveats(robustness) if args.profile == "paper" else {}
+    caveats = robustness.caveats(stored) if args.profile == "paper" else {}
     records = evaluate(args.profile, caveats=caveats)
-    text = render_report(records, args.profile, notebook_targets(args.notebooks), robustness)
+    text = render_report(records, args.profile, notebook_targets(args.notebooks), stored)
     if args.write is None:
         print(text, end="")
     elif not write_or_report("python -m obsbook.report", args.write, text):

@@ -14,8 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-from obslib.claims import recheck, registry
-from obslib.claims import robustness as rb
+from obslib.claims import recheck, registry, robustness
 from obslib.profiles import defaults
 
 from .glue import glue_text
@@ -78,7 +77,7 @@ def glue_verdicts(notebook: str, namespace: Mapping, ids) -> dict:
     """
     reg = registry()
     own = {k: namespace[k] for k in defaults(notebook)}
-    caveats = rb.caveats()
+    caveats = robustness.caveats()
     out = {}
     for cid in ids:
         if cid not in reg:

@@ -42,7 +42,7 @@ On top of the core, one module per section of the paper in each of:
 studies
     The paper's audits and experiments (``studies.model_and_bound``, ``studies.pair_closed_form``,
     ``studies.greedy_unique_pairs``, ``studies.submodularity``, ``studies.greedy_vs_relaxed``,
-    ``studies.teams``, ...) and the published numbers (``studies.published``).
+    ``studies.general_assignment``, ...) and the published numbers (``studies.published``).
 viz
     Every matplotlib figure, one module per chapter of the book (``viz.model_and_bound``,
     ``viz.pair_closed_form``, ``viz.two_sensors_tracking``, ...) and the drawings they share

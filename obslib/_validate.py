@@ -20,8 +20,7 @@ from ._kernels import mahalanobis_rescale
 __all__ = ["ArgumentTypeError", "MissingFileError", "as_float_array", "as_points", "as_point",
            "as_u_max", "as_cov", "as_int", "as_bool", "as_eps", "as_positive", "as_nonnegative",
            "as_real", "as_str", "as_path", "as_names", "as_argv", "as_mapping", "as_callable",
-           "as_sequence", "as_ints", "as_nonnegatives", "as_triples", "as_int_range", "broadcast",
-           "as_rank_rtol",
+           "as_sequence", "as_ints", "as_triples", "as_int_range", "broadcast", "as_rank_rtol",
            "as_measure_name", "as_weights", "as_real_array", "as_covariances", "as_noise_table",
            "as_instance", "as_choice", "check_spd_any_scale", "check_spd2", "check_distinct",
            "check_not_on_targets", "check_differences", "check_pair_sizes",
@@ -497,17 +496,6 @@ def as_ints(value, name: str, minimum: int | None = None) -> list:
     out = [as_int(v, name, minimum) for v in as_sequence(value, name)]
     if not out:
         raise ValueError(f"{name} must not be empty")
-    return out
-
-
-def as_nonnegatives(value, name: str) -> tuple:
-    """A non-empty tuple of finite non-negative reals (from a list, tuple or 1-D array), e.g. the
-    ratios ``q = u_max / d_io`` an audit runs over."""
-    if isinstance(value, np.ndarray) and value.ndim == 1:
-        value = value.tolist()
-    out = tuple(as_nonnegative(v, name) for v in as_sequence(value, name))
-    if not out:
-        raise ValueError(f"{name} must list at least one value")
     return out
 
 

@@ -32,8 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _exact_pairs as exact_pairs
-from . import _relaxed_pairs as relaxed_pairs
+from . import _exact_pairs, _relaxed_pairs
 from ._kernels import pair_kernel
 from ._memory import check_geometry_memory, check_upper_weights_memory, check_weight_memory
 from ._pair_search import GeometryHeads, PairSearch, WeightHeads, geometry_iv, rows_of
@@ -545,13 +544,13 @@ def _relaxed(arr, geometry, orders, progress) -> list:
     for each flag of ``orders``; one :class:`PairAssignment` per flag."""
     n, n_targets = _sizes(arr, geometry)
     if arr is not None:
-        candidates = relaxed_pairs.candidates_from_weights(arr)
+        candidates = _relaxed_pairs.candidates_from_weights(arr)
         bar = _progress(progress, 1, "matching")
     else:
         bar = _progress(progress, n_targets, "candidate pairs")
-        candidates = relaxed_pairs.candidates_from_geometry(rows_of(geometry), bar)
+        candidates = _relaxed_pairs.candidates_from_geometry(rows_of(geometry), bar)
     try:
-        return [PairAssignment(*relaxed_pairs.matching(*candidates[:3], n, n_targets, ordered),
+        return [PairAssignment(*_relaxed_pairs.matching(*candidates[:3], n, n_targets, ordered),
                                n_evaluations=candidates[3]) for ordered in orders]
     finally:
         if bar is not None:
@@ -576,7 +575,7 @@ class OptimumNotProven(RuntimeError):
 
 #: Largest memory :func:`optimal_pair_assignment` may use beyond ``W``: 2 GiB, at
 #: :data:`obslib._exact_pairs.BYTES_PER_VARIABLE` bytes per pair-target variable.
-MAX_EXACT_BYTES = exact_pairs.MAX_BYTES
+MAX_EXACT_BYTES = _exact_pairs.MAX_BYTES
 
 
 def optimal_pair_assignment(W, time_limit: float | None = None, progress=False) -> PairAssignment:
@@ -667,8 +666,8 @@ def optimal_pair_assignment(W, time_limit: float | None = None, progress=False) 
         # Algorithm 1 (one of the search's incumbents) on the weights validated above
         picks, _ = _rounds(WeightHeads.of(arr), np.ones((1, n), dtype=bool), n_targets)
         start = [tuple(t) for t in picks[0].tolist()]
-        triples = exact_pairs.solve(arr, deadline, start, bar)
-    except exact_pairs.Stopped as e:
+        triples = _exact_pairs.solve(arr, deadline, start, bar)
+    except _exact_pairs.Stopped as e:
         best = sorted(e.triples, key=lambda t: t[2])
         best = PairAssignment(triples=best, value=assignment_value(arr, best))
         gap = "" if e.bound is None else f", the bound {e.bound:.6g}"
@@ -694,5 +693,5 @@ def _optimal_iv(W, time_limit, progress) -> tuple:
     if time_limit is not None:
         time_limit = as_positive(time_limit, "time_limit")
     progress = as_bool(progress, "progress")
-    exact_pairs.check_memory(n, n_targets, MAX_EXACT_BYTES)
+    _exact_pairs.check_memory(n, n_targets, MAX_EXACT_BYTES)
     return arr, time_limit, progress

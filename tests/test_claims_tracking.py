@@ -1,4 +1,5 @@
-"""The ledger's claims of Sections V-A and V-B (obslib.claims.tracking), at the quick profile.
+"""The ledger's claims of Sections V-A and V-B (obslib.claims.two_sensors_tracking and
+obslib.claims.adversarial_target), at the quick profile.
 
 Each status is asserted against the evidence the check returns, by the rule in its docstring,
 and then pinned to what we found (a change of verdict must be a deliberate, reviewed change);
@@ -11,12 +12,13 @@ import numpy as np
 import pytest
 
 import obslib.claims as claims
-import obslib.claims.tracking as ct  # registers the claims of this module
 import obslib.tracking as tr
 from obslib.profiles import params
 from obslib.published_runs import published_run
-from obslib.studies import tracking as study
+from obslib.studies import replay
+from obslib.studies.adversarial_target import adversary_runs
 from obslib.studies.published import PUBLISHED_CIRCLE
+from obslib.studies.two_sensors_tracking import circle_runs, least_run_wins
 
 IDS = [
     "fig6-figure-data",
@@ -56,9 +58,9 @@ def test_registered_with_required_ids_and_kinds():
     reg = claims.registry()
     for i in IDS:
         assert i in reg
-    assert reg["fig6-best-pair"].notebook == ct.NB5
-    assert reg["fig7-entrapment"].notebook == ct.NB6
-    assert reg["sec5a-umax-speed"].notebook == ct.NB5
+    assert reg["fig6-best-pair"].notebook == claims.two_sensors_tracking.NOTEBOOK
+    assert reg["fig7-entrapment"].notebook == claims.adversarial_target.NOTEBOOK
+    assert reg["sec5a-umax-speed"].notebook == claims.two_sensors_tracking.NOTEBOOK
     assert {"fig6-best-pair", "fig7-entrapment"} <= set(claims.REQUIRED_IDS)
     # the numbers of the published runs are findings about the authors' saved runs
     assert {i for i in IDS if reg[i].kind == "code"} == {"fig6-figure-data", "fig7-figure-data"}
@@ -115,7 +117,7 @@ def test_statuses_follow_from_evidence(records):
     e = r.evidence
     replay_ok = all(d["matches_log"] and all(v["printed_match"] for v in d["printed"].values())
                     for d in e["replays"].values())
-    typical = e["fixed_pair"]["share_like_published"] >= ct.TYPICAL_SHARE
+    typical = e["fixed_pair"]["share_like_published"] >= claims.two_sensors_tracking.TYPICAL_SHARE
     assert r.status == ("agrees" if replay_ok and typical else "differs")
 
     r = records["fig7-figure-data"]
@@ -150,8 +152,8 @@ def test_figure_data_against_the_published_log(records):
 def test_strategy3_numbers_recounted_run_by_run(records):
     # the share of our strategy-3 runs like the published one and their median error, counted
     # run by run with the single-run engine (simulate), not the batched one
-    p = params(ct.NB5, "quick")
-    setup = ct.circle_setup(p)
+    p = params(claims.two_sensors_tracking.NOTEBOOK, "quick")
+    setup = claims.two_sensors_tracking.circle_setup(p)
     pub = PUBLISHED_CIRCLE["fixed-pair"]
     like, errors = 0, []
     for seed in range(p["seed"], p["seed"] + p["n_seeds"]):
@@ -165,29 +167,30 @@ def test_strategy3_numbers_recounted_run_by_run(records):
 
 
 def test_ledger_and_chapter_share_one_computation():
-    p = params(ct.NB5, "quick")
-    setup = ct.circle_setup(p)
-    assert ct._circle(p) is study.circle_runs(setup, p["n_seeds"], p["seed"])
-    q = params(ct.NB6, "quick")
-    assert ct._adversary(q) is study.adversary_runs(ct.adversarial_setup(q), q["n_seeds"],
-                                                    q["seed"])
+    p = params(claims.two_sensors_tracking.NOTEBOOK, "quick")
+    setup = claims.two_sensors_tracking.circle_setup(p)
+    assert claims.two_sensors_tracking._circle(p) is circle_runs(setup, p["n_seeds"], p["seed"])
+    q = params(claims.adversarial_target.NOTEBOOK, "quick")
+    setup = claims.adversarial_target.adversarial_setup(q)
+    assert claims.adversarial_target._adversary(q) is adversary_runs(setup, q["n_seeds"], q["seed"])
 
 
 def test_printed_match_rounds_at_the_printed_precision():
-    assert ct.printed_match(0.7263, 0.73, "mean_bound")
-    assert not ct.printed_match(0.7249, 0.73, "mean_bound")
-    assert ct.printed_match(0.13975, 0.140, "mean_trace")
-    assert not ct.printed_match(0.1394, 0.140, "mean_trace")
-    assert ct.printed_match(306, 306, "switches") and not ct.printed_match(305, 306, "switches")
+    printed_match = claims.two_sensors_tracking.printed_match
+    assert printed_match(0.7263, 0.73, "mean_bound")
+    assert not printed_match(0.7249, 0.73, "mean_bound")
+    assert printed_match(0.13975, 0.140, "mean_trace")
+    assert not printed_match(0.1394, 0.140, "mean_trace")
+    assert printed_match(306, 306, "switches") and not printed_match(305, 306, "switches")
 
 
 def test_fig7_figure_data_differs_when_the_replay_misses(monkeypatch):
     # the check has teeth: a replay that differs from the log by more than its rounding
     import dataclasses
 
-    good = ct.rp.compare_replay("adversarial")
+    good = replay.compare_replay("adversarial")
     bad = dataclasses.replace(good, max_abs_diff=dict(good.max_abs_diff, bound=1e-3))
-    monkeypatch.setattr(ct.rp, "compare_replay", lambda name: bad)
+    monkeypatch.setattr(replay, "compare_replay", lambda name: bad)
     (r,) = claims.evaluate("quick", ["fig7-figure-data"])
     assert r.status == "differs" and "does not give its printed numbers back" in r.summary
 
@@ -204,17 +207,18 @@ def test_fig7_figure_data_reports_typicality_shared_with_published_replay(record
 def test_umax_speed_against_the_target_path(records):
     e = records["sec5a-umax-speed"].evidence
     # the speed as the distance between consecutive true positions of a run
-    run = tr.simulate(ct.circle_setup(params(ct.NB5, "quick")), "fixed-pair", seed=0)
+    p = params(claims.two_sensors_tracking.NOTEBOOK, "quick")
+    run = tr.simulate(claims.two_sensors_tracking.circle_setup(p), "fixed-pair", seed=0)
     steps = np.hypot(*np.diff(run.truth, axis=0).T)
     assert steps == pytest.approx(e["speed"], rel=1e-9)
     assert e["ratio"] == pytest.approx(3.0 / steps.mean(), rel=1e-9)
     assert 49.9 < e["ratio"] < 50.1  # u_max = 3 is the radius, 50 times the speed
     # the comparison with the true speed, recomputed through the Monte Carlo entry point
-    p = params(ct.NB5, "quick")
-    setup = ct.circle_setup(p).replace(u_max=e["speed"])
+    p = params(claims.two_sensors_tracking.NOTEBOOK, "quick")
+    setup = claims.two_sensors_tracking.circle_setup(p).replace(u_max=e["speed"])
     mc = tr.monte_carlo(setup, p["n_seeds"], tr.STRATEGIES, p["seed"])
     cmp = tr.compare_strategies(mc)
-    assert e["true_speed"]["run_wins"] == study.least_run_wins(cmp)
+    assert e["true_speed"]["run_wins"] == least_run_wins(cmp)
     assert e["true_speed"]["mean_error"]["best-pair"] == pytest.approx(
         mc["best-pair"].error[:, 1:].mean(), rel=1e-12)
 
@@ -224,7 +228,7 @@ def test_summaries_state_the_evidence(records):
     assert f"{100 * r.evidence['switch_if_closer']:.1f}%" in r.summary
     assert "not in response to the target" not in r.ours  # the pair does respond (see above)
     r = records["fig6-best-pair"]
-    n = params(ct.NB5, "quick")["n_seeds"]
+    n = params(claims.two_sensors_tracking.NOTEBOOK, "quick")["n_seeds"]
     assert f"all {n} runs" in r.summary and r.evidence["least_run_wins"] == 1.0
 
 
@@ -239,7 +243,7 @@ def test_statuses_as_found(records):
 
 
 def test_quick_profile_shrinks_only_sizes():
-    for nb in (ct.NB5, ct.NB6):
+    for nb in (claims.two_sensors_tracking.NOTEBOOK, claims.adversarial_target.NOTEBOOK):
         quick, paper = params(nb, "quick"), params(nb, "paper")
         assert set(quick) == set(paper)
         changed = {k for k in paper if quick[k] != paper[k]}

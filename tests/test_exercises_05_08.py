@@ -257,13 +257,14 @@ def test_08_gains_by_the_determinant_lemma(eps, glued):
 
 def test_08_prior_spread_against_the_binomial_baseline(glued):
     from obsbook.chapters.general_assignment import glue_exercise_prior
-    from obslib.studies import teams
+    from obslib.studies import general_assignment
 
     N, trials, L = np.array([10, 12]), 3, 2
-    text = {None: teams.evenness(teams.fig9_sweep(N, trials, 0, L, "logdet", 1.0, 100.0), N, L)}
+    counts = general_assignment.fig9_sweep(N, trials, 0, L, "logdet", 1.0, 100.0)
+    text = {None: general_assignment.evenness(counts, N, L)}
     even = text[None]
     big = glue_exercise_prior(N, trials, 0, L, 100.0, 1.0, text, even)
-    counts = teams.fig9_sweep(N, trials, 0, L, "logdet", 1e4, 100.0)
+    counts = general_assignment.fig9_sweep(N, trials, 0, L, "logdet", 1e4, 100.0)
     # by hand: the standard deviation of a trial's counts, averaged over the trials, over that
     # of a binomial count, sqrt(N (1/L)(1 - 1/L))
     rel = counts.std(axis=2).mean(axis=1) / np.sqrt(N * (1 / L) * (1 - 1 / L))

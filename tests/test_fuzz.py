@@ -688,7 +688,8 @@ LIBRARY = (str(Path(ob.__file__).parent), str(Path(ob.__file__).parents[1] / "ob
 def test_every_public_function_is_found():
     # the enumeration reaches every layer, so a new public function cannot be left out
     for expected in ("obslib.bounds.lower_bound", "obslib.tracking.batch.simulate",
-                     "obslib.studies.tracking.partner_study", "obslib.claims.robustness.",
+                     "obslib.studies.two_sensors_tracking.partner_study",
+                     "obslib.claims.robustness.",
                      "obslib.viz.tracking.", "obslib.tools.run.", "obslib.profiles.params",
                      "obslib.symbolic.theorem4.", "obslib.scenes.random_scenes"):
         assert any(k.startswith(expected) for k in PUBLIC), expected
@@ -810,14 +811,14 @@ def test_arrays_numpy_would_misread_are_refused_by_name(index, kind):
 ])
 def test_arguments_for_joblib_and_dask_are_named_before_anything_starts(backend, n_jobs,
                                                                          scheduler, name):
-    from obslib.studies import greedy_vs_relaxed, teams
+    from obslib.studies import general_assignment, greedy_vs_relaxed
     from obslib.sweep import run_sweep
 
     calls = (lambda: run_sweep(pow, [dict(base=2, exp=1)], backend, n_jobs, scheduler),
              lambda: greedy_vs_relaxed.fig8_sweep([2], 2, 0, backend=backend, n_jobs=n_jobs,
                                                   scheduler=scheduler),
-             lambda: teams.fig9_sweep([6], 2, 0, backend=backend, n_jobs=n_jobs,
-                                      scheduler=scheduler))
+             lambda: general_assignment.fig9_sweep([6], 2, 0, backend=backend, n_jobs=n_jobs,
+                                                   scheduler=scheduler))
     for call in calls:
         with _time_limit(5), pytest.raises(ValueError) as exc:  # no worker, no connection
             call()
@@ -829,11 +830,11 @@ def test_arguments_for_joblib_and_dask_are_named_before_anything_starts(backend,
     ({"eps": -1.0}, "eps"), ({"n_targets": 2.5}, "n_targets"), ({"side": 0.0}, "side"),
 ])
 def test_the_trials_arguments_are_checked_before_the_tasks_go_out(kwargs, name, monkeypatch):
-    from obslib.studies import teams
+    from obslib.studies import general_assignment
 
-    monkeypatch.setattr(teams, "run_sweep", lambda *a, **k: pytest.fail("dispatched"))
+    monkeypatch.setattr(general_assignment, "run_sweep", lambda *a, **k: pytest.fail("dispatched"))
     with pytest.raises(ValueError) as exc:
-        teams.fig9_sweep([6], 2, 0, backend="joblib", n_jobs=2, **kwargs)
+        general_assignment.fig9_sweep([6], 2, 0, backend="joblib", n_jobs=2, **kwargs)
     assert _named(str(exc.value), [name]), exc.value
 
 

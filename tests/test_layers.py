@@ -84,9 +84,9 @@ def test_the_import_reader():
            "def f():\n    from ..viz import tracking as v\n    import obsbook.report\n")
     assert imports(probe, src) == {"obslib.tracking", "obslib.bounds", "obslib.viz.tracking",
                                    "obsbook.report"}
-    assert layer("obslib.studies.tracking") == ("obslib.studies", 2)
+    assert layer("obslib.studies.two_sensors_tracking") == ("obslib.studies", 2)
     assert layer("obslib._validate") == ("obslib", 0)
-    assert len(GRAPH) > 80 and GRAPH["obslib.claims.tracking"]
+    assert len(GRAPH) > 80 and GRAPH["obslib.claims.two_sensors_tracking"]
 
 
 def test_imports_point_down():

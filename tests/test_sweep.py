@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
+from obslib.studies import general_assignment
 from obslib.studies import greedy_vs_relaxed as gvr
-from obslib.studies import teams as ts
 from obslib.sweep import run_sweep
 
 
@@ -14,7 +14,8 @@ def test_joblib_equals_serial():
     for k in ("greedy", "relaxed", "relaxed_ordered"):
         np.testing.assert_array_equal(a[k], b[k])
     np.testing.assert_array_equal(
-        ts.fig9_sweep([20, 23], 3, 1), ts.fig9_sweep([20, 23], 3, 1, backend="joblib", n_jobs=2)
+        general_assignment.fig9_sweep([20, 23], 3, 1),
+        general_assignment.fig9_sweep([20, 23], 3, 1, backend="joblib", n_jobs=2),
     )
 
 
@@ -29,7 +30,8 @@ def test_dask_local_cluster_equals_serial():
         for k in ("greedy", "relaxed", "relaxed_ordered"):
             np.testing.assert_array_equal(a[k], b[k])
         np.testing.assert_array_equal(
-            ts.fig9_sweep([20], 4, 3), ts.fig9_sweep([20], 4, 3, backend="dask", scheduler=address)
+            general_assignment.fig9_sweep([20], 4, 3),
+            general_assignment.fig9_sweep([20], 4, 3, backend="dask", scheduler=address),
         )
 
 

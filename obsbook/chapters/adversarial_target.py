@@ -10,15 +10,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from obslib import tracking as tr
+from obslib import tracking
 from obslib.controls import disc_controls
 from obslib.formatting import count, listing, number, percent, setting, small
 from obslib.published_runs import published_run
-from obslib.studies import experiment_details as details
-from obslib.studies import tracking as study
-from obslib.studies.published import PUBLISHED_ADVERSARIAL
+from obslib.studies.adversarial_target import adversary_runs, entrapment_summary
+from obslib.studies.experiment_details import control_set_gap
+from obslib.studies.published import FIGURE_TOLERANCE, PUBLISHED_ADVERSARIAL
 from obslib.viz.adversarial_target import ADVERSARY_LABELS
-from obslib.viz.tracking import STRATEGY_LABELS as LABEL
+from obslib.viz.tracking import STRATEGY_LABELS
 
 from ..glue import glue_texts
 from ..prose import PUBLISHED_RUNS, point, sensor_math, share
@@ -163,11 +163,11 @@ def glue_entrapment(ents: dict, seed: int) -> None:
     seed : int
         The runs' noise seed.
     """
-    crit = tr.ENTRAPMENT_CRITERIA
-    rows = [(LABEL[s], number(float(ee.max_from_start)), number(float(ee.bound_mean)),
+    crit = tracking.ENTRAPMENT_CRITERIA
+    rows = [(STRATEGY_LABELS[s], number(float(ee.max_from_start)), number(float(ee.bound_mean)),
              number(float(ee.icn_mean)), small(float(ee.icn_min), floor=1e-4),
              number(int(ee.switches)), number(float(ee.mean_error)),
-             "yes" if tr.is_entrapped(ee) else "no") for s, ee in ents.items()]
+             "yes" if tracking.is_entrapped(ee) else "no") for s, ee in ents.items()]
     glue_texts(
         reach_share=percent(crit["reach_fraction"]),
         crit_bound=setting(crit["bound_mean"]),
@@ -195,7 +195,8 @@ def glue_monte_carlo(batch, summ: dict, ctl: dict, per_run, ends, high, mid, nea
     batch : obslib.tracking.BatchResult
         The runs against the best pair.
     summ, ctl : dict
-        :func:`obslib.studies.tracking.entrapment_summary` against the best and the fixed pair.
+        :func:`obslib.studies.adversarial_target.entrapment_summary` against the best and the
+        fixed pair.
     per_run : ndarray
         Each run's mean bound.
     ends : ndarray, shape (runs, 2)
@@ -223,7 +224,7 @@ def glue_monte_carlo(batch, summ: dict, ctl: dict, per_run, ends, high, mid, nea
         (f"pair switches per run (of {batch.steps - 1})", f"{sw_span[0]} to {sw_span[1]}",
          "none"),
     ]
-    near_pub = (f"within {percent(study.FIGURE_TOLERANCE)} of the published"
+    near_pub = (f"within {percent(FIGURE_TOLERANCE)} of the published"
                 f" {setting(PUBLISHED_ADVERSARIAL['mean_bound'])}")
     glue_texts(
         tab_mc=rows_table(
@@ -260,7 +261,7 @@ def glue_mechanism(mech: dict, n_seeds: int) -> None:
     ----------
     mech : dict
         The mechanism's shares and mean gain, pooled over the runs
-        (:func:`obslib.studies.tracking.pooled_switch_mechanism`).
+        (:func:`obslib.studies.adversarial_target.pooled_switch_mechanism`).
     n_seeds : int
         How many runs were pooled.
     """
@@ -294,9 +295,9 @@ def full_step_share(n_radii: int, n_angles: int) -> float:
         The polar grid of the disc (:func:`obslib.controls.disc_controls`).
     """
     run = published_run("adversarial")
-    setup = tr.PAPER_ADVERSARIAL
+    setup = tracking.PAPER_ADVERSARIAL
     grid = disc_controls(setup.u_max, n_radii, n_angles)
-    obj = tr.target_objective(setup.sensor_array[run.pairs], run.truth, grid)
+    obj = tracking.target_objective(setup.sensor_array[run.pairs], run.truth, grid)
     best = grid[obj.argmin(axis=-1)]
     return float(np.mean(np.isclose(np.hypot(*best.T), setup.u_max, rtol=1e-9)))
 
@@ -309,11 +310,11 @@ def glue_strong(strong: dict, setup, variants: dict, worst: str, lowest: float,
     Parameters
     ----------
     strong : dict
-        Adversary -> :func:`obslib.studies.tracking.entrapment_summary` of its runs.
+        Adversary -> :func:`obslib.studies.adversarial_target.entrapment_summary` of its runs.
     setup : obslib.tracking.TrackingSetup
         The paper's adversarial setup.
     variants : dict
-        Adversary -> its setup (:func:`obslib.studies.tracking.adversary_variants`).
+        Adversary -> its setup (:func:`obslib.studies.adversarial_target.adversary_variants`).
     worst : str
         The adversary that drives the exact inverse condition number lowest.
     lowest : float
@@ -323,7 +324,7 @@ def glue_strong(strong: dict, setup, variants: dict, worst: str, lowest: float,
     """
     n_strong = next(iter(strong.values()))["batch"].n_runs
     # along the published trajectory: how much lower the target's objective gets with the disc
-    gap_disc = details.control_set_gap(n_radii, n_angles)
+    gap_disc = control_set_gap(n_radii, n_angles)
     rows = [(ADVERSARY_LABELS[name], percent(d["entrapped"]), number(float(d["max_from_start"])),
              number(float(d["bound_mean"])), number(float(d["icn_mean"])),
              number(float(d["icn_min"])), number(float(d["switches"])),
@@ -452,8 +453,8 @@ def glue_exercise_valley(setup, run) -> dict:
 def glue_exercise_slow(setup, n_seeds: int, seed: int) -> dict:
     """The numbers of the exercise that slows the target to a quarter of its speed: the best
     pair against the paper's adversary at the chapter's speed bound and at a quarter of it,
-    over the same noise seeds (:func:`obslib.studies.tracking.adversary_runs`, what a rerun
-    with that value computes).
+    over the same noise seeds (:func:`obslib.studies.adversarial_target.adversary_runs`, what a
+    rerun with that value computes).
 
     Parameters
     ----------
@@ -465,18 +466,19 @@ def glue_exercise_slow(setup, n_seeds: int, seed: int) -> dict:
     Returns
     -------
     dict
-        Speed bound -> :func:`obslib.studies.tracking.entrapment_summary` of the best pair's runs.
+        Speed bound -> :func:`obslib.studies.adversarial_target.entrapment_summary` of the best
+        pair's runs.
     """
-    out = {u: study.entrapment_summary(
-        study.adversary_runs(setup.replace(u_max=u), n_seeds, seed)["best-pair"])
+    out = {u: entrapment_summary(
+        adversary_runs(setup.replace(u_max=u), n_seeds, seed)["best-pair"])
         for u in (setup.u_max, setup.u_max / 4)}
     full, slow = out[setup.u_max], out[setup.u_max / 4]
-    frac = tr.ENTRAPMENT_CRITERIA["reach_fraction"]
+    frac = tracking.ENTRAPMENT_CRITERIA["reach_fraction"]
     # each condition of entrapment alone (the others switched off: every run meets them)
     alone = {"reach": {"bound_mean": 0.0, "icn_min": 0.0},
              "bound": {"reach_fraction": 1.0, "icn_min": 0.0},
              "icn": {"reach_fraction": 1.0, "bound_mean": 0.0}}
-    fails = {k: sum(not tr.is_entrapped(e, **off) for e in slow["runs"])
+    fails = {k: sum(not tracking.is_entrapped(e, **off) for e in slow["runs"])
              for k, off in alone.items()}
     glue_texts(
         ex_fail_reach=count(fails["reach"], of=n_seeds),

@@ -2,7 +2,7 @@ r"""The intuition's gains, numbers and tables of the chapter on general assignme
 (Section V-D, Fig. 9).
 
 :func:`join_gains` computes what the intuition draws; each ``glue_*`` function formats one result
-of :mod:`obslib.studies.teams` and glues it under the names the chapter's prose uses.
+of :mod:`obslib.studies.general_assignment` and glues it under the names the chapter's prose uses.
 """
 
 from __future__ import annotations
@@ -10,10 +10,10 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from obslib.claims.teams import FIG9_PUBLISHED_STD, direction_words
+from obslib.claims.general_assignment import FIG9_PUBLISHED_STD, direction_words
 from obslib.formatting import count, fixed, listing, number, percent, setting, span
 from obslib.measures import measure, measure_from_vectors
-from obslib.studies import fig9_measure, teams
+from obslib.studies import fig9_measure, general_assignment
 
 from ..glue import glue_texts
 from ..prose import point, sensor_math
@@ -87,11 +87,11 @@ def glue_fig9(counts, N, even, eps: float, trials: int) -> None:
     Parameters
     ----------
     counts : ndarray, shape (len(N), trials, L)
-        :func:`obslib.studies.teams.fig9_sweep`.
+        :func:`obslib.studies.general_assignment.fig9_sweep`.
     N : ndarray
         The numbers of sensors.
-    even : obslib.studies.teams.Evenness
-        :func:`obslib.studies.teams.evenness` of ``counts``.
+    even : obslib.studies.general_assignment.Evenness
+        :func:`obslib.studies.general_assignment.evenness` of ``counts``.
     eps : float
         The prior.
     trials : int
@@ -146,8 +146,9 @@ def glue_text_measure(C: dict, even_text: dict, even, N, n_targets: int, eps: fl
     C : dict
         :func:`obslib.studies.fig9_measure.fig9_measure_sweeps`.
     even_text : dict
-        Control direction -> :func:`obslib.studies.teams.evenness` of ``C["text"]`` for it.
-    even : obslib.studies.teams.Evenness
+        Control direction -> :func:`obslib.studies.general_assignment.evenness` of ``C["text"]``
+        for it.
+    even : obslib.studies.general_assignment.Evenness
         The evenness of ``C["prior"]``.
     N : ndarray
         The numbers of sensors.
@@ -156,7 +157,7 @@ def glue_text_measure(C: dict, even_text: dict, even, N, n_targets: int, eps: fl
     eps : float
         The prior.
     """
-    code = teams.evenness(C["code"], N, n_targets)
+    code = general_assignment.evenness(C["code"], N, n_targets)
     u = setting(fig9_measure.FIG9_U_MAX)
     rows = [(f"the text's, $\\lVert u_o \\rVert$ = {u}, {direction_words(d)}",
              percent(_share1(C["text"][d])), span(e.relative.min(), e.relative.max()))
@@ -199,7 +200,7 @@ def glue_priors(within_eps: dict, compare_N, n_targets: int, compare_trials: int
     eps_values = list(within_eps)
     spread = pd.DataFrame(
         {f"$N = {n}$": [number(float(within_eps[e][a])) for e in eps_values]
-         + [number(teams.random_spread(int(n), n_targets))]
+         + [number(general_assignment.random_spread(int(n), n_targets))]
          for a, n in enumerate(compare_N)},
         index=pd.Index([f"$\\varepsilon =$ {setting(e)}" for e in eps_values]
                        + ["uniformly random"], name="prior"),
@@ -346,8 +347,8 @@ def glue_exercise_prior(N, trials: int, seed: int, n_targets: int, side: float, 
                         even_text: dict, even, factor: float = 1e4) -> object:
     """The numbers of the exercise that reruns Fig. 9 with a prior ``factor`` times the
     chapter's: the spread of the counts within a trial over a random assignment's with that
-    prior (:func:`obslib.studies.teams.fig9_sweep`, what a rerun computes), and with the text's
-    measure, which takes no prior.
+    prior (:func:`obslib.studies.general_assignment.fig9_sweep`, what a rerun computes), and with
+    the text's measure, which takes no prior.
 
     Parameters
     ----------
@@ -359,18 +360,18 @@ def glue_exercise_prior(N, trials: int, seed: int, n_targets: int, side: float, 
         The square's side and the chapter's prior.
     even_text : dict
         Control direction -> the evenness of the text's measure (no prior).
-    even : obslib.studies.teams.Evenness
+    even : obslib.studies.general_assignment.Evenness
         The evenness with the chapter's prior.
     factor : float
         How many times the chapter's prior.
 
     Returns
     -------
-    obslib.studies.teams.Evenness
+    obslib.studies.general_assignment.Evenness
         The evenness with the larger prior.
     """
-    big = teams.evenness(teams.fig9_sweep(N, trials, seed, n_targets, "logdet", factor * eps,
-                                          side), N, n_targets)
+    counts = general_assignment.fig9_sweep(N, trials, seed, n_targets, "logdet", factor * eps, side)
+    big = general_assignment.evenness(counts, N, n_targets)
     worst = max(float(e.relative.max()) for e in even_text.values())
     glue_texts(
         exp_eps=setting(factor * eps),

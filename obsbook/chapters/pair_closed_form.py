@@ -419,13 +419,13 @@ def glue_dalpha(audit, n_rational_points: int) -> None:
 
 def glue_dalpha_min(audit) -> None:
     r"""Where :math:`\partial C/\partial\alpha` is smallest for a fixed angle and speed
-    (:func:`obslib.studies.theorem5_proof.dalpha_minimum_audit`): the cases, those with the
+    (:func:`obslib.studies.pair_closed_form.dalpha_minimum_audit`): the cases, those with the
     minimum at a finite :math:`\alpha`, where that is, and the derivative's value at
     :math:`\alpha = 0`.
 
     Parameters
     ----------
-    audit : obslib.studies.theorem5_proof.DalphaMinimumAudit
+    audit : obslib.studies.pair_closed_form.DalphaMinimumAudit
         The audit's result.
     """
     glue_texts(

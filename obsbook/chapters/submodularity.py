@@ -391,7 +391,7 @@ def exercise_numbers(P, o, eps: float, u_max: float, n_instances: int, seed: int
         The random instances of the rerun exercise, their seed and the smallest team compared.
     """
     from obslib import lower_bound, measures
-    from obslib.studies import submodularity as sm
+    from obslib.studies.submodularity import lower_bound_audit
 
     rows = {k: np.asarray(v) for k, v in EXERCISE_ROWS.items()}
     target = np.zeros(2)
@@ -402,7 +402,7 @@ def exercise_numbers(P, o, eps: float, u_max: float, n_instances: int, seed: int
 
     by_hand = {m: {"at_a": f("ac", m) - f("a", m), "at_ab": f("abc", m) - f("ab", m)}
                for m in ("logdet", "trace")}
-    lb = sm.lower_bound_audit(n_instances, EXERCISE_N_SENSORS, seed, u_max, min_size)
+    lb = lower_bound_audit(n_instances, EXERCISE_N_SENSORS, seed, u_max, min_size)
     pair = np.asarray(P, dtype=float)[:2]
     cross = {"pair": float(lower_bound(pair, o, u_max)),
              "with": [float(lower_bound(np.vstack([pair, t]), o, u_max))

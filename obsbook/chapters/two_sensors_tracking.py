@@ -3,47 +3,43 @@ Figs. 4-6).
 
 Each ``glue_*`` function formats one result of the chapter (a run, the published runs and their
 replays, the Monte Carlo comparison of :func:`obslib.tracking.compare_strategies`, the studies
-of :mod:`obslib.studies.tracking`) and glues it under the names the chapter's prose uses. Runs
-are keyed by strategy and named by :data:`obslib.viz.tracking.STRATEGY_LABELS`.
+of :mod:`obslib.studies.two_sensors_tracking`) and glues it under the names the chapter's prose
+uses. Runs are keyed by strategy and named by :data:`obslib.viz.tracking.STRATEGY_LABELS`.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from obslib import tracking as tr
-from obslib.claims.tracking import PRINTED_DECIMALS
+from obslib import tracking
+from obslib.claims.two_sensors_tracking import printed_number
 from obslib.formatting import count, fixed, listing, number, percent, setting, small
-from obslib.studies import tracking as study
-from obslib.studies.published import PUBLISHED_CIRCLE
+from obslib.studies.published import FIGURE_TOLERANCE, PUBLISHED_CIRCLE
+from obslib.studies.two_sensors_tracking import (
+    K50_WINDOW,
+    circle_runs,
+    circle_speed,
+    fixed_pair_typicality,
+    hot_windows,
+    least_run_wins,
+    stretches,
+    window_rates,
+)
 from obslib.viz.style import pair_label
-from obslib.viz.tracking import STRATEGY_LABELS as LABEL
+from obslib.viz.tracking import STRATEGY_LABELS
 
 from ..glue import glue_texts
 from ..prose import point, sensor_math, share
 from ..tables import numbered_table, rows_table
 
-__all__ = ["printed", "replay_gap", "ledger_table", "glue_settings", "glue_first_steps",
+__all__ = ["replay_gap", "ledger_table", "glue_settings", "glue_first_steps",
            "glue_replay", "glue_switches", "glue_largest", "glue_vs_paper", "glue_typicality",
            "glue_monte_carlo", "glue_wins", "glue_monte_carlo_claims", "glue_lost",
            "glue_correlations", "glue_k50", "glue_partners", "glue_speed", "glue_metric",
            "baseline_approach", "glue_exercise_baseline", "glue_exercise_noise"]
 
 #: The strategies' short names in the glued names: s1, s2, s3.
-SHORT = dict(zip(tr.STRATEGIES, ("s1", "s2", "s3")))
-
-
-def printed(key: str, v: float) -> str:
-    """A published number with the decimals the figure data print it with.
-
-    Parameters
-    ----------
-    key : str
-        The quantity (a key of :data:`obslib.claims.tracking.PRINTED_DECIMALS`).
-    v : float
-        Its value.
-    """
-    return fixed(v, PRINTED_DECIMALS[key])
+SHORT = dict(zip(tracking.STRATEGIES, ("s1", "s2", "s3")))
 
 
 def ledger_table(record, name: str) -> str:
@@ -105,7 +101,7 @@ def glue_settings(setup) -> None:
     ]
     glue_texts(
         n_pairs=number(setup.n_sensors * (setup.n_sensors - 1) // 2),
-        speed=number(study.circle_speed(setup)),
+        speed=number(circle_speed(setup)),
         rate=setting(rate),
         tab_settings=rows_table(rows, "The settings of the published runs of Figs. 4-6.",
                                 "tab-05-settings", headers=("setting", "value")),
@@ -125,7 +121,7 @@ def glue_first_steps(runs: dict, seed: int) -> None:
     """
     r1 = runs["best-pair"]
     first = [k for k in (1, 2, 50) if k <= r1.steps]
-    rows = [{"k": number(k), "strategy": LABEL[s], "pair": pair_label(*run.pairs[k - 1]),
+    rows = [{"k": number(k), "strategy": STRATEGY_LABELS[s], "pair": pair_label(*run.pairs[k - 1]),
              "bound": number(run.bound[k - 1]), "error": number(run.error[k - 1]),
              "trace": number(run.trace_cov[k - 1])}
             for k in first for s, run in runs.items()]
@@ -209,7 +205,7 @@ def glue_largest(runs: dict, seed: int) -> None:
     seed : int
         The runs' noise seed.
     """
-    rows = [(LABEL[s], number(run.error.max()), number(run.trace_cov[1:].max()))
+    rows = [(STRATEGY_LABELS[s], number(run.error.max()), number(run.trace_cov[1:].max()))
             for s, run in runs.items()]
     glue_texts(tab_largest=rows_table(
         rows, f"The largest values of the run of seed {seed}, above the cut of the figure's axis.",
@@ -236,22 +232,22 @@ def glue_vs_paper(runs: dict, seed: int) -> None:
     rows = []
     for key, text in quantities.items():
         row = {"q": text}
-        for s in tr.STRATEGIES:
+        for s in tracking.STRATEGIES:
             v = summ[s][key]
             row[f"{s} ours"] = number(int(v)) if key == "switches" else number(v)
-            row[f"{s} paper"] = printed(key, PUBLISHED_CIRCLE[s][key])
+            row[f"{s} paper"] = printed_number(key, PUBLISHED_CIRCLE[s][key])
         rows.append(row)
     cols = {"quantity": ("q", "s")}
-    for s, n in zip(tr.STRATEGIES, ("(1)", "(2)", "(3)")):
+    for s, n in zip(tracking.STRATEGIES, ("(1)", "(2)", "(3)")):
         cols[f"{n} ours"] = (f"{s} ours", "s")
         cols[f"{n} paper"] = (f"{s} paper", "s")
     each = {}
     for s, name in SHORT.items():
         for key in ("mean_bound", "mean_error", "mean_trace"):
             each[f"one_{name}_{key}"] = number(summ[s][key])
-            each[f"pub_{name}_{key}"] = printed(key, PUBLISHED_CIRCLE[s][key])
+            each[f"pub_{name}_{key}"] = printed_number(key, PUBLISHED_CIRCLE[s][key])
         each[f"one_{name}_switches"] = number(int(summ[s]["switches"]))
-        each[f"pub_{name}_switches"] = printed("switches", PUBLISHED_CIRCLE[s]["switches"])
+        each[f"pub_{name}_switches"] = printed_number("switches", PUBLISHED_CIRCLE[s]["switches"])
     glue_texts(
         tab_vs_paper=numbered_table(
             rows, f"Our run of seed {seed} against the published run, strategies (1), (2) and "
@@ -262,19 +258,19 @@ def glue_vs_paper(runs: dict, seed: int) -> None:
 
 def glue_typicality(batch) -> None:
     """How the published run of strategy (3), which cannot be replayed, sits among our runs of
-    it (:func:`obslib.studies.tracking.fixed_pair_typicality`): the share of runs like it, and
-    the shares of runs with a higher mean error and trace than it.
+    it (:func:`obslib.studies.two_sensors_tracking.fixed_pair_typicality`): the share of runs like
+    it, and the shares of runs with a higher mean error and trace than it.
 
     Parameters
     ----------
     batch : obslib.tracking.BatchResult
         Strategy (3)'s runs over the noise seeds.
     """
-    t = study.fixed_pair_typicality(batch)
+    t = fixed_pair_typicality(batch)
     pct = t["percentile"]  # the percentage of our runs below the published run's value
     glue_texts(
         like3=percent(t["share_like"]),
-        fig_tol=percent(study.FIGURE_TOLERANCE),
+        fig_tol=percent(FIGURE_TOLERANCE),
         pub3_below_error=percent(1 - pct["mean_error"] / 100),
         pub3_below_trace=percent(1 - pct["mean_trace"] / 100),
         n_seeds=number(batch.n_runs),
@@ -293,10 +289,10 @@ def glue_monte_carlo(stats: dict, n_seeds: int, steps: int) -> None:
     n_seeds, steps : int
         The noise seeds and the steps of each run.
     """
-    rows = [{"s": LABEL[s],
+    rows = [{"s": STRATEGY_LABELS[s],
              **{f"{q}_{stat}": number(float(stats[s][f"{stat}_{q}"]))
                 for q in ("bound", "error", "trace") for stat in ("mean", "sd")},
-             "sw": number(float(stats[s]["switches"]))} for s in tr.STRATEGIES]
+             "sw": number(float(stats[s]["switches"]))} for s in tracking.STRATEGIES]
     glue_texts(tab_mc=numbered_table(
         rows, f"The three strategies over {number(n_seeds)} noise seeds: means over steps 2 to"
         f" {number(steps)} and over the seeds; sd is the standard deviation of the run means over"
@@ -319,7 +315,7 @@ def glue_wins(cmp: dict) -> None:
     ways = {"stepmean": "steps of the mean", "pointwise": "steps of single runs", "run": "runs"}
     rows = []
     for o, w in cmp["wins"].items():
-        row = {"o": LABEL[o]}
+        row = {"o": STRATEGY_LABELS[o]}
         for q in ("error", "trace"):
             for way in ways:
                 field = f"run_{q}" if way == "run" else f"{q}_{way}"
@@ -357,19 +353,19 @@ def glue_monte_carlo_claims(cmp: dict, mc: dict, n_seeds: int) -> None:
         texts[f"w3_{key}"] = percent(float(w3[key]))
     # stretches of at least 5 steps where strategy 2's mean trace is not clearly above strategy 1's
     t1, t2 = stats["best-pair"]["step_mean_trace"], stats["best-partner"]["step_mean_trace"]
-    not_above = ~tr.clearly_lower(t1[1:], t2[1:])  # steps 2..
-    spans = [f"{a} to {b}" for a, b in study.stretches(not_above, first=2, min_length=5)]
+    not_above = ~tracking.clearly_lower(t1[1:], t2[1:])  # steps 2..
+    spans = [f"{a} to {b}" for a, b in stretches(not_above, first=2, min_length=5)]
     for s, name in SHORT.items():
         texts[f"mc_{name}_error"] = number(float(stats[s]["mean_error"]))
         texts[f"mc_{name}_trace"] = number(float(stats[s]["mean_trace"]))
     # the bound: at how many steps strategy (1)'s mean over the seeds is higher
     b1 = mc["best-pair"].bound[:, 1:]
-    higher = {o: float(tr.clearly_lower(mc[o].bound[:, 1:].mean(0), b1.mean(0)).mean())
-              for o in tr.STRATEGIES[1:]}
+    higher = {o: float(tracking.clearly_lower(mc[o].bound[:, 1:].mean(0), b1.mean(0)).mean())
+              for o in tracking.STRATEGIES[1:]}
     glue_texts(
         **texts,
-        run_wins=share(float(study.least_run_wins(cmp)), n_seeds, "runs"),
-        tie_rtol=setting(tr.TIE_RTOL),
+        run_wins=share(float(least_run_wins(cmp)), n_seeds, "runs"),
+        tie_rtol=setting(tracking.TIE_RTOL),
         s2_spans=listing(spans) if spans else "none",
         higher_2=share(higher["best-partner"], steps - 1, "steps"),
         higher_3=share(higher["fixed-pair"], steps - 1, "steps"),
@@ -419,7 +415,7 @@ def glue_lost(batch, loss: dict, lost_above: float, dist, kmin: int, run, figure
         bound_avg3=number(float(batch.bound.mean())),
         s3_median_error=number(figure_data.evidence["fixed_pair"]["median"]["mean_error"]),
         n_steps=number(batch.steps),
-        pub_s3_error=printed("mean_error", PUBLISHED_CIRCLE["fixed-pair"]["mean_error"]),
+        pub_s3_error=printed_number("mean_error", PUBLISHED_CIRCLE["fixed-pair"]["mean_error"]),
         one_s3_error=number(float(run.error.mean())),
     )
 
@@ -431,14 +427,14 @@ def glue_correlations(corrs: dict, steps: int) -> None:
     Parameters
     ----------
     corrs : dict
-        :func:`obslib.studies.tracking.correlations`.
+        :func:`obslib.studies.two_sensors_tracking.correlations`.
     steps : int
         The steps of each run.
     """
     corr, pooled = corrs["own"], corrs["pooled"]
-    rows = [(LABEL[s], number(float(corr[s]["error"])), number(float(corr[s]["trace"])),
+    rows = [(STRATEGY_LABELS[s], number(float(corr[s]["error"])), number(float(corr[s]["trace"])),
              number(float(corrs["euclidean"][s]["error"])),
-             number(float(corrs["euclidean"][s]["trace"]))) for s in tr.STRATEGIES]
+             number(float(corrs["euclidean"][s]["trace"]))) for s in tracking.STRATEGIES]
     each = {}
     for s, name in SHORT.items():
         each[f"corr_{name}_error"] = number(float(corr[s]["error"]))
@@ -472,10 +468,10 @@ def glue_k50(rate, one, back: float, n_seeds: int, seed: int) -> None:
     n_seeds, seed : int
         The noise seeds, and the seed of the one run.
     """
-    lo_k, hi_k = study.K50_WINDOW
-    rate_in, rate_out = study.window_rates(rate, study.K50_WINDOW)
-    one_in, one_out = study.window_rates(one, study.K50_WINDOW)
-    hot = study.hot_windows(rate, study.K50_WINDOW, rate_in)
+    lo_k, hi_k = K50_WINDOW
+    rate_in, rate_out = window_rates(rate, K50_WINDOW)
+    one_in, one_out = window_rates(one, K50_WINDOW)
+    hot = hot_windows(rate, K50_WINDOW, rate_in)
     rows = [(f"$k$ = {lo_k} to {hi_k}", percent(float(rate_in)), percent(float(one_in))),
             ("elsewhere", percent(float(rate_out)), percent(float(one_out)))]
     glue_texts(
@@ -498,10 +494,10 @@ def glue_partners(ps: dict, best: dict, best_bound: int, n_seeds: int, steps: in
     Parameters
     ----------
     ps : dict
-        Partner -> its summary (:func:`obslib.studies.tracking.partner_summary`).
+        Partner -> its summary (:func:`obslib.studies.two_sensors_tracking.partner_summary`).
     best : dict
-        Measure -> the best partner (:func:`obslib.studies.tracking.best_partners`), without
-        the mean bound.
+        Measure -> the best partner (:func:`obslib.studies.two_sensors_tracking.best_partners`),
+        without the mean bound.
     best_bound : int
         The partner with the highest mean bound.
     n_seeds, steps : int
@@ -574,9 +570,9 @@ def glue_metric(by_metric: dict, agree: float, least_wins: float, back: dict,
     n_seeds : int
         The noise seeds.
     """
-    rows = [(f"{LABEL[s]}, {m.capitalize()}", number(float(src[s]["switches"])),
+    rows = [(f"{STRATEGY_LABELS[s]}, {m.capitalize()}", number(float(src[s]["switches"])),
              number(float(src[s]["mean_error"])), number(float(src[s]["mean_trace"])))
-            for m, src in by_metric.items() for s in tr.STRATEGIES[:2]]
+            for m, src in by_metric.items() for s in tracking.STRATEGIES[:2]]
     each = {}
     for name, m in (("maha", "mahalanobis"), ("eucl", "euclidean")):
         src = by_metric[m]["best-pair"]
@@ -685,7 +681,7 @@ def glue_exercise_baseline(setup, loss: dict) -> dict:
 def glue_exercise_noise(setup, n_seeds: int, seed: int, lost_above: float) -> dict:
     """The numbers of the exercise that halves the range noise: strategy (3)'s lost runs and
     the strategies' mean errors with the chapter's noise and with half of it, over the same
-    seeds (:func:`obslib.studies.tracking.circle_runs`, what a rerun with half the noise
+    seeds (:func:`obslib.studies.two_sensors_tracking.circle_runs`, what a rerun with half the noise
     computes).
 
     Parameters
@@ -705,12 +701,12 @@ def glue_exercise_noise(setup, n_seeds: int, seed: int, lost_above: float) -> di
     """
     out = {}
     for sd in (setup.noise_std, setup.noise_std / 2):
-        mc = study.circle_runs(setup.replace(noise_std=sd), n_seeds, seed)["mc"]
-        cmp = tr.compare_strategies(mc)
-        out[sd] = {"lost": int(tr.track_loss(mc["fixed-pair"], lost_above)["lost"].sum()),
+        mc = circle_runs(setup.replace(noise_std=sd), n_seeds, seed)["mc"]
+        cmp = tracking.compare_strategies(mc)
+        out[sd] = {"lost": int(tracking.track_loss(mc["fixed-pair"], lost_above)["lost"].sum()),
                    "mean_error": {s: float(d["mean_error"]) for s, d in
                                   cmp["strategies"].items()},
-                   "run_wins": float(study.least_run_wins(cmp))}
+                   "run_wins": float(least_run_wins(cmp))}
     full, half = out[setup.noise_std], out[setup.noise_std / 2]
     glue_texts(
         ex_noise=setting(setup.noise_std),

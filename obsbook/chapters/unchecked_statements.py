@@ -2,7 +2,7 @@ r"""The numbers and tables of the chapter on what the paper states but does not 
 authors' code does, and one question of the book.
 
 Each ``glue_*`` function formats the result of one check of the chapter (the studies of
-:mod:`obslib.studies.unchecked`, :mod:`obslib.studies.eq4`, :mod:`obslib.studies.replay`,
+:mod:`obslib.studies.unchecked_statements`, :mod:`obslib.studies.eq4`, :mod:`obslib.studies.replay`,
 :mod:`obslib.studies.hardness` and others, called with the arguments the ledger's checks use, so
 that the chapter and the ledger share one computation) and glues it under the names the chapter's
 prose uses.
@@ -13,16 +13,21 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from obslib.claims.general_assignment import direction_words
 from obslib.claims.greedy_unique_pairs import NEAR_THIRD
-from obslib.claims.teams import direction_words
-from obslib.claims.unchecked import MISPRINTS, N_SPREAD
+from obslib.claims.misprints import MISPRINTS
+from obslib.claims.unchecked_statements import N_SPREAD
 from obslib.formatting import count, listing, number, percent, setting, small, span
 from obslib.profiles import params
-from obslib.studies import greedy_tightness, teams
+from obslib.studies import general_assignment, greedy_tightness
 from obslib.studies.fig9_measure import FIG9_U_MAX
-from obslib.studies.published import CODE_ACCOUNT_PRINTED, CODE_REPOSITORY, CODE_URL_PRINTED
+from obslib.studies.published import (
+    CODE_ACCOUNT_PRINTED,
+    CODE_REPOSITORY,
+    CODE_URL_PRINTED,
+    FIGURE_TOLERANCE,
+)
 from obslib.studies.replay import compare_replay
-from obslib.studies.tracking import FIGURE_TOLERANCE
 
 from ..glue import glue_texts
 from ..prose import PUBLISHED_RUNS, pair_math
@@ -41,7 +46,7 @@ def glue_team_constraint(constraint: dict, fig9: dict) -> None:
     Parameters
     ----------
     constraint : dict
-        :func:`obslib.studies.unchecked.team_constraint`.
+        :func:`obslib.studies.unchecked_statements.team_constraint`.
     fig9 : dict
         Fig. 9's parameters (``compare_N``, ``compare_trials``, ``n_targets``).
     """
@@ -69,7 +74,7 @@ def glue_one_sensor(one: dict, n_geometries: int) -> None:
     Parameters
     ----------
     one : dict
-        :func:`obslib.studies.unchecked.one_sensor_conditioning`.
+        :func:`obslib.studies.unchecked_statements.one_sensor_conditioning`.
     n_geometries : int
         The random scenes, each with a control drawn in the disc.
     """
@@ -83,7 +88,7 @@ def glue_one_sensor(one: dict, n_geometries: int) -> None:
 
 def glue_misprints() -> None:
     """The paper's misprints, as printed and as the book reads them, in the order of the paper
-    (``tab-paper-typos``, the rows of :data:`obslib.claims.unchecked.MISPRINTS`), and how many
+    (``tab-paper-typos``, the rows of :data:`obslib.claims.misprints.MISPRINTS`), and how many
     there are."""
     glue_texts(
         tab_paper_typos=rows_table(
@@ -422,7 +427,7 @@ def glue_problem3(sweep: dict, unordered: float, ordered: float, trials: int) ->
     Parameters
     ----------
     sweep : dict
-        :func:`obslib.studies.unchecked.problem3_relaxations`.
+        :func:`obslib.studies.unchecked_statements.problem3_relaxations`.
     unordered, ordered : float
         The example's two relaxed values.
     trials : int
@@ -477,7 +482,7 @@ def glue_fig9_measures(sweeps: dict, fig9: dict) -> None:
     ]
 
     def spread(C):
-        return teams.evenness(C, N, L).relative
+        return general_assignment.evenness(C, N, L).relative
 
     def share(C):
         return float(C[..., 0].sum() / C.sum())

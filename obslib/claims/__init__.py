@@ -46,11 +46,13 @@ from . import model_and_bound  # noqa: E402,F401  Sec. II-III: Theorems 1-3, Rem
 from . import pair_closed_form  # noqa: E402,F401  Sec. III (pair): Theorems 4-5, Fig. 2, errata
 from . import greedy_unique_pairs  # noqa: E402,F401  Sec. IV-A: Algorithm 1, Theorem 6
 from . import submodularity  # noqa: E402,F401  Sec. IV-B: Theorems 7-8
-from . import tracking  # noqa: E402,F401  Sec. V-A/B: Figs. 4-7
+from . import two_sensors_tracking  # noqa: E402,F401  Sec. V-A: Figs. 4-6
+from . import adversarial_target  # noqa: E402,F401  Sec. V-B: Fig. 7
 from . import greedy_vs_relaxed  # noqa: E402,F401  Sec. V-C: Fig. 8
-from . import teams  # noqa: E402,F401  Sec. V-D: Fig. 9, greedy teams
+from . import general_assignment  # noqa: E402,F401  Sec. V-D: Fig. 9, greedy teams
 from . import replay  # noqa: E402,F401  Sec. V-A/B: the published runs replayed
-from . import unchecked  # noqa: E402,F401  statements the paper does not check
+from . import unchecked_statements  # noqa: E402,F401  statements the paper does not check
+from . import misprints  # noqa: E402,F401  the misprints and a citation of the paper
 from . import criteria  # noqa: E402,F401  beyond the paper: the bound against classical criteria
 # isort: on
 

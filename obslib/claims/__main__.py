@@ -20,8 +20,7 @@ import sys
 from .._io import OutputPathError, as_output_path, command, write_or_report
 from .._validate import as_argv
 from ..profiles import profile_names
-from . import as_json, evaluate, registry
-from . import robustness as rb
+from . import as_json, evaluate, registry, robustness
 
 PROG = "python -m obslib.claims"
 
@@ -73,17 +72,17 @@ def main(argv=None) -> int:
     """
     args = parse_args(argv)
     if args.robustness:
-        rows = rb.verdict_robustness(args.ids, base=args.profile)
+        rows = robustness.verdict_robustness(args.ids, base=args.profile)
         if args.write:
-            if not write_or_report(PROG, args.write, rb.to_json(rows, args.profile)):
+            if not write_or_report(PROG, args.write, robustness.to_json(rows, args.profile)):
                 return 1
             print(f"{args.write}: {len(rows)} claims")
         elif args.json:
-            print(rb.to_json(rows, args.profile), end="")
+            print(robustness.to_json(rows, args.profile), end="")
         else:
-            print(rb.robustness_table(rows), end="")
+            print(robustness.robustness_table(rows), end="")
         return 0
-    caveats = rb.caveats() if args.profile == "paper" else {}
+    caveats = robustness.caveats() if args.profile == "paper" else {}
     records = evaluate(args.profile, args.ids, caveats=caveats)
     if args.write or args.json:
         text = json.dumps(as_json(records), indent=1, default=float) + "\n"

@@ -10,10 +10,17 @@ better than assignments by information gain or at random? The evidence is comput
 from __future__ import annotations
 
 from ..formatting import count, listing, number, percent, setting, small
-from ..studies import criteria as cs
+from ..studies.criteria import (
+    NOTEBOOK,
+    REFERENCE,
+    assignment_rows,
+    assignment_study,
+    significance,
+    summary_rows,
+    tracking_study,
+)
 from ._ledger import Finding, Table, claim
 
-NB = cs.NOTEBOOK
 #: Significance level of the paired tests (two-sided Wilcoxon signed-rank).
 ALPHA = 0.01
 CLASSICAL = ("d-optimal", "a-optimal", "e-optimal")
@@ -21,14 +28,14 @@ CLASSICAL = ("d-optimal", "a-optimal", "e-optimal")
 
 def _verdicts(rows):
     """Per strategy: "better" / "worse" than the bound's choice (significant) or "same"."""
-    return {r["strategy"]: cs.significance(r, ALPHA) for r in rows if "vs_p_wilcoxon" in r}
+    return {r["strategy"]: significance(r, ALPHA) for r in rows if "vs_p_wilcoxon" in r}
 
 
 def criteria_evidence(p: dict) -> dict:
     """The summary rows of every (setting, metric) with the parameters ``p`` of notebook 10."""
-    study = cs.tracking_study(p["n_seeds"], p["seed"], p["metrics"])
+    study = tracking_study(p["n_seeds"], p["seed"], p["metrics"])
     return {
-        f"{setting}, {metric}": cs.summary_rows(mc, loss_threshold=p["loss_threshold"])
+        f"{setting}, {metric}": summary_rows(mc, loss_threshold=p["loss_threshold"])
         for (setting, metric), mc in study.items()
     }
 
@@ -54,17 +61,13 @@ def _p(row, key: str = "vs_p_wilcoxon") -> str:
     "information)?",
     paper="Not asked. The paper compares the bound's choice only with a fixed pair and with a "
     "fixed sensor's best partner (Sec. V-A).",
-    notebook=NB,
+    notebook=NOTEBOOK,
     kind="beyond",
 )
 def _criteria(p: dict) -> Finding:
     """answered: in every setting (trajectory and metric) the paired Wilcoxon test at
     :data:`ALPHA` decides the comparison with at least one classical criterion, or with all of
     them in the bound's favour; open otherwise."""
-    missing = [c for c in CLASSICAL if c not in cs.available_strategies()]
-    if missing:
-        return Finding("open", summary="The tracking engine does not offer the classical "
-                       f"criteria {listing(missing)} yet.", evidence={"missing": missing})
     ev = criteria_evidence(p)
     verdict = {k: _verdicts(rows) for k, rows in ev.items()}
     beats = {k: [c for c in CLASSICAL if v.get(c) == "better"] for k, v in verdict.items()}
@@ -94,7 +97,7 @@ def _criteria(p: dict) -> Finding:
     rows = []
     for k in ev:
         b = by[k]
-        ref = b[cs.REFERENCE]["mean_error"]
+        ref = b[REFERENCE]["mean_error"]
         best = min(CLASSICAL, key=lambda c: b[c]["mean_error"])
         rows.append((k.replace("circle", "the circle").replace("adversary", "the adversary")
                      .replace("mahalanobis", "Mahalanobis").replace("euclidean", "Euclidean"),
@@ -130,7 +133,7 @@ def runs_and_mean(row: dict, alpha: float = ALPHA) -> dict:
     >>> runs_and_mean(r)
     {'runs': 'other', 'test': 'sign', 'mean': 'bound'}
     """
-    sig = cs.significance(row, alpha)
+    sig = significance(row, alpha)
     if sig != "same":
         runs, test = ("other" if sig == "better" else "bound"), "wilcoxon"
     elif row["vs_p_sign"] < alpha:
@@ -171,7 +174,7 @@ def _against(name: str, L: int, row: dict, lost: bool) -> str:
     "track moving targets better than assigning them by the information gain (D-optimality) or "
     "at random?",
     paper="Not asked. Figs. 8-9 judge assignments only by the bound's own total.",
-    notebook=NB,
+    notebook=NOTEBOOK,
     kind="beyond",
 )
 def _assignment(p: dict) -> Finding:
@@ -180,10 +183,10 @@ def _assignment(p: dict) -> Finding:
     the greedy information-gain (D-optimal) assignment are then stated as they come out, by the
     runs each wins (sign test at :data:`ALPHA`) and by the mean error (:func:`runs_and_mean`):
     where the two disagree the result is mixed, and the finding says both."""
-    rows = cs.assignment_rows(cs.assignment_study(p), loss_threshold=p["assign_loss"])
+    rows = assignment_rows(assignment_study(p), loss_threshold=p["assign_loss"])
     by = {(r["L"], r["rule"]): r for r in rows}
     Ls = sorted({r["L"] for r in rows})
-    sig = {(L, rule): cs.significance(by[(L, rule)], ALPHA) for L in Ls
+    sig = {(L, rule): significance(by[(L, rule)], ALPHA) for L in Ls
            for rule in ("d-optimal", "random")}
     status = "answered" if all(sig[(L, "random")] != "same" for L in Ls) else "open"
     def part(rule, name):

@@ -8,6 +8,7 @@ import numpy as np
 
 from ..assignment import greedy_pair_assignment, optimal_pair_assignment
 from ..formatting import count, number, percent, setting, small
+from ..studies import unchecked_statements
 from ..studies.greedy_tightness import (
     TIGHT_U_MAX,
     first_pick_margin,
@@ -16,6 +17,7 @@ from ..studies.greedy_tightness import (
     witness_jitter_ratios,
 )
 from ..studies.greedy_unique_pairs import (
+    NOTEBOOK,
     GreedyStudy,
     charging_audit,
     greedy_vs_optimal,
@@ -23,10 +25,7 @@ from ..studies.greedy_unique_pairs import (
     tight_weights,
     worst_instance_search,
 )
-from ..studies.unchecked import NOTEBOOK as UNCHECKED
 from ._ledger import Finding, Table, claim
-
-NB = "03_greedy_unique_pairs"
 
 
 def _study(p: dict) -> GreedyStudy:
@@ -62,7 +61,7 @@ JOURNAL_THM6 = (r"The abstract of the later journal version {cite}`zhou2019senso
     paper=r"$\omega(\mathrm{GREEDY}) \ge \mathrm{OPT}/3$ for any $\omega$ (charging proof).",
     quote=r"We prove that the greedy algorithm achieves a $1/3$--approximation of the optimal "
     "solution.",
-    notebook=NB,
+    notebook=NOTEBOOK,
     journal=JOURNAL_THM6,
 )
 def _thm6(p: dict) -> Finding:
@@ -117,7 +116,7 @@ def _thm6(p: dict) -> Finding:
     "value.",
     quote=r"We present a $1/3$--approximation to solve Problem~\ref{prob:unique} for any "
     r"$\omega(\cdot)$.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm6_any_omega(p: dict) -> Finding:
     """Random weights uniform in [-1, 1], every assignment enumerated. partly: the greedy falls
@@ -180,7 +179,7 @@ def _thm6_any_omega(p: dict) -> Finding:
     "triple; no two are.",
     quote=r"We will charge the value $\omega(s_i,s_j,t_l)$ to at most three triples in OPT that "
     "have not been charged in previous rounds.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm6_charging(p: dict) -> Finding:
     """On notebook 03's random instances (the exact optimum's assignment from the dynamic
@@ -233,7 +232,7 @@ def _thm6_charging(p: dict) -> Finding:
     paper="Greedy close to the relaxed matching, much higher than a third of it (Fig. 8).",
     quote=r"Thus, even though we give a theoretical $1/3$--approximation for the greedy "
     "algorithm, it performs much better in practice.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm6_practice(p: dict) -> Finding:
     """reproduced when the 5 % quantile of greedy / optimum over random instances (Fig. 8's kind)
@@ -289,8 +288,8 @@ NEAR_THIRD = 0.35
     "that is, do sensor-target geometries exist where Algorithm 1 collects at most "
     f"{NEAR_THIRD:g} of the optimum?",
     paper="A $1/3$-approximation \"for any $\\omega$\"; tightness is not discussed.",
-    notebook=UNCHECKED,
-    uses=(NB,),
+    notebook=unchecked_statements.NOTEBOOK,
+    uses=(NOTEBOOK,),
 )
 def _thm6_tight(p: dict) -> Finding:
     """The answer rests on the stored witness geometry (:data:`obslib.studies.greedy_tightness.
@@ -299,7 +298,7 @@ def _thm6_tight(p: dict) -> Finding:
     otherwise (a search that finds no such geometry does not show that none exists). The search
     at the profile's sizes and the fragility of the witness (every point jittered by a fraction
     of the spread) are reported, not judged."""
-    q = p[NB]
+    q = p[NOTEBOOK]
     S, T = tight_witness()
     margin = first_pick_margin(S, T, TIGHT_U_MAX)
     ratio = margin["ratio"]

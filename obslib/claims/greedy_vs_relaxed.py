@@ -6,11 +6,15 @@ from __future__ import annotations
 import numpy as np
 
 from ..formatting import count, fixed, number, percent, small
-from ..studies import greedy_vs_relaxed as gvr
+from ..studies.greedy_vs_relaxed import (
+    NOTEBOOK,
+    Problem3Audit,
+    fig8_summary,
+    fig8_sweep,
+    problem3_audit,
+)
 from ..studies.published import FIG8_PUBLISHED_L20
 from ._ledger import Finding, Table, claim
-
-NB = "07_greedy_vs_relaxed"
 
 #: Published means at L = 20 (read off the data saved with the figure).
 PUBLISHED_L20 = FIG8_PUBLISHED_L20
@@ -18,8 +22,8 @@ PUBLISHED_L20 = FIG8_PUBLISHED_L20
 
 def _sweep(p: dict) -> dict:
     """Notebook 07's sweep (the chapter's own call, computed once)."""
-    return gvr.fig8_sweep(range(1, p["L_max"] + 1), p["trials"], p["seed"], p["u_max"],
-                          p["side"], p["optimum_max_L"])
+    return fig8_sweep(range(1, p["L_max"] + 1), p["trials"], p["seed"], p["u_max"],
+                      p["side"], p["optimum_max_L"])
 
 
 @claim(
@@ -32,7 +36,7 @@ def _sweep(p: dict) -> dict:
     "0.84 for $L = 2, \\dots, 15$.",
     quote=r"shows that $\omega(\textrm{GREEDY})$ is close to $\omega(\textrm{MWPBM})$ and much "
     r"higher than $\frac{1}{3}\omega(\textrm{MWPBM})$.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _fig8(p: dict) -> Finding:
     """reproduced: the ratio of the mean totals, greedy over relaxed, is 1 at L = 1 and at least
@@ -40,7 +44,7 @@ def _fig8(p: dict) -> Finding:
     refuted otherwise. The comparison with the published means at L = 20 (within three standard
     errors) is reported, not judged."""
     r = _sweep(p)
-    summary = gvr.fig8_summary(r)
+    summary = fig8_summary(r)
     g, rel, ratio = summary.mean["greedy"], summary.mean["relaxed"], summary.ratio
     last = -1
     se = {k: r[k][last].std(ddof=1) / np.sqrt(r[k].shape[1]) for k in ("greedy", "relaxed")}
@@ -86,13 +90,13 @@ def _fig8(p: dict) -> Finding:
     )
 
 
-def _problem3(p: dict) -> gvr.Problem3Audit:
+def _problem3(p: dict) -> Problem3Audit:
     """Problem 3 on the sweep's instances where Problem 1 is solved exactly."""
-    return gvr.problem3_audit(p["L_max"], p["trials"], p["seed"], p["u_max"], p["side"],
-                              p["optimum_max_L"])
+    return problem3_audit(p["L_max"], p["trials"], p["seed"], p["u_max"], p["side"],
+                          p["optimum_max_L"])
 
 
-def _where(a: gvr.Problem3Audit) -> str:
+def _where(a: Problem3Audit) -> str:
     """The instances of a :class:`~obslib.studies.greedy_vs_relaxed.Problem3Audit` in words."""
     return (f"{number(a.matching.size)} instances of Fig. 8 ($L$ = 1 to {int(a.L[-1])} targets, "
             f"$N = 2L$ sensors, {number(a.matching.shape[1])} per $L$)")
@@ -108,7 +112,7 @@ def _where(a: gvr.Problem3Audit) -> str:
     paper="Stated as clear: every assignment of Problem 1 is one of Problem 3.",
     quote="It is clear that solving Relaxed Pair Assignment problem optimally gives us an upper "
     "bound of optimality for Unique Pair Assignment problem.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _problem3_upper(p: dict) -> Finding:
     """On the instances of notebook 07's sweep where Problem 1 is solved exactly
@@ -155,7 +159,7 @@ def _problem3_upper(p: dict) -> Finding:
     paper="Stated, with the Hungarian algorithm {cite}`kuhn1955hungarian` for the matching.",
     quote="The Relaxed Pair Assignment problem can be solved optimally by using maximum weight "
     "perfect bipartite matching",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _problem3_matching(p: dict) -> Finding:
     """The matching's value (scipy's linear sum assignment on pairs x targets) against a 0-1

@@ -6,6 +6,7 @@ from dataclasses import asdict
 
 from ..formatting import count, number, percent, small, span
 from ..studies.model_and_bound import (  # cached: several claims read the same audit
+    NOTEBOOK,
     rank_observability_audit,
     remark1_audit,
     squared_range_audit,
@@ -14,8 +15,6 @@ from ..studies.model_and_bound import (  # cached: several claims read the same 
     theorem3_audit,
 )
 from ._ledger import Finding, Table, claim
-
-NB = "01_model_and_bound"
 
 
 def sp_latex(expr) -> str:
@@ -35,7 +34,7 @@ def sp_latex(expr) -> str:
     paper="Eq. (4), computed as in Hermann and Krener's local nonlinear observability.",
     quote=r"We compute the local nonlinear observability "
     r"matrix~\cite{hermann1977nonlinear,williams2015observability} for this system",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _eq4_lie_rows(p: dict) -> Finding:
     """SymPy differentiates the half squared range along the drift ``f = u_o`` three times.
@@ -75,7 +74,7 @@ def _eq4_lie_rows(p: dict) -> Finding:
     paper="Cited (Hermann and Krener); the inverse condition number is defined by Eq. (6).",
     quote=r"The state of the target $o$ is \emph{weakly locally observable} if the local "
     r"nonlinear observability matrix has full column rank~\cite{hermann1977nonlinear}.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _rank_observability(p: dict) -> Finding:
     """Random scenes of one to four sensors, a quarter with a stationary target. reproduced:
@@ -127,7 +126,7 @@ def _rank_observability(p: dict) -> Finding:
     paper="Stated in the proof of Theorem 2.",
     quote=r"The $i-o$ system is weakly locally observable if $O_{i}(o,u_o)$ has full column "
     r"rank, i.e., $(o_{x}-p_{ix})u_{oy} \neq (o_{y}-p_{iy})u_{ox}$.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm2_rank(p: dict) -> Finding:
     """SymPy expands the determinant of the 2x2 matrix. reproduced: it is the difference of the
@@ -154,7 +153,7 @@ def _thm2_rank(p: dict) -> Finding:
     r"$\lVert p_i - o\rVert$ is a matter of mathematical convenience.",
     paper="A footnote.",
     quote=r"use the square of the distance/range for mathematical",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _squared_range(p: dict) -> Finding:
     """For a stationary target (the exact C^-1 is the rows' sigma_min / sigma_max, Remark 1),
@@ -208,7 +207,7 @@ def _squared_range(p: dict) -> Finding:
     quote=r"with the number of sensors, $N\geq 2$, the inverse of the condition number is lower "
     r"bounded by $\dfrac{\sigma_{\min}(O(o))}{\sqrt{\sigma^{2}_{\max}(O(o))+ "
     r"u_{o,\max}^{2}}}$.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm1(p: dict) -> Finding:
     a = theorem1_audit(p["n_scenes"], p["n_controls"], p["seed"])
@@ -241,7 +240,7 @@ def _thm1(p: dict) -> Finding:
     statement="The lower bound is tight: some control within the speed limit attains it.",
     paper="Shown for a stationary target only (Remark 1).",
     quote=r"We also show that the lower bound, $\underline{C}^{-1}(O_{i}(o,u_o))$, is tight.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm1_tight(p: dict) -> Finding:
     a = remark1_audit(p["n_scenes"], p["seed"])
@@ -278,7 +277,7 @@ def _thm1_tight(p: dict) -> Finding:
     paper=r"$\sigma_{\min}(O_i(o)) = 0$, hence the bound is $0$ (appendix).",
     quote=r"The lower bound of the observability metric in one-sensor-target system, "
     r"$\underline{C}^{-1}(O_{i}(o,u_o))$, cannot be controlled by the sensor.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm2(p: dict) -> Finding:
     a = theorem2_audit(p["n_scenes"], p["seed"])
@@ -331,7 +330,7 @@ def _theorem3_table(a) -> Table:
     quote=r"if the sensors increase $C^{-1}(O(o))$ and $\sigma_{\min}(O(o))$ (the inverse of "
     r"condition number and the smallest singular number of the relative state contribution "
     r"$O(o)$), then the lower bound of $C^{-1}(O(o,u_o))$ also increases.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm3(p: dict) -> Finding:
     a = theorem3_audit(p["n_trials_thm3"], p["seed"])
@@ -357,7 +356,7 @@ def _thm3(p: dict) -> Finding:
     paper=r"Eq. (27) as the statement of the theorem in eigenvalues.",
     quote=r"We can transform the statement of the theorem (using eigenvalues instead of "
     r"singular values) as:",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm3_proof(p: dict) -> Finding:
     a = theorem3_audit(p["n_trials_thm3"], p["seed"])
@@ -391,7 +390,7 @@ def _thm3_proof(p: dict) -> Finding:
     statement="The lower bound is tight when the target is known to be stationary ($u_o = 0$).",
     paper=r"For $u_o = 0$, $O(o,u_o) = O(o)$, so the bound equals $C^{-1}(O(o,u_o))$.",
     quote=r"is tight when the target is known to be stationary.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _remark1(p: dict) -> Finding:
     a = remark1_audit(p["n_scenes"], p["seed"])
@@ -418,7 +417,7 @@ def _remark1(p: dict) -> Finding:
     paper=r"$\lambda'_{\min} \lambda_{\max} - \lambda'_{\max} \lambda_{\min} + u_o^2 "
     r"(\lambda'_{\min} - \lambda_{\min}) \ge 0$, the numerator of Eq. (29).",
     quote=r"is sufficient, but not necessary condition to guarantee",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _remark2(p: dict) -> Finding:
     a = theorem3_audit(p["n_trials_thm3"], p["seed"])

@@ -10,22 +10,18 @@ import numpy as np
 
 from ..formatting import count, listing, number, setting, small, span
 from ..studies.pair_closed_form import (
+    NOTEBOOK,
     alpha_star_audit,
     audit_ratios,
+    dalpha_minimum_audit,
     fig2_grids,
     printed_matrix_audit,
     theorem4_audit,
     theorem5_audit,
 )
-from ..studies.theorem5_proof import (
-    alpha_derivative_audit,
-    dalpha_minimum_audit,
-    theta_derivative_audit,
-)
+from ..studies.theorem5_proof import alpha_derivative_audit, theta_derivative_audit
 from ..studies.weyl import weyl_audit
 from ._ledger import Finding, Table, claim
-
-NB = "02_pair_closed_form"
 
 #: Floating-point agreement required between independent evaluations (values in [0, 1]).
 TOL_FLOAT = 1e-10
@@ -61,7 +57,7 @@ def _bmatrix(rows) -> str:
     paper="Eq. (9) and Eq. (33).",
     quote=r"The lower bound of the inverse of condition number of the observability matrix for "
     r"$i-j-o$ system is given by,",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm4(p: dict) -> Finding:
     """reproduced: SymPy's derivation equals the printed eigenvalues (Eq. (33)) and bound
@@ -118,7 +114,7 @@ def _thm4(p: dict) -> Finding:
     paper=r"Maximum at $\alpha = 1$, $\theta_{ji} = \pm\pi/2$ (Fig. 2 a-d).",
     quote=r"Note that $\underline{C}^{-1}(O_{i,j}(o,u_o))$ reaches its maximum when $\alpha=1$ "
     r"and $\theta_{ji}=\pm \frac{\pi}{2}$.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _fig2_max(p: dict) -> Finding:
     """reproduced: on a grid containing theta = +-pi/2 the maximum is 1/sqrt(1 + q^2), attained
@@ -179,7 +175,7 @@ def _fig2_max(p: dict) -> Finding:
     quote=r"reaches its maximum, $\sqrt{\frac{1}{1+u_{o}^{2}/d_{io}^{2}}}$, at $\alpha=1$ and "
     r"$\theta_{ji}=\pm \frac{\pi}{2}$, and reaches its minimum, zero, at $\theta_{ji}=0$, "
     r"$\theta_{ji}=\pi$, $\alpha=0$, or $\alpha \to \infty$.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm5(p: dict) -> Finding:
     """reproduced: for every q tried the grid maximum is 1/sqrt(1 + q^2), attained only at
@@ -242,7 +238,7 @@ def _thm5(p: dict) -> Finding:
     paper=r"$\alpha = 1$ does not satisfy Eq. (34) when $\theta_{ji}$ is not $0, \pm\pi/2, \pi$.",
     quote=r"For a fixed $\theta_{ji} \neq 0, \pm \frac{\pi}{2}, \pi$, the minima occurs when "
     r"$\alpha=0$ or $\alpha \to \infty$, but the maximum extreme point is not at $\alpha=1$.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm5_alpha(p: dict) -> Finding:
     """partly: the maximiser (closed form, checked against the root of Eq. (34) and a dense
@@ -320,7 +316,7 @@ WEYL_TEX = {
     r"\lambda_2(Y))$ for positive semidefinite $X, Y$.",
     paper=r"Weyl and dual Weyl inequalities applied to $O(o)^T O(o) + O(u_o)^T O(u_o)$.",
     quote=r"Following the \emph{Weyl and dual Weyl} inequalities, we get",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _weyl(p: dict) -> Finding:
     """reproduced: SymPy shows each of the six inequalities to be a triangle inequality in the
@@ -369,7 +365,7 @@ def _weyl(p: dict) -> Finding:
     r"$i + j - r \le r$.",
     paper=r"Range printed as $i + j - r \le r$.",
     quote=r"where $i,j\geq 1$ and $i+j-r\leq r$.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _weyl_range(p: dict) -> Finding:
     """partly: the three dual inequalities the proof uses hold in the random pairs, but the
@@ -415,7 +411,7 @@ def _weyl_range(p: dict) -> Finding:
     r"\end{bmatrix}$.",
     paper="The matrix as printed.",
     quote=r"We start by calculating the eigenvalues of $O_{i,j}^{T}(o)O_{i,j}(o)$.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _matrix(p: dict) -> Finding:
     """refuted: some entry of the printed matrix differs from the true O_ij^T O_ij (SymPy);
@@ -466,7 +462,7 @@ def _matrix(p: dict) -> Finding:
     paper="As printed (first display of the proof).",
     quote=r"Thus, when $\alpha$ is fixed, $\underline{C}^{-1}(O_{i,j}(o,u_o))$ reaches its "
     "minimum,",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _dtheta(p: dict) -> Finding:
     """partly: the derivative of C^2 has the printed zeros and second-derivative signs, so the
@@ -534,7 +530,7 @@ def _dtheta(p: dict) -> Finding:
     r"$\alpha = 1$.",
     paper="As printed.",
     quote=r"Then, when $\theta_{ji}=\pm \frac{\pi}{2}$,",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _dalpha_halfpi(p: dict) -> Finding:
     """refuted: at theta = pi/2 the true derivative never vanishes (positive on (0, 1),
@@ -588,7 +584,7 @@ def _dalpha_halfpi(p: dict) -> Finding:
     paper="As printed (the display before Eq. (34)).",
     quote=r"still happens when $\alpha=0$ or $\alpha \to \infty$, but the maximum extreme point "
     r"is not at $\alpha=1$, which is shown is the following derivations.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _dalpha(p: dict) -> Finding:
     """partly: the numerator equals Eq. (34) and the true derivative's closed form holds
@@ -652,7 +648,7 @@ def _dalpha(p: dict) -> Finding:
     quote=r"$\frac{\partial \underline{C}^{-1}(O_{i,j}(o,u_o))}{\partial \alpha}|_{\theta_{ji} "
     r"\neq 0, \pm \frac{\pi}{2}, \pi}$ also reaches its minimum at $\alpha=0$ or "
     r"$\alpha \to \infty$.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _dalpha_min(p: dict) -> Finding:
     """reproduced: for every speed q and angle examined, the derivative's smallest value over

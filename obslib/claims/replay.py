@@ -6,13 +6,12 @@ Registered after the tracking claims of Sections V-A and V-B, which it sharpens.
 from __future__ import annotations
 
 from ..formatting import count, number, small
-from ..studies import experiment_details as ed
-from ..studies import replay as rp
-from ..studies.unchecked import NOTEBOOK
+from ..studies import experiment_details, replay
+from ..studies.unchecked_statements import NOTEBOOK
 from ._ledger import Finding, Table, claim
 
 #: The log is printed to 12 significant digits and its numbers are at most about 10.
-REPLAY_TOLERANCE = rp.LOG_TOLERANCE
+REPLAY_TOLERANCE = replay.LOG_TOLERANCE
 
 #: The runs the noise table determines in full.
 REPLAYED = ("best-pair", "best-partner", "adversarial")
@@ -28,7 +27,7 @@ CONTROL_ROUNDING = 1e-9
 
 def _comparisons():
     """Every published run against its replay (computed once, in :mod:`obslib.studies.replay`)."""
-    return {name: rp.compare_replay(name) for name in rp.RUN_NAMES}
+    return {name: replay.compare_replay(name) for name in replay.RUN_NAMES}
 
 
 def code_model_departures() -> dict:
@@ -37,8 +36,9 @@ def code_model_departures() -> dict:
     lengths, Euclidean angle) picks another pair than Theorem 4 with Mahalanobis distances
     throughout (``sec4-mahalanobis-angle``), and how much lower a fine grid of the ball pushes
     the adversary's objective than the authors' controls (``sec5b-control-ball``)."""
-    whitened = min(ed.metric_choices(n)["agree_whitened"] for n in ("best-pair", "adversarial"))
-    gap = float(ed.control_set_gap(20, 360)["gap"].max())
+    whitened = min(experiment_details.metric_choices(n)["agree_whitened"]
+                   for n in ("best-pair", "adversarial"))
+    gap = float(experiment_details.control_set_gap(20, 360)["gap"].max())
     return {"metric_agrees": whitened, "control_gap": gap,
             "departs": whitened < 1 or gap > CONTROL_ROUNDING}
 
@@ -75,8 +75,8 @@ def _published_replay(p: dict) -> Finding:
     exact = all(c.matches for c in runs)
     dep = code_model_departures()
     status = "agrees" if exact and not dep["departs"] else "differs"
-    checks = {n: rp.independent_checks(n) for n in REPLAYED}
-    t = rp.seed_typicality(p["n_seeds_typical"], p["seed"])
+    checks = {n: replay.independent_checks(n) for n in REPLAYED}
+    t = replay.seed_typicality(p["n_seeds_typical"], p["seed"])
     largest = max(c.largest for c in runs)
     if exact:
         model = ("the experiments' model as the authors' code runs it, with Mahalanobis lengths "

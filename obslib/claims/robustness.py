@@ -30,6 +30,7 @@ from pathlib import Path
 from .._io import write_output
 from .._validate import as_mapping, as_names, as_path, as_sequence, as_str
 from ..profiles import RANGES, profile_names
+from ..studies import adversarial_target, two_sensors_tracking
 from ._ledger import _record, evaluate, registry, resolve
 
 __all__ = ["DATA", "caveat", "caveats",
@@ -53,7 +54,7 @@ DATA = Path(__file__).resolve().parents[1] / "data" / "robustness.json"
 SIZE_KEYS = ("n_seeds", "n_instances", "trials", "n_scenes")
 
 #: Notebooks of the tracking experiments (Sections V-A and V-B).
-TRACKING_NOTEBOOKS = ("05_two_sensors_tracking", "06_adversarial_target")
+TRACKING_NOTEBOOKS = (two_sensors_tracking.NOTEBOOK, adversarial_target.NOTEBOOK)
 
 #: Claims about the numbers of one published run -> the dimensions fixed by that run (its own
 #: speed bound, noise and metric: a run made with other values is another run).

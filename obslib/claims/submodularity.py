@@ -10,12 +10,20 @@ Sec. IV-B's "the proof is similar" are judged from the same checks.
 from __future__ import annotations
 
 from ..formatting import count, fixed, number, setting
-from ..studies import submodularity as sm
+from ..studies import greedy_unique_pairs
 from ..studies.published import THEOREM7_PRINTED_WITNESS
+from ..studies.submodularity import (
+    FIG3_CASES,
+    NOTEBOOK,
+    CaseAudit,
+    LogdetDomain,
+    case_audit,
+    logdet_domain_audit,
+    lower_bound_audit,
+    theorem8_audit,
+    theorem8_verdicts,
+)
 from ._ledger import Finding, Table, claim, registry
-from .greedy_unique_pairs import NB as NB_PAIRS
-
-NB = "04_submodularity"
 
 LABELS = ("s1", "s2", "s3", "s4")
 
@@ -24,7 +32,7 @@ def _set(idx) -> str:
     return "{" + ",".join(LABELS[i] for i in idx) + "}"
 
 
-def _case_evidence(ca: sm.CaseAudit) -> dict:
+def _case_evidence(ca: CaseAudit) -> dict:
     return {
         "values": {_set(k): v for k, v in ca.values.items()},
         "printed": {_set(k): v for k, v in ca.printed.items()},
@@ -58,7 +66,7 @@ def _submodular_text(w) -> str:
             f"but {fixed(w['gain_B'], 4)} at {_tex_set(w['B'])}")
 
 
-def _values_table(ca: sm.CaseAudit, extra, caption: str) -> Table:
+def _values_table(ca: CaseAudit, extra, caption: str) -> Table:
     """omega of the printed sets (and of ``extra`` sets) against the printed values."""
     sets = list(ca.printed) + [k for k in extra if k not in ca.printed]
     rows = [(_tex_set(k), fixed(ca.values[k], 4),
@@ -66,8 +74,8 @@ def _values_table(ca: sm.CaseAudit, extra, caption: str) -> Table:
     return Table(caption, (r"set $S$", r"$\omega(S)$, recomputed", "printed"), rows)
 
 
-def _case(case: str, p: dict) -> sm.CaseAudit:
-    return sm.case_audit(case, min_sizes=(0, p["min_size"]), u_max=p["u_max"])
+def _case(case: str, p: dict) -> CaseAudit:
+    return case_audit(case, min_sizes=(0, p["min_size"]), u_max=p["u_max"])
 
 
 @claim(
@@ -80,7 +88,7 @@ def _case(case: str, p: dict) -> sm.CaseAudit:
     paper=r"$\omega(\{s_1,s_3\}) = 0.5345 > \omega(\{s_1,s_2,s_3\}) = 0.1823$.",
     quote=r"$\omega(\{s_1,s_3\})=0.5345>\omega(\{s_1,s_2, s_3\})=0.1823$, which shows "
     r"$\omega(\cdot)$ is not monotone increasing.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm7_case1(p: dict) -> Finding:
     """The two sets recomputed by SVD. reproduced: our values show the decrease and match the
@@ -128,7 +136,7 @@ def _thm7_case1(p: dict) -> Finding:
     quote=r"$\omega(\{s_1,s_2,s_3\})-\omega(\{s_1,s_2\})=0.3310-0.5345=-0.2035<"
     r"\omega(\{s_1,s_2,s_4,s_3\})-\omega(\{s_1,s_2, s_4\})=0.8765-0.9258=-0.0493$, which shows "
     r"$\omega(\cdot)$ is not submodular.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm7_case2(p: dict) -> Finding:
     """The four sets recomputed by SVD; verdict as for Case 1: reproduced when our values show
@@ -191,17 +199,17 @@ def _thm7_case2(p: dict) -> Finding:
     paper="Proved by the two counter-examples of Cases 1 and 2.",
     quote=r"The lower bound of the inverse of condition number function $\omega(\cdot)$ is "
     "neither monotone increasing nor submodular.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm7(p: dict) -> Finding:
     """Exhaustive checks over the sets of at least ``min_size`` sensors, on the Fig. 3
     geometries and on random instances. reproduced: some instance is not monotone and some is
     not submodular; partly: only one of the two fails; refuted: neither fails anywhere."""
     m = p["min_size"]
-    cases = {c: _case(c, p) for c in sm.FIG3_CASES}
+    cases = {c: _case(c, p) for c in FIG3_CASES}
     mono = {c: ca.audits[m].monotone_witness for c, ca in cases.items()}
     sub = {c: ca.audits[m].submodular_witness for c, ca in cases.items()}
-    lb = sm.lower_bound_audit(p["n_instances"], p["n_sensors"], p["seed"], p["u_max"], m)
+    lb = lower_bound_audit(p["n_instances"], p["n_sensors"], p["seed"], p["u_max"], m)
     not_mono = any(w is not None for w in mono.values()) or lb.n_not_increasing > 0
     not_sub = any(w is not None for w in sub.values()) or lb.n_not_submodular > 0
     if not_mono and not_sub:
@@ -211,7 +219,7 @@ def _thm7(p: dict) -> Finding:
     rows = [(f"{number(lb.n_instances)} random instances of {lb.n_sensors} sensors",
              f"in {count(lb.n_not_increasing, of=lb.n_instances)}",
              f"in {count(lb.n_not_submodular, of=lb.n_instances)}")]
-    for c, label in zip(sm.FIG3_CASES, ("Fig. 3(a)", "Fig. 3(b)")):
+    for c, label in zip(FIG3_CASES, ("Fig. 3(a)", "Fig. 3(b)")):
         mw, sw = mono[c], sub[c]
         rows.append((label, _monotone_text(mw.as_dict()) if mw else "no witness",
                      _submodular_text(sw.as_dict()) if sw else "no witness"))
@@ -258,14 +266,14 @@ def _thm7(p: dict) -> Finding:
     "lower bound.",
     quote=r"However, we show that the inverse of the condition number is neither monotone nor "
     "submodular.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm7_exact(p: dict) -> Finding:
     """Theorem 1's bound at u_max = 0 is the exact C^-1(O(o)) of a stationary target (Remark 1),
     checked exhaustively on random instances. reproduced: some instance is not monotone and some
     is not submodular; partly: only one fails; refuted: neither."""
     m = p["min_size"]
-    lb = sm.lower_bound_audit(p["n_instances"], p["n_sensors"], p["seed"], 0.0, m)
+    lb = lower_bound_audit(p["n_instances"], p["n_sensors"], p["seed"], 0.0, m)
     ok_m, ok_s = lb.n_not_increasing > 0, lb.n_not_submodular > 0
     status = "reproduced" if (ok_m and ok_s) else ("partly" if (ok_m or ok_s) else "refuted")
     rows = [("instances where adding a sensor lowers it",
@@ -300,8 +308,8 @@ def _thm7_exact(p: dict) -> Finding:
 
 
 def _thm8_rows(p: dict):
-    return sm.theorem8_audit(p["n_instances"], p["n_sensors"], p["seed"], float(p["eps"]),
-                             float(p["u_max"]))
+    return theorem8_audit(p["n_instances"], p["n_sensors"], p["seed"], float(p["eps"]),
+                          float(p["u_max"]))
 
 
 def _selected(rows, name):
@@ -341,7 +349,7 @@ def _simple_thm8(name: str, p: dict, words: str, why: str) -> Finding:
     (reproduced when no instance of any configuration decreases or breaks submodularity)."""
     rows = _thm8_rows(p)
     sel, n = _selected(rows, name)
-    status = sm.theorem8_verdicts(rows)[name]
+    status = theorem8_verdicts(rows)[name]
     dec = sum(r.n_not_increasing for r in sel)
     nsub = sum(r.n_not_submodular for r in sel)
     summary = (f"{words} is monotone and submodular: {why}, and no addition of a sensor lowers "
@@ -370,7 +378,7 @@ _JOURNAL = r"The abstract of the later journal version {cite}`zhou2019sensor` "
     "sensors.",
     paper=_TH8_PAPER,
     quote=_TH8_QUOTE,
-    notebook=NB,
+    notebook=NOTEBOOK,
     journal=_JOURNAL + "lists the trace among the monotone submodular measures.",
 )
 def _thm8_trace(p: dict) -> Finding:
@@ -391,7 +399,7 @@ def _thm8_trace(p: dict) -> Finding:
     "sensors.",
     paper=_TH8_PAPER,
     quote=_TH8_QUOTE,
-    notebook=NB,
+    notebook=NOTEBOOK,
     journal=_JOURNAL + "lists the rank among the monotone submodular measures.",
 )
 def _thm8_rank(p: dict) -> Finding:
@@ -403,11 +411,11 @@ def _thm8_rank(p: dict) -> Finding:
 
 
 def _logdet(p: dict):
-    return sm.logdet_domain_audit(p["n_instances"], p["n_sensors"], p["seed"], float(p["eps"]),
-                                  float(p["u_max"]))
+    return logdet_domain_audit(p["n_instances"], p["n_sensors"], p["seed"], float(p["eps"]),
+                               float(p["u_max"]))
 
 
-def _infinite_for(d: sm.LogdetDomain) -> str:
+def _infinite_for(d: LogdetDomain) -> str:
     """The teams on which a matrix's log determinant is -inf, in words."""
     if d.finite_from == 0:
         return "no team"
@@ -434,7 +442,7 @@ def _logdet_status(domains) -> str:
     "monotone increasing and submodular in the set of sensors.",
     paper=_TH8_PAPER,
     quote=_TH8_QUOTE,
-    notebook=NB,
+    notebook=NOTEBOOK,
     journal=_JOURNAL + "lists the log determinant among them when the matrix is non-singular.",
 )
 def _thm8_logdet(p: dict) -> Finding:
@@ -482,7 +490,7 @@ def _thm8_logdet(p: dict) -> Finding:
     )
 
 
-def _teams(d: sm.LogdetDomain) -> str:
+def _teams(d: LogdetDomain) -> str:
     """The teams on which a matrix's log determinant is finite, in words."""
     if d.finite_from <= 1:
         return "non-empty teams" if d.finite_from == 1 else "every team"
@@ -497,7 +505,7 @@ def _teams(d: sm.LogdetDomain) -> str:
     "set of sensors.",
     paper=_TH8_PAPER,
     quote=_TH8_QUOTE,
-    notebook=NB,
+    notebook=NOTEBOOK,
     journal=_JOURNAL + "no longer lists the trace of the inverse.",
 )
 def _thm8_trace_inverse(p: dict) -> Finding:
@@ -510,7 +518,7 @@ def _thm8_trace_inverse(p: dict) -> Finding:
     n_dec = sum(r.n_not_increasing for r in sel)
     n_neg_dec = sum(r.n_not_increasing for r in nsel)
     n_neg_sub = sum(r.n_not_submodular for r in nsel)
-    status = sm.theorem8_verdicts(rows)["trace_inverse"]
+    status = theorem8_verdicts(rows)["trace_inverse"]
     hit = next((r for r in nsel if r.witness is not None), None)
     ours = (r"As printed it fails: $\operatorname{tr}(G^{-1})$, $G = O^T O + \varepsilon I$, "
             "decreases when a sensor is added, and its negative, though monotone increasing "
@@ -577,7 +585,7 @@ def _thm8_findings(p: dict) -> dict:
     quote=r"The proof is similar to proving that the trace of the Gramian and inverse Gramian, "
     r"the log determinant, and the rank of the Gramian are monotone "
     r"submodular\cite{summers2016submodularity}.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _thm8_similar(p: dict) -> Finding:
     """From the four Theorem 8 checks (the same audits): reproduced when all four measures hold
@@ -631,15 +639,16 @@ def _thm8_similar(p: dict) -> Finding:
     "measures {cite}`nemhauser1978analysis` with the measures of Theorem 8.",
     quote="We considered two sensor assignment problems for which we presented constant-factor "
     "approximation algorithm.",
-    notebook=NB,
-    uses=(NB_PAIRS,),
+    notebook=NOTEBOOK,
+    uses=(greedy_unique_pairs.NOTEBOOK,),
 )
 def _conclusion(p: dict) -> Finding:
     """From the checks of Theorems 6-8 (the same audits). reproduced: Theorem 6 holds for any
     omega and all four measures of Theorem 8 hold as printed; partly: Theorem 6 holds (for
     omega >= 0) and some measure of Theorem 8 gives the greedy its 1/2, but not all; refuted:
     Theorem 6 fails or no measure of Theorem 8 holds."""
-    thm6, any_omega = (registry()[cid].check(p[NB_PAIRS]) for cid in ('thm6', 'thm6-any-omega'))
+    thm6, any_omega = (registry()[cid].check(p[greedy_unique_pairs.NOTEBOOK])
+                       for cid in ('thm6', 'thm6-any-omega'))
     found = _thm8_findings(p)
     bound = _thm7(p)
     good = [k for k, f in found.items() if f.status in ("reproduced", "partly")]

@@ -52,7 +52,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from .. import tracking as tr
+from .. import tracking
 from .._kernels import pair_kernel
 from .._validate import (
     as_choice,
@@ -228,7 +228,7 @@ def _scaled(v, cov, metric):
     when ``metric`` says so, divided by each estimate's longest row."""
     c = (cov[:, 0, 0], cov[:, 0, 1], cov[:, 1, 0], cov[:, 1, 1])
     maha = np.full(v.shape[0], metric == "mahalanobis")
-    return tr.choosers.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
+    return tracking.choosers.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
 
 
 # --------------------------------------------------------------------------------------------
@@ -323,8 +323,9 @@ def _scene_setups(sc: Scenario) -> list:
     st = sc.setup
     common = dict(cov0=st.p0, Q=st.Q, R=st.R, noise_std=st.noise_std, u_max=st.u_max,
                   measurement="half-squared-range", metric=st.metric)
-    return [tr.TargetsSetup(sensors=sc.sensors[b], truth=sc.truth[b], estimate0=sc.estimate0[b],
-                            **common) for b in range(len(sc.seeds))]
+    return [tracking.TargetsSetup(sensors=sc.sensors[b], truth=sc.truth[b],
+                                  estimate0=sc.estimate0[b], **common)
+            for b in range(len(sc.seeds))]
 
 
 def _run(sc: Scenario, rules) -> dict:
@@ -333,8 +334,8 @@ def _run(sc: Scenario, rules) -> dict:
     permutations), then each chosen pair's bound and gain from the logged states."""
     st = sc.setup
     T, L = st.steps, st.n_targets
-    runs = tr.simulate_targets_scenes(_scene_setups(sc), [_ASSIGNMENT[r] for r in rules],
-                                      noise=sc.noise, draws=sc.perm)
+    runs = tracking.simulate_targets_scenes(_scene_setups(sc), [_ASSIGNMENT[r] for r in rules],
+                                            noise=sc.noise, draws=sc.perm)
     nb, n = len(sc.seeds), st.n_sensors
     out = {}
     for rule in rules:

@@ -31,7 +31,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .. import tracking as tr
+from .. import tracking
 from .._kernels import inverse_condition, pair_kernel
 from .._validate import (
     as_choice,
@@ -49,16 +49,12 @@ from .._validate import (
     as_sequence,
     as_str,
 )
-from . import assignment_tracking as at
+from . import assignment_tracking
 
 __all__ = [
     "NOTEBOOK",
-    "CRITERIA",
-    "PAPER_STRATEGIES",
     "REFERENCE",
     "SCORES",
-    "available_strategies",
-    "missing_strategies",
     "criterion_scores",
     "paired_test",
     "summary_rows",
@@ -72,53 +68,18 @@ __all__ = [
 
 NOTEBOOK = "10_criteria"
 
-#: The classical criteria and the floor, as named in :mod:`obslib.tracking`.
-CRITERIA = ("d-optimal", "a-optimal", "e-optimal", "exact-icn", "random")
-#: The paper's strategies (Section V-A): :data:`obslib.tracking.STRATEGIES`.
-PAPER_STRATEGIES = tr.STRATEGIES
 #: The bound's choice, the reference of every paired test.
 REFERENCE = "best-pair"
 #: The scores :func:`criterion_scores` computes (``"bound"`` is ``best-pair``'s).
 SCORES = ("bound", "d-optimal", "a-optimal", "e-optimal", "exact-icn")
-
-def _known() -> tuple:
-    """Every strategy name the tracking engine accepts (its strategies and criteria)."""
-    return tuple(tr.STRATEGIES) + tuple(getattr(tr, "CRITERIA", ()))
 
 
 def _mc_iv(mc) -> dict:
     """A Monte Carlo result ``{strategy: BatchResult}``."""
     mc = as_mapping(mc, "mc")
     for b in mc.values():
-        as_instance(b, tr.BatchResult, "mc")
+        as_instance(b, tracking.BatchResult, "mc")
     return mc
-
-
-def available_strategies(names=PAPER_STRATEGIES + CRITERIA) -> list:
-    """The ``names`` the tracking engine knows (:data:`obslib.tracking.STRATEGIES` and
-    :data:`obslib.tracking.CRITERIA`), in order.
-
-    Examples
-    --------
-    >>> available_strategies(["random", "no-such-rule", "best-pair"])
-    ['random', 'best-pair']
-    >>> available_strategies() == list(PAPER_STRATEGIES + CRITERIA)  # all known
-    True
-    """
-    return [n for n in as_names(names, "names") if n in _known()]
-
-
-def missing_strategies(names=PAPER_STRATEGIES + CRITERIA) -> list:
-    """The ``names`` the tracking engine does not know.
-
-    Examples
-    --------
-    >>> missing_strategies(["random", "no-such-rule", "best-pair"])
-    ['no-such-rule']
-    >>> missing_strategies()
-    []
-    """
-    return [n for n in as_names(names, "names") if n not in _known()]
 
 
 # --------------------------------------------------------------------------------------------
@@ -208,7 +169,7 @@ def _scores(name, S, x, C, Q, R, u_max, u, metric):
     if name == "bound":  # Theorem 4 on the pairs only: the tracking engine's row scaling
         c = (C[:, 0, 0], C[:, 0, 1], C[:, 1, 0], C[:, 1, 1])
         maha = np.full(x.shape[0], metric == "mahalanobis")
-        vx, vy, inv = tr.choosers.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
+        vx, vy, inv = tracking.choosers.scaled_rows(v[..., 0].copy(), v[..., 1].copy(), c, maha)
         return pair_kernel(vx[:, ii], vy[:, ii], vx[:, jj], vy[:, jj], (u_max**2 * inv)[:, None])
     if name == "exact-icn":
         rows = np.stack([v[:, ii], v[:, jj], np.broadcast_to(u[:, None], v[:, ii].shape)], axis=-2)
@@ -240,7 +201,7 @@ def _scores(name, S, x, C, Q, R, u_max, u, metric):
 # --------------------------------------------------------------------------------------------
 
 
-def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
+def paired_test(reference, other, rtol: float = tracking.TIE_RTOL) -> dict:
     """Paired comparison of per-run values (lower is better), run ``b`` against run ``b``.
 
     Returns ``n``, the mean, median and standard deviation of ``other - reference``, the counts of
@@ -274,8 +235,8 @@ def paired_test(reference, other, rtol: float = tr.TIE_RTOL) -> dict:
             f"{a.shape}, {b.shape}"
         )
     d = b - a
-    ref_better = int(tr.clearly_lower(a, b, rtol).sum())
-    other_better = int(tr.clearly_lower(b, a, rtol).sum())
+    ref_better = int(tracking.clearly_lower(a, b, rtol).sum())
+    other_better = int(tracking.clearly_lower(b, a, rtol).sum())
     ties = a.size - ref_better - other_better
     n_signed = ref_better + other_better
     p_sign = float(stats.binomtest(ref_better, n_signed, 0.5).pvalue) if n_signed else 1.0
@@ -339,8 +300,8 @@ def summary_rows(mc: dict, reference: str = REFERENCE, loss_threshold: float = 0
 
     Examples
     --------
-    >>> setup = tr.PAPER_CIRCLE.replace(steps=10)
-    >>> mc = tr.monte_carlo(setup, 3, ["best-pair", "random"])
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=10)
+    >>> mc = tracking.monte_carlo(setup, 3, ["best-pair", "random"])
     >>> rows = summary_rows(mc)
     >>> [r["strategy"] for r in rows], "vs_n" in rows[0], rows[1]["vs_n"]
     (['best-pair', 'random'], False, 3)
@@ -361,7 +322,7 @@ def summary_rows(mc: dict, reference: str = REFERENCE, loss_threshold: float = 0
             "sd_error": float(err.std(ddof=1)),
             "mean_trace": float(trc.mean()),
             "sd_trace": float(trc.std(ddof=1)),
-            "lost": int(tr.track_loss(b, loss_threshold)["lost"].sum()),
+            "lost": int(tracking.track_loss(b, loss_threshold)["lost"].sum()),
             "switches": float(b.switches.mean()),
             "mean_bound": float(b.bound[:, 1:].mean()),
         }
@@ -383,22 +344,22 @@ def relog_bound(batch, setup):
     A random run logged under Euclidean distances is the same run as the one
     simulated with them:
 
-    >>> setup = tr.PAPER_CIRCLE.replace(steps=5)
-    >>> b = tr.simulate_batch(setup, "random", seeds=[0, 1])
+    >>> setup = tracking.PAPER_CIRCLE.replace(steps=5)
+    >>> b = tracking.simulate_batch(setup, "random", seeds=[0, 1])
     >>> eu = relog_bound(b, setup.replace(metric="euclidean"))
     >>> eu.setup.metric, bool((eu.error == b.error).all())
     ('euclidean', True)
-    >>> direct = tr.simulate_batch(eu.setup, "random", seeds=[0, 1])
+    >>> direct = tracking.simulate_batch(eu.setup, "random", seeds=[0, 1])
     >>> bool(np.allclose(eu.bound, direct.bound, rtol=1e-9))
     True
     """
     import dataclasses
 
-    as_instance(batch, tr.BatchResult, "batch")
-    as_instance(setup, tr.TrackingSetup, "setup")
+    as_instance(batch, tracking.BatchResult, "batch")
+    as_instance(setup, tracking.TrackingSetup, "setup")
     B, K = batch.pairs.shape[:2]
     cov = batch.cov.reshape(-1, 2, 2) if setup.metric == "mahalanobis" else None
-    bound = tr.pair_bound_series(
+    bound = tracking.pair_bound_series(
         setup, batch.estimate.reshape(-1, 2), batch.pairs.reshape(-1, 2), cov
     )
     return dataclasses.replace(batch, setup=setup, bound=bound.reshape(B, K))
@@ -412,9 +373,10 @@ def _tracking_study(n_seeds, seed, metrics, strategies):
     # metric and exact-icn pass; the runs are the same, the tests check it)
     seeds = range(seed, seed + n_seeds)
     out = {}
-    for label, base in (("circle", tr.PAPER_CIRCLE), ("adversary", tr.PAPER_ADVERSARIAL)):
+    for label, base in (("circle", tracking.PAPER_CIRCLE),
+                        ("adversary", tracking.PAPER_ADVERSARIAL)):
         arms = {(m, s): (base.replace(metric=m), s) for m in metrics for s in strategies}
-        runs = tr.simulate_many(arms, seeds=seeds)
+        runs = tracking.simulate_many(arms, seeds=seeds)
         for m in metrics:
             out[(label, m)] = {s: runs[(m, s)] for s in strategies}
     return out
@@ -426,7 +388,7 @@ def tracking_study(n_seeds: int, seed: int = 0, metrics=("mahalanobis", "euclide
 
     Seeds ``seed .. seed + n_seeds - 1``, the same noise for every strategy
     (:func:`obslib.tracking.monte_carlo`). ``strategies`` defaults to those of the paper and
-    the criteria the tracking engine knows (:func:`available_strategies`).
+    the criteria (:data:`obslib.tracking.STRATEGIES`, :data:`obslib.tracking.CRITERIA`).
 
     Returns ``{(setting, metric): {strategy: BatchResult}}`` with ``setting`` in
     ``("circle", "adversary")``. Cached: the notebook and the ledger share one computation.
@@ -436,7 +398,7 @@ def tracking_study(n_seeds: int, seed: int = 0, metrics=("mahalanobis", "euclide
     >>> s = tracking_study(2, strategies=("best-pair", "random"))
     >>> len(s), list(s[("circle", "mahalanobis")])
     (4, ['best-pair', 'random'])
-    >>> mc = tr.monte_carlo(tr.PAPER_CIRCLE, 2, ["best-pair"], 0)
+    >>> mc = tracking.monte_carlo(tracking.PAPER_CIRCLE, 2, ["best-pair"], 0)
     >>> a = s[("circle", "mahalanobis")]["best-pair"].error
     >>> bool(np.allclose(a, mc["best-pair"].error, rtol=1e-9))
     True
@@ -446,31 +408,30 @@ def tracking_study(n_seeds: int, seed: int = 0, metrics=("mahalanobis", "euclide
         raise ValueError(f"n_seeds must be at least 2 for the paired tests, got {n_seeds}")
     seed = as_int(seed, "seed", 0)
     metrics = as_names(metrics, "metrics")
-    bad = [m for m in metrics if m not in tr.METRICS]
+    bad = [m for m in metrics if m not in tracking.METRICS]
     if bad or not metrics:
-        raise ValueError(f"metrics must be among {tr.METRICS}, got {list(metrics)}")
-    strategies = tuple(available_strategies() if strategies is None
-                       else as_names(strategies, "strategies"))
-    unknown = [s for s in strategies if s not in _known()]
-    if unknown:
-        raise ValueError(f"unknown strategies {unknown}; known: {_known()}")
+        raise ValueError(f"metrics must be among {tracking.METRICS}, got {list(metrics)}")
+    known = tracking.STRATEGIES + tracking.CRITERIA
+    strategies = (known if strategies is None
+                  else as_names(strategies, "strategies", known))
     if REFERENCE not in strategies:
         raise ValueError(f"strategies must include the reference {REFERENCE!r}")
     return _tracking_study(int(n_seeds), int(seed), metrics, strategies)
 
 
 def adversary_rows(mc: dict) -> list:
-    """How the adversary of Section V-B fares against each strategy: one row per strategy with
-    the fraction of runs that entrap it (:data:`obslib.tracking.ENTRAPMENT_CRITERIA`), its
-    largest distance from the start, the exact ``C^{-1}`` the sensors face (mean and minimum),
-    the mean bound, mean switches and mean error: the numbers of
-    :func:`obslib.studies.tracking.entrapment_summary`, computed over whole batches at once.
+    """How the adversary of Section V-B fares against each strategy: one row per strategy with the
+    fraction of runs that entrap it (:data:`obslib.tracking.ENTRAPMENT_CRITERIA`), its largest
+    distance from the start, the exact ``C^{-1}`` the sensors face (mean and minimum), the mean
+    bound, mean switches and mean error: the numbers of
+    :func:`obslib.studies.adversarial_target.entrapment_summary`, computed over whole batches at
+    once.
 
     Examples
     --------
-    >>> from obslib.studies.tracking import entrapment_summary
-    >>> setup = tr.PAPER_ADVERSARIAL.replace(steps=10)
-    >>> mc = tr.monte_carlo(setup, 2, ["best-pair"])
+    >>> from obslib.studies.adversarial_target import entrapment_summary
+    >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=10)
+    >>> mc = tracking.monte_carlo(setup, 2, ["best-pair"])
     >>> row, = adversary_rows(mc)
     >>> s = entrapment_summary(mc["best-pair"])
     >>> keys = ("entrapped", "max_from_start", "reach", "mean_error")
@@ -478,7 +439,7 @@ def adversary_rows(mc: dict) -> list:
     True
     """
     mc = _mc_iv(mc)
-    crit = tr.ENTRAPMENT_CRITERIA
+    crit = tracking.ENTRAPMENT_CRITERIA
     rows = []
     for name, b in mc.items():
         path = np.concatenate([b.truth, (b.truth[:, -1] + b.control[:, -1])[:, None]], axis=1)
@@ -508,9 +469,10 @@ def _assignment_study(targets, n_seeds, seed, steps, side, u_max, noise_std, p0,
     out = {}
     seeds = range(seed, seed + n_seeds)
     for L in targets:
-        setup = at.AssignmentTrackingSetup(n_targets=L, steps=steps, side=side, u_max=u_max,
-                                           noise_std=noise_std, p0=p0, metric=metric)
-        out[L] = at.run_all(setup, seeds)
+        setup = assignment_tracking.AssignmentTrackingSetup(
+            n_targets=L, steps=steps, side=side, u_max=u_max, noise_std=noise_std, p0=p0,
+            metric=metric)
+        out[L] = assignment_tracking.run_all(setup, seeds)
     return out
 
 
@@ -528,8 +490,9 @@ def assignment_study(p: dict, metric: str = "mahalanobis") -> dict:
     >>> runs = assignment_study(p)
     >>> sorted(runs), list(runs[2])
     ([1, 2], ['bound', 'd-optimal', 'random'])
-    >>> setup = at.AssignmentTrackingSetup(n_targets=2, steps=5)  # p's values
-    >>> direct = at.run(setup, "bound", [0, 1])
+    >>> setup = assignment_tracking.AssignmentTrackingSetup(  # p's values
+    ...     n_targets=2, steps=5)
+    >>> direct = assignment_tracking.run(setup, "bound", [0, 1])
     >>> e = runs[2]["bound"].post_error
     >>> bool(np.allclose(e, direct.post_error, rtol=1e-9))
     True
@@ -560,8 +523,8 @@ def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float 
 
     Examples
     --------
-    >>> setup = at.AssignmentTrackingSetup(n_targets=2, steps=5)
-    >>> runs = {2: at.run_all(setup, [0, 1, 2])}
+    >>> setup = assignment_tracking.AssignmentTrackingSetup(n_targets=2, steps=5)
+    >>> runs = {2: assignment_tracking.run_all(setup, [0, 1, 2])}
     >>> rows = assignment_rows(runs)
     >>> [r["rule"] for r in rows], "vs_n" in rows[0], rows[2]["vs_n"]
     (['bound', 'd-optimal', 'random'], False, 3)
@@ -572,7 +535,7 @@ def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float 
     runs = as_mapping(runs, "runs")
     for by_rule in runs.values():
         for r in as_mapping(by_rule, "runs").values():
-            as_instance(r, at.AssignmentRuns, "runs")
+            as_instance(r, assignment_tracking.AssignmentRuns, "runs")
         if as_str(reference, "reference") not in by_rule:
             raise ValueError(f"reference {reference!r} is not a rule of the runs")
     loss_threshold = as_nonnegative(loss_threshold, "loss_threshold")

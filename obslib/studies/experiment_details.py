@@ -23,7 +23,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .. import tracking as tr
+from .. import tracking
 from .._kernels import normalise, pair_kernel
 from .._validate import as_float_array, as_int, as_positive, as_str
 from ..bounds import pair_bounds
@@ -31,7 +31,7 @@ from ..controls import disc_controls
 from ..published_runs import published_run
 from ..tracking.adversary import adversary_moves
 from ..tracking.model import inverse_condition
-from .tracking import adversary_variants, entrapment_summary
+from .adversarial_target import adversary_variants, entrapment_summary
 
 __all__ = ["whiten", "metric_choices", "unit_dependence", "control_set_gap",
            "control_set_entrapment"]
@@ -122,7 +122,7 @@ def _logged_covariances(name: str, run) -> np.ndarray:
 @lru_cache(maxsize=2)
 def _metric_choices(name: str) -> dict:
     run = published_run(name)
-    setup = tr.PAPER_ADVERSARIAL if name == "adversarial" else tr.PAPER_CIRCLE
+    setup = tracking.PAPER_ADVERSARIAL if name == "adversarial" else tracking.PAPER_CIRCLE
     S, u_max = setup.sensor_array, setup.u_max
     est = run.estimate
     cov = _logged_covariances(name, run)
@@ -186,7 +186,7 @@ def unit_dependence(name: str = "best-pair", factor: float = 10.0) -> dict:
 @lru_cache(maxsize=4)
 def _unit_dependence(name: str, factor: float) -> dict:
     run = published_run(name)
-    setup = tr.PAPER_ADVERSARIAL if name == "adversarial" else tr.PAPER_CIRCLE
+    setup = tracking.PAPER_ADVERSARIAL if name == "adversarial" else tracking.PAPER_CIRCLE
     S, u_max, est = setup.sensor_array, setup.u_max, run.estimate
     cov = _logged_covariances(name, run)
     W = pair_bounds(S, est, u_max, cov=cov)
@@ -246,9 +246,10 @@ def control_set_gap(n_radii: int = 20, n_angles: int = 360) -> dict:
 @lru_cache(maxsize=4)
 def _control_set_gap(n_radii: int, n_angles: int) -> dict:
     run = published_run("adversarial")
-    setup = tr.PAPER_ADVERSARIAL
+    setup = tracking.PAPER_ADVERSARIAL
     ps = setup.sensor_array[run.pairs]  # (steps, 2, 2)
-    paper = tr.target_objective(ps, run.truth, tr.paper_controls(setup.u_max)).min(axis=-1)
+    controls = tracking.paper_controls(setup.u_max)
+    paper = tracking.target_objective(ps, run.truth, controls).min(axis=-1)
     grid = disc_controls(setup.u_max, n_radii, n_angles)
     disc = _smallest_objective(ps, run.truth, grid)
     return {
@@ -266,7 +267,7 @@ def control_set_entrapment(n_seeds: int, seed: int, n_radii: int, n_angles: int)
     Returns
     -------
     dict
-        ``paper`` and ``disc``: :func:`obslib.studies.tracking.entrapment_summary` of the
+        ``paper`` and ``disc``: :func:`obslib.studies.adversarial_target.entrapment_summary` of the
         strategy-1 runs with each control set (computed once per arguments, shared by the
         ledger and the notebook).
 
@@ -287,9 +288,9 @@ def control_set_entrapment(n_seeds: int, seed: int, n_radii: int, n_angles: int)
 
 @lru_cache(maxsize=4)
 def _control_set_entrapment(n_seeds, seed, n_radii, n_angles):
-    variants = adversary_variants(tr.PAPER_ADVERSARIAL, n_radii, n_angles)
+    variants = adversary_variants(tracking.PAPER_ADVERSARIAL, n_radii, n_angles)
     seeds = range(seed, seed + n_seeds)
     # both control sets in one batched pass (a run does not depend on the others of its pass)
-    runs = tr.simulate_many({k: (variants[k], "best-pair") for k in ("paper", "disc")},
-                            seeds=seeds)
+    runs = tracking.simulate_many({k: (variants[k], "best-pair") for k in ("paper", "disc")},
+                                  seeds=seeds)
     return {k: entrapment_summary(b) for k, b in runs.items()}

@@ -23,7 +23,7 @@ import numpy as np
 
 from .._validate import as_int, as_ints, as_positive, as_real, as_str
 from ..bounds import relative_vectors
-from . import teams as ts
+from .general_assignment import fig9_geometry, fig9_sweep
 
 __all__ = ["NAN_RULES", "FIG9_U_MAX", "CONTROL_DIRECTIONS", "literal_logdet_counts",
            "literal_fig9_sweep", "control_row_fig9_sweep", "fig9_measure_sweeps"]
@@ -137,8 +137,8 @@ def literal_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, sid
                        nan: str = "ignore") -> np.ndarray:
     """Counts ``(len(N_values), trials, L)`` of the Fig. 9 sweep with the literal measure.
 
-    The geometries are those of :func:`obslib.studies.teams.fig9_sweep` (same seeds), so the two
-    measures are compared on the same instances.
+    The geometries are those of :func:`obslib.studies.general_assignment.fig9_sweep` (same seeds),
+    so the two measures are compared on the same instances.
 
     Examples
     --------
@@ -156,7 +156,7 @@ def literal_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5, sid
     v = np.zeros((len(N_values), trials, n_max, n_targets, 2))
     for a, n in enumerate(N_values):
         for t in range(trials):
-            S, T = ts.fig9_geometry(n, t, seed, n_targets, side)
+            S, T = fig9_geometry(n, t, seed, n_targets, side)
             v[a, t, :n] = relative_vectors(S, T)
     n_sensors = np.repeat(np.array(N_values, dtype=int), trials)
     out = _counts(
@@ -174,8 +174,8 @@ def control_row_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5,
     Each target gets a control of norm ``u_max``: in the direction ``direction`` (an angle in
     radians, the same for every target) when it is given, else in a direction drawn uniformly
     from ``default_rng([seed, N, trial, 1])`` for each target (the geometries are those of
-    :func:`obslib.studies.teams.fig9_sweep`). With the control row a team of one sensor is
-    non-singular unless its row is parallel to ``u_o``, so the first gains are
+    :func:`obslib.studies.general_assignment.fig9_sweep`). With the control row a team of one
+    sensor is non-singular unless its row is parallel to ``u_o``, so the first gains are
     ``log((u x r)^2) - (-inf) = +inf``; ties are resolved as in :func:`literal_logdet_counts`
     (the first in (sensor, target) order), and the determinants are exact (Cauchy-Binet with the
     control row in every team).
@@ -205,7 +205,7 @@ def control_row_fig9_sweep(N_values, trials: int, seed: int, n_targets: int = 5,
     u = np.zeros((len(N_values), trials, n_targets, 2))
     for a, n in enumerate(N_values):
         for t in range(trials):
-            S, T = ts.fig9_geometry(n, t, seed, n_targets, side)
+            S, T = fig9_geometry(n, t, seed, n_targets, side)
             v[a, t, :n] = relative_vectors(S, T)
             if direction is None:
                 phi = np.random.default_rng([seed, n, t, 1]).uniform(0, 2 * np.pi, n_targets)
@@ -228,11 +228,11 @@ def fig9_measure_sweeps(N_min: int, N_max: int, trials: int, seed: int, n_target
     -------
     dict
         Counts ``(len(N), trials, L)`` per measure: ``"prior"``, the book's
-        ``log det(O^T O + eps I)`` (:func:`obslib.studies.teams.fig9_sweep`); ``"code"``, the
-        authors' ``log det(O^T O)`` with undefined gains skipped (``nan="ignore"``, what their
-        code's arithmetic does) and ``"code-first"`` with the first undefined gain taken; and
-        ``"text"``: direction -> the text's measure with a control row of norm ``u_max`` in that
-        direction, for each of :data:`CONTROL_DIRECTIONS`.
+        ``log det(O^T O + eps I)`` (:func:`obslib.studies.general_assignment.fig9_sweep`);
+        ``"code"``, the authors' ``log det(O^T O)`` with undefined gains skipped
+        (``nan="ignore"``, what their code's arithmetic does) and ``"code-first"`` with the first
+        undefined gain taken; and ``"text"``: direction -> the text's measure with a control row
+        of norm ``u_max`` in that direction, for each of :data:`CONTROL_DIRECTIONS`.
 
     Examples
     --------
@@ -256,7 +256,7 @@ def fig9_measure_sweeps(N_min: int, N_max: int, trials: int, seed: int, n_target
 def _fig9_measure_sweeps(N_min, N_max, trials, seed, n_targets, eps, side, u_max) -> dict:
     Ns = list(range(N_min, N_max + 1))
     return {
-        "prior": ts.fig9_sweep(Ns, trials, seed, n_targets, "logdet", eps, side),
+        "prior": fig9_sweep(Ns, trials, seed, n_targets, "logdet", eps, side),
         "code": literal_fig9_sweep(Ns, trials, seed, n_targets, side, nan="ignore"),
         "code-first": literal_fig9_sweep(Ns, trials, seed, n_targets, side, nan="first"),
         "text": {d: control_row_fig9_sweep(Ns, trials, seed, n_targets, side, u_max, d)

@@ -34,6 +34,7 @@ from .batch_optimum import (
 )
 
 __all__ = [
+    "NOTEBOOK",
     "GreedyStudy",
     "pair_instances",
     "greedy_vs_optimal",
@@ -45,6 +46,9 @@ __all__ = [
     "signed_weights_study",
     "tight_weights",
 ]
+
+#: The chapter of these studies.
+NOTEBOOK = "03_greedy_unique_pairs"
 
 
 @dataclass(frozen=True)

@@ -29,6 +29,7 @@ from ..sweep import run_sweep
 from .batch_optimum import MAX_DP_SENSORS, batch_pair_bounds, greedy_values, optimal_values
 
 __all__ = [
+    "NOTEBOOK",
     "FIG8_KEYS",
     "FIG8_DENSE_WEIGHTS",
     "fig8_instance",
@@ -40,6 +41,9 @@ __all__ = [
     "problem3_milp",
     "problem3_audit",
 ]
+
+#: The chapter of these studies.
+NOTEBOOK = "07_greedy_vs_relaxed"
 
 #: The values each trial reports.
 FIG8_KEYS = ("greedy", "relaxed", "relaxed_ordered", "optimum")

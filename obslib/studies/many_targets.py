@@ -30,7 +30,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .. import tracking as tr
+from .. import tracking
 from .._validate import as_int, as_mapping, as_names, as_nonnegative, as_str
 from ..later_experiment import RUN_NAMES, saved_run
 from .criteria import paired_test, significance
@@ -67,7 +67,7 @@ NETWORK_ASSIGNMENTS = ("unique-pairs", "random", "logdet-teams", "logdet-teams-p
 
 
 def _assignments_iv(assignments) -> tuple:
-    names = as_names(assignments, "assignments", tr.ASSIGNMENTS)
+    names = as_names(assignments, "assignments", tracking.ASSIGNMENTS)
     if not names:
         raise ValueError("assignments is empty")
     return tuple(dict.fromkeys(names))
@@ -82,15 +82,15 @@ def _seeds_iv(n_seeds, seed) -> tuple:
 def _later_run(n_seeds: int, seed: int, assignment: str):
     # one assignment at a time, so that every caller shares each assignment's runs (the runs
     # of an assignment do not depend on the others: the noise is the seeds')
-    return tr.simulate_targets_batch(tr.LATER_MULTI_TARGET, [assignment],
-                                     seeds=range(seed, seed + n_seeds))[assignment]
+    return tracking.simulate_targets_batch(tracking.LATER_MULTI_TARGET, [assignment],
+                                           seeds=range(seed, seed + n_seeds))[assignment]
 
 
 def _later_runs(n_seeds: int, seed: int, assignments: tuple) -> dict:
     return {name: _later_run(n_seeds, seed, name) for name in assignments}
 
 
-def later_runs(n_seeds: int = 200, seed: int = 0, assignments=tr.ASSIGNMENTS) -> dict:
+def later_runs(n_seeds: int = 200, seed: int = 0, assignments=tracking.ASSIGNMENTS) -> dict:
     """The later experiment (:data:`~obslib.tracking.LATER_MULTI_TARGET`) with every
     assignment over the noise seeds ``seed .. seed + n_seeds - 1``, common to all:
     ``{assignment: TargetsBatch}`` (each assignment's runs cached).
@@ -121,7 +121,7 @@ def run_statistics(batch, loss_threshold: float = LOSS_THRESHOLD) -> dict:
     >>> s["lost"].tolist()[0]
     [False, True, True]
     """
-    if not isinstance(batch, tr.TargetsBatch):
+    if not isinstance(batch, tracking.TargetsBatch):
         raise ValueError(f"batch must be a TargetsBatch, got {type(batch).__name__}")
     loss_threshold = as_nonnegative(loss_threshold, "loss_threshold")
     err = batch.error[:, 1:].mean(axis=1)
@@ -205,21 +205,21 @@ def _first_update_traces(setup, labels) -> list:
     S = setup.sensor_array
     out = []
     for l, x0 in enumerate(setup.estimate0):
-        P = tr.kalman.predict(setup.cov0, setup.Q)
+        P = tracking.kalman.predict(setup.cov0, setup.Q)
         team = np.flatnonzero(labels == l)
         if team.size:
-            z = tr.euclidean_range(x0, S[team])  # any z: the covariance does not depend on it
-            _, P = tr.kalman.update(x0, P, S[team], z, setup.R, measurement="range")
+            z = tracking.euclidean_range(x0, S[team])  # any z: the covariance does not depend on it
+            _, P = tracking.kalman.update(x0, P, S[team], z, setup.R, measurement="range")
         out.append(float(np.trace(P)))
     return out
 
 
 @lru_cache(maxsize=4)
 def _code_treatment(n_seeds: int, seed: int) -> dict:
-    su = tr.LATER_MULTI_TARGET
+    su = tracking.LATER_MULTI_TARGET
     first = {}
-    for arithmetic in tr.code_logdet.ARITHMETICS:
-        picked, rounds = tr.code_logdet.logdet_rounds(su.sensors, su.estimate0, arithmetic)
+    for arithmetic in tracking.code_logdet.ARITHMETICS:
+        picked, rounds = tracking.code_logdet.logdet_rounds(su.sensors, su.estimate0, arithmetic)
         first[arithmetic] = {
             "picked": [np.flatnonzero(picked == l).tolist() for l in range(3)],
             "rounds": [np.flatnonzero(rounds == l).tolist() for l in range(3)],
@@ -368,7 +368,7 @@ def _later_comparison(n_seeds: int, seed: int, assignments: tuple) -> list:
     return comparison_rows({k: run_statistics(v) for k, v in runs.items()})
 
 
-def later_comparison(n_seeds: int = 200, seed: int = 0, assignments=tr.ASSIGNMENTS) -> list:
+def later_comparison(n_seeds: int = 200, seed: int = 0, assignments=tracking.ASSIGNMENTS) -> list:
     """Every assignment on the later experiment against the unique-pair greedy, per target and
     overall (:func:`comparison_rows` of :func:`later_runs`; cached).
 
@@ -395,8 +395,8 @@ def later_comparison(n_seeds: int = 200, seed: int = 0, assignments=tr.ASSIGNMEN
 @lru_cache(maxsize=4)
 def _network_runs(n_sensors, n_targets, n_scenes, steps, seed, assignments) -> dict:
     seeds = range(seed, seed + n_scenes)
-    scenes = [tr.network_scene(n_sensors, n_targets, steps=steps, seed=s) for s in seeds]
-    return tr.simulate_targets_scenes(scenes, list(assignments), seeds=seeds)
+    scenes = [tracking.network_scene(n_sensors, n_targets, steps=steps, seed=s) for s in seeds]
+    return tracking.simulate_targets_scenes(scenes, list(assignments), seeds=seeds)
 
 
 def network_runs(n_sensors: int = 200, n_targets: int = 50, n_scenes: int = 10,
@@ -418,12 +418,13 @@ def network_runs(n_sensors: int = 200, n_targets: int = 50, n_scenes: int = 10,
     steps = as_int(steps, "steps", 2)
     seed = as_int(seed, "seed", 0)
     assignments = _assignments_iv(assignments)
-    pairs = [a for a in assignments if a in tr.PAIR_ASSIGNMENTS]
+    pairs = [a for a in assignments if a in tracking.PAIR_ASSIGNMENTS]
     if pairs and n_sensors < 2 * n_targets:
         raise ValueError(f"assignments {pairs} need two sensors per target: n_sensors >= "
                          f"{2 * n_targets}")
     if "optimal-pairs" in assignments and (
-            tr.assigners.assignment_count(n_sensors, n_targets) > tr.assigners.MAX_ENUMERATED):
+            tracking.assigners.assignment_count(n_sensors, n_targets)
+            > tracking.assigners.MAX_ENUMERATED):
         raise ValueError(f"'optimal-pairs' at N = {n_sensors}, L = {n_targets} would solve a "
                          "branch and bound per step and run: leave it out of assignments")
     return _network_runs(n_sensors, n_targets, n_scenes, steps, seed, assignments)

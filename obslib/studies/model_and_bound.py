@@ -21,6 +21,7 @@ from ..observability import inverse_condition_numbers, inverse_condition_numbers
 from ..scenes import random_scene_batch
 
 __all__ = [
+    "NOTEBOOK",
     "Theorem1Audit",
     "theorem1_audit",
     "Theorem2Audit",
@@ -35,6 +36,9 @@ __all__ = [
     "SquaredRangeAudit",
     "squared_range_audit",
 ]
+
+#: The chapter of these studies.
+NOTEBOOK = "01_model_and_bound"
 
 #: Absolute slack allowed when comparing two floating-point evaluations of values in [0, 1].
 ATOL = 1e-12

@@ -1,12 +1,12 @@
 """Audits of the pair closed form (Theorems 4-5, Fig. 2) against SymPy and brute force (notebook
 02, claims of :mod:`obslib.claims.pair_closed_form`).
 
-The symbolic side lives in :mod:`obslib.symbolic` and the numerics in :mod:`obslib.pair_form`;
-this module compares them with :func:`obslib.pair_bounds` and :func:`obslib.pair_bound_polar`
-and packages the evidence that notebook ``02_pair_closed_form`` prints and the ledger judges.
-The steps of Theorem 5's proof are audited in :mod:`obslib.studies.theorem5_proof` and the Weyl
-step of Theorem 1 in :mod:`obslib.studies.weyl`. Every audit is a pure function of its arguments
-and is cached.
+The symbolic side lives in :mod:`obslib.symbolic` and the numerics in :mod:`obslib.pair_form`; this
+module compares them with :func:`obslib.pair_bounds` and :func:`obslib.pair_bound_polar` and
+packages the evidence that notebook ``02_pair_closed_form`` prints and the ledger judges. The
+derivatives of Theorem 5's proof are audited in :mod:`obslib.studies.theorem5_proof` and the Weyl
+step of Theorem 1 in :mod:`obslib.studies.weyl`. Every audit is a pure function of its arguments and
+is cached.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._validate import as_int, as_nonnegative, as_nonnegatives, as_positive, as_sequence
+from .._validate import as_int, as_nonnegative, as_positive, as_sequence
 from ..bounds import pair_bound_polar, pair_bounds
 from ..pair_form import (
     GridMax,
@@ -27,9 +27,13 @@ from ..pair_form import (
     maximising_alpha_closed,
 )
 
-__all__ = ["audit_ratios", "paper_grid", "Fig2Grid", "fig2_grids", "Theorem4Audit",
+__all__ = ["NOTEBOOK", "audit_ratios", "paper_grid", "Fig2Grid", "fig2_grids", "Theorem4Audit",
            "theorem4_audit", "PrintedMatrixAudit", "printed_matrix_audit", "Theorem5Audit",
-           "theorem5_audit", "alpha_star_thetas", "AlphaStarAudit", "alpha_star_audit"]
+           "theorem5_audit", "alpha_star_thetas", "AlphaStarAudit", "alpha_star_audit",
+           "DalphaMinimumAudit", "dalpha_minimum_audit"]
+
+#: The chapter of these studies.
+NOTEBOOK = "02_pair_closed_form"
 
 
 def audit_ratios(u_max: float, d_io: float, u_over_d_curves) -> tuple:
@@ -314,6 +318,16 @@ class Theorem5Audit:
     n_theta: int
 
 
+def _ratios_iv(u_over_d) -> tuple:
+    """The values of ``q = u_max / d_io`` of a Theorem 5 audit, a non-empty tuple of floats."""
+    if isinstance(u_over_d, np.ndarray):
+        u_over_d = u_over_d.tolist()
+    qs = tuple(as_nonnegative(q, "u_over_d") for q in as_sequence(u_over_d, "u_over_d"))
+    if not qs:
+        raise ValueError("u_over_d must list at least one value")
+    return qs
+
+
 def theorem5_audit(u_over_d: tuple, alpha_max: float, alpha_per_unit: int, theta_quarter: int,
                    n_rational_points: int = 50) -> Theorem5Audit:
     """Locate the maximum and the zeros of the bound on :func:`fine_grid` for each ``q``.
@@ -332,7 +346,7 @@ def theorem5_audit(u_over_d: tuple, alpha_max: float, alpha_per_unit: int, theta
     >>> a.symbolic_max_exact
     True
     """
-    return _theorem5_audit(as_nonnegatives(u_over_d, "u_over_d"),
+    return _theorem5_audit(_ratios_iv(u_over_d),
                            as_positive(alpha_max, "alpha_max"),
                            as_int(alpha_per_unit, "alpha_per_unit", 1),
                            as_int(theta_quarter, "theta_quarter", 1),
@@ -420,7 +434,7 @@ def alpha_star_audit(u_over_d: tuple, n_theta: int, n_rational_points: int = 50)
     >>> a.max_closed_vs_numeric < 1e-12, a.min_distance_from_1 > 0
     (True, True)
     """
-    return _alpha_star_audit(as_nonnegatives(u_over_d, "u_over_d"), as_int(n_theta, "n_theta", 1),
+    return _alpha_star_audit(_ratios_iv(u_over_d), as_int(n_theta, "n_theta", 1),
                              as_int(n_rational_points, "n_rational_points", 1))
 
 
@@ -459,3 +473,87 @@ def _alpha_star_audit(u_over_d, n_theta, n_rational_points):
     )
     at1 = symbolic.stationarity_alpha_at_1()
     return AlphaStarAudit(qs, int(theta.size), closed_vs_num, gap, min_dist, q0, root, str(at1))
+
+
+@dataclass(frozen=True)
+class DalphaMinimumAudit:
+    r"""Where :math:`\partial C/\partial\alpha` is smallest for a fixed :math:`\theta_{ji}`
+    (:func:`dalpha_minimum_audit`)."""
+
+    u_over_d: tuple
+    n_theta: int
+    n_cases: int  #: pairs (q, theta) examined
+    #: cases where the derivative's minimum lies at a finite alpha > 0, below its values at
+    #: alpha = 0 and at the largest alpha of the grid
+    n_interior_minimum: int
+    n_maximum_at_0: int  #: cases where the derivative is largest at alpha = 0
+    alpha_at_minimum: tuple  #: smallest and largest alpha of the minimum over the cases
+    minimum: tuple  #: smallest and largest value of the minimum (negative: C falls there)
+    #: smallest and largest ratio of the alpha of the minimum to the maximiser alpha* of C
+    beyond_alpha_star: tuple
+    #: largest error of the slope at 0 against its closed form sin(theta) / sqrt(1 + q^2)
+    slope_at_0_error: float
+    #: largest size of the derivative at the grid's largest alpha (it tends to 0)
+    at_largest_alpha: float
+    largest_alpha: float  #: the grid's largest alpha
+    bound_at_ends: float  #: largest bound C at alpha = 0 and at the largest alpha
+
+
+def dalpha_minimum_audit(u_over_d: tuple, n_theta: int) -> DalphaMinimumAudit:
+    r"""Locate the minimum over :math:`\alpha` of :math:`\partial C/\partial\alpha`
+    (:func:`obslib.pair_form.dbound_dalpha`) for fixed :math:`\theta_{ji}` and :math:`q`.
+
+    The proof of Theorem 5 says that for :math:`\theta_{ji} \ne 0, \pm\pi/2, \pi`,
+    :math:`\partial C/\partial\alpha` "also reaches its minimum at :math:`\alpha = 0` or
+    :math:`\alpha \to \infty`". For every ``q`` in ``u_over_d`` and the angles of
+    :func:`alpha_star_thetas` ``(n_theta)``, the derivative is evaluated on :math:`\alpha = 0`
+    and 4,001 points spaced evenly in :math:`\log\alpha` over :math:`[10^{-4}, 10^{4}]`, and
+    its minimum refined by a bounded scalar search between the grid's neighbours. Cached on the
+    arguments.
+
+    Examples
+    --------
+    >>> a = dalpha_minimum_audit((0.0, 1.0), n_theta=9)
+    >>> a.n_interior_minimum == a.n_cases, a.n_maximum_at_0 == a.n_cases
+    (True, True)
+    """
+    return _dalpha_minimum_audit(_ratios_iv(u_over_d), as_int(n_theta, "n_theta", 1))
+
+
+@lru_cache(maxsize=8)
+def _dalpha_minimum_audit(u_over_d, n_theta):
+    from scipy.optimize import minimize_scalar
+
+    from ..pair_form import dbound_dalpha, maximising_alpha
+
+    theta = alpha_star_thetas(n_theta)
+    grid = np.r_[0.0, np.geomspace(1e-4, 1e4, 4001)]
+    n_int = n_max0 = 0
+    where, lows, beyond = [], [], []
+    slope_err = tail = ends = 0.0
+    for q in u_over_d:
+        d = dbound_dalpha(grid[None, :], theta[:, None], q)  # (theta, alpha)
+        star = maximising_alpha(theta, q)
+        for k, th in enumerate(theta):
+            row = d[k]
+            j = int(np.argmin(row))
+            lo, hi = grid[max(j - 1, 0)], grid[min(j + 1, grid.size - 1)]
+            best = minimize_scalar(lambda a, th=th: float(dbound_dalpha(a, th, q)),
+                                   bounds=(lo, hi), method="bounded",
+                                   options={"xatol": 1e-10 * max(1.0, hi)})
+            a_min, v_min = (best.x, best.fun) if best.fun <= row[j] else (grid[j], row[j])
+            n_int += bool(0 < j < grid.size - 1 and v_min < min(row[0], row[-1]))
+            n_max0 += bool(row[0] >= row.max())
+            where.append(a_min)
+            lows.append(v_min)
+            beyond.append(a_min / star[k])
+            expected = abs(np.sin(th)) / np.sqrt(1 + q * q)
+            slope_err = max(slope_err, abs(row[0] - expected))
+            tail = max(tail, abs(row[-1]))
+            ends = max(ends, float(pair_bound_polar(grid[[0, -1]], th, q).max()))
+    return DalphaMinimumAudit(
+        tuple(u_over_d), int(theta.size), len(where), n_int, n_max0,
+        (float(min(where)), float(max(where))), (float(min(lows)), float(max(lows))),
+        (float(min(beyond)), float(max(beyond))), float(slope_err), float(tail),
+        float(grid[-1]), ends)
+

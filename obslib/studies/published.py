@@ -1,5 +1,6 @@
 """The numbers the paper publishes, in one place, for the studies and the ledger to compare with,
-and the history of the repository that holds the code of its simulations."""
+when one of ours counts as matching one of them, and the history of the repository that holds the
+code of its simulations."""
 
 from __future__ import annotations
 
@@ -7,9 +8,13 @@ import csv
 from functools import lru_cache
 from importlib import resources
 
+import numpy as np
+
+from .._validate import as_float_array, as_nonnegative, as_real
+
 __all__ = ["THEOREM7_PRINTED", "THEOREM7_PRINTED_WITNESS", "FIG8_PUBLISHED_L20",
-           "PUBLISHED_CIRCLE", "PUBLISHED_ADVERSARIAL", "CODE_URL_PRINTED", "CODE_REPOSITORY",
-           "CODE_ACCOUNT_PRINTED", "code_commits"]
+           "PUBLISHED_CIRCLE", "PUBLISHED_ADVERSARIAL", "FIGURE_TOLERANCE", "near_published",
+           "CODE_URL_PRINTED", "CODE_REPOSITORY", "CODE_ACCOUNT_PRINTED", "code_commits"]
 
 #: Values printed in the proof of Theorem 7 (0-based sensor indices).
 THEOREM7_PRINTED = {
@@ -38,6 +43,26 @@ PUBLISHED_CIRCLE = {
 
 #: Mean bound and pair changes over 314 transitions of the published Fig. 7 run.
 PUBLISHED_ADVERSARIAL = {"mean_bound": 0.79, "switches": 306, "transitions": 314}
+
+#: A published figure number counts as matched when ours is within this relative distance.
+FIGURE_TOLERANCE = 0.15
+
+
+def near_published(ours, published, rtol: float = FIGURE_TOLERANCE):
+    """Whether our value(s) lie within ``rtol`` (relative) of a published number; a published
+    zero must be matched exactly.
+
+    Examples
+    --------
+    >>> near_published([0.70, 0.60], 0.79).tolist()
+    [True, False]
+    """
+    ours = as_float_array(ours, "ours")
+    published, rtol = as_real(published, "published"), as_nonnegative(rtol, "rtol")
+    if published == 0:
+        return ours == 0
+    return np.abs(ours - published) <= rtol * abs(published)
+
 
 #: The address of the simulations' code printed in the paper's footnote (Sec. V), and the
 #: repository where that code and the saved runs of Figs. 4-7 are found today.

@@ -18,9 +18,9 @@ from functools import cache, lru_cache
 
 import numpy as np
 
-from .. import tracking as tr
+from .. import tracking
 from ..published_runs import RUN_NAMES, noise_sources, published_noise, published_run
-from .tracking import FIGURE_TOLERANCE
+from .published import FIGURE_TOLERANCE
 
 __all__ = [
     "REPLAY_FILLS",
@@ -47,7 +47,7 @@ def _run_name_iv(name) -> str:
     return name
 
 
-def replay_setup(name: str) -> tr.TrackingSetup:
+def replay_setup(name: str) -> tracking.TrackingSetup:
     """The experiments' setup of a published run (Sec. V-A: the circle; Sec. V-B: the adversary).
 
     Examples
@@ -62,7 +62,7 @@ def replay_setup(name: str) -> tr.TrackingSetup:
     ValueError: unknown published run 'spiral'; accepted names: ...
     """
     name = _run_name_iv(name)
-    return tr.PAPER_ADVERSARIAL if name == "adversarial" else tr.PAPER_CIRCLE
+    return tracking.PAPER_ADVERSARIAL if name == "adversarial" else tracking.PAPER_CIRCLE
 
 
 def _strategy(name: str) -> str:
@@ -86,7 +86,7 @@ def _replayable_steps(name: str) -> int:
     """
     if name != "fixed-pair":
         return published_run(name).steps
-    known = np.isfinite(published_noise()[:, list(tr.PAPER_CIRCLE.fixed_pair)]).all(axis=1)
+    known = np.isfinite(published_noise()[:, list(tracking.PAPER_CIRCLE.fixed_pair)]).all(axis=1)
     missing = np.flatnonzero(~known)
     return int(missing[0]) + 1 if missing.size else known.size
 
@@ -105,16 +105,16 @@ def _replay_pass(names: tuple, fills: tuple, steps: int) -> dict:
     # compare_replay of three runs 0.5 s -> 0.15 s.
     setup = replay_setup(names[0]).replace(steps=steps)
     tables = np.stack([_table(steps, f) for f in fills])
-    runs = tr.simulate_many({n: (setup, _strategy(n)) for n in names}, noise=tables)
+    runs = tracking.simulate_many({n: (setup, _strategy(n)) for n in names}, noise=tables)
     return {n: tuple(runs[n].run(i) for i in range(len(fills))) for n in names}
 
 
-def _replay(name: str, fill: float, steps: int) -> tr.TrackingResult:
+def _replay(name: str, fill: float, steps: int) -> tracking.TrackingResult:
     fills = REPLAY_FILLS if fill in REPLAY_FILLS else (fill,)  # compare_replay needs both
     return _replay_pass(_SAME_PASS.get(name, (name,)), fills, steps)[name][fills.index(fill)]
 
 
-def replay(name: str, fill: float = REPLAY_FILLS[0]) -> tr.TrackingResult:
+def replay(name: str, fill: float = REPLAY_FILLS[0]) -> tracking.TrackingResult:
     """A published run re-simulated with the published noise (Sec. V, Figs. 4-7).
 
     Parameters
@@ -328,7 +328,7 @@ def seed_typicality(n_seeds: int, first_seed: int = 0) -> dict:
         ``published`` (the logged mean bound), ``per_run`` (the seeds' mean bounds, read-only),
         ``percentile`` (share of seeds below the published value, in percent),
         ``at_least`` (share of seeds at or above it), ``within_tolerance`` (share of seeds within
-        :data:`~obslib.studies.tracking.FIGURE_TOLERANCE`, relative, of the published value),
+        :data:`~obslib.studies.published.FIGURE_TOLERANCE`, relative, of the published value),
         ``quantiles`` (5, 25, 50, 75, 95 %), ``switches`` (per seed, read-only).
 
     Examples
@@ -352,7 +352,7 @@ def seed_typicality(n_seeds: int, first_seed: int = 0) -> dict:
 def _seed_typicality(n_seeds: int, first_seed: int) -> dict:
     pub = float(published_run("adversarial").bound.mean())
     seeds = range(first_seed, first_seed + n_seeds)
-    b = tr.simulate_batch(tr.PAPER_ADVERSARIAL, "best-pair", seeds=seeds)
+    b = tracking.simulate_batch(tracking.PAPER_ADVERSARIAL, "best-pair", seeds=seeds)
     m = b.bound.mean(axis=1)
     sw = np.array(b.switches)
     m.flags.writeable = sw.flags.writeable = False

@@ -39,6 +39,7 @@ from ..submodularity import (
 from .published import THEOREM7_PRINTED, THEOREM7_PRINTED_WITNESS
 
 __all__ = [
+    "NOTEBOOK",
     "FIG3_TARGET",
     "FIG3_U_MAX",
     "FIG3_CASES",
@@ -58,6 +59,9 @@ __all__ = [
     "LowerBoundAudit",
     "lower_bound_audit",
 ]
+
+#: The chapter of these studies.
+NOTEBOOK = "04_submodularity"
 
 
 # ---------------------------------------------------------------------------------------------

@@ -1,11 +1,11 @@
-"""Audits of the steps of the proof of Theorem 5 (notebook 02): the derivatives of the pair
-bound in :math:`\theta` and in :math:`\alpha` against SymPy, and where the derivative in
-:math:`\alpha` is smallest.
+"""Audits of the derivatives in the proof of Theorem 5 (notebook 02): the derivatives of the pair
+bound in :math:`\theta` and in :math:`\alpha`, as SymPy computes them and as the paper prints
+them.
 
 The symbolic side lives in :mod:`obslib.symbolic`; the statement of Theorem 5 itself (the
-maximum on a fine grid, the maximiser :math:`\alpha^*`) is audited in
-:mod:`obslib.studies.pair_closed_form`. Every audit is a pure function of its arguments and is
-cached.
+maximum on a fine grid, the maximiser :math:`\alpha^*`, where the derivative in :math:`\alpha`
+is smallest) is audited in :mod:`obslib.studies.pair_closed_form`. Every audit is a pure function
+of its arguments and is cached.
 """
 
 from __future__ import annotations
@@ -15,12 +15,10 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._validate import as_int, as_nonnegatives
-from ..bounds import pair_bound_polar
-from .pair_closed_form import alpha_star_thetas
+from .._validate import as_int
 
 __all__ = ["ThetaDerivativeAudit", "theta_derivative_audit", "AlphaDerivativeAudit",
-           "alpha_derivative_audit", "DalphaMinimumAudit", "dalpha_minimum_audit"]
+           "alpha_derivative_audit"]
 
 
 @dataclass(frozen=True)
@@ -193,88 +191,3 @@ def _alpha_derivative_audit(n_rational_points, seed):
         closed_ok, num_ok, (min(ratios), max(ratios)), slope_err, min(slopes),
         (below, left, right), at1, vs_true, second,
     )
-
-
-@dataclass(frozen=True)
-class DalphaMinimumAudit:
-    r"""Where :math:`\partial C/\partial\alpha` is smallest for a fixed :math:`\theta_{ji}`
-    (:func:`dalpha_minimum_audit`)."""
-
-    u_over_d: tuple
-    n_theta: int
-    n_cases: int  #: pairs (q, theta) examined
-    #: cases where the derivative's minimum lies at a finite alpha > 0, below its values at
-    #: alpha = 0 and at the largest alpha of the grid
-    n_interior_minimum: int
-    n_maximum_at_0: int  #: cases where the derivative is largest at alpha = 0
-    alpha_at_minimum: tuple  #: smallest and largest alpha of the minimum over the cases
-    minimum: tuple  #: smallest and largest value of the minimum (negative: C falls there)
-    #: smallest and largest ratio of the alpha of the minimum to the maximiser alpha* of C
-    beyond_alpha_star: tuple
-    #: largest error of the slope at 0 against its closed form sin(theta) / sqrt(1 + q^2)
-    slope_at_0_error: float
-    #: largest size of the derivative at the grid's largest alpha (it tends to 0)
-    at_largest_alpha: float
-    largest_alpha: float  #: the grid's largest alpha
-    bound_at_ends: float  #: largest bound C at alpha = 0 and at the largest alpha
-
-
-def dalpha_minimum_audit(u_over_d: tuple, n_theta: int) -> DalphaMinimumAudit:
-    r"""Locate the minimum over :math:`\alpha` of :math:`\partial C/\partial\alpha`
-    (:func:`obslib.pair_form.dbound_dalpha`) for fixed :math:`\theta_{ji}` and :math:`q`.
-
-    The proof of Theorem 5 says that for :math:`\theta_{ji} \ne 0, \pm\pi/2, \pi`,
-    :math:`\partial C/\partial\alpha` "also reaches its minimum at :math:`\alpha = 0` or
-    :math:`\alpha \to \infty`". For every ``q`` in ``u_over_d`` and the angles of
-    :func:`~obslib.studies.pair_closed_form.alpha_star_thetas` ``(n_theta)``, the derivative is
-    evaluated on :math:`\alpha = 0` and 4,001 points spaced evenly in :math:`\log\alpha` over
-    :math:`[10^{-4}, 10^{4}]`, and its minimum refined by a bounded scalar search between the
-    grid's neighbours. Cached on the arguments.
-
-    Examples
-    --------
-    >>> a = dalpha_minimum_audit((0.0, 1.0), n_theta=9)
-    >>> a.n_interior_minimum == a.n_cases, a.n_maximum_at_0 == a.n_cases
-    (True, True)
-    """
-    return _dalpha_minimum_audit(as_nonnegatives(u_over_d, "u_over_d"),
-                                 as_int(n_theta, "n_theta", 1))
-
-
-@lru_cache(maxsize=8)
-def _dalpha_minimum_audit(u_over_d, n_theta):
-    from scipy.optimize import minimize_scalar
-
-    from ..pair_form import dbound_dalpha, maximising_alpha
-
-    theta = alpha_star_thetas(n_theta)
-    grid = np.r_[0.0, np.geomspace(1e-4, 1e4, 4001)]
-    n_int = n_max0 = 0
-    where, lows, beyond = [], [], []
-    slope_err = tail = ends = 0.0
-    for q in u_over_d:
-        d = dbound_dalpha(grid[None, :], theta[:, None], q)  # (theta, alpha)
-        star = maximising_alpha(theta, q)
-        for k, th in enumerate(theta):
-            row = d[k]
-            j = int(np.argmin(row))
-            lo, hi = grid[max(j - 1, 0)], grid[min(j + 1, grid.size - 1)]
-            best = minimize_scalar(lambda a, th=th: float(dbound_dalpha(a, th, q)),
-                                   bounds=(lo, hi), method="bounded",
-                                   options={"xatol": 1e-10 * max(1.0, hi)})
-            a_min, v_min = (best.x, best.fun) if best.fun <= row[j] else (grid[j], row[j])
-            n_int += bool(0 < j < grid.size - 1 and v_min < min(row[0], row[-1]))
-            n_max0 += bool(row[0] >= row.max())
-            where.append(a_min)
-            lows.append(v_min)
-            beyond.append(a_min / star[k])
-            expected = abs(np.sin(th)) / np.sqrt(1 + q * q)
-            slope_err = max(slope_err, abs(row[0] - expected))
-            tail = max(tail, abs(row[-1]))
-            ends = max(ends, float(pair_bound_polar(grid[[0, -1]], th, q).max()))
-    return DalphaMinimumAudit(
-        tuple(u_over_d), int(theta.size), len(where), n_int, n_max0,
-        (float(min(where)), float(max(where))), (float(min(lows)), float(max(lows))),
-        (float(min(beyond)), float(max(beyond))), float(slope_err), float(tail),
-        float(grid[-1]), ends)
-

@@ -164,11 +164,11 @@ def evaluation_counts(sizes: dict, seed: int = 0) -> dict:
     for v in sizes.values():
         as_ints(v, "sizes", 2)
     seed = as_int(seed, "seed", 0)
-    from .. import assignment as a
+    from ..assignment import greedy_pair_assignment, relaxed_pair_assignment
 
     algos = {
-        "greedy (geometry)": lambda S, T: a.greedy_pair_assignment(sensors=S, targets=T, u_max=1.0),
-        "relaxed matching": lambda S, T: a.relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0),
+        "greedy (geometry)": lambda S, T: greedy_pair_assignment(sensors=S, targets=T, u_max=1.0),
+        "relaxed matching": lambda S, T: relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0),
     }
     unknown = set(sizes) - set(algos) - {"literal Algorithm 1"}
     if unknown:
@@ -293,17 +293,22 @@ def bench_scaling(seed: int = 0, repeat: int = 3) -> dict:
     >>> bench_scaling()  # doctest: +SKIP
     """
     seed, repeat = as_int(seed, "seed", 0), as_int(repeat, "repeat", 1)
-    from .. import assignment as a
+    from ..assignment import (
+        greedy_pair_assignment,
+        greedy_pair_assignment_literal,
+        optimal_pair_assignment,
+        relaxed_pair_assignment,
+    )
     from ..bounds import pair_bounds
 
     algos = {
-        "greedy (geometry)": lambda S, T: a.greedy_pair_assignment(sensors=S, targets=T, u_max=1.0),
-        "greedy (from W)": lambda S, T: a.greedy_pair_assignment(pair_bounds(S, T, 1.0)),
-        "literal Algorithm 1": lambda S, T: a.greedy_pair_assignment_literal(
+        "greedy (geometry)": lambda S, T: greedy_pair_assignment(sensors=S, targets=T, u_max=1.0),
+        "greedy (from W)": lambda S, T: greedy_pair_assignment(pair_bounds(S, T, 1.0)),
+        "literal Algorithm 1": lambda S, T: greedy_pair_assignment_literal(
             sensors=S, targets=T, u_max=1.0
         ),
-        "relaxed matching": lambda S, T: a.relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0),
-        "exact optimum": lambda S, T: a.optimal_pair_assignment(pair_bounds(S, T, 1.0)),
+        "relaxed matching": lambda S, T: relaxed_pair_assignment(sensors=S, targets=T, u_max=1.0),
+        "exact optimum": lambda S, T: optimal_pair_assignment(pair_bounds(S, T, 1.0)),
     }
     warm = np.random.default_rng(seed).uniform(0, 100, (8, 2))
     out = {}
@@ -361,11 +366,11 @@ def bench_criteria(n_timing: int = 1000, seed: int = 0, repeat: int = 3) -> dict
     seed = as_int(seed, "seed", 0)
     import timeit
 
-    from .. import tracking as tr
-    from ..studies import criteria as cs
+    from ..studies.criteria import SCORES, criterion_scores
+    from ..tracking import PAPER_CIRCLE
 
     rng = np.random.default_rng(seed)
-    S = tr.PAPER_CIRCLE.sensor_array
+    S = PAPER_CIRCLE.sensor_array
     X = rng.uniform(-1.0, 5.0, size=(n_timing, 2))
     A = rng.normal(0.0, 0.3, size=(n_timing, 2, 2))
     C = A @ A.transpose(0, 2, 1) + 0.1 * np.eye(2)
@@ -373,10 +378,10 @@ def bench_criteria(n_timing: int = 1000, seed: int = 0, repeat: int = 3) -> dict
     Q = R = 0.5 * np.eye(2)
     n_pairs = len(S) * (len(S) - 1) // 2
     per_pair, per_decision = {}, {}
-    with _progress(len(cs.SCORES), "criteria") as bar:
-        for name in cs.SCORES:
+    with _progress(len(SCORES), "criteria") as bar:
+        for name in SCORES:
             def score(b=n_timing, name=name):
-                return cs.criterion_scores(name, S, X[:b], C[:b], Q, R, 3.0, control=U[:b])
+                return criterion_scores(name, S, X[:b], C[:b], Q, R, 3.0, control=U[:b])
             bar.set_postfix_str(name)
             score(1)  # first-call costs are not timed
             t_batch = min(timeit.repeat(score, number=5, repeat=repeat)) / 5

@@ -52,7 +52,8 @@ is sensor ``i``'s noise at step ``k``, whichever strategy asks for it and whatev
 serves (:func:`noise_table`).
 
 The drawings are in :mod:`obslib.viz.tracking` and the studies of the paper's claims in
-:mod:`obslib.studies.tracking`.
+:mod:`obslib.studies.two_sensors_tracking` (Section V-A) and
+:mod:`obslib.studies.adversarial_target` (Section V-B).
 """
 
 from __future__ import annotations

@@ -24,7 +24,8 @@ __all__ = ["ADVERSARY_LABELS", "bound_landscapes", "plot_landscapes", "plot_fig7
            "plot_fig7_replayed", "plot_against_strategies", "plot_run_means",
            "plot_adversaries"]
 
-#: How the chapter names the adversaries of :func:`obslib.studies.tracking.adversary_variants`.
+#: How the chapter names the adversaries of
+#: :func:`obslib.studies.adversarial_target.adversary_variants`.
 ADVERSARY_LABELS = {"paper": "the paper's", "next-pair": "knowing the next pair",
                     "disc": "the whole disc", "disc, next-pair": "both"}
 

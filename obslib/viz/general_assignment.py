@@ -11,7 +11,7 @@ import numpy as np
 
 from .._validate import as_float_array, as_instance, as_int, as_mapping
 from ..formatting import setting
-from ..studies.teams import Evenness
+from ..studies.general_assignment import Evenness
 from ._checks import as_series
 from .style import OKABE_ITO, SEQUENTIAL, look
 
@@ -69,11 +69,11 @@ def plot_fig9(counts, N_values):
     and standard deviation over the trials (the paper's curve) and the other targets' means.
 
     ``counts`` has shape ``(len(N_values), trials, L)``
-    (:func:`obslib.studies.teams.fig9_sweep`).
+    (:func:`obslib.studies.general_assignment.fig9_sweep`).
 
     Examples
     --------
-    >>> from obslib.studies.teams import fig9_sweep
+    >>> from obslib.studies.general_assignment import fig9_sweep
     >>> counts = fig9_sweep([4, 6], trials=2, seed=0, n_targets=2)
     >>> plot_fig9(counts, [4, 6]).axes[0].get_xlabel()
     '$N/L$ (sensors per target)'
@@ -104,11 +104,11 @@ def plot_evenness(even, N_values, n_targets: int, text=None):
     """How evenly the greedy spreads the sensors: the spread of the counts within a trial
     against :math:`N/L`, for the greedy with the prior, for a uniformly random assignment and,
     when ``text`` is given, for the greedy with the measure the text of Section V-D names (an
-    :class:`~obslib.studies.teams.Evenness` of its counts, with the control row).
+    :class:`~obslib.studies.general_assignment.Evenness` of its counts, with the control row).
 
     Examples
     --------
-    >>> from obslib.studies.teams import evenness, fig9_sweep
+    >>> from obslib.studies.general_assignment import evenness, fig9_sweep
     >>> counts = fig9_sweep([4, 6], trials=2, seed=0, n_targets=2)
     >>> fig = plot_evenness(evenness(counts, [4, 6], 2), [4, 6], 2)
     >>> fig.axes[0].get_ylabel()

@@ -8,7 +8,7 @@ import pytest
 
 from obslib import tracking as tr
 from obslib._validate import ArgumentTypeError
-from obslib.studies import tracking as study
+from obslib.studies import adversarial_target, two_sensors_tracking
 
 from .filterpy_reference import simulate as filterpy_simulate
 
@@ -58,7 +58,7 @@ def test_simulate_many_runs_do_not_depend_on_the_company():
     eu = setup.replace(metric="euclidean")
     arms = {s: (setup, s) for s in tr.STRATEGIES}
     arms.update({("eu", s): (eu, s) for s in tr.STRATEGIES})
-    arms.update({("partner", j): a for j, a in study.partner_arms(setup).items()})
+    arms.update({("partner", j): a for j, a in two_sensors_tracking.partner_arms(setup).items()})
     many = tr.simulate_many(arms, seeds=[4, 5, 6])
     assert many[("partner", 0)] is many["fixed-pair"]  # the same arm: fixed pair (s2, s1)
     for key, (su, s) in arms.items():
@@ -78,7 +78,7 @@ def test_simulate_many_runs_do_not_depend_on_the_company():
 def test_simulate_many_adversaries_equal_filterpy_runs():
     """Arms with different adversaries and control sets in one call, against simulate."""
     setup = ADV.replace(steps=80)
-    variants = study.adversary_variants(setup, 3, 24)
+    variants = adversarial_target.adversary_variants(setup, 3, 24)
     many = tr.simulate_many({k: (v, "best-pair") for k, v in variants.items()}, seeds=[1, 2])
     for k, v in variants.items():
         alone = tr.simulate_batch(v, "best-pair", seeds=[1, 2])

@@ -5,12 +5,11 @@ import pytest
 from matplotlib.colors import to_rgb
 
 from obslib import measures, tracking
-from obslib.studies import criteria as cs
 from obslib.viz import style
 
 
 def test_every_strategy_and_measure_has_a_look():
-    names = [*tracking.STRATEGIES, *tracking.CRITERIA, *cs.PAPER_STRATEGIES, *measures.MEASURES]
+    names = [*tracking.STRATEGIES, *tracking.CRITERIA, *measures.MEASURES]
     for name in names:
         assert isinstance(style.look(name), style.Look), name
 

@@ -1,55 +1,49 @@
-"""Claims of Section V-A (two sensors tracking a target, Figs. 4-6; notebook 05) and
-Section V-B (the adversarial target, Fig. 7; notebook 06), and the findings about the numbers
-of their published runs.
+"""Claims of Section V-A (two sensors tracking a target, Figs. 4-6; notebook 05), and the findings
+about the numbers of its published run.
 
 Every check re-runs the experiments of :mod:`obslib.tracking` with the parameters of its notebook
 (Monte Carlo sizes shrink in the ``quick`` profile) through the cached study functions of
-:mod:`obslib.studies.tracking`, which the chapters call too: a number the ledger states is the
-number the chapter shows.
+:mod:`obslib.studies.two_sensors_tracking`, which the chapter calls too: a number the ledger
+states is the number the chapter shows.
 
 The verdict rules are fixed in the code before the evidence: see each check's docstring.
 """
 
 from __future__ import annotations
 
-import numpy as np
-
-from .. import tracking as tr
+from .. import tracking
 from ..formatting import count, fixed, listing, number, percent, setting
-from ..studies import replay as rp
-from ..studies import tracking as study
-from ..studies.published import PUBLISHED_ADVERSARIAL, PUBLISHED_CIRCLE
-from ..studies.unchecked import NOTEBOOK as UNCHECKED
+from ..studies import replay
+from ..studies.published import FIGURE_TOLERANCE, PUBLISHED_CIRCLE
+from ..studies.two_sensors_tracking import (
+    K50_WINDOW,
+    NOTEBOOK,
+    best_partners,
+    circle_runs,
+    circle_speed,
+    correlations,
+    fixed_pair_typicality,
+    hot_windows,
+    least_run_wins,
+    partner_summary,
+    window_rates,
+)
 from ._ledger import Finding, Table, claim
-
-NB5 = "05_two_sensors_tracking"
-NB6 = "06_adversarial_target"
-
-#: A published figure number counts as matched when ours is within this relative distance.
-FIGURE_TOLERANCE = study.FIGURE_TOLERANCE
-
-#: Transitions around k = 50 where the paper says the best pair "changes frequently".
-K50_WINDOW = study.K50_WINDOW
 
 #: The strategies of Section V-A as the paper numbers them.
 STRATEGY_NAMES = {"best-pair": "strategy (1)", "best-partner": "strategy (2)",
                   "fixed-pair": "strategy (3)"}
 
 
-def circle_setup(p: dict) -> tr.TrackingSetup:
+def circle_setup(p: dict) -> tracking.TrackingSetup:
     """The circle experiment of notebook 05 with the parameters ``p``."""
-    return tr.setup_from_params(tr.PAPER_CIRCLE, p)
-
-
-def adversarial_setup(p: dict) -> tr.TrackingSetup:
-    """The adversarial experiment of notebook 06 with the parameters ``p``."""
-    return tr.setup_from_params(tr.PAPER_ADVERSARIAL, p)
+    return tracking.setup_from_params(tracking.PAPER_CIRCLE, p)
 
 
 def _circle(p: dict) -> dict:
-    """The Monte Carlo runs of notebook 05 (cached in :func:`obslib.studies.tracking.circle_runs`,
-    shared with the chapter)."""
-    return study.circle_runs(circle_setup(p), p["n_seeds"], p["seed"])
+    """The Monte Carlo runs of notebook 05 (cached in
+    :func:`obslib.studies.two_sensors_tracking.circle_runs`, shared with the chapter)."""
+    return circle_runs(circle_setup(p), p["n_seeds"], p["seed"])
 
 
 # ---------------------------------------------------------------------------------------------
@@ -71,8 +65,16 @@ def printed_match(value: float, printed: float, key: str) -> bool:
     return abs(float(value) - float(printed)) <= 0.5 * 10.0 ** -PRINTED_DECIMALS[key] + 1e-12
 
 
-def _printed(key: str, value: float) -> str:
-    """A published number with the decimals the figure data print it with."""
+def printed_number(key: str, value: float) -> str:
+    """A published number with the decimals the figure data print it with.
+
+    Parameters
+    ----------
+    key : str
+        The quantity (a key of :data:`PRINTED_DECIMALS`).
+    value : float
+        Its value.
+    """
     return fixed(value, PRINTED_DECIMALS[key])
 
 
@@ -91,15 +93,15 @@ def _ours(key: str, value: float) -> str:
     "strategy 2) of 314; mean bound 0.73, 0.49, 0.27, mean error 0.16, 0.19, 0.22 and mean "
     r"$\operatorname{tr}\Sigma$ 0.073, 0.140, 0.217 for strategies 1, 2, 3.",
     paper="Figure data of the published run (the data saved with the authors' figures).",
-    notebook=NB5,
+    notebook=NOTEBOOK,
 )
 def _fig6_data(p: dict) -> Finding:
     """Strategies (1) and (2) are replayed with the published noise
-    (:func:`obslib.studies.replay.compare_replay`), with the experiments' model as the authors'
-    code runs it; strategy (3) cannot be replayed beyond step 1 (its sensor s1 was measured by
-    no other run), so its four numbers are compared with our ``n_seeds`` runs of it
-    (:func:`obslib.studies.tracking.fixed_pair_typicality`; a run's numbers average all its
-    steps, as the figure data do).
+    (:func:`obslib.studies.replay.compare_replay`), with the experiments' model as the authors' code
+    runs it; strategy (3) cannot be replayed beyond step 1 (its sensor s1 was measured by no other
+    run), so its four numbers are compared with our ``n_seeds`` runs of it
+    (:func:`obslib.studies.two_sensors_tracking.fixed_pair_typicality`; a run's numbers average all
+    its steps, as the figure data do).
 
     agrees: the replays of strategies (1) and (2) match every logged number to the log's
     rounding with the logged pairs, give their eight printed numbers at the printed precision
@@ -110,17 +112,17 @@ def _fig6_data(p: dict) -> Finding:
     """
     mc = _circle(p)["mc"]
     replays = {}
-    for name in tr.STRATEGIES[:2]:
-        c, summ = rp.compare_replay(name), rp.replay(name).summary()
+    for name in tracking.STRATEGIES[:2]:
+        c, summ = replay.compare_replay(name), replay.replay(name).summary()
         printed = {k: {"published": v, "replay": float(summ[k]),
                        "printed_match": printed_match(summ[k], v, k)}
                    for k, v in PUBLISHED_CIRCLE[name].items()}
         replays[name] = {"matches_log": c.matches, "largest_abs_diff": c.largest,
                          "n_values": c.total_values, "pair_mismatches": c.pair_mismatches,
-                         "printed": printed, "checks": rp.independent_checks(name)}
+                         "printed": printed, "checks": replay.independent_checks(name)}
     replay_ok = all(d["matches_log"] and all(v["printed_match"] for v in d["printed"].values())
                     for d in replays.values())
-    t3 = study.fixed_pair_typicality(mc["fixed-pair"])
+    t3 = fixed_pair_typicality(mc["fixed-pair"])
     share = t3["share_like"]
     typical = share >= TYPICAL_SHARE
     status = "agrees" if replay_ok and typical else "differs"
@@ -150,12 +152,13 @@ def _fig6_data(p: dict) -> Finding:
     rows = []
     for k, text in labels.items():
         row = [text]
-        for name in tr.STRATEGIES[:2]:
+        for name in tracking.STRATEGIES[:2]:
             d = replays[name]["printed"][k]
-            row += [_printed(k, d["published"]), _ours(k, d["replay"])]
-        row += [_printed(k, PUBLISHED_CIRCLE["fixed-pair"][k]), _ours(k, t3["median"][k])]
+            row += [printed_number(k, d["published"]), _ours(k, d["replay"])]
+        row += [printed_number(k, PUBLISHED_CIRCLE["fixed-pair"][k]), _ours(k, t3["median"][k])]
         rows.append(row)
-    ev = {"replays": replays, "fixed_pair_replayable_steps": rp.compare_replay("fixed-pair").steps,
+    ev = {"replays": replays,
+          "fixed_pair_replayable_steps": replay.compare_replay("fixed-pair").steps,
           "fixed_pair": {"share_like_published": share, "median": t3["median"],
                          "percentile_of_logged": t3["percentile"], "n_seeds": p["n_seeds"],
                          "typical_share": TYPICAL_SHARE},
@@ -181,7 +184,7 @@ def _fig6_data(p: dict) -> Finding:
     r"$\operatorname{tr}\Sigma$ than strategies (2) and (3) almost all times.",
     paper=r"“has lower $\epsilon$ and trace of covariance almost all times” (one run).",
     quote=r"has lower $\epsilon$ and trace of covariance almost all times.",
-    notebook=NB5,
+    notebook=NOTEBOOK,
 )
 def _fig6_best_pair(p: dict) -> Finding:
     """Monte Carlo over ``n_seeds`` common-noise realisations (steps 2.., step 1 is identical).
@@ -190,9 +193,9 @@ def _fig6_best_pair(p: dict) -> Finding:
     in >= 95 % of runs AND its Monte Carlo mean is lower at >= 90 % of steps ("almost all
     times") for error and trace against both; partly: only the first; refuted: not even that.
     """
-    cmp = tr.compare_strategies(_circle(p)["mc"])
+    cmp = tracking.compare_strategies(_circle(p)["mc"])
     w = cmp["wins"]
-    least_runs = study.least_run_wins(cmp)
+    least_runs = least_run_wins(cmp)
     step_keys = ("error_stepmean", "trace_stepmean")
     least_steps = min(w[o][k] for o in w for k in step_keys)
     weakest = min(((o, k) for o in w for k in step_keys), key=lambda ok: w[ok[0]][ok[1]])
@@ -218,8 +221,9 @@ def _fig6_best_pair(p: dict) -> Finding:
     n = number(n)
     st = cmp["strategies"]
     rows = [
-        ("mean error", *(number(st[s]["mean_error"]) for s in tr.STRATEGIES)),
-        (r"mean $\operatorname{tr}\Sigma$", *(number(st[s]["mean_trace"]) for s in tr.STRATEGIES)),
+        ("mean error", *(number(st[s]["mean_error"]) for s in tracking.STRATEGIES)),
+        (r"mean $\operatorname{tr}\Sigma$",
+         *(number(st[s]["mean_trace"]) for s in tracking.STRATEGIES)),
     ]
     labels = {
         "run_error": "runs where (1) has the lower mean error",
@@ -250,17 +254,18 @@ def _fig6_best_pair(p: dict) -> Finding:
     paper=r"“the first strategy maintains a higher $C^{-1}$ lower bound”.",
     quote=r"We observe that the first strategy maintains a higher "
     r"$\underline{C}^{-1}(O_{i,j}(\hat{o},u_{o,\max}))$",
-    notebook=NB5,
+    notebook=NOTEBOOK,
 )
 def _fig6_higher_bound(p: dict) -> Finding:
     """reproduced: strategy 1's Monte Carlo mean bound is higher at >= 90 % of steps against both
     others; partly: higher on average over the run; refuted otherwise."""
     mc = _circle(p)["mc"]
     b1 = mc["best-pair"].bound[:, 1:]
-    frac = {o: float(tr.clearly_lower(mc[o].bound[:, 1:].mean(0), b1.mean(0)).mean())
-            for o in tr.STRATEGIES[1:]}
-    point = {o: float(tr.clearly_lower(mc[o].bound[:, 1:], b1).mean()) for o in tr.STRATEGIES[1:]}
-    avg = {o: bool(b1.mean() > mc[o].bound[:, 1:].mean()) for o in tr.STRATEGIES[1:]}
+    frac = {o: float(tracking.clearly_lower(mc[o].bound[:, 1:].mean(0), b1.mean(0)).mean())
+            for o in tracking.STRATEGIES[1:]}
+    point = {o: float(tracking.clearly_lower(mc[o].bound[:, 1:], b1).mean())
+             for o in tracking.STRATEGIES[1:]}
+    avg = {o: bool(b1.mean() > mc[o].bound[:, 1:].mean()) for o in tracking.STRATEGIES[1:]}
     least = min(frac.values())
     if least >= 0.9:
         status = "reproduced"
@@ -307,7 +312,7 @@ CORRELATION_LEVEL = -0.1
     quote=r"Note that in all three cases, higher "
     r"$\underline{C}^{-1}(O_{i,j}(\hat{o},u_{o,\max}))$ correlates with lower $\epsilon$ and "
     r"$\mathrm{trace}(\Sigma)$",
-    notebook=NB5,
+    notebook=NOTEBOOK,
 )
 def _fig6_correlation(p: dict) -> Finding:
     """Spearman correlation over time within each run, median over seeds. A strategy counts when
@@ -315,7 +320,7 @@ def _fig6_correlation(p: dict) -> Finding:
     reproduced: all three; partly: one or two; refuted: none. The correlation of the per-step
     means pooled over the three strategies, and the same with the Euclidean (geometry-only)
     bound, are in the evidence."""
-    corr = study.correlations(_circle(p)["mc"])
+    corr = correlations(_circle(p)["mc"])
     med = corr["own"]
     holds = {s: d["error"] <= CORRELATION_LEVEL and d["trace"] <= CORRELATION_LEVEL
              for s, d in med.items()}
@@ -357,7 +362,7 @@ def _fig6_correlation(p: dict) -> Finding:
     statement="Around $k = 50$ the best pair changes frequently.",
     paper="“Around $k=50$, the best pair changes frequently”.",
     quote=r"Around $k=50$, the best pair changes frequently",
-    notebook=NB5,
+    notebook=NOTEBOOK,
 )
 def _fig5_k50(p: dict) -> Finding:
     """Switch rate of strategy 1 over the transitions in k = 30..70 against the rest of the run,
@@ -366,11 +371,11 @@ def _fig5_k50(p: dict) -> Finding:
     the single run; partly: in one of them; refuted: neither."""
     best = _circle(p)["mc"]["best-pair"]
     lo, hi = K50_WINDOW
-    rate = tr.switch_rate(best)
+    rate = tracking.switch_rate(best)
     one = best.run(0).switched
-    (mw, mr), (sw_, sr) = study.window_rates(rate, K50_WINDOW), study.window_rates(one, K50_WINDOW)
+    (mw, mr), (sw_, sr) = window_rates(rate, K50_WINDOW), window_rates(one, K50_WINDOW)
     ok_mc, ok_one = mw >= 0.5 and mw > mr, sw_ >= 0.5 and sw_ > sr
-    spans = [list(ab) for ab in study.hot_windows(rate, K50_WINDOW, mw)]
+    spans = [list(ab) for ab in hot_windows(rate, K50_WINDOW, mw)]
     hot = listing([f"{a}" if a == b else f"{a} to {b}" for a, b in spans]) if spans else ""
     status = "reproduced" if ok_mc and ok_one else ("partly" if ok_mc or ok_one else "refuted")
     window = f"$k$ = {lo} to {hi}"
@@ -406,14 +411,14 @@ def _fig5_k50(p: dict) -> Finding:
     "average”.",
     quote=r"We chose $s_1$ since it gives the best performance amongst all other sensors, on an "
     r"average, for the circular trajectory.",
-    notebook=NB5,
+    notebook=NOTEBOOK,
 )
 def _s1_partner(p: dict) -> Finding:
     """Strategy (3) with every partner of s2 over ``n_seeds`` seeds (steps 2 to 315). reproduced:
     s1 has the lowest mean trace AND the lowest mean error; partly: lowest in at least one of
     mean trace, mean error, median run error, share of lost runs; refuted: none."""
-    ps = study.partner_summary(_circle(p)["partners"])
-    best = study.best_partners(ps)
+    ps = partner_summary(_circle(p)["partners"])
+    best = best_partners(ps)
     s1 = 0
     words = {"mean_trace": r"mean $\operatorname{tr}\Sigma$", "mean_error": "mean error",
              "median_error": "median run error", "lost": "share of lost runs"}
@@ -459,14 +464,14 @@ def _best_pair_rules(mc: dict) -> dict:
     """The rules of ``fig6-best-pair`` and ``fig6-higher-bound`` on one Monte Carlo: strategy
     (1)'s least share of won runs and of won steps (error and trace), of steps with the higher
     mean bound, and the two statuses they give."""
-    cmp = tr.compare_strategies(mc)
+    cmp = tracking.compare_strategies(mc)
     w = cmp["wins"]
-    runs = study.least_run_wins(cmp)
+    runs = least_run_wins(cmp)
     steps = min(w[o][k] for o in w for k in ("error_stepmean", "trace_stepmean"))
     b1 = mc["best-pair"].bound[:, 1:]
-    higher = min(float(tr.clearly_lower(mc[o].bound[:, 1:].mean(0), b1.mean(0)).mean())
-                 for o in tr.STRATEGIES[1:])
-    on_average = all(b1.mean() > mc[o].bound[:, 1:].mean() for o in tr.STRATEGIES[1:])
+    higher = min(float(tracking.clearly_lower(mc[o].bound[:, 1:].mean(0), b1.mean(0)).mean())
+                 for o in tracking.STRATEGIES[1:])
+    on_average = all(b1.mean() > mc[o].bound[:, 1:].mean() for o in tracking.STRATEGIES[1:])
     return {
         "run_wins": runs, "step_wins": steps, "higher_bound_steps": higher,
         "best_pair": ("reproduced" if runs >= 0.95 and steps >= 0.9 else
@@ -487,13 +492,13 @@ def _best_pair_rules(mc: dict) -> dict:
     r"$u_{o,\max} = 3$, the value the sensors' bound uses.",
     paper=r"$u_{o,\max} = 3$, without the target's speed or the unit of time.",
     quote=r"The target follows a circular trajectory with $u_{o,\max}=3$.",
-    notebook=NB5,
+    notebook=NOTEBOOK,
 )
 def _umax_speed(p: dict) -> Finding:
     """The target's actual speed is the chord it travels per step
-    (:func:`obslib.studies.tracking.circle_speed`: radius 3, 0.02 rad per step). The strategy
-    comparison of ``fig6-best-pair`` and ``fig6-higher-bound`` is rerun over the same seeds with
-    ``u_max`` equal to that speed.
+    (:func:`obslib.studies.two_sensors_tracking.circle_speed`: radius 3, 0.02 rad per step). The
+    strategy comparison of ``fig6-best-pair`` and ``fig6-higher-bound`` is rerun over the same seeds
+    with ``u_max`` equal to that speed.
 
     reproduced: ``u_max`` bounds the speed and the two comparisons reach the same verdicts with
     the true speed in the bound; partly: it bounds the speed but a verdict changes with the true
@@ -501,11 +506,11 @@ def _umax_speed(p: dict) -> Finding:
     loose the bound is (``u_max`` over the speed, loose above :data:`LOOSE_FACTOR`) is stated, and
     does not decide the verdict: a bound may be loose."""
     setup = circle_setup(p)
-    speed = study.circle_speed(setup)
+    speed = circle_speed(setup)
     ratio = setup.u_max / speed
     given = _best_pair_rules(_circle(p)["mc"])
-    true = _best_pair_rules(study.circle_runs(setup.replace(u_max=speed), p["n_seeds"],
-                                              p["seed"])["mc"])
+    true = _best_pair_rules(circle_runs(setup.replace(u_max=speed), p["n_seeds"],
+                                        p["seed"])["mc"])
     same = all(given[k] == true[k] for k in ("best_pair", "higher_bound"))
     if ratio < 1:
         status = "refuted"
@@ -534,8 +539,8 @@ def _umax_speed(p: dict) -> Finding:
         ("steps where (1)'s mean bound is higher (least)", percent(given["higher_bound_steps"]),
          percent(true["higher_bound_steps"])),
         ("mean error of strategies (1), (2) and (3)",
-         ", ".join(number(given["mean_error"][s]) for s in tr.STRATEGIES),
-         ", ".join(number(true["mean_error"][s]) for s in tr.STRATEGIES)),
+         ", ".join(number(given["mean_error"][s]) for s in tracking.STRATEGIES),
+         ", ".join(number(true["mean_error"][s]) for s in tracking.STRATEGIES)),
         ("pair changes of strategy (1) per run", number(given["switches"]),
          number(true["switches"])),
         ("verdict on the best pair's lower error and trace", given["best_pair"],
@@ -549,213 +554,3 @@ def _umax_speed(p: dict) -> Finding:
         f"$u_{{\\max}} = {u}$ and with the target's speed, {number(speed)}, in the sensors' "
         "bound (steps 2 to 315).",
         ("quantity", f"$u_{{\\max}} = {u}$", f"$u_{{\\max}} = {number(speed)}$"), rows))
-
-
-# ---------------------------------------------------------------------------------------------
-# Section V-B
-# ---------------------------------------------------------------------------------------------
-
-
-#: The adversary variants of :func:`strong_adversaries` in words.
-ADVERSARY_NAMES = {"next-pair": "knowing the sensors' next pair",
-                   "disc": "searching the whole disc of controls",
-                   "disc, next-pair": "both"}
-
-
-def strong_adversaries(p: dict) -> dict:
-    """The adversary variants of notebook 06: name -> setup."""
-    return study.adversary_variants(adversarial_setup(p), p["n_radii"], p["n_angles"])
-
-
-def _adversary(p: dict) -> dict:
-    """The three strategies against the paper's adversary (cached, shared with the chapter)."""
-    return study.adversary_runs(adversarial_setup(p), p["n_seeds"], p["seed"])
-
-
-@claim(
-    id="fig7-entrapment",
-    where="Sec. V-B, Fig. 7",
-    title="Fig. 7: the best pair entraps an adversarial target.",
-    statement=r"An adversarial target that minimises $C^{-1}$ is entrapped by sensors using the "
-    "best-pair strategy: the inverse condition number remains at a high value.",
-    paper="\"An adversarial target is entrapped by sensors using best pairing strategy. The "
-    "inverse of the condition number remains at a high value.\"",
-    quote=r"adversarial target is ``entrapped'' by sensors using best pairing strategy. The "
-    r"inverse of the condition number remains at a high value.",
-    notebook=NB6,
-)
-def _fig7_entrapment(p: dict) -> Finding:
-    """Over ``n_seeds`` runs of the paper's adversary against strategy (1): a run is entrapped
-    when the target stays within 20 % of its reach from the start, the bound averages >= 0.5 and
-    the exact C^-1 the sensors face stays >= 0.1 (:data:`obslib.tracking.ENTRAPMENT_CRITERIA`).
-    reproduced: every run; partly: some; refuted: none. The same adversary against strategy (3)
-    is the control; the stronger adversaries (the whole disc of controls; knowing the sensors'
-    next pair) are reported in the evidence."""
-    runs = _adversary(p)
-    main = study.entrapment_summary(runs["best-pair"])
-    control = study.entrapment_summary(runs["fixed-pair"])
-    strong_runs = study.strong_adversary_runs(adversarial_setup(p), p["n_seeds_strong"],
-                                              p["seed"], p["n_radii"], p["n_angles"])
-    strong = {name: study.entrapment_summary(b) for name, b in strong_runs.items()
-              if name != "paper"}
-    frac = main["entrapped"]
-    status = "reproduced" if frac == 1 else ("partly" if frac > 0 else "refuted")
-    n = p["n_seeds"]
-    held = count(round(frac * n), of=n)
-    summary = (f"The best pair entraps the paper's adversary in {held} runs: the exact "
-               f"$C^{{-1}}$ the sensors face never drops below {number(main['icn_min'])}, while "
-               "against the fixed pair $(s_2, s_1)$ the same target drives it down to "
-               f"{number(control['icn_min'])}.")
-    ours = (summary[:-1] + "; stronger adversaries are entrapped"
-            + (" in every run too." if all(d["entrapped"] == 1 for d in strong.values()) else
-               ", but not always."))
-
-    def row(name, n_runs, d):
-        lo, hi = d["bound_mean_range"]
-        return (name, number(n_runs), percent(d["entrapped"]), number(d["max_from_start"]),
-                f"{number(lo)} to {number(hi)}", number(d["icn_min"]))
-
-    rows = [row("the paper's, against the best pair", n, main),
-            row("the paper's, against the fixed pair", n, control)]
-    rows += [row(f"{ADVERSARY_NAMES.get(name, name)}, against the best pair", p["n_seeds_strong"],
-                 d) for name, d in strong.items()]
-
-    def plain(d):
-        return {k: v for k, v in d.items() if k != "runs"}
-
-    ev = {"paper_adversary": plain(main), "fixed_pair_control": plain(control),
-          "stronger": {k: plain(d) for k, d in strong.items()},
-          "criteria": dict(tr.ENTRAPMENT_CRITERIA)}
-    return Finding(status, summary=summary, ours=ours, evidence=ev, table=Table(
-        f"The adversarial target against the sensors (published run: mean bound "
-        f"{setting(PUBLISHED_ADVERSARIAL['mean_bound'])}). A run counts as entrapped when the "
-        f"target stays within a fifth of its reach ({number(main['reach'])}) from its start, the "
-        "bound averages at least 0.5 and the exact $C^{-1}$ stays at least 0.1.",
-        ("adversary", "runs", "entrapped", "farthest from the start", "mean bound of a run",
-         r"smallest exact $C^{-1}$"), rows))
-
-
-@claim(
-    id="fig7-switch-mechanism",
-    where="Sec. V-B, Fig. 7 and its caption",
-    title="Fig. 7: when the target nears a sensor, switching the pair restores the bound.",
-    statement=r"Even if the target moves closer to a sensor to reduce $C^{-1}$, the sensor pair "
-    r"switches, thereby increasing $C^{-1}$.",
-    paper="\"the sensor pair switches whenever the target gets closer to a sensor\" (Sec. V-B).",
-    quote=r"The target fails to reduce the inverse of the condition number since the sensor pair "
-    r"switches whenever the target gets closer to a sensor.",
-    notebook=NB6,
-)
-def _fig7_switch(p: dict) -> Finding:
-    """Pooled over ``n_seeds`` runs (:func:`obslib.studies.tracking.pooled_switch_mechanism`).
-    reproduced: the pair switches after >= 90 % of the moves that bring the target closer to a
-    sensor of the pair AND >= 90 % of switches give the sensors a higher C^-1 than the target
-    aimed at; partly: only the first; refuted: not the first; untestable: the target never
-    moves closer to a sensor of the pair (a fast target that flees), so the mechanism cannot
-    arise."""
-    m = study.pooled_switch_mechanism(_adversary(p)["best-pair"])
-    sw_closer, raised, gain = m["switch_if_closer"], m["raised"], m["mean_gain"]
-    if np.isnan(sw_closer):
-        status = "untestable"
-    elif sw_closer >= 0.9 and raised >= 0.9:
-        status = "reproduced"
-    else:
-        status = "partly" if sw_closer >= 0.9 else "refuted"
-    if status == "reproduced":
-        summary = (f"The pair switches after {percent(sw_closer)} of the target's moves toward a "
-                   f"sensor of the pair, and {percent(raised)} of the switches leave the sensors "
-                   r"a higher $C^{-1}$ than the target aimed at, as the caption says.")
-    elif status == "partly":
-        summary = (f"The pair does switch after {percent(sw_closer)} of the target's moves toward "
-                   "a sensor of the pair, but a switch leaves the sensors a higher $C^{-1}$ than "
-                   f"the target aimed at in only {percent(raised)} of the cases, so a switch "
-                   r"does not reliably increase $C^{-1}$.")
-    elif status == "refuted":
-        summary = (f"The pair switches after only {percent(sw_closer)} of the target's moves "
-                   "toward a sensor of the pair.")
-    else:
-        summary = ("The target never moves closer to a sensor of the pair that has just "
-                   "measured it, so the caption's mechanism does not arise.")
-    ours = summary + (f" The pair switches at {percent(m['switch_fraction'])} of all "
-                      "transitions, closer or not.")
-
-    def rate(x, none):  # a rate over no event (no move closer, no switch) is NaN
-        return none if np.isnan(x) else percent(x)
-
-    rows = [("transitions where the target gets closer to a sensor of the pair",
-             percent(m["closer_fraction"])),
-            ("of those, transitions where the pair then switches", rate(sw_closer, "none")),
-            ("transitions with a switch, all of them", percent(m["switch_fraction"])),
-            (r"switches leaving a higher $C^{-1}$ than the target aimed at",
-             rate(raised, "no switch")),
-            (r"mean change of $C^{-1}$ at a switch", "no switch" if np.isnan(gain) else
-             number(gain))]
-    ev = {"n_seeds": p["n_seeds"], "closer_fraction": m["closer_fraction"],
-          "switch_if_closer": sw_closer, "switch_fraction": m["switch_fraction"],
-          "raised": raised, "mean_gain": gain}
-    return Finding(status, summary=summary, ours=ours, evidence=ev, table=Table(
-        f"The adversary's moves and the sensors' switches, pooled over {number(p['n_seeds'])} "
-        "runs.", ("quantity", "value"), rows))
-
-
-@claim(
-    id="fig7-figure-data",
-    kind="code",
-    where="Sec. V-B, Fig. 7 (published run)",
-    title="Fig. 7: the numbers of the published run (mean bound 0.79, 306 switches).",
-    statement="The published adversarial run: the sensors' bound averages about 0.79 and the "
-    "pair switches at 306 of 314 transitions.",
-    paper="Figure data of the published run (the data saved with the authors' figures).",
-    notebook=NB6,
-    uses=(UNCHECKED,),
-)
-def _fig7_data(p: dict) -> Finding:
-    """The published run replayed with the noise it used
-    (:func:`obslib.studies.replay.compare_replay`), with the experiments' model as the authors'
-    code runs it. agrees: the replay chooses the logged pair and control at every step, matches
-    every logged number to the log's rounding, and gives the two printed numbers at their
-    printed precision; differs otherwise. How typical the run is among random noise seeds
-    (:func:`obslib.studies.replay.seed_typicality`, with the seeds of notebook 11, shared with
-    ``published-replay``) does not decide the status; it is stated."""
-    c, summ = rp.compare_replay("adversarial"), rp.replay("adversarial").summary()
-    pub = PUBLISHED_ADVERSARIAL
-    printed = {k: printed_match(summ[k], pub[k], k) for k in ("mean_bound", "switches")}
-    status = "agrees" if c.matches and all(printed.values()) else "differs"
-    q = p[UNCHECKED]
-    t = rp.seed_typicality(q["n_seeds_typical"], q["seed"])
-    checks = rp.independent_checks("adversarial")
-    seeds = number(q["n_seeds_typical"])
-    if status == "agrees":
-        above = f"{percent(t['percentile'] / 100)} of {seeds} runs with random noise"
-        where = (f"though it is a favourable run: its mean bound is above that of {above}"
-                 if t["percentile"] >= 50 else
-                 f"and it is not a favourable run: its mean bound is above that of only {above}")
-        summary = (f"The printed mean bound {setting(pub['mean_bound'])} and "
-                   f"{number(pub['switches'])} switches of Fig. 7 are the published run's own: "
-                   f"replayed with the noise recovered from its log, the run gives them back, "
-                   f"{where}.")
-        ours = ("Replayed with the noise recovered from its log, the run chooses the logged pair "
-                "and the target the logged control at every step, and the logged bounds, "
-                "covariances and moves come back to rounding, so the published mean bound and "
-                "switch count follow from the experiments' model as the authors' code runs it; "
-                f"only {percent(t['within_tolerance'])} of {seeds} runs with random noise come "
-                f"within {percent(FIGURE_TOLERANCE)} of its mean bound.")
-    else:
-        summary = ("Replayed with the noise recovered from its log, the published run of Fig. 7 "
-                   "does not give its printed numbers back.")
-        ours = summary
-    ev = {"matches_log": c.matches, "largest_abs_diff": c.largest, "n_values": c.total_values,
-          "pair_mismatches": c.pair_mismatches, "mean_bound": float(summ["mean_bound"]),
-          "switches": int(summ["switches"]), "printed_match": printed, "checks": checks,
-          "typicality": {"n_seeds": q["n_seeds_typical"], "median": t["quantiles"][50],
-                         "within_tolerance": t["within_tolerance"],
-                         "percentile": t["percentile"], "published": t["published"]}}
-    rows = [("mean bound", _printed("mean_bound", pub["mean_bound"]), number(summ["mean_bound"]),
-             number(t["quantiles"][50])),
-            ("pair switches (of 314)", number(pub["switches"]), number(int(summ["switches"])),
-             number(int(np.median(t["switches"]))))]
-    return Finding(status, summary=summary, ours=ours, evidence=ev, table=Table(
-        f"The published Fig. 7 run, its replay, and {seeds} runs with random noise; the "
-        f"published mean bound is above {percent(t['percentile'] / 100)} of theirs, and "
-        f"{percent(t['within_tolerance'])} of them come within {percent(FIGURE_TOLERANCE)} of "
-        "it.", ("number", "printed", "replay", "median of the noise seeds"), rows))

@@ -1,16 +1,16 @@
-"""Fig. 9 study (obslib.studies.teams): order-independent trials, counts consistent with the greedy,
-the ledger rules."""
+"""Fig. 9 study (obslib.studies.general_assignment): order-independent trials, counts consistent
+with the greedy, the ledger rules."""
 
 import numpy as np
 
 from obslib import claims
 from obslib.profiles import params
-from obslib.studies import teams as ts
+from obslib.studies import general_assignment
 
 
 def test_trials_are_order_independent_and_complete():
-    a = ts.fig9_sweep([22, 20], trials=2, seed=4)
-    b = ts.fig9_sweep([20, 22], trials=2, seed=4)
+    a = general_assignment.fig9_sweep([22, 20], trials=2, seed=4)
+    b = general_assignment.fig9_sweep([20, 22], trials=2, seed=4)
     np.testing.assert_array_equal(a[::-1], b)
     assert (b.sum(axis=2) == np.array([20, 22])[:, None]).all()  # every sensor assigned
 
@@ -18,7 +18,7 @@ def test_trials_are_order_independent_and_complete():
 def test_random_spread_is_the_binomial_std():
     rng = np.random.default_rng(0)
     counts = np.stack([np.bincount(rng.integers(0, 5, 40), minlength=5) for _ in range(20000)])
-    assert abs(counts[:, 0].std() - ts.random_spread(40, 5)) < 0.03
+    assert abs(counts[:, 0].std() - general_assignment.random_spread(40, 5)) < 0.03
 
 
 def test_statuses_follow_the_evidence():
@@ -34,17 +34,18 @@ def test_statuses_follow_the_evidence():
     assert recs["greedy-half"].status == ("reproduced" if h["min_ratio"] >= 0.5 else "refuted")
     # the ledger's ratios are the chapter's: one cached computation, returned as a copy
     p = params("08_general_assignment", "quick")
-    r = ts.greedy_vs_optimal_teams(p["n_tiny"], p["seed"], eps=p["eps"])
+    r = general_assignment.greedy_vs_optimal_teams(p["n_tiny"], p["seed"], eps=p["eps"])
     assert h["min_ratio"] == float(r.min()) and h["optimal_share"] == float(np.mean(r >= 1 - 1e-12))
     r[:] = 0.0  # a caller's copy: the cached ratios are untouched
-    assert ts.greedy_vs_optimal_teams(p["n_tiny"], p["seed"], eps=p["eps"]).min() == h["min_ratio"]
+    again = general_assignment.greedy_vs_optimal_teams(p["n_tiny"], p["seed"], eps=p["eps"])
+    assert again.min() == h["min_ratio"]
 
 
 def test_evenness_statistics_by_hand():
     counts = np.array([[[2, 2, 2, 2, 2], [4, 0, 2, 2, 2]]])  # N = 10, two trials, L = 5
-    e = ts.evenness(counts, [10], 5)
+    e = general_assignment.evenness(counts, [10], 5)
     assert e.within[0] == np.mean([0.0, np.std([4, 0, 2, 2, 2])])
-    assert e.baseline[0] == ts.random_spread(10, 5)
+    assert e.baseline[0] == general_assignment.random_spread(10, 5)
     assert e.relative[0] == e.within[0] / e.baseline[0]
     assert e.mean_deviation == 1.0  # target 1 averages 3, target 2 averages 1, N/L = 2
 
@@ -60,4 +61,5 @@ def test_grouped_greedy_vs_optimum_equals_the_instance_by_instance_study():
         g = team_value(S, T, greedy_team_assignment(S, T, "logdet", 1.0), "logdet", 1.0)
         expected.append(g / optimal_team_assignment(S, T, "logdet", 1.0)[1])
     # same draws; the tables are summed in a different order, hence the last-bit tolerance
-    np.testing.assert_allclose(ts.greedy_vs_optimal_teams(60, 9, (3, 6)), expected, rtol=1e-13)
+    np.testing.assert_allclose(general_assignment.greedy_vs_optimal_teams(60, 9, (3, 6)), expected,
+                               rtol=1e-13)

@@ -27,8 +27,8 @@ from .._validate import as_eps, as_float_array, as_int, as_ints, as_nonnegative,
 from ..bounds import relative_vectors
 from ..observability import inverse_condition_number
 from ..teams import greedy_team_assignment
+from .general_assignment import fig9_geometry
 from .greedy_vs_relaxed import fig8_sweep
-from .teams import fig9_geometry
 
 __all__ = ["NOTEBOOK", "one_sensor_best", "one_sensor_conditioning",
            "team_constraint", "problem3_relaxations"]
@@ -48,7 +48,7 @@ def one_sensor_best(distance, u_max):
 
     Examples
     --------
-    >>> from obslib.studies.unchecked import one_sensor_best
+    >>> from obslib.studies.unchecked_statements import one_sensor_best
     >>> one_sensor_best([0.5, 2.0], 1.0).tolist()
     [1.0, 0.5]
     """
@@ -78,7 +78,7 @@ def one_sensor_conditioning(n_scenes: int, seed: int = 0, u_max: float = 1.0,
 
     Examples
     --------
-    >>> from obslib.studies.unchecked import one_sensor_conditioning
+    >>> from obslib.studies.unchecked_statements import one_sensor_conditioning
     >>> r = one_sensor_conditioning(50, seed=0)
     >>> bool((r["exact"] <= r["best"] + 1e-12).all()), float(r["best"].max())
     (True, 1.0)
@@ -112,8 +112,8 @@ def team_constraint(N_values, trials: int, seed: int = 0, n_targets: int = 5, ep
                     side: float = 100.0) -> dict:
     r"""Problem 2 with and without its constraint "each sensor on at most one target".
 
-    On the instances of Fig. 9 (:func:`obslib.studies.teams.fig9_geometry`) the greedy team
-    assignment (:func:`obslib.greedy_team_assignment`, measure
+    On the instances of Fig. 9 (:func:`obslib.studies.general_assignment.fig9_geometry`) the
+    greedy team assignment (:func:`obslib.greedy_team_assignment`, measure
     :math:`\log\det(O^T O + \varepsilon I)`) gives every sensor one target. Without the
     constraint, a monotone measure is largest when every sensor serves every target; the
     function reports both totals.
@@ -128,7 +128,7 @@ def team_constraint(N_values, trials: int, seed: int = 0, n_targets: int = 5, ep
 
     Examples
     --------
-    >>> from obslib.studies.unchecked import team_constraint
+    >>> from obslib.studies.unchecked_statements import team_constraint
     >>> r = team_constraint([10], trials=2)
     >>> r["targets_per_sensor"], r["constrained"][0] < r["unconstrained"][0]
     ([1], True)
@@ -178,7 +178,7 @@ def problem3_relaxations(L_values, trials: int, seed: int = 0, u_max: float = 1.
 
     Examples
     --------
-    >>> from obslib.studies.unchecked import problem3_relaxations
+    >>> from obslib.studies.unchecked_statements import problem3_relaxations
     >>> r = problem3_relaxations([1, 2], trials=3)
     >>> r["L"].tolist(), bool((r["excess"] >= -1e-12).all())
     ([1, 2], True)

@@ -12,26 +12,31 @@ import numpy as np
 
 from ..assignment import relaxed_pair_assignment
 from ..formatting import count, listing, number, percent, setting, small, span
-from ..studies import eq4
-from ..studies import experiment_details as ed
-from ..studies import fig9_measure as fm
-from ..studies import hardness as hd
-from ..studies import replay as rp
-from ..studies import teams as ts
-from ..studies import unchecked as uc
+from ..studies import eq4, general_assignment
+from ..studies.experiment_details import (
+    control_set_entrapment,
+    control_set_gap,
+    metric_choices,
+    unit_dependence,
+)
+from ..studies.fig9_measure import CONTROL_DIRECTIONS, FIG9_U_MAX
+from ..studies.hardness import exact_optimum_study, reduction_check
 from ..studies.published import (
     CODE_ACCOUNT_PRINTED,
     CODE_REPOSITORY,
     CODE_URL_PRINTED,
     code_commits,
 )
-from ..studies.unchecked import NOTEBOOK
+from ..studies.replay import compare_replay
+from ..studies.unchecked_statements import (
+    NOTEBOOK,
+    one_sensor_conditioning,
+    problem3_relaxations,
+    team_constraint,
+)
 from ._ledger import Finding, Table, claim
+from .general_assignment import direction_words, fig9_counts
 from .replay import CONTROL_ROUNDING
-from .teams import direction_words, fig9_counts
-
-#: Fig. 9's notebook, whose parameters several checks here read.
-NB8 = "08_general_assignment"
 
 # ---------------------------------------------------------------------------------------------
 # Sections I and II: the constraint of Problem 2, footnote 1
@@ -49,7 +54,7 @@ NB8 = "08_general_assignment"
     "target\".",
     quote=r"There are no restrictions on the number of targets assigned to a specific sensor.",
     notebook=NOTEBOOK,
-    uses=(NB8,),
+    uses=(general_assignment.NOTEBOOK,),
 )
 def _intro_vs_problem2(p: dict) -> Finding:
     """Read off the text, with Fig. 9's instances as illustration: the sentence contradicts
@@ -57,9 +62,9 @@ def _intro_vs_problem2(p: dict) -> Finding:
     sensors per target, the team sizes) holds, as the greedy's teams of varying size show, and
     the printed one would make the problem trivial for a monotone measure (every sensor on every
     target); refuted if the experiments put a sensor on two targets."""
-    q = p[NB8]
-    r = uc.team_constraint(q["compare_N"], q["compare_trials"], q["seed"], q["n_targets"],
-                           q["eps"], q["side"])
+    q = p[general_assignment.NOTEBOOK]
+    r = team_constraint(q["compare_N"], q["compare_trials"], q["seed"], q["n_targets"],
+                        q["eps"], q["side"])
     one = max(r["targets_per_sensor"]) <= 1
     status = "partly" if one else "refuted"
     n = q["compare_N"][-1]
@@ -103,7 +108,7 @@ def _footnote1(p: dict) -> Finding:
     scenes. partly: one sensor reaches a clearly positive C^-1 (above 1/2 somewhere), so the
     footnote holds for the bound only; reproduced: one sensor stays near 0 even with a known
     control."""
-    r = uc.one_sensor_conditioning(p["n_geometries"], p["seed"], p["u_max"])
+    r = one_sensor_conditioning(p["n_geometries"], p["seed"], p["u_max"])
     top = float(r["exact"].max())
     positive = top > 0.5
     status = "partly" if positive else "reproduced"
@@ -231,7 +236,7 @@ def _mahalanobis_units(p: dict) -> Finding:
     whitened by the covariance too), whether or not the chosen pairs change; refuted: never
     (the statement holds once ``u_max`` is whitened, which the book checks in whitened
     coordinates, ``sec4-mahalanobis-angle``)."""
-    u = ed.unit_dependence("best-pair", UNIT_FACTOR)
+    u = unit_dependence("best-pair", UNIT_FACTOR)
     rel = abs(u["first_bound_scaled"] - u["first_bound"]) / u["first_bound"]
     status = "partly" if rel > 1e-9 or u["changed"] > 0 else "reproduced"
     f = setting(UNIT_FACTOR)
@@ -291,8 +296,8 @@ def _np_complete(p: dict) -> Finding:
     sizes; partly: NP-complete for arbitrary weights (Problem 1 is posed for any omega; the
     reduction verified on every instance) but the optimum is computed at the sizes tried or the
     geometric case is open; refuted: the reduction fails on some instance."""
-    red = hd.reduction_check(p["n_3dm"], p["seed"])
-    ex = hd.exact_optimum_study(p["solver_L"], N_SPREAD, p["time_budget"], p["seed"], p["u_max"])
+    red = reduction_check(p["n_3dm"], p["seed"])
+    ex = exact_optimum_study(p["solver_L"], N_SPREAD, p["time_budget"], p["seed"], p["u_max"])
     reach, spread = ex["reach"], ex["spread"]
     top = ex["largest_solved"]
     ok = red["agree"] == red["n"]
@@ -356,13 +361,13 @@ FIGURE_RESOLUTION = 0.01
 )
 def _problem3(p: dict) -> Finding:
     """Both relaxations on Fig. 8's instances
-    (:func:`obslib.studies.unchecked.problem3_relaxations`). agrees: the two values coincide on
-    every instance (then the figure shows Problem 3 whichever was solved); differs: the ordered
-    one, the code's, is larger on some instance, a looser bound than the printed Problem 3; the
-    finding says whether that changes what the figure shows (a plotted mean moving by
-    :data:`FIGURE_RESOLUTION` of the largest one or more). An unordered value above the ordered
-    one would be a solver error and raises."""
-    r = uc.problem3_relaxations(p["problem3_L"], p["problem3_trials"], p["seed"], p["u_max"])
+    (:func:`obslib.studies.unchecked_statements.problem3_relaxations`). agrees: the two values
+    coincide on every instance (then the figure shows Problem 3 whichever was solved); differs: the
+    ordered one, the code's, is larger on some instance, a looser bound than the printed Problem 3;
+    the finding says whether that changes what the figure shows (a plotted mean moving by
+    :data:`FIGURE_RESOLUTION` of the largest one or more). An unordered value above the ordered one
+    would be a solver error and raises."""
+    r = problem3_relaxations(p["problem3_L"], p["problem3_trials"], p["seed"], p["u_max"])
     rel, ordr, gap = r["relaxed"], r["relaxed_ordered"], r["excess"]
     if (gap < -1e-12).any():
         raise RuntimeError("the unordered relaxation exceeds the ordered one: a solver error")
@@ -427,7 +432,7 @@ def _mahalanobis(p: dict) -> Finding:
     are the consistent score's at every step (the mix does not matter); differs: the logged pairs
     follow the mixed score and the consistent score picks another pair at some step, or the
     logged pairs follow neither."""
-    circle, adv = ed.metric_choices("best-pair"), ed.metric_choices("adversarial")
+    circle, adv = metric_choices("best-pair"), metric_choices("adversarial")
     logged = min(circle["logged_match"], adv["logged_match"])
     agree = min(circle["agree_whitened"], adv["agree_whitened"])
     status = "agrees" if logged == 1 and agree == 1 else "differs"
@@ -480,8 +485,8 @@ def _control_ball(p: dict) -> Finding:
     code's grid is the ball for Fig. 7; differs: it lowers it somewhere. The finding says whether
     the departure changes what the figure shows: the entrapped share over ``n_seeds_disc`` seeds
     with a grid of ``n_radii`` radii and ``n_angles`` angles against the published set."""
-    g = ed.control_set_gap(20, 360)
-    d = ed.control_set_entrapment(p["n_seeds_disc"], p["seed"], p["n_radii"], p["n_angles"])
+    g = control_set_gap(20, 360)
+    d = control_set_entrapment(p["n_seeds_disc"], p["seed"], p["n_radii"], p["n_angles"])
     freed = d["disc"]["entrapped"] < d["paper"]["entrapped"]
     gap = float(g["gap"].max())
     status = "differs" if gap > CONTROL_ROUNDING else "agrees"
@@ -544,7 +549,7 @@ def _code_link(p: dict) -> Finding:
     status = "agrees" if by_printed == len(commits) else "differs"
     first, last = commits[-1][1][:10], commits[0][1][:10]
     owner = CODE_REPOSITORY.split("/", 1)[0]
-    exact = all(rp.compare_replay(n).matches for n in ("best-pair", "best-partner", "adversarial"))
+    exact = all(compare_replay(n).matches for n in ("best-pair", "best-partner", "adversarial"))
     if status == "agrees":
         summary = (f"The printed address names the account `{CODE_ACCOUNT_PRINTED}`, which made "
                    f"{count(by_printed, of=len(commits))} changes ({first} to {last}) in the "
@@ -586,7 +591,7 @@ def _code_link(p: dict) -> Finding:
     r"$\mathbb{O}(o,u_o)$ as observability measure\", with no control $u_o$ stated; the code "
     "uses $O^T O$ without the control row.",
     notebook=NOTEBOOK,
-    uses=(NB8,),
+    uses=(general_assignment.NOTEBOOK,),
 )
 def _sec5d_measure(p: dict) -> Finding:
     """Fig. 9's sweep (:func:`obslib.studies.fig9_measure.fig9_measure_sweeps`) with the measure
@@ -598,12 +603,12 @@ def _sec5d_measure(p: dict) -> Finding:
     the teams of the text's measure on every instance in every direction tried (the row changes
     nothing); differs: it does not, and the finding says how much that matters (the evenness of
     ``fig9-even``)."""
-    q = p[NB8]
+    q = p[general_assignment.NOTEBOOK]
     C = fig9_counts(q)
     Ns = range(q["N_min"], q["N_max"] + 1)
 
     def rel(X):
-        return ts.evenness(X, Ns, q["n_targets"]).relative
+        return general_assignment.evenness(X, Ns, q["n_targets"]).relative
 
     same = all(bool((C["code"] == X).all()) for X in C["text"].values())
     status = "agrees" if same else "differs"
@@ -622,10 +627,10 @@ def _sec5d_measure(p: dict) -> Finding:
     else:
         summary = ("The authors' code leaves the control row out of the measure the text names "
                    "for Fig. 9, and this changes none of the greedy's teams.")
-    tried = listing([direction_words(d) for d in fm.CONTROL_DIRECTIONS])
+    tried = listing([direction_words(d) for d in CONTROL_DIRECTIONS])
     ours = summary + (r" The paper never states the control $u_o$ of Fig. 9; the directions "
-                      f"tried are {tried}, all of norm {setting(fm.FIG9_U_MAX)}.")
-    u = setting(fm.FIG9_U_MAX)
+                      f"tried are {tried}, all of norm {setting(FIG9_U_MAX)}.")
+    u = setting(FIG9_U_MAX)
     names = {"code": r"the code's, $\log\det(O^T O)$, undefined gains skipped",
              "code-first": r"the code's, $\log\det(O^T O)$, the first undefined gain taken",
              "prior": rf"the book's, $\log\det(O^T O + \varepsilon I)$, "
@@ -650,101 +655,3 @@ def _sec5d_measure(p: dict) -> Finding:
         "(below 1: more even than chance).",
         ("measure", "share of the sensors on target 1", "spread within a trial over random"),
         rows))
-
-
-# ---------------------------------------------------------------------------------------------
-# Citations and misprints
-# ---------------------------------------------------------------------------------------------
-
-
-@claim(
-    id="greedy-half-citation",
-    where="Sec. I, II and IV-B (citation)",
-    title="The greedy team assignment's $1/2$ guarantee, and the work it is cited from.",
-    statement="For monotone submodular measures the greedy team assignment is a "
-    "$1/2$-approximation, as shown in the work the paper cites as `nemhauser1978analysis`.",
-    paper="\"a greedy algorithm gives a $1/2$-approximation\", citing the key "
-    "`nemhauser1978analysis`.",
-    quote=r"However, for the specific class of submodular functions, there exists a "
-    r"$1/2$--approximation by a greedy",
-    notebook=NOTEBOOK,
-)
-def _half_citation(p: dict) -> Finding:
-    """A bibliographic check (nothing to compute; the result itself is ``greedy-half``). The
-    paper's source holds only the citation key, not its bibliography, so which work is meant is
-    inferred from the key: ``nemhauser1978analysis`` names Nemhauser as first author, as part I
-    (Math. Programming 14, 1978) has it; part II, where the 1/2 bound of the greedy over a
-    matroid is proved, has Fisher first. partly: right result, the work the key points to is
-    not the one that proves it."""
-    return Finding(
-        "partly",
-        summary="The $1/2$ guarantee is right, but the work the citation points to, Nemhauser, "
-        r"Wolsey and Fisher's part I, proves $1 - 1/e$ under a cardinality constraint; the $1/2$ "
-        "for Problem 2's constraint, a partition matroid, is proved in their part II.",
-        ours="The guarantee is right, but the work the citation points to is, as far as its key "
-        "shows (the paper's bibliography is not available), Nemhauser, Wolsey and Fisher's part "
-        r"I, which proves $1 - 1/e$ under a cardinality constraint; the $1/2$ of the greedy over "
-        "a partition matroid, Problem 2's constraint, is proved in Fisher, Nemhauser and "
-        "Wolsey's part II {cite}`fisher1978analysis`.",
-        evidence={"key": "nemhauser1978analysis",
-                  "inferred": "Nemhauser, Wolsey, Fisher 1978, part I",
-                  "should_cite": "Fisher, Nemhauser, Wolsey 1978, part II, Math. Programming "
-                                 "Study 8: 73-87"},
-    )
-
-
-#: The misprints of notation, indexing and wording, as printed and as the book reads them, in
-#: the order of the paper.
-MISPRINTS = (
-    (r"Problems 1 and 2: $\sum_{i=1}^{L}$ of terms indexed by $l$", r"$\sum_{l=1}^{L}$"),
-    (r"Problems 1-3: $\mathcal{S} := \{s_0, \ldots, s_N\}$, $\mathcal{T} := \{t_0, \ldots, "
-     r"t_L\}$: $N + 1$ sensors and $L + 1$ targets",
-     r"$s_1, \dots, s_N$ and $t_1, \dots, t_L$, as the constraints $i = 1, \dots, N$ have them"),
-    ("Sec. III: the sensors “can improve the lower bound on the condition number”",
-     "the lower bound on the inverse of the condition number"),
-    (r"Theorem 3: “the smallest singular number” of $O(o)$", "its smallest singular value"),
-    (r"Sec. IV: the Mahalanobis distance for $i\in\{1,,...,N\}$", r"$i \in \{1, \dots, N\}$"),
-    ("Sec. IV-A: “We can use the inverse of the condition number” (Eq. (9)) as the weight",
-     "its lower bound, Eq. (9), which the experiments use"),
-    ("Algorithm 1: “while true”, no stopping rule",
-     r"stop when every target has its pair, which comes first since $N \ge 2L$"),
-    (r"Algorithm 1: “Remove $\{s_i,s_j\}$ from union sensor $S$”, after selecting "
-     r"$(\sigma_1(l), \sigma_2(l), t_l)$",
-     r"remove $\sigma_1(l)$ and $\sigma_2(l)$ from the sensor set $\mathcal{S}$"),
-    ("Sec. IV-A: “We present the following lemmas”, followed by Theorem 6 and no lemma",
-     "the following theorem"),
-    (r"Proof of Theorem 6: the value charged is “at most twice of $(s_i,s_j,t_l)$”",
-     r"at most twice $\omega(s_i,s_j,t_l)$"),
-    (r"Sec. IV-B: the submodular welfare problem over “independent sets $\{S_i \mid S_i\in S, "
-     r"~i=\{1,2,...n\}\}$”",
-     r"disjoint sets $S_i \subseteq \mathcal{S}$, $i \in \{1, \dots, n\}$: $S_i \in S$ would "
-     "make each team a single sensor"),
-    (r"Secs. V-C and V-D: positions “within $[0,100]\times [0,100]\in\mathbb{R}^{2}$”",
-     r"$[0, 100] \times [0, 100] \subset \mathbb{R}^2$"),
-)
-
-
-@claim(
-    id="paper-typos",
-    where="Problems 1-3, Algorithm 1, Theorems 3 and 6, Secs. III to V",
-    statement="Algorithm 1, Problems 1-3, the sets $\\mathcal{S}$ and $\\mathcal{T}$ and the "
-    "notation of Sections III to V are stated correctly.",
-    title="Algorithm 1, Problems 1-3 and the notation, as printed.",
-    paper="Algorithm 1: \"while true\"; Problem 1: maximise $\\sum_{i=1}^L \\omega(\\sigma_1(l), "
-    "\\sigma_2(l), t_l)$; $\\mathcal{S} := \\{s_0, \\ldots, s_N\\}$, $\\mathcal{T} := \\{t_0, "
-    "\\ldots, t_L\\}$; and the other lines of the table.",
-    quote=r"Given a set of sensor positions, $\mathcal{S} := \{s_0,\ldots,s_N\}$",
-    notebook=NOTEBOOK,
-)
-def _typos(p: dict) -> Finding:
-    """Misprints of notation, indexing and wording, read off the text (nothing to compute):
-    partly, since each has an obvious intended reading that the book implements
-    (:data:`MISPRINTS`)."""
-    n = len(MISPRINTS)
-    return Finding(
-        "partly",
-        summary=f"The paper has {number(n)} misprints of notation, indexing and wording, each "
-        "with an obvious intended reading, which the book follows.",
-        evidence={"misprints": [printed for printed, _ in MISPRINTS]},
-        table=Table("The misprints and their reading.", ("printed", "read as"), MISPRINTS),
-    )

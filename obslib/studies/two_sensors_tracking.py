@@ -1,8 +1,8 @@
-"""The studies of Sections V-A and V-B that notebooks 05/06 and the claims ledger share: the
-partners of s2, the switching window around k = 50, stretches of a condition over steps, the
-correlations of the bound, and how the adversarial target is entrapped.
+"""The studies of Section V-A (two sensors tracking a target, Figs. 4-6) that notebook 05 and the
+claims ledger share: the runs of the three strategies, the partners of s2, the switching window
+around k = 50, stretches of a condition over steps and the correlations of the bound.
 
-Each function computes one thing that both a notebook prints and a claim judges, so the two
+Each function computes one thing that both the notebook prints and a claim judges, so the two
 cannot drift apart.
 """
 
@@ -12,7 +12,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .. import tracking as tr
+from .. import tracking
 from .._validate import (
     ArgumentTypeError,
     as_float_array,
@@ -22,21 +22,17 @@ from .._validate import (
     as_nonnegative,
     as_real,
 )
-from ..controls import disc_controls
 from ..published_runs import published_run
-from ..tracking import BatchResult, TrackingResult, TrackingSetup
-from .published import PUBLISHED_CIRCLE
+from ..tracking import BatchResult, TrackingSetup
+from .published import FIGURE_TOLERANCE, PUBLISHED_CIRCLE, near_published
 
 __all__ = [
+    "NOTEBOOK",
     "K50_WINDOW",
-    "FIGURE_TOLERANCE",
-    "near_published",
     "circle_runs",
     "circle_speed",
     "figure_numbers",
     "fixed_pair_typicality",
-    "adversary_runs",
-    "strong_adversary_runs",
     "partner_arms",
     "partner_summary",
     "partner_study",
@@ -46,34 +42,13 @@ __all__ = [
     "hot_windows",
     "correlations",
     "least_run_wins",
-    "adversary_variants",
-    "entrapment_summary",
-    "switch_mechanism",
-    "pooled_switch_mechanism",
 ]
+
+#: The chapter of these studies.
+NOTEBOOK = "05_two_sensors_tracking"
 
 #: Transitions around k = 50 where the paper says the best pair "changes frequently" (Fig. 5(a)).
 K50_WINDOW = (30, 70)
-
-#: A published figure number counts as matched when ours is within this relative distance.
-FIGURE_TOLERANCE = 0.15
-
-
-def near_published(ours, published, rtol: float = FIGURE_TOLERANCE):
-    """Whether our value(s) lie within ``rtol`` (relative) of a published number; a published
-    zero must be matched exactly.
-
-    Examples
-    --------
-    >>> near_published([0.70, 0.60], 0.79).tolist()
-    [True, False]
-    """
-    ours = as_float_array(ours, "ours")
-    published, rtol = as_real(published, "published"), as_nonnegative(rtol, "rtol")
-    if published == 0:
-        return ours == 0
-    return np.abs(ours - published) <= rtol * abs(published)
-
 
 # --------------------------------------------------------------------------------------------
 # The runs of the two tracking chapters, computed once for the chapter and the ledger
@@ -104,7 +79,7 @@ def circle_runs(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> dict
     Examples
     --------
     >>> from obslib import tracking
-    >>> from obslib.studies.tracking import circle_runs
+    >>> from obslib.studies.two_sensors_tracking import circle_runs
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
     >>> runs = circle_runs(setup, n_seeds=2)
     >>> list(runs["mc"]), runs["other_metric"], sorted(runs["partners"])
@@ -122,12 +97,12 @@ def circle_runs(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> dict
 def _circle_runs(setup, n_seeds, first_seed) -> dict:
     other = "euclidean" if setup.metric == "mahalanobis" else "mahalanobis"
     setup_o = setup.replace(metric=other)
-    arms = {s: (setup, s) for s in tr.STRATEGIES}
-    arms.update({(other, s): (setup_o, s) for s in tr.STRATEGIES})
+    arms = {s: (setup, s) for s in tracking.STRATEGIES}
+    arms.update({(other, s): (setup_o, s) for s in tracking.STRATEGIES})
     arms.update({("partner", j): arm for j, arm in partner_arms(setup).items()})
-    batch = tr.simulate_many(arms, seeds=range(first_seed, first_seed + n_seeds))
-    return {"mc": {s: batch[s] for s in tr.STRATEGIES},
-            "other": {s: batch[(other, s)] for s in tr.STRATEGIES},
+    batch = tracking.simulate_many(arms, seeds=range(first_seed, first_seed + n_seeds))
+    return {"mc": {s: batch[s] for s in tracking.STRATEGIES},
+            "other": {s: batch[(other, s)] for s in tracking.STRATEGIES},
             "other_metric": other,
             "partners": {j: batch[("partner", j)] for j in partner_arms(setup)}}
 
@@ -155,7 +130,7 @@ def figure_numbers(batch: BatchResult) -> dict:
     Examples
     --------
     >>> from obslib import tracking
-    >>> from obslib.studies.tracking import figure_numbers
+    >>> from obslib.studies.two_sensors_tracking import figure_numbers
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
     >>> b = tracking.simulate_batch(setup, "best-pair", seeds=[0, 1])
     >>> f = figure_numbers(b)
@@ -182,7 +157,7 @@ def fixed_pair_typicality(batch: BatchResult, rtol: float = FIGURE_TOLERANCE) ->
     Examples
     --------
     >>> from obslib import tracking
-    >>> from obslib.studies.tracking import fixed_pair_typicality
+    >>> from obslib.studies.two_sensors_tracking import fixed_pair_typicality
     >>> setup = tracking.PAPER_CIRCLE
     >>> b = tracking.simulate_batch(setup, "fixed-pair", seeds=range(4))
     >>> t = fixed_pair_typicality(b)
@@ -202,54 +177,6 @@ def fixed_pair_typicality(batch: BatchResult, rtol: float = FIGURE_TOLERANCE) ->
             "percentile": {k: float(100 * np.mean(runs[k] < v)) for k, v in logged.items()}}
 
 
-def adversary_runs(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> dict:
-    """The three strategies against the adversarial target (Section V-B) over the noise seeds
-    ``first_seed, ...`` in one batched pass: strategy -> :class:`~obslib.tracking.BatchResult`
-    (cached on the arguments, shared by the chapter and the ledger).
-
-    Examples
-    --------
-    >>> from obslib import tracking
-    >>> from obslib.studies.tracking import adversary_runs
-    >>> runs = adversary_runs(tracking.PAPER_ADVERSARIAL.replace(steps=10), 2)
-    >>> list(runs), runs["best-pair"].n_runs
-    (['best-pair', 'best-partner', 'fixed-pair'], 2)
-    """
-    return _adversary_runs(*_runs_iv(setup, n_seeds, first_seed))
-
-
-@lru_cache(maxsize=8)
-def _adversary_runs(setup, n_seeds, first_seed) -> dict:
-    return tr.simulate_many({s: (setup, s) for s in tr.STRATEGIES},
-                            seeds=range(first_seed, first_seed + n_seeds))
-
-
-def strong_adversary_runs(setup: TrackingSetup, n_seeds: int, first_seed: int, n_radii: int,
-                          n_angles: int) -> dict:
-    """The best pair against each adversary of :func:`adversary_variants` (the paper's, and the
-    stronger ones), over ``n_seeds`` noise seeds in one batched pass: variant ->
-    :class:`~obslib.tracking.BatchResult` (cached on the arguments).
-
-    Examples
-    --------
-    >>> from obslib import tracking
-    >>> from obslib.studies.tracking import strong_adversary_runs
-    >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=10)
-    >>> list(strong_adversary_runs(setup, 2, 0, n_radii=2, n_angles=8))
-    ['paper', 'next-pair', 'disc', 'disc, next-pair']
-    """
-    setup, n_seeds, first_seed = _runs_iv(setup, n_seeds, first_seed)
-    return _strong_adversary_runs(setup, n_seeds, first_seed, as_int(n_radii, "n_radii", 1),
-                                  as_int(n_angles, "n_angles", 1))
-
-
-@lru_cache(maxsize=4)
-def _strong_adversary_runs(setup, n_seeds, first_seed, n_radii, n_angles) -> dict:
-    arms = {name: (v, "best-pair")
-            for name, v in adversary_variants(setup, n_radii, n_angles).items()}
-    return tr.simulate_many(arms, seeds=range(first_seed, first_seed + n_seeds))
-
-
 # --------------------------------------------------------------------------------------------
 # Section V-A
 # --------------------------------------------------------------------------------------------
@@ -264,7 +191,7 @@ def partner_arms(setup: TrackingSetup) -> dict:
     The anchor is sensor 1 (the paper's :math:`s_2`); its partners are the five others:
 
     >>> from obslib.tracking import PAPER_CIRCLE
-    >>> from obslib.studies.tracking import partner_arms
+    >>> from obslib.studies.two_sensors_tracking import partner_arms
     >>> arms = partner_arms(PAPER_CIRCLE)
     >>> sorted(arms), arms[0][0].fixed_pair, arms[0][1]
     ([0, 2, 3, 4, 5], (1, 0), 'fixed-pair')
@@ -284,7 +211,8 @@ def partner_summary(runs: dict) -> dict:
     Examples
     --------
     >>> from obslib import tracking
-    >>> from obslib.studies.tracking import partner_arms, partner_summary
+    >>> from obslib.studies.two_sensors_tracking import (partner_arms,
+    ...                                                  partner_summary)
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
     >>> runs = tracking.simulate_many(partner_arms(setup), seeds=[0, 1])
     >>> s = partner_summary(runs)
@@ -304,7 +232,7 @@ def partner_summary(runs: dict) -> dict:
             "mean_error": float(run_err.mean()),
             "median_error": float(np.median(run_err)),
             "mean_trace": float(r.trace_cov[:, 1:].mean()),
-            "lost": float(tr.track_loss(r)["lost"].mean()),
+            "lost": float(tracking.track_loss(r)["lost"].mean()),
         }
     return out
 
@@ -331,7 +259,7 @@ def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> di
 
     >>> import numpy as np
     >>> from obslib import tracking
-    >>> from obslib.studies.tracking import partner_study
+    >>> from obslib.studies.two_sensors_tracking import partner_study
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
     >>> ps = partner_study(setup, n_seeds=2)
     >>> fixed = setup.replace(fixed_pair=(1, 0))
@@ -340,11 +268,11 @@ def partner_study(setup: TrackingSetup, n_seeds: int, first_seed: int = 0) -> di
     >>> bool(np.isclose(ps[0]["mean_error"], e, rtol=1e-9))
     True
     """
-    as_instance(setup, tr.TrackingSetup, "setup")
+    as_instance(setup, tracking.TrackingSetup, "setup")
     n_seeds = as_int(n_seeds, "n_seeds", 1)
     first_seed = as_int(first_seed, "first_seed", 0)
     seeds = range(first_seed, first_seed + n_seeds)
-    return partner_summary(tr.simulate_many(partner_arms(setup), seeds=seeds))
+    return partner_summary(tracking.simulate_many(partner_arms(setup), seeds=seeds))
 
 
 def best_partners(ps: dict) -> dict:
@@ -354,7 +282,7 @@ def best_partners(ps: dict) -> dict:
 
     Examples
     --------
-    >>> from obslib.studies.tracking import best_partners
+    >>> from obslib.studies.two_sensors_tracking import best_partners
     >>> keys = ("mean_trace", "mean_error", "median_error", "lost", "mean_bound")
     >>> ps = {0: dict(zip(keys, (1.0, 2.0, 2.0, 0.0, 0.5))),
     ...       2: dict(zip(keys, (0.5, 3.0, 1.0, 0.0, 0.7)))}
@@ -445,7 +373,7 @@ def hot_windows(rate, window=K50_WINDOW, level=None) -> list:
     reaches 0.46 start at :math:`k = 99, \\\\dots, 141`:
 
     >>> import numpy as np
-    >>> from obslib.studies.tracking import hot_windows
+    >>> from obslib.studies.two_sensors_tracking import hot_windows
     >>> rate = np.zeros(200)
     >>> rate[29:69] = 1.0
     >>> rate[119:159] = 1.0
@@ -476,7 +404,7 @@ def correlations(mc: dict) -> dict:
     Examples
     --------
     >>> from obslib import tracking
-    >>> from obslib.studies.tracking import correlations
+    >>> from obslib.studies.two_sensors_tracking import correlations
     >>> setup = tracking.PAPER_CIRCLE.replace(steps=20)
     >>> mc = {s: tracking.simulate_batch(setup, s, seeds=[0, 1, 2])
     ...       for s in ("best-pair", "fixed-pair")}
@@ -489,11 +417,12 @@ def correlations(mc: dict) -> dict:
         as_instance(r, BatchResult, "mc")
     own, eu = {}, {}
     for name, r in mc.items():
-        own[name] = {k: float(np.median(v)) for k, v in tr.bound_correlation(r, "own").items()}
+        own[name] = {k: float(np.median(v))
+                     for k, v in tracking.bound_correlation(r, "own").items()}
         eu[name] = {k: float(np.median(v))
-                    for k, v in tr.bound_correlation(r, "euclidean").items()}
+                    for k, v in tracking.bound_correlation(r, "euclidean").items()}
     pooled = {
-        k: float(tr.spearman(
+        k: float(tracking.spearman(
             np.concatenate([r.bound[:, 1:].mean(0) for r in mc.values()]),
             np.concatenate([getattr(r, a)[:, 1:].mean(0) for r in mc.values()]),
         ))
@@ -509,7 +438,7 @@ def least_run_wins(cmp: dict) -> float:
 
     Examples
     --------
-    >>> from obslib.studies.tracking import least_run_wins
+    >>> from obslib.studies.two_sensors_tracking import least_run_wins
     >>> least_run_wins({"wins": {"a": {"run_error": 0.7, "run_trace": 0.6},
     ...                          "b": {"run_error": 0.9, "run_trace": 0.8}}})
     0.6
@@ -522,164 +451,3 @@ def least_run_wins(cmp: dict) -> float:
     return min(w[k] for w in cmp["wins"].values() for k in ("run_error", "run_trace"))
 
 
-# --------------------------------------------------------------------------------------------
-# Section V-B
-# --------------------------------------------------------------------------------------------
-
-
-def adversary_variants(setup: TrackingSetup, n_radii: int, n_angles: int) -> dict:
-    """The paper's adversary and stronger ones (Section V-B), as setups.
-
-    ``"paper"``: the setup as given; ``"next-pair"``: the target knows the pair the sensors
-    will use next; ``"disc"``: controls on a polar grid of the whole disc ``||u|| <= u_max``
-    (``1 + n_radii * n_angles`` controls, :func:`disc_controls`); ``"disc, next-pair"``: both.
-
-    Examples
-    --------
-    >>> from obslib.tracking import PAPER_ADVERSARIAL
-    >>> from obslib.studies.tracking import adversary_variants
-    >>> v = adversary_variants(PAPER_ADVERSARIAL, n_radii=2, n_angles=4)
-    >>> list(v), len(v["disc"].controls), v["disc, next-pair"].adversary
-    (['paper', 'next-pair', 'disc', 'disc, next-pair'], 9, 'next-pair')
-    """
-    as_instance(setup, tr.TrackingSetup, "setup")
-    disc = disc_controls(setup.u_max, as_int(n_radii, "n_radii", 1),
-                         as_int(n_angles, "n_angles", 1))
-    return {
-        "paper": setup,
-        "next-pair": setup.replace(adversary="next-pair"),
-        "disc": setup.replace(controls=disc),
-        "disc, next-pair": setup.replace(controls=disc, adversary="next-pair"),
-    }
-
-
-def entrapment_summary(batch: BatchResult) -> dict:
-    """:func:`~obslib.tracking.entrapment` of every run of a batch, summarised.
-
-    Returns
-    -------
-    dict
-        ``entrapped`` (fraction of runs meeting :data:`~obslib.tracking.ENTRAPMENT_CRITERIA`),
-        the largest
-        ``max_from_start``, ``reach``, the mean and range of the per-run mean bound, the
-        smallest ``icn_min``, the mean ``icn_mean``, mean ``switches`` and ``mean_error``, and
-        ``runs`` (the list of :class:`~obslib.tracking.Entrapment`).
-
-    Examples
-    --------
-    >>> from obslib import tracking
-    >>> from obslib.studies.tracking import entrapment_summary
-    >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=20)
-    >>> batch = tracking.simulate_batch(setup, "best-pair", seeds=[0, 1])
-    >>> s = entrapment_summary(batch)
-    >>> (len(s["runs"]), 0.0 <= s["entrapped"] <= 1.0,
-    ...  s["max_from_start"] <= s["reach"])
-    (2, True, True)
-    """
-    as_instance(batch, BatchResult, "batch")
-    _ = (batch.true_icn, batch.objective)  # computed once for all runs
-    es = [tr.entrapment(batch.run(b)) for b in range(batch.n_runs)]
-    return {
-        "entrapped": float(np.mean([tr.is_entrapped(e) for e in es])),
-        "max_from_start": max(e.max_from_start for e in es),
-        "reach": es[0].reach,
-        "bound_mean": float(np.mean([e.bound_mean for e in es])),
-        "bound_mean_range": (min(e.bound_mean for e in es), max(e.bound_mean for e in es)),
-        "icn_min": min(e.icn_min for e in es),
-        "icn_mean": float(np.mean([e.icn_mean for e in es])),
-        "switches": float(np.mean([e.switches for e in es])),
-        "mean_error": float(np.mean([e.mean_error for e in es])),
-        "runs": es,
-    }
-
-
-def switch_mechanism(result: TrackingResult) -> dict:
-    """How the pair reacts when the adversary closes in on a sensor (Fig. 7 caption).
-
-    For each transition ``k -> k + 1``: did the target move closer to one of the two sensors of
-    step ``k``'s pair, did the pair switch, and did the switch give the sensors a larger exact
-    ``C^{-1}`` (``true_icn[k+1]``) than the value the target aimed at with the old pair
-    (``objective[k]``)?
-
-    Returns
-    -------
-    dict
-        ``closer`` (transitions where the target got closer to a sensor of the pair),
-        ``switch_if_closer`` and ``switch_if_not`` (switch rates), ``switches``,
-        ``raised`` (fraction of switches with ``true_icn[k+1] > objective[k]``) and
-        ``mean_gain`` (mean of ``true_icn[k+1] - objective[k]`` over switches).
-
-    Examples
-    --------
-    >>> from obslib import tracking
-    >>> from obslib.studies.tracking import switch_mechanism
-    >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=20)
-    >>> r = tracking.simulate(setup, "best-pair", seed=0)
-    >>> m = switch_mechanism(r)
-    >>> (m["transitions"], m["switches"] == int(r.switched.sum()),
-    ...  0 <= m["closer"] <= 19)
-    (19, True, True)
-    """
-    as_instance(result, TrackingResult, "result")
-    s = result.setup.sensor_array
-    ps = s[result.pairs]
-    before = np.hypot(*(result.truth[:, None, :] - ps).transpose(2, 0, 1)).min(axis=1)
-    after_pos = result.truth + result.control
-    after = np.hypot(*(after_pos[:, None, :] - ps).transpose(2, 0, 1)).min(axis=1)
-    closer = (after < before)[:-1]
-    sw = result.switched
-    gain = result.true_icn[1:] - result.objective[:-1]
-    return {
-        "transitions": int(sw.size),
-        "closer": int(closer.sum()),
-        "switch_if_closer": float(sw[closer].mean()) if closer.any() else float("nan"),
-        "switch_if_not": float(sw[~closer].mean()) if (~closer).any() else float("nan"),
-        "switches": int(sw.sum()),
-        "raised": float((gain[sw] > 0).mean()) if sw.any() else float("nan"),
-        "mean_gain": float(gain[sw].mean()) if sw.any() else float("nan"),
-    }
-
-
-def pooled_switch_mechanism(batch: BatchResult) -> dict:
-    """:func:`switch_mechanism` pooled over the runs of ``batch``.
-
-    Returns
-    -------
-    dict
-        ``transitions``, ``closer_fraction`` (transitions where the target got closer to a
-        sensor of the pair), ``switch_if_closer`` (switch rate after such a move),
-        ``switch_fraction`` (all switches over all transitions), ``switches``, ``raised``
-        (fraction of switches that leave a higher exact C^-1 than the target aimed at) and
-        ``mean_gain``. A rate over no event (no switch, no move closer) is NaN.
-
-    Examples
-    --------
-    >>> from obslib import tracking
-    >>> from obslib.studies.tracking import pooled_switch_mechanism
-    >>> setup = tracking.PAPER_ADVERSARIAL.replace(steps=20)
-    >>> batch = tracking.simulate_batch(setup, "best-pair", seeds=[0, 1])
-    >>> p = pooled_switch_mechanism(batch)
-    >>> p["transitions"], p["switches"] == int(batch.switched.sum())
-    (38, True)
-    """
-    as_instance(batch, BatchResult, "batch")
-    ms = [switch_mechanism(batch.run(b)) for b in range(batch.n_runs)]
-    trans = sum(m["transitions"] for m in ms)
-    closer = sum(m["closer"] for m in ms)
-    n_sw = sum(m["switches"] for m in ms)
-
-    def pooled(key, weight, total):
-        # a run without the event has a NaN rate and weight 0: it adds nothing
-        if total == 0:
-            return float("nan")
-        return sum(m[key] * m[weight] for m in ms if m[weight]) / total
-
-    return {
-        "transitions": trans,
-        "closer_fraction": closer / trans if trans else float("nan"),
-        "switch_if_closer": pooled("switch_if_closer", "closer", closer),
-        "switch_fraction": n_sw / trans if trans else float("nan"),
-        "switches": n_sw,
-        "raised": pooled("raised", "switches", n_sw),
-        "mean_gain": pooled("mean_gain", "switches", n_sw),
-    }

@@ -1,5 +1,6 @@
 """Studies of the greedy team assignment of Problem 2: Fig. 9's evenness and the greedy against the
-exact optimum (Sections IV-B and V-D; notebook 08, claims of :mod:`obslib.claims.teams`).
+exact optimum (Sections IV-B and V-D; notebook 08, claims of
+:mod:`obslib.claims.general_assignment`).
 
 Fig. 9 of the paper plots, for ``L = 5`` targets and ``N = 20..50`` sensors in ``[0, 100]^2``,
 the mean and spread of the number of sensors the greedy (log det measure) gives to a target.
@@ -37,6 +38,7 @@ from ..teams import (
 )
 
 __all__ = [
+    "NOTEBOOK",
     "fig9_geometry",
     "fig9_trial",
     "fig9_trials",
@@ -46,6 +48,9 @@ __all__ = [
     "evenness",
     "greedy_vs_optimal_teams",
 ]
+
+#: The chapter of these studies.
+NOTEBOOK = "08_general_assignment"
 
 
 def fig9_geometry(n_sensors, trial, seed, n_targets, side):

@@ -5,11 +5,14 @@ from __future__ import annotations
 import numpy as np
 
 from ..formatting import fixed, number, percent, setting, span
-from ..studies import fig9_measure as fm
-from ..studies import teams as ts
+from ..studies.fig9_measure import CONTROL_DIRECTIONS, FIG9_U_MAX, fig9_measure_sweeps
+from ..studies.general_assignment import (
+    NOTEBOOK,
+    evenness,
+    greedy_vs_optimal_teams,
+    random_spread,
+)
 from ._ledger import Finding, Table, claim
-
-NB = "08_general_assignment"
 
 #: The standard deviation of the count on a target that the published Fig. 9 shows, over
 #: N = 20..50 (read off the figure's data).
@@ -24,13 +27,13 @@ FIG9_PUBLISHED_STD = (1.1, 3.0)
     "$1/2$-approximation of Problem 2.",
     paper=r"Cited result (Nemhauser, Wolsey and Fisher, 1978); used with $\log\det$ in Sec. V-D.",
     quote=r"A greedy algorithm that yields a $1/2$--approximation.",
-    notebook=NB,
+    notebook=NOTEBOOK,
 )
 def _half(p: dict) -> Finding:
     """The greedy against the exhaustive optimum of Problem 2 on ``n_tiny`` small random
     instances, with the monotone submodular ``log det(O^T O + eps I)`` (zero on the empty team
     at ``eps = 1``). reproduced: no instance below half the optimum; refuted otherwise."""
-    r = ts.greedy_vs_optimal_teams(p["n_tiny"], p["seed"], eps=p["eps"])
+    r = greedy_vs_optimal_teams(p["n_tiny"], p["seed"], eps=p["eps"])
     worst, optimal = float(r.min()), float(np.mean(r >= 1 - 1e-12))
     ok = worst >= 0.5 - 1e-12
     n = number(int(r.size))
@@ -58,8 +61,8 @@ def fig9_counts(p: dict) -> dict:
     """Fig. 9's sweep with every measure compared, at the parameters ``p`` of notebook 08
     (:func:`obslib.studies.fig9_measure.fig9_measure_sweeps`, cached and shared with the
     chapters)."""
-    return fm.fig9_measure_sweeps(p["N_min"], p["N_max"], p["trials"], p["seed"],
-                                  p["n_targets"], p["eps"], p["side"])
+    return fig9_measure_sweeps(p["N_min"], p["N_max"], p["trials"], p["seed"],
+                               p["n_targets"], p["eps"], p["side"])
 
 
 def direction_words(d) -> str:
@@ -71,7 +74,7 @@ def direction_words(d) -> str:
 
 def _spread(C, p) -> np.ndarray:
     """Within-trial spread of the counts over a uniformly random assignment's, per ``N``."""
-    return ts.evenness(C, range(p["N_min"], p["N_max"] + 1), p["n_targets"]).relative
+    return evenness(C, range(p["N_min"], p["N_max"] + 1), p["n_targets"]).relative
 
 
 def _share1(C) -> float:
@@ -89,7 +92,7 @@ def _share1(C) -> float:
     paper="Mean count on target 1 within about 0.8 of $N/L$, standard deviation 1.1 to 3.0, for "
     "$N = 20, \\dots, 50$ and $L = 5$.",
     quote=r"It shows that the sensors are assigned to each target almost evenly.",
-    notebook=NB,
+    notebook=NOTEBOOK,
     journal=r"The abstract of the later journal version {cite}`zhou2019sensor` states the log "
     "determinant's monotonicity and submodularity only when the matrix is non-singular, the "
     "condition a prior guarantees.",
@@ -142,7 +145,7 @@ def _fig9(p: dict) -> Finding:
     else:
         summary = ("With no measure tried does the greedy spread the sensors more evenly than "
                    "chance.")
-    base = np.array([ts.random_spread(n, p["n_targets"])
+    base = np.array([random_spread(n, p["n_targets"])
                      for n in range(p["N_min"], p["N_max"] + 1)])
     lo, hi = FIG9_PUBLISHED_STD
     ours = summary + (" The published figure's standard deviation of target 1's count, "
@@ -157,9 +160,9 @@ def _fig9(p: dict) -> Finding:
         s = sd1(X)
         return (name, percent(_share1(X)), span(s.min(), s.max()), span(rel.min(), rel.max()))
 
-    u = setting(fm.FIG9_U_MAX)
+    u = setting(FIG9_U_MAX)
     rows = [row(rf"the text's, $\lVert u_o\rVert = {u}$, {direction_words(d)}", C["text"][d],
-                text[d]) for d in fm.CONTROL_DIRECTIONS]
+                text[d]) for d in CONTROL_DIRECTIONS]
     rows += [row(r"the code's, $\log\det(O^T O)$ (undefined gains skipped)", C["code"], code),
              row(rf"a prior, $\log\det(O^T O + \varepsilon I)$, $\varepsilon = "
                  rf"{setting(p['eps'])}$", C["prior"], prior),
@@ -172,7 +175,7 @@ def _fig9(p: dict) -> Finding:
         "prior_relative_to_random": [float(prior.min()), float(prior.max())],
         "target1_share": {"text": {direction_words(d): _share1(c) for d, c in C["text"].items()},
                           "code": code_share, "prior": _share1(C["prior"])},
-        "control_norm": fm.FIG9_U_MAX,
+        "control_norm": FIG9_U_MAX,
         "published_std": list(FIG9_PUBLISHED_STD),
         "random_std": [float(base.min()), float(base.max())],
     }

@@ -9,7 +9,7 @@ import pytest
 
 from obslib import claims
 from obslib.studies import fig9_measure as fm
-from obslib.studies import teams as ts
+from obslib.studies import general_assignment
 
 # --------------------------------------------------------------------------------------------
 # Fig. 9 with the literal log det(O^T O)
@@ -106,7 +106,7 @@ def test_batched_literal_sweep_equals_one_instance_at_a_time(nan):
     lit = fm.literal_fig9_sweep(Ns, trials, seed, L, nan=nan)
     for a, n in enumerate(Ns):
         for t in range(trials):
-            S, T = ts.fig9_geometry(n, t, seed, L, 100.0)
+            S, T = general_assignment.fig9_geometry(n, t, seed, L, 100.0)
             np.testing.assert_array_equal(lit[a, t], _float_literal(S, T, nan))
 
 
@@ -137,7 +137,7 @@ def test_literal_greedy_matlab_rule_gives_every_sensor_to_target_1():
 
 def test_literal_sweep_uses_the_fig9_instances():
     lit = fm.literal_fig9_sweep([12], 2, 3, nan="first")
-    S, T = ts.fig9_geometry(12, 1, 3, 5, 100.0)
+    S, T = general_assignment.fig9_geometry(12, 1, 3, 5, 100.0)
     np.testing.assert_array_equal(lit[0, 1], fm.literal_logdet_counts(S, T, "first"))
     with pytest.raises(ValueError, match="nan must be one of"):
         fm.literal_logdet_counts(S, T, "max")
@@ -165,14 +165,15 @@ def test_control_row_in_one_direction_matches_an_exact_reference(direction):
     U = (1.5 * np.array([np.cos(direction), np.sin(direction)])).tolist()
     for a, n in enumerate(Ns):
         for t in range(trials):
-            S, T = ts.fig9_geometry(n, t, seed, L, 20.0)
+            S, T = general_assignment.fig9_geometry(n, t, seed, L, 20.0)
             want = _reference_control_row(S.tolist(), T.tolist(), [U] * L)
             np.testing.assert_array_equal(got[a, t], want)
 
 
 def test_fig9_measure_sweeps_are_the_single_sweeps():
     s = fm.fig9_measure_sweeps(20, 22, 2, 1, eps=1.0)
-    np.testing.assert_array_equal(s["prior"], ts.fig9_sweep([20, 21, 22], 2, 1, 5, "logdet", 1.0))
+    np.testing.assert_array_equal(
+        s["prior"], general_assignment.fig9_sweep([20, 21, 22], 2, 1, 5, "logdet", 1.0))
     np.testing.assert_array_equal(s["code"], fm.literal_fig9_sweep([20, 21, 22], 2, 1))
     np.testing.assert_array_equal(s["text"][None], fm.control_row_fig9_sweep([20, 21, 22], 2, 1))
     with pytest.raises(ValueError, match="N_max"):
@@ -254,7 +255,7 @@ def test_eq4_bad_input():
 import itertools  # noqa: E402
 
 import obslib as ob  # noqa: E402
-from obslib.claims import unchecked as cu  # noqa: E402
+from obslib.claims.unchecked_statements import ordered_gap_example  # noqa: E402
 from obslib.studies import batch_optimum  # noqa: E402
 from obslib.studies import hardness as hd  # noqa: E402
 
@@ -303,7 +304,7 @@ def _relaxed_brute(W, ordered):
 
 
 def test_ordered_relaxation_is_looser_by_brute_force():
-    W = cu.ordered_gap_example()
+    W = ordered_gap_example()
     for ordered in (False, True):
         assert ob.relaxed_pair_assignment(W, ordered=ordered).value == pytest.approx(
             _relaxed_brute(W, ordered))
@@ -425,7 +426,7 @@ def test_unchecked_statuses_follow_the_evidence():
 # Footnote 1, Sec. I against Problem 2, the measure Sec. V-D names, the exact optimum's spread
 # --------------------------------------------------------------------------------------------
 
-from obslib.studies import unchecked as uc  # noqa: E402
+from obslib.studies import unchecked_statements  # noqa: E402
 
 
 def test_one_sensor_best_control_against_a_grid_of_the_disc():
@@ -442,27 +443,27 @@ def test_one_sensor_best_control_against_a_grid_of_the_disc():
         sv = np.linalg.svd(np.stack([np.stack([rows, u]) for u in U]), compute_uv=False)
         with np.errstate(divide="ignore", invalid="ignore"):
             grid = np.nan_to_num(sv[:, 1] / sv[:, 0]).max()
-        best = uc.one_sensor_best(np.hypot(*rows), u_max)
+        best = unchecked_statements.one_sensor_best(np.hypot(*rows), u_max)
         assert grid <= best + 1e-12 and best - grid < 2e-2
 
 
 def test_one_sensor_conditioning_draws_and_bad_input():
-    r = uc.one_sensor_conditioning(100, seed=2)
+    r = unchecked_statements.one_sensor_conditioning(100, seed=2)
     assert r["exact"].shape == (100,) and (r["exact"] <= r["best"] + 1e-12).all()
     assert r["share_above_half"] == float(np.mean(r["exact"] > 0.5))
     with pytest.raises(ValueError, match="n_scenes"):
-        uc.one_sensor_conditioning(0)
+        unchecked_statements.one_sensor_conditioning(0)
     with pytest.raises(ValueError, match="distances"):
-        uc.one_sensor_best([0.0], 1.0)
+        unchecked_statements.one_sensor_best([0.0], 1.0)
 
 
 def test_team_constraint_recomputed_from_the_greedy_teams():
     from obslib import greedy_team_assignment
 
-    r = uc.team_constraint([9], trials=2, seed=4, n_targets=3, eps=2.0, side=10.0)
+    r = unchecked_statements.team_constraint([9], trials=2, seed=4, n_targets=3, eps=2.0, side=10.0)
     con, unc = [], []
     for t in range(2):
-        S, T = ts.fig9_geometry(9, t, 4, 3, 10.0)
+        S, T = general_assignment.fig9_geometry(9, t, 4, 3, 10.0)
         teams = greedy_team_assignment(S, T, "logdet", 2.0)
         assert sorted(i for team in teams for i in team) == list(range(9))  # one target each
 
@@ -505,7 +506,7 @@ def test_control_row_sweep_matches_an_exact_reference():
     got = fm.control_row_fig9_sweep(Ns, trials, seed, L, side=20.0, u_max=2.0)
     for a, n in enumerate(Ns):
         for t in range(trials):
-            S, T = ts.fig9_geometry(n, t, seed, L, 20.0)
+            S, T = general_assignment.fig9_geometry(n, t, seed, L, 20.0)
             phi = np.random.default_rng([seed, n, t, 1]).uniform(0, 2 * np.pi, L)
             U = 2.0 * np.column_stack([np.cos(phi), np.sin(phi)])
             want = _reference_control_row(S.tolist(), T.tolist(), U.tolist())
