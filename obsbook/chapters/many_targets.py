@@ -108,7 +108,13 @@ def intuition(setup, target: int = 0, gap: int = 3) -> dict:
 
 def glue_intuition(scene: dict) -> None:
     """The intuition's numbers: the kept pair, its lowest bound and when, the lowest bound of
-    the pair chosen afresh, and the trace before and after the steps without a sensor."""
+    the pair chosen afresh, and the trace before and after the steps without a sensor.
+
+    Parameters
+    ----------
+    scene : dict
+        :func:`intuition`'s result.
+    """
     fixed, rechosen = scene["fixed"], scene["rechosen"]
     k = int(np.argmin(fixed))
     t, seen = scene["trace"], scene["observed"]
@@ -207,8 +213,14 @@ def glue_snapshots(pairs, teams) -> None:
 
 
 def glue_saved(verdicts: dict) -> None:
-    """The tables and numbers of the three statements of the later material, from their
-    records (``verdicts``: id -> record)."""
+    """The tables and numbers of the three statements of the later material.
+
+    Parameters
+    ----------
+    verdicts : dict
+        Id -> the entry's record (:func:`obsbook.verdicts.glue_verdicts`), holding the three
+        ``later-*`` entries.
+    """
     u = verdicts["later-unique-pairs"].evidence
     t = verdicts["later-teams-unobserved"].evidence
     v = verdicts["later-teams-vs-pairs"].evidence
@@ -232,7 +244,14 @@ def glue_saved(verdicts: dict) -> None:
 
 
 def glue_code(verdicts: dict) -> None:
-    """The tables and numbers of the findings about the team script, from their records."""
+    """The tables and numbers of the findings about the team script.
+
+    Parameters
+    ----------
+    verdicts : dict
+        Id -> the entry's record (:func:`obsbook.verdicts.glue_verdicts`), holding
+        ``later-code-rounds`` and ``later-code-singular``.
+    """
     r = verdicts["later-code-rounds"].evidence
     s = verdicts["later-code-singular"].evidence
     glue_texts(
@@ -256,9 +275,17 @@ _VERDICT = {"better": "better", "worse": "worse", "same": "no clear difference"}
 
 
 def glue_comparison(rows: list, n_seeds: int) -> None:
-    """Every assignment on the later experiment against the unique pairs
-    (:func:`obslib.studies.many_targets.later_comparison`'s rows): the table over the targets
-    (``tab-12-all``), the table per target (``tab-12-targets``) and the numbers of the prose."""
+    """Every assignment on the later experiment against the unique pairs: the table over the
+    targets (``tab-12-all``), the table per target (``tab-12-targets``) and the numbers of the
+    prose.
+
+    Parameters
+    ----------
+    rows : list of dict
+        :func:`obslib.studies.many_targets.later_comparison`'s rows.
+    n_seeds : int
+        The runs of each assignment.
+    """
     overall = [r for r in rows if r["target"] == "all"]
     table = []
     for r in overall:
@@ -320,8 +347,16 @@ def glue_comparison(rows: list, n_seeds: int) -> None:
 
 
 def glue_network(record, p: dict) -> None:
-    """The comparison on the larger network (the record of ``beyond-many-targets``) and the
-    network's sizes (``p``: the chapter's parameters)."""
+    """The comparison on the larger network and the network's sizes.
+
+    Parameters
+    ----------
+    record : obslib.claims.Record
+        The record of ``beyond-many-targets``.
+    p : mapping
+        The chapter's parameters (``net_sensors``, ``net_targets``, ``net_scenes``,
+        ``net_steps``).
+    """
     ev = record.evidence
     by = {r["assignment"]: r for r in ev["rows"]}
     glue_texts(

@@ -69,7 +69,8 @@ def plot_fixed_against_rechosen(steps, fixed, rechosen, fixed_label: str, target
 
     Examples
     --------
-    >>> fig = plot_fixed_against_rechosen([2, 3], [0.5, 0.2], [0.5, 0.4], "(s₁, s₈)")
+    >>> fig = plot_fixed_against_rechosen([2, 3], [0.5, 0.2], [0.5, 0.4],
+    ...                                   "(s₁, s₈)")
     >>> [line.get_label() for line in fig.axes[0].get_lines()]
     ['pair (s₁, s₈) kept from step 2', 'best pair chosen at every step']
     """
@@ -103,8 +104,10 @@ def plot_unobserved_growth(estimate, covs: dict, trace, observed):
     Examples
     --------
     >>> import numpy as np
-    >>> covs = {"after an update": 0.03 * np.eye(2), "one step without": 0.23 * np.eye(2)}
-    >>> fig = plot_unobserved_growth([0.0, 0.0], covs, [0.07, 0.47, 0.07], [True, False, True])
+    >>> covs = {"after an update": 0.03 * np.eye(2),
+    ...         "one step without": 0.23 * np.eye(2)}
+    >>> fig = plot_unobserved_growth([0.0, 0.0], covs, [0.07, 0.47, 0.07],
+    ...                              [True, False, True])
     >>> len(fig.axes), fig.axes[1].get_xlabel()
     (2, 'step k')
     """
@@ -225,7 +228,8 @@ def draw_targets(ax, run, k: int, *, title: str = ""):
     >>> from obslib import tracking
     >>> su = tracking.LATER_MULTI_TARGET.first(5)
     >>> ax = Figure().add_subplot()
-    >>> _ = draw_targets(ax, tracking.simulate_targets(su, "logdet-teams-exact"), 2)
+    >>> run = tracking.simulate_targets(su, "logdet-teams-exact")
+    >>> _ = draw_targets(ax, run, 2)
     >>> ax.get_title()
     'k = 2, no sensor: t₂, t₃'
     """
@@ -249,7 +253,8 @@ def plot_assignment_snapshots(run, steps):
     --------
     >>> from obslib import tracking
     >>> su = tracking.LATER_MULTI_TARGET.first(5)
-    >>> fig = plot_assignment_snapshots(tracking.simulate_targets(su, "unique-pairs"), [1, 5])
+    >>> run = tracking.simulate_targets(su, "unique-pairs")
+    >>> fig = plot_assignment_snapshots(run, [1, 5])
     >>> sum(ax.axison for ax in fig.axes)
     2
     """
