@@ -266,15 +266,14 @@ def plot_assignment_snapshots(run, steps):
         raise ValueError(f"steps must be one to six steps of the run's {run.steps}, got {steps}")
     fig, axes = plt.subplots(2, 3, figsize=(7.5, 5.6), layout="constrained", sharex=True,
                              sharey=True)
-    for ax, k in zip(axes.flat, steps):
-        draw_targets(ax, run, k)
+    for n, ax in enumerate(axes.flat):
+        if n >= len(steps):
+            ax.axis("off")
+            continue
+        draw_targets(ax, run, steps[n])
         _map_limits(ax, [run])
-    for ax in list(axes.flat)[len(steps):]:
-        ax.axis("off")
-    for ax in axes[-1]:
-        ax.set_xlabel("x (length unit)")
-    for ax in axes[:, 0]:
-        ax.set_ylabel("y (length unit)")
+        ax.set_xlabel("x (length unit)" if n >= 3 else "")
+        ax.set_ylabel("y (length unit)" if n % 3 == 0 else "")
     fig.legend(handles=_legend_handles(run.n_targets), loc="outside lower center", ncol=3,
                fontsize=10)
     return fig
