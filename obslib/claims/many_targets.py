@@ -554,8 +554,8 @@ def network_evidence(p: dict) -> dict:
     "assignment tracks many targets best: the paper's unique pairs by the bound (Algorithm 1), "
     r"its teams on $\log\det$ (Fig. 9), or greedy teams on the filters' information (D- or "
     "A-optimal)?",
-    paper="Not asked. None of the paper's experiments tracks more than one target; Figs. 8-9 "
-    "judge assignments by their own objective.",
+    paper="Not asked. The paper's experiments track one target at a time; Figs. 8-9 judge "
+    "assignments by their own objective.",
     notebook=NB,
 )
 def _many_targets(p: dict) -> Finding:
