@@ -108,8 +108,10 @@ def _execution_page() -> None:
     if not run.EXECUTION_PAGE.exists():
         import json
 
+        from obslib._io import write_output
+
         times = json.loads(run.TIMES_FILE.read_text()) if run.TIMES_FILE.exists() else {}
-        run.EXECUTION_PAGE.write_text(run.execution_page(times))
+        write_output(run.EXECUTION_PAGE, run.execution_page(times))
 
 
 def _latex_errors(log: Path) -> str:
@@ -136,6 +138,9 @@ def main(argv=None) -> int:
         return 1
     t0 = time.perf_counter()
     _execution_page()
+    from .front import write_figure
+
+    write_figure()  # the front page's picture, drawn as make book draws it (not committed)
     jb = Path(sys.executable).with_name("jupyter-book")
     proc = subprocess.run([str(jb), "build", str(ROOT), "--builder", "latex", "--warningiserror",
                            "--nitpick", "--keep-going"], capture_output=True, text=True, cwd=ROOT)

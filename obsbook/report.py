@@ -102,6 +102,9 @@ SECTIONS = {
     ),
 }
 
+#: Kind -> the heading of an entry's ``paper`` field: what its source offers for it.
+SUPPORT = {"paper": "The paper's support", "later": "The later material"}
+
 ROBUSTNESS_INTRO = """\
 Every claim of the paper that is partly reproduced or refuted, and every claim of the tracking
 experiments, is checked again with one parameter of its experiment changed at a time: the speed
@@ -419,7 +422,7 @@ def _entry(r, evidence: str, label: str) -> list:
     lines += [
         f"**The claim.** {typeset(r.statement)}",
         "",
-        f"**The paper's support.** {typeset(r.paper)}",
+        f"**{SUPPORT.get(r.kind, SUPPORT['paper'])}.** {typeset(r.paper)}",
         "",
     ]
     if r.journal:

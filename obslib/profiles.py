@@ -196,6 +196,13 @@ RANGES: dict[str, dict[str, object]] = {
         "problem3_L": Range(1, 200), "problem3_trials": COUNT, "n_seeds_disc": COUNT,
         "n_radii": COUNT, "n_angles": Range(3),
     },
+    "12_many_targets": {
+        "seed": SEED, "n_seeds": PAIRED,
+        "net_sensors": Range(2, 400, "the pair greedy's work per step grows as N^2, and so "
+                             "does the team greedies' (N rounds over N sensors)"),
+        "net_targets": COUNT, "net_scenes": PAIRED, "net_steps": Range(2),
+        "anim_every": COUNT, "anim_dpi": Range(20, 300),
+    },
 }
 
 CONSTRAINTS: dict[str, tuple[Constraint, ...]] = {
@@ -223,6 +230,10 @@ CONSTRAINTS: dict[str, tuple[Constraint, ...]] = {
         Constraint("N_min <= N_max"),
         Constraint("n_targets <= N_min and n_targets <= min(compare_N)",
                    "every target needs a sensor"),
+    ),
+    "12_many_targets": (
+        Constraint("2 * net_targets <= net_sensors",
+                   "the unique-pair assignments give every target a pair of its own"),
     ),
 }
 
@@ -278,6 +289,13 @@ PROFILES: dict[str, dict[str, dict]] = {
             "n_seeds_disc": 10,
             "n_radii": 3,
             "n_angles": 36,
+        },
+        "12_many_targets": {
+            "n_seeds": 20,
+            "net_sensors": 40,
+            "net_targets": 10,
+            "net_steps": 30,
+            "anim_every": 10,
         },
     },
 }

@@ -288,7 +288,8 @@ def _run_means(batch, skip_first=True):
     return batch.error[:, sl].mean(axis=1), batch.trace_cov[:, sl].mean(axis=1)
 
 
-def summary_rows(mc: dict, reference: str = REFERENCE, loss_threshold: float = 0.5) -> list:
+def summary_rows(mc: dict, reference: str = REFERENCE,
+                 loss_threshold: float = tracking.LOSS_THRESHOLD) -> list:
     """One row per strategy of a Monte Carlo (``{strategy: BatchResult}``).
 
     Keys: ``strategy``, ``mean_error`` / ``sd_error`` and ``mean_trace`` / ``sd_trace`` (mean over
@@ -513,7 +514,8 @@ def assignment_study(p: dict, metric: str = "mahalanobis") -> dict:
         as_positive(p["assign_p0"], "assign_p0"), metric)
 
 
-def assignment_rows(runs: dict, reference: str = "bound", loss_threshold: float = 0.5) -> list:
+def assignment_rows(runs: dict, reference: str = "bound",
+                    loss_threshold: float = tracking.LOSS_THRESHOLD) -> list:
     """One row per ``(L, rule)``: mean, spread and median over runs of the per-run mean error
     summed over targets (after the update), ``lost`` (targets, over all runs, whose mean error
     exceeds ``loss_threshold``), ``lost_mirrored`` (those whose last estimate is nearer the

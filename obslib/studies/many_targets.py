@@ -21,7 +21,7 @@ chapter and the ledger:
 The statistics of a run leave out step 1, whose logged values are the initial ones for every
 assignment: a target's *mean error* and *mean trace* are over steps 2 to K; its *steps
 without a sensor* count the steps 1 to K at which it had none; its track is *lost* when its
-mean error exceeds :data:`LOSS_THRESHOLD` (chapter 10's threshold).
+mean error exceeds :data:`obslib.tracking.LOSS_THRESHOLD` (chapter 10's threshold).
 """
 
 from __future__ import annotations
@@ -38,7 +38,6 @@ from .criteria import paired_test, significance
 __all__ = [
     "NOTEBOOK",
     "REFERENCE",
-    "LOSS_THRESHOLD",
     "NETWORK_ASSIGNMENTS",
     "later_runs",
     "run_statistics",
@@ -54,9 +53,6 @@ NOTEBOOK = "12_many_targets"
 
 #: The assignment every other is compared with: the unique-pair greedy of the authors' script.
 REFERENCE = "unique-pairs"
-
-#: A track is lost when the target's mean error exceeds this (chapter 10's threshold).
-LOSS_THRESHOLD = 0.5
 
 #: The assignments compared at ``N = 200``, ``L = 50``: all but the exact optimum (beyond
 #: enumeration, and a branch and bound per step and run), and of the code's log det only its
@@ -107,7 +103,7 @@ def later_runs(n_seeds: int = 200, seed: int = 0, assignments=tracking.ASSIGNMEN
     return _later_runs(n_seeds, seed, _assignments_iv(assignments))
 
 
-def run_statistics(batch, loss_threshold: float = LOSS_THRESHOLD) -> dict:
+def run_statistics(batch, loss_threshold: float = tracking.LOSS_THRESHOLD) -> dict:
     """Per run and target, ``(B, L)``: ``mean_error`` and ``mean_trace`` over the steps after
     the first, ``unobserved`` (steps without a sensor) and ``lost`` (mean error above
     ``loss_threshold``).

@@ -91,6 +91,7 @@ from .setup import (
 )
 from .stats import (
     ENTRAPMENT_CRITERIA,
+    LOSS_THRESHOLD,
     TIE_RTOL,
     Entrapment,
     bound_correlation,
@@ -123,6 +124,7 @@ __all__ = [
     "PAPER_CIRCLE",
     "PAPER_ADVERSARIAL",
     "TIE_RTOL",
+    "LOSS_THRESHOLD",
     "clearly_lower",
     "TrackingResult",
     "BatchResult",

@@ -25,6 +25,7 @@ from .results import BatchResult, TrackingResult
 
 __all__ = [
     "TIE_RTOL",
+    "LOSS_THRESHOLD",
     "clearly_lower",
     "compare_strategies",
     "spearman",
@@ -42,6 +43,9 @@ __all__ = [
 
 #: Relative difference below which two logged values count as equal when strategies are compared.
 TIE_RTOL = 1e-9
+
+#: A run (or a target's track) is lost when its mean error exceeds this, unless told otherwise.
+LOSS_THRESHOLD = 0.5
 
 
 def _batch(batch, name: str = "batch") -> BatchResult:
@@ -289,7 +293,7 @@ def mirror_point(points, a, b) -> np.ndarray:
     return a + 2 * (v @ d)[..., None] * d - v
 
 
-def track_loss(batch: BatchResult, threshold: float = 0.5) -> dict:
+def track_loss(batch: BatchResult, threshold: float = LOSS_THRESHOLD) -> dict:
     """Runs of a fixed pair whose estimate ends at the mirror image of the target.
 
     A run is *lost* when its mean error exceeds ``threshold``. For each run, also whether the

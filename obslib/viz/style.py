@@ -14,6 +14,8 @@ pair assignment        ``greedy`` (Algorithm 1), ``literal`` (its round-by-round
                        (every weight once), ``random``
 tracking strategies    ``best-pair``, ``best-partner``, ``fixed-pair``, ``d-optimal``,
                        ``a-optimal``, ``e-optimal``, ``exact-icn``, ``random``
+many targets           the assignments of :data:`obslib.tracking.ASSIGNMENTS`: pairs drawn
+                       with squares, teams with circles (crosses where their greedy degenerates)
 team measures          ``trace``, ``logdet`` (as ``d-optimal``), ``rank``, ``trace_inverse``
                        and ``neg_trace_inverse`` (as ``a-optimal``), the names of
                        :data:`obslib.measures.MEASURES`
@@ -103,6 +105,17 @@ LOOKS = {
     "a-optimal": Look(_C["sky blue"], "^", "-", "A-optimal"),
     "e-optimal": Look(_C["vermillion"], "P", "-", "E-optimal"),
     "exact-icn": Look(_C["black"], "h", "-", "exact C\u207b\u00b9"),
+    # assignments of many targets in closed loop (the later experiment; "random" is above)
+    "unique-pairs": Look(_C["blue"], "s", "-", "unique pairs (Algorithm 1)"),
+    "d-optimal-pairs": Look(_C["reddish purple"], "s", "-", "D-optimal pairs"),
+    "optimal-pairs": Look(_C["black"], "s", "-", "optimal pairs (Problem 1)"),
+    "logdet-teams": Look(_C["orange"], "o", "-", "log-det teams, code's rounding"),
+    "logdet-teams-as-run": Look(_C["orange"], "X", "-", "log-det teams as run"),
+    "logdet-teams-exact": Look(_C["black"], "X", "-", "log-det teams, exact"),
+    "logdet-teams-prior": Look(_C["bluish green"], "D", "-", "log-det teams with prior"),
+    "d-optimal-teams": Look(_C["reddish purple"], "o", "-", "D-optimal teams"),
+    "a-optimal-teams": Look(_C["sky blue"], "o", "-", "A-optimal teams"),
+    "e-optimal-teams": Look(_C["vermillion"], "o", "-", "E-optimal teams"),
     # team measures of Theorem 8
     "trace": Look(_C["orange"], "<", "-", "trace"),
     "rank": Look(_C["bluish green"], ">", "-", "rank"),

@@ -87,7 +87,7 @@ def test_comparison_rows_are_the_paired_tests_of_the_run_means():
         pick = (lambda a: a.mean(axis=1)) if row["target"] == "all" else (
             lambda a, t=row["target"]: a[:, t - 1])
         assert row["mean_error"] == pytest.approx(pick(err).mean())
-        lost = err > mt.LOSS_THRESHOLD
+        lost = err > tr.LOSS_THRESHOLD
         assert row["lost"] == (lost.sum() if row["target"] == "all"
                                else lost[:, row["target"] - 1].sum())
         if row["assignment"] != "unique-pairs":
