@@ -14,9 +14,10 @@ from pathlib import Path
 
 import yaml
 
-__all__ = ["ROOT", "Version", "version", "pdf_name", "LATEX_DIR", "HTML_DIR", "book_config"]
+from obslib.tools import ROOT
 
-ROOT = Path(__file__).resolve().parents[1]
+__all__ = ["Version", "version", "pdf_name", "LATEX_DIR", "HTML_DIR", "book_config"]
+
 #: Where Jupyter Book's LaTeX builder writes, and XeLaTeX the PDF.
 LATEX_DIR = ROOT / "_build" / "latex"
 #: The HTML book; the PDF is copied to its top folder.

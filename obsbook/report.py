@@ -27,13 +27,12 @@ from pathlib import Path
 from obslib._io import command
 from obslib.claims import REQUIRED_IDS, STATUSES
 from obslib.formatting import count, number
+from obslib.tools import ROOT
 
-__all__ = ["ROOT", "MARKERS", "SECTIONS", "PAPER_LABELS", "render_report", "notebook_targets",
+__all__ = ["MARKERS", "SECTIONS", "PAPER_LABELS", "render_report", "notebook_targets",
            "typeset", "list_table", "counts_sentence", "quote_myst", "verdict_line",
-           "statement_of", "exceptions_table", "render_front", "render_code_notes", "main"]
-
-#: The checkout the book is built from: ``notebooks/`` and ``book/`` live here.
-ROOT = Path(__file__).resolve().parents[1]
+           "statement_of", "exceptions_table", "record_table", "render_front",
+           "render_code_notes", "main"]
 
 #: Marker comments around the parts of the report that other pages may include.
 MARKERS = {
@@ -351,9 +350,10 @@ _LATEX_TEXT = [
 
 
 def quote_myst(quote: str) -> str:
-    r"""The paper's words (LaTeX as printed) as MyST: math kept, ``\emph``, quotes, ties,
-    dashes and citations of the text converted, ``\ref`` replaced by the number the paper
-    prints (:data:`PAPER_LABELS`).
+    r"""The paper's words (LaTeX as printed) as MyST: math kept (a long formula split where a
+    line may break, as :func:`typeset` splits it), ``\emph``, quotes, ties, dashes and
+    citations of the text converted, ``\ref`` replaced by the number the paper prints
+    (:data:`PAPER_LABELS`).
 
     Examples
     --------
@@ -366,7 +366,7 @@ def quote_myst(quote: str) -> str:
     out = []
     for i, part in enumerate(parts):
         if i % 2:
-            out.append(part)
+            out.append(_split_math(part))
             continue
 
         def ref(m):
@@ -431,15 +431,39 @@ def _entry(r, evidence: str, label: str) -> list:
     if r.ours != r.summary:
         lines += [f"**In detail.** {typeset(r.ours)}", ""]
     if r.table is not None:
-        t = r.table
-
-        def ts(cell):
-            return typeset(cell) if isinstance(cell, str) else cell
-
-        lines += list_table(typeset(t.caption), [ts(c) for c in t.columns],
-                            [[ts(c) for c in row] for row in t.rows],
-                            name=f"tab-claim-{r.id}") + [""]
+        lines += [record_table(r, f"tab-claim-{r.id}"), ""]
     return lines
+
+
+def record_table(record, name: str) -> str:
+    """The table of an evaluated ledger entry (its :class:`obslib.claims.Table`) as a numbered
+    MyST table: the report's and a chapter's (under its own ``name``) show the same cells.
+
+    Parameters
+    ----------
+    record : obslib.claims.Record
+        The evaluated entry (from :func:`obslib.claims.evaluate` or
+        :func:`obsbook.verdicts.glue_verdicts`).
+    name : str
+        The table's label (``tab-NN-...`` in a chapter).
+
+    Examples
+    --------
+    >>> from obslib.claims import Record, Table
+    >>> r = Record("x", "", "", "", "", "reproduced", "", {}, summary="It holds.",
+    ...            table=Table("Two rows.", ("$L$", "ratio"), [(2, 0.951), (3, "s1")]))
+    >>> print(record_table(r, "tab-x").splitlines()[-2])
+      - $s_1$
+    """
+    t = record.table
+    if t is None:
+        raise ValueError(f"the entry {record.id!r} has no table")
+
+    def cell(c):
+        return typeset(c) if isinstance(c, str) else c
+
+    return "\n".join(list_table(typeset(t.caption), [cell(c) for c in t.columns],
+                                [[cell(c) for c in row] for row in t.rows], name=name))
 
 
 def robustness_section(records, robustness: dict) -> list:

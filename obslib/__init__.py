@@ -37,16 +37,17 @@ tracking
 sweep
     Runs a study's independent trials serially or in parallel, with the same numbers.
 
-On top of the core, one module per section of the paper in each of:
+On top of the core, one module per chapter of the book in each of, named after the chapter's
+notebook without its number (``model_and_bound`` for ``01_model_and_bound``, ...):
 
 studies
     The paper's audits and experiments (``studies.model_and_bound``, ``studies.pair_closed_form``,
-    ``studies.greedy_unique_pairs``, ``studies.submodularity``, ``studies.greedy_vs_relaxed``,
-    ``studies.general_assignment``, ...) and the published numbers (``studies.published``).
+    ``studies.greedy_unique_pairs``, ...), the topics several chapters share
+    (``studies.batch_optimum``, ``studies.replay``, ...) and the published numbers
+    (``studies.published``).
 viz
-    Every matplotlib figure, one module per chapter of the book (``viz.model_and_bound``,
-    ``viz.pair_closed_form``, ``viz.two_sensors_tracking``, ...) and the drawings they share
-    (``viz.style``, ``viz.tracking``).
+    Every matplotlib figure (``viz.model_and_bound``, ``viz.pair_closed_form``, ...) and the
+    drawings the chapters share (``viz.style``, ``viz.tracking``).
 claims
     The claims ledger: one record per claim of the paper, re-checked with ``studies``.
 

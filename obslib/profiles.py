@@ -37,6 +37,7 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
+from . import tracking
 from ._validate import MissingFileError, as_mapping, as_path, as_str
 
 __all__ = ["PROFILES", "RANGES", "CONSTRAINTS", "Range", "Choice", "File", "Constraint",
@@ -102,7 +103,7 @@ class Constraint:
 SEED = Range(0, 2**32 - 1, "a 32-bit seed")
 COUNT = Range(1)
 PAIRED = Range(2, why="the paired tests compare runs")
-METRICS = Choice(("mahalanobis", "euclidean"))
+METRICS = Choice(tracking.METRICS)
 DATA_FILE = File("a JSON file written by the benchmark command")
 #: Notebook 03's exact optimum is a dynamic program over the 2^N sets of N = 2L + extra sensors.
 EXACT = "the exact optimum runs over the 2^N sets of N = 2 L + extra <= 16 sensors"

@@ -26,7 +26,7 @@ def _full(w, n):
     return W
 
 
-@pytest.mark.parametrize("metric", at.METRICS)
+@pytest.mark.parametrize("metric", ob.tracking.METRICS)
 def test_bound_weights_equal_pair_bounds(metric):
     """The "bound" rule's weights (the engine's "unique-pairs") are pair_bounds' numbers."""
     rng = np.random.default_rng(2)

@@ -70,6 +70,11 @@ def test_quotes_render_as_myst():
     assert report.quote_myst(r"Theorem~\ref{thm:lower_bound} and $a~b$") == "Theorem 1 and $a~b$"
     with pytest.raises(ValueError, match="does not number"):
         report.quote_myst(r"Equation~\ref{eqn:nope}")
+    # a long formula of the paper breaks at its relations, and a piece still longer than
+    # SPLIT_AT before its binary minus, as the ledger's own texts do
+    long = r"$\omega(\{s_1,s_2,s_3\})-\omega(\{s_1,s_2\})=0.3310-0.5345=-0.2035<0.8765-0.9258$"
+    assert report.quote_myst(long) == (r"$\omega(\{s_1,s_2,s_3\})$ ${} -\omega(\{s_1,s_2\})$ "
+                                       r"$=0.3310-0.5345$ $=-0.2035$ $<0.8765-0.9258$")
 
 
 def test_every_quote_of_the_ledger_renders():

@@ -22,32 +22,15 @@ from obslib.viz.style import pair_label
 
 from ..glue import glue_texts
 from ..prose import point
+from ..report import record_table
 from ..tables import rows_table
 from .criteria import p_text
 
-__all__ = ["SNAPSHOT_STEPS", "record_table", "intuition", "glue_intuition", "glue_settings",
+__all__ = ["SNAPSHOT_STEPS", "intuition", "glue_intuition", "glue_settings",
            "glue_snapshots", "glue_saved", "glue_code", "glue_comparison", "glue_network"]
 
 #: The steps of the authors' saved snapshots of the assignment.
 SNAPSHOT_STEPS = (1, 20, 40, 60, 80, 100)
-
-
-def record_table(record, name: str) -> str:
-    """The table of a ledger entry as a numbered table of the chapter: the numbers of the
-    entry's one computation, formatted once, as the report shows them.
-
-    Parameters
-    ----------
-    record : obslib.claims.Record
-        The evaluated entry (from :func:`obsbook.verdicts.glue_verdicts`).
-    name : str
-        The table's label in the chapter.
-    """
-    if record.table is None:
-        raise ValueError(f"the entry {record.id!r} has no table")
-    t = record.table
-    rows = [tuple(c if isinstance(c, str) else number(c) for c in row) for row in t.rows]
-    return rows_table(rows, t.caption, name, headers=t.columns)
 
 
 # --------------------------------------------------------------------------------------------

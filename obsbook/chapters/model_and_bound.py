@@ -13,10 +13,9 @@ import obslib as ob
 from obslib.formatting import count, number, percent, setting, small, span
 
 from ..glue import glue_texts
-from ..report import list_table, typeset
 from ..tables import numbered_table
 
-__all__ = ["SCENE_KINDS", "CONDITIONS", "record_table", "glue_example", "glue_scene_check",
+__all__ = ["SCENE_KINDS", "CONDITIONS", "glue_example", "glue_scene_check",
            "glue_theorem1", "glue_theorem2", "glue_theorem3", "glue_remark1", "glue_rank",
            "glue_squared_range", "show_lie_rows", "EXERCISE_ROWS", "EXERCISE_U_MAX",
            "EXERCISE_U_RERUN", "EXERCISE_SHRINK", "exercise_numbers", "glue_exercises"]
@@ -177,36 +176,6 @@ def glue_remark1(audit) -> None:
         r1_moving=small(audit.max_moving_error),
         r1_gap=small(audit.min_over_disc_gap, 1e-9),
     )
-
-
-def record_table(record, name: str) -> str:
-    """The table of an evaluated ledger entry (its :class:`obslib.claims.Table`), as a numbered
-    MyST table of the chapter named ``name``: the very cells the report shows.
-
-    Parameters
-    ----------
-    record : obslib.claims.Record
-        The entry, as :func:`obsbook.verdicts.glue_verdicts` returns it.
-    name : str
-        The table's label in the chapter (``tab-NN-...``).
-
-    Examples
-    --------
-    >>> from obslib.claims import Record, Table
-    >>> r = Record("x", "", "", "", "", "reproduced", "", {}, summary="It holds.",
-    ...            table=Table("Two rows.", ("$L$", "ratio"), [(2, 0.951), (3, "none")]))
-    >>> print(record_table(r, "tab-x").splitlines()[0])
-    :::{list-table} Two rows.
-    """
-    t = record.table
-    if t is None:
-        raise ValueError(f"entry {record.id!r} has no table")
-
-    def cell(c):
-        return typeset(c) if isinstance(c, str) else c
-
-    return "\n".join(list_table(typeset(t.caption), [cell(c) for c in t.columns],
-                                [[cell(c) for c in row] for row in t.rows], name=name))
 
 
 def show_lie_rows(rows) -> None:

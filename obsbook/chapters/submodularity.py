@@ -18,8 +18,8 @@ from obslib.formatting import count, fixed, number, setting
 
 from ..glue import glue_texts
 from ..prose import sensor_math, set_math
+from ..report import record_table
 from ..tables import numbered_table
-from .model_and_bound import record_table
 
 __all__ = ["MEASURE_NAMES", "neg_trace_inverse_exact", "monotone_text", "submodular_text",
            "value_table", "glue_intuition", "glue_case1", "glue_case2", "glue_witnesses",

@@ -30,9 +30,10 @@ from obslib.viz.tracking import STRATEGY_LABELS
 
 from ..glue import glue_texts
 from ..prose import point, sensor_math, share
+from ..report import record_table
 from ..tables import numbered_table, rows_table
 
-__all__ = ["replay_gap", "ledger_table", "glue_settings", "glue_first_steps",
+__all__ = ["replay_gap", "glue_settings", "glue_first_steps",
            "glue_replay", "glue_switches", "glue_largest", "glue_vs_paper", "glue_typicality",
            "glue_monte_carlo", "glue_wins", "glue_monte_carlo_claims", "glue_lost",
            "glue_correlations", "glue_k50", "glue_partners", "glue_speed", "glue_metric",
@@ -40,24 +41,6 @@ __all__ = ["replay_gap", "ledger_table", "glue_settings", "glue_first_steps",
 
 #: The strategies' short names in the glued names: s1, s2, s3.
 SHORT = dict(zip(tracking.STRATEGIES, ("s1", "s2", "s3")))
-
-
-def ledger_table(record, name: str) -> str:
-    """The table of a ledger entry (its :class:`obslib.claims.Table`) as a numbered table of the
-    chapter: the numbers of the entry's one computation, formatted once, as the report shows them.
-
-    Parameters
-    ----------
-    record : obslib.claims.Record
-        The evaluated entry (from :func:`obsbook.verdicts.glue_verdicts`).
-    name : str
-        The table's label in the chapter.
-    """
-    table = record.table
-    if table is None:
-        raise ValueError(f"the entry {record.id!r} has no table")
-    rows = [tuple(c if isinstance(c, str) else number(c) for c in row) for row in table.rows]
-    return rows_table(rows, table.caption, name, headers=table.columns)
 
 
 def glue_settings(setup) -> None:
@@ -543,7 +526,7 @@ def glue_speed(mc: dict, at_speed: dict, record) -> None:
     ev = record.evidence
     same = (mc["best-pair"].pairs == at_speed["best-pair"].pairs).all(axis=-1)
     glue_texts(
-        tab_speed=ledger_table(record, "tab-05-speed"),
+        tab_speed=record_table(record, "tab-05-speed"),
         speed_ratio=number(ev["ratio"]),
         speed_same_pairs=percent(float(same.mean())),
         speed_bound_paper=number(ev["paper_u_max"]["mean_bound"]["best-pair"]),

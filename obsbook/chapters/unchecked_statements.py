@@ -19,7 +19,7 @@ from obslib.claims.misprints import MISPRINTS
 from obslib.claims.unchecked_statements import N_SPREAD
 from obslib.formatting import count, listing, number, percent, setting, small, span
 from obslib.profiles import params
-from obslib.studies import general_assignment, greedy_tightness
+from obslib.studies import general_assignment, greedy_tightness, greedy_vs_relaxed
 from obslib.studies.fig9_measure import FIG9_U_MAX
 from obslib.studies.published import (
     CODE_ACCOUNT_PRINTED,
@@ -396,7 +396,7 @@ def glue_reach(exact: dict, time_budget: float) -> None:
         "optimum": number(r["optimum"]) if r["solved"] else "–",
         "relaxed (Problem 3)": number(r["relaxed"]) if r["solved"] else "–",
     } for r in reach]
-    fig8_L = params("07_greedy_vs_relaxed")["L_max"]
+    fig8_L = params(greedy_vs_relaxed.NOTEBOOK)["L_max"]
     within = f"within {setting(time_budget)} s"
     if all(r["solved"] for r in reach) and top >= fig8_L:
         reach_text = (f"The optimum is found {within} at every size of Fig. 8, which could have"

@@ -17,7 +17,8 @@ with a chapter's own. The book's reproduction report is rendered from :func:`eva
 ``paper`` profile by the book's own tooling (``python -m obsbook.report``);
 :mod:`obslib.claims.robustness` varies the experiments' parameters one at a time.
 
-Entries live in one submodule per section of the paper, imported below in paper order.
+Entries live in one submodule per chapter, named after its notebook without its number
+(:mod:`obslib.claims.model_and_bound`, ...), imported below in paper order.
 """
 
 from .._validate import as_instance, as_sequence

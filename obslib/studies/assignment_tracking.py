@@ -76,7 +76,6 @@ __all__ = [
 
 #: The assignment rules, in the order the studies report them.
 RULES = ("bound", "d-optimal", "random")
-METRICS = ("mahalanobis", "euclidean")
 
 
 @dataclass(frozen=True)
@@ -126,8 +125,8 @@ class AssignmentTrackingSetup:
         put("u_max", as_positive(self.u_max, "u_max"))
         put("noise_std", as_positive(self.noise_std, "noise_std"))
         put("p0", as_positive(self.p0, "p0"))
-        if as_str(self.metric, "metric") not in METRICS:
-            raise ValueError(f"metric must be one of {METRICS}, got {self.metric!r}")
+        if as_str(self.metric, "metric") not in tracking.METRICS:
+            raise ValueError(f"metric must be one of {tracking.METRICS}, got {self.metric!r}")
 
     @property
     def Q(self) -> float:
