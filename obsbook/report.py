@@ -138,7 +138,7 @@ def _set(m: re.Match) -> str:
 
 #: Inline formulas longer than this (in characters of TeX) are split at their top-level relations.
 SPLIT_AT = 36
-_REL = re.compile(r"(?<!\\)(=|<|>|\\le\b|\\ge\b|\\ne\b|\\Rightarrow\b)")
+_REL = re.compile(r"(?<!\\)(:=|(?<!:)=|<|>|\\le\b|\\ge\b|\\ne\b|\\Rightarrow\b)")
 
 
 def _cuts(body: str, at) -> list:

@@ -75,6 +75,9 @@ def test_quotes_render_as_myst():
     long = r"$\omega(\{s_1,s_2,s_3\})-\omega(\{s_1,s_2\})=0.3310-0.5345=-0.2035<0.8765-0.9258$"
     assert report.quote_myst(long) == (r"$\omega(\{s_1,s_2,s_3\})$ ${} -\omega(\{s_1,s_2\})$ "
                                        r"$=0.3310-0.5345$ $=-0.2035$ $<0.8765-0.9258$")
+    # a definition := is one relation
+    defn = r"$\mathbb{O}(o,u_o):=O^{T}(o,u_o)O(o,u_o)$"
+    assert report.quote_myst(defn) == r"$\mathbb{O}(o,u_o)$ $:=O^{T}(o,u_o)O(o,u_o)$"
 
 
 def test_every_quote_of_the_ledger_renders():
