@@ -78,7 +78,15 @@ def book() -> Path:
     """Path of the rendered book, rendering it first (execution off, warnings as errors) if
     needed."""
     from obsbook import front
+    from obslib._io import locked
 
+    BUILD.parent.mkdir(exist_ok=True)
+    with locked(BUILD.parent / ".render.lock"):  # one render when workers ask at once
+        _render(front)
+    return BUILD
+
+
+def _render(front) -> None:
     front.write_figure(front.FIGURE)  # as make book does; unchanged when it holds the picture
     if _stale():
         if not run.EXECUTION_PAGE.exists():
@@ -101,7 +109,6 @@ def book() -> Path:
             cwd=ROOT,
         )
         assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
-    return BUILD
 
 
 def pages(book: Path) -> list[Path]:
@@ -330,13 +337,15 @@ def pdf_not_built(book: Path) -> bool:
     return not (book / edition.pdf_name()).exists() and not os.environ.get("CI")
 
 
-def dead_links(book: Path, rel: str) -> list[str]:
+@functools.cache
+def dead_links(book: Path, rel: str) -> tuple[str, ...]:
     """Internal links of a page whose file or anchor does not exist in the build (the PDF
     edition aside where :func:`pdf_not_built`)."""
     page = book / rel
     dead = []
+    pdf, no_pdf = edition.pdf_name(), pdf_not_built(book)
     for href in _HREF.findall(page.read_text(errors="replace")):
-        if href.endswith(edition.pdf_name()) and pdf_not_built(book):
+        if href.endswith(pdf) and no_pdf:
             continue
         if re.match(r"^https?://[^/]+\.(md|py|ipynb|txt|json|yml|cfg|toml)/?$", href, re.I):
             dead.append(href)  # a file name that linkify turned into a web address
@@ -351,7 +360,7 @@ def dead_links(book: Path, rel: str) -> list[str]:
             dead.append(href)
         elif frag and path.suffix == ".html" and frag not in _ids(path):
             dead.append(href)
-    return sorted(set(dead))
+    return tuple(sorted(set(dead)))
 
 
 CHECKS = {
@@ -520,7 +529,7 @@ def test_dead_links_finds_missing_files_and_anchors(tmp_path):
         '<a href="mailto:a@b.c">mail</a> <a href="http://NOTES.md">a file name made a link</a>'
     )
     _ids.cache_clear()
-    assert dead_links(tmp_path, "sub/a.html") == [
+    assert list(dead_links(tmp_path, "sub/a.html")) == [
         "#here", "../b.html#nowhere", "../c.html", "http://NOTES.md"]
 
 

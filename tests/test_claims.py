@@ -307,12 +307,9 @@ def test_new_entries_exist_with_their_verdicts(records):
 
 
 @pytest.fixture(scope="module")
-def paper_records():
-    """The ledger at the paper's sizes, with the robustness study's caveats, as the report
-    states it (about 25 s on a quiet two-core machine)."""
-    from obslib.claims import robustness as rb
-
-    return {r.id: r for r in claims.evaluate("paper", caveats=rb.caveats())}
+def paper_records(paper_ledger):
+    """The ledger at the paper's sizes (tests/conftest.py)."""
+    return paper_ledger
 
 
 def test_statuses_do_not_depend_on_the_profile(records, paper_records):

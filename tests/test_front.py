@@ -88,10 +88,8 @@ def test_every_quote_of_the_ledger_renders():
                 r"\$[^$]*\$", "", text), c.id
 
 
-def test_committed_front_fragment_is_the_ledger_at_the_paper_profile():
-    from obslib.claims import robustness as rb
-
-    recs = claims.evaluate("paper", caveats=rb.caveats())
+def test_committed_front_fragment_is_the_ledger_at_the_paper_profile(paper_ledger):
+    recs = list(paper_ledger.values())
     assert (ROOT / "book" / "_front.md").read_text() == report.render_front(recs), (
         "book/_front.md is stale: run python -m obsbook.report --front book/_front.md")
 
@@ -126,10 +124,8 @@ def test_the_code_notes_state_each_code_entry_through_its_sentence():
     assert text in report.render_front(recs, ())
 
 
-def test_committed_code_notes_are_the_ledger_s_code_entries():
-    from obslib.claims import robustness as rb
-
-    recs = claims.evaluate("paper", caveats=rb.caveats())
+def test_committed_code_notes_are_the_ledger_s_code_entries(paper_ledger):
+    recs = list(paper_ledger.values())
     start, end = front.CODE_MARKERS
     committed = (ROOT / "book" / "_front.md").read_text()
     part = committed[committed.index(start):committed.index(end) + len(end)] + "\n"

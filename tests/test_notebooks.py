@@ -217,14 +217,6 @@ def glued_verdicts():
     return out
 
 
-@pytest.fixture(scope="module")
-def paper_ledger():
-    from obslib.claims import evaluate
-    from obslib.claims import robustness as rb
-
-    return {r.id: r for r in evaluate("paper", caveats=rb.caveats())}
-
-
 def test_every_verdict_box_is_the_ledger_s_statement(paper_ledger):
     """A chapter never types a verdict: each box is glued from the ledger, and at the paper's
     parameters it is the very text the report states (status, one sentence, caveat)."""

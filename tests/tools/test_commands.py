@@ -20,7 +20,7 @@ COMMANDS = {
         "m", ["--write", "{out}.json"]),
     "python -m obslib.claims --robustness": (
         "from obslib.claims import __main__ as m; "
-        "m.rb.verdict_robustness = lambda *a, **k: [{'claim': 'x' * 300}]",
+        "m.robustness.verdict_robustness = lambda *a, **k: [{'claim': 'x' * 300}]",
         "m", ["--robustness", "--write", "{out}.json"]),
     "python -m obsbook.report": (
         "import obslib.claims; obslib.claims.evaluate = lambda *a, **k: []; "
@@ -34,7 +34,7 @@ COMMANDS = {
 
 #: Per command: the function that does its work, replaced by the stub above.
 WORK = {"python -m obslib.claims": "m.evaluate",
-        "python -m obslib.claims --robustness": "m.rb.verdict_robustness",
+        "python -m obslib.claims --robustness": "m.robustness.verdict_robustness",
         "python -m obsbook.report": "obslib.claims.evaluate",
         "python -m obslib.bench": "m.bench_criteria"}
 
