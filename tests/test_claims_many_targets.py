@@ -239,7 +239,7 @@ def test_a_saved_run_our_model_does_not_give_is_not_reproduced(monkeypatch, p):
         out["unique-pairs"]["step2_max_rel_diff"] = 1e-3
         return out
 
-    monkeypatch.setattr(mt, "saved_comparison", off)
+    monkeypatch.setattr(lm, "saved_comparison", off)  # the name the check calls
     assert claims.recheck("later-unique-pairs", p, "quick").status == "partly"
 
 

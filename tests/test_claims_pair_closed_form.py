@@ -41,7 +41,7 @@ def test_records_are_registered_with_their_notebook(findings):
 def test_params_come_from_the_profiles():
     from obslib.profiles import params
 
-    assert params(cp.NB, "quick")["n_random_points"] < params(cp.NB, "paper")["n_random_points"]
+    assert params(cp.NOTEBOOK, "quick")["n_random_points"] < params(cp.NOTEBOOK, "paper")["n_random_points"]
     with pytest.raises(ValueError):
         evaluate("nonsense", ids=["thm4"])
 

@@ -455,7 +455,7 @@ def plot_bound_at_a_glance(theta: float = 2 * np.pi / 5, u_over_d=GLANCE_SPEEDS,
     if qs.ndim != 1 or qs.size == 0 or not np.isfinite(qs).all() or (qs < 0).any():
         raise ValueError("u_over_d must be a non-empty list of finite non-negative speeds")
     n = as_int(n, "n", 3)
-    fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(7.5, 3.6),
+    fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(6.4, 2.8),
                                    gridspec_kw={"width_ratios": (1.0, 1.25)})
     # left: the scene, two sensors at distance 1 seen at the angle theta from the target
     o = np.zeros(2)
