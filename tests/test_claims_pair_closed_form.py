@@ -41,7 +41,8 @@ def test_records_are_registered_with_their_notebook(findings):
 def test_params_come_from_the_profiles():
     from obslib.profiles import params
 
-    assert params(cp.NOTEBOOK, "quick")["n_random_points"] < params(cp.NOTEBOOK, "paper")["n_random_points"]
+    quick, paper = params(cp.NOTEBOOK, "quick"), params(cp.NOTEBOOK, "paper")
+    assert quick["n_random_points"] < paper["n_random_points"]
     with pytest.raises(ValueError):
         evaluate("nonsense", ids=["thm4"])
 
