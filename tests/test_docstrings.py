@@ -141,3 +141,23 @@ def test_doctest_lines_parser():
     (test,) = doctest.DocTestFinder().find(wide, "wide")
     lines = [s for ex in test.examples for s in _doctest_lines(ex)]
     assert lines == [">>> x = [1,", "...      2]", ">>> x", "[1, 2]"]
+
+
+def _control_characters(doc: str) -> set:
+    """Control characters other than the newline: what a ``\\theta`` or ``\\alpha`` of TeX
+    becomes in a docstring that is not a raw string (a tab, a bell)."""
+    return {hex(ord(c)) for c in doc if ord(c) < 32 and c != "\n"}
+
+
+def test_docstrings_hold_no_control_characters():
+    """The API pages and the PDF typeset the docstrings: a TeX command eaten by a string escape
+    shows as a missing letter on the web and stops XeLaTeX."""
+    found = []
+    for mod in [m for m, _ in _modules()] + [importlib.import_module("obslib.claims"),
+                                              importlib.import_module("obslib.formatting")]:
+        for name, obj in [(mod.__name__, mod)] + list(vars(mod).items()):
+            doc = getattr(obj, "__doc__", None)
+            if isinstance(doc, str) and _control_characters(doc):
+                found.append(f"{mod.__name__}: {name} {sorted(_control_characters(doc))}")
+    assert _control_characters("\theta") == {"0x9"}
+    assert not found, "\n".join(found)

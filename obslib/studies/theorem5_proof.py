@@ -1,4 +1,4 @@
-"""Audits of the derivatives in the proof of Theorem 5 (notebook 02): the derivatives of the pair
+r"""Audits of the derivatives in the proof of Theorem 5 (notebook 02): the derivatives of the pair
 bound in :math:`\theta` and in :math:`\alpha`, as SymPy computes them and as the paper prints
 them.
 
