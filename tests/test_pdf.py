@@ -274,8 +274,8 @@ def test_figures_tables_and_statements_are_numbered_as_on_the_web(pages, book): 
     assert not wrong, "\n".join(wrong[:20])
     # the statements' boxes, in the order of the pages (the prose names them too, so the web's
     # sequence must be found in order among the printed lines that start with a name)
-    heads = iter(re.findall(r"^((?:Theorem|Algorithm|Remark|Definition|Observation|Proposition)"
-                            r" \d+)(?: \(.*)?$", text, re.M))
+    kinds = "Theorem|Algorithm|Remark|Definition|Observation|Proposition|Exercise"
+    heads = iter(re.findall(rf"^((?:{kinds}) \d+)(?: \(.*)?$", text, re.M))
     missing = [s for s in web["statements"] if not any(h == s for h in heads)]
     assert len(web["statements"]) > 30 and not missing, missing
 

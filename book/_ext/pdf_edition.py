@@ -193,7 +193,38 @@ def _copy_pdf(app, exception):
         copy_to_html(html_dir=Path(app.outdir))
 
 
+def _same_name(text: str) -> str:
+    """A title or section name as one key: lower case, typographic apostrophes and quotes
+    plain, white space single."""
+    plain = text.translate(str.maketrans({"\u2019": "'", "\u2018": "'", "\u201c": '"',
+                                          "\u201d": '"'}))
+    return " ".join(plain.lower().split())
+
+
+def _find_chapter(env, node, parent_tag):
+    """The document of the chapter that holds ``node``, for sphinx-proof's LaTeX numbering.
+
+    sphinx-proof finds it as the section whose names hold the chapter's title, compared as
+    typed; a title with an apostrophe is typeset with a typographic one, so the two never
+    match, and the statement loses its number and its label. This compares them as one
+    :func:`_same_name`.
+    """
+    while node is not None:
+        node = node.parent
+        if node is None:
+            return None
+        docname = node.attributes.get("docname")
+        if docname and docname in env.titles:
+            title = _same_name(env.titles[docname].astext())
+            if title in {_same_name(n) for n in node.attributes.get("names", ())}:
+                return docname
+    return None
+
+
 def setup(app):
+    import sphinx_proof.nodes
+
+    sphinx_proof.nodes.find_parent = _find_chapter  # looked up when each statement is written
     # after sphinx_jupyterbook_latex, which sets its own class and numbering
     app.connect("config-inited", _latex_config, priority=900)
     app.connect("builder-inited", _numbering, priority=900)
